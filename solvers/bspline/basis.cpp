@@ -1,0 +1,166 @@
+#include "solvers/bspline/basis.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sculptline::solvers {
+
+void validateKnots(int degree, int pointCount, const KnotVector& knots, const std::string& field)
+{
+    if (degree < 1) {
+        throw GeometryError("degree: must be at least 1, got " + std::to_string(degree));
+    }
+    if (degree > kMaxDegree) {
+        throw GeometryError("degree: at most " + std::to_string(kMaxDegree) + " is supported, got " + std::to_string(degree));
+    }
+    if (pointCount < degree + 1) {
+        std::ostringstream msg;
+        msg << "points: degree " << degree << " needs at least " << degree + 1 << " control points, got " << pointCount;
+        throw GeometryError(msg.str());
+    }
+    const size_t expected = static_cast<size_t>(pointCount + degree + 1);
+    if (knots.size() != expected) {
+        std::ostringstream msg;
+        msg << field << ": expected " << expected << " knots (points + degree + 1 = " << pointCount << " + " << degree
+            << " + 1), got " << knots.size();
+        throw GeometryError(msg.str());
+    }
+    for (size_t i = 0; i < knots.size(); ++i) {
+        if (!std::isfinite(knots[i])) {
+            throw GeometryError(field + "[" + std::to_string(i) + "]: not a finite number");
+        }
+        if (i > 0 && knots[i] < knots[i - 1]) {
+            std::ostringstream msg;
+            msg << field << "[" << i << "]: knots must be non-decreasing, but " << knots[i] << " < " << knots[i - 1];
+            throw GeometryError(msg.str());
+        }
+    }
+    if (!(knots[degree] < knots[pointCount])) {
+        throw GeometryError(field + ": the parameter domain [knots[degree], knots[points]] is empty");
+    }
+    for (size_t i = 0; i < knots.size();) {
+        size_t j = i;
+        while (j < knots.size() && knots[j] == knots[i]) ++j;
+        if (static_cast<int>(j - i) > degree + 1) {
+            std::ostringstream msg;
+            msg << field << ": knot " << knots[i] << " has multiplicity " << j - i << ", more than degree + 1 = " << degree + 1;
+            throw GeometryError(msg.str());
+        }
+        i = j;
+    }
+}
+
+int findSpan(int degree, const KnotVector& knots, double u)
+{
+    const int n = static_cast<int>(knots.size()) - degree - 2;  // index of the last control point
+    if (u >= knots[n + 1]) {
+        // Right end of the domain (and beyond): the last non-empty span.
+        int span = n;
+        while (span > degree && knots[span] == knots[span + 1]) --span;
+        return span;
+    }
+    if (u <= knots[degree]) {
+        int span = degree;
+        while (span < n && knots[span] == knots[span + 1]) ++span;
+        return span;
+    }
+    // Binary search, A2.1: the largest i in [degree, n] with knots[i] <= u.
+    const auto first = knots.begin() + degree;
+    const auto last = knots.begin() + n + 1;
+    const auto it = std::upper_bound(first, last, u);
+    return static_cast<int>(it - knots.begin()) - 1;
+}
+
+void basisFunctions(int span, double u, int degree, const KnotVector& knots, double* out)
+{
+    // The NURBS Book, A2.2 (Cox-de Boor triangle without divisions by zero).
+    double left[32];
+    double right[32];
+    out[0] = 1.0;
+    for (int j = 1; j <= degree; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double temp = out[r] / (right[r + 1] + left[j - r]);
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+}
+
+Eigen::MatrixXd basisDerivatives(int span, double u, int p, int n, const KnotVector& knots)
+{
+    // The NURBS Book, A2.3.
+    Eigen::MatrixXd ders = Eigen::MatrixXd::Zero(n + 1, p + 1);
+    Eigen::MatrixXd ndu(p + 1, p + 1);
+    std::vector<double> left(p + 1), right(p + 1);
+    ndu(0, 0) = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = u - knots[span + 1 - j];
+        right[j] = knots[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu(j, r) = right[r + 1] + left[j - r];  // lower triangle: knot differences
+            const double temp = ndu(r, j - 1) / ndu(j, r);
+            ndu(r, j) = saved + right[r + 1] * temp;  // upper triangle: basis functions
+            saved = left[j - r] * temp;
+        }
+        ndu(j, j) = saved;
+    }
+    for (int j = 0; j <= p; ++j) ders(0, j) = ndu(j, p);
+    const int nd = std::min(n, p);
+    Eigen::MatrixXd a(2, p + 1);
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a(0, 0) = 1.0;
+        for (int k = 1; k <= nd; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a(s2, 0) = a(s1, 0) / ndu(pk + 1, rk);
+                d = a(s2, 0) * ndu(rk, pk);
+            }
+            const int j1 = rk >= -1 ? 1 : -rk;
+            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a(s2, j) = (a(s1, j) - a(s1, j - 1)) / ndu(pk + 1, rk + j);
+                d += a(s2, j) * ndu(rk + j, pk);
+            }
+            if (r <= pk) {
+                a(s2, k) = -a(s1, k - 1) / ndu(pk + 1, r);
+                d += a(s2, k) * ndu(r, pk);
+            }
+            ders(k, r) = d;
+            std::swap(s1, s2);
+        }
+    }
+    double factor = p;
+    for (int k = 1; k <= nd; ++k) {
+        ders.row(k) *= factor;
+        factor *= (p - k);
+    }
+    return ders;
+}
+
+int knotMultiplicity(const KnotVector& knots, double u)
+{
+    return static_cast<int>(std::count(knots.begin(), knots.end(), u));
+}
+
+std::vector<double> interiorBreakpoints(int degree, const KnotVector& knots)
+{
+    std::vector<double> out;
+    const double a = knots[degree];
+    const double b = knots[knots.size() - degree - 1];
+    for (double k : knots) {
+        if (k > a && k < b && (out.empty() || out.back() != k)) out.push_back(k);
+    }
+    return out;
+}
+
+}  // namespace sculptline::solvers

@@ -1,0 +1,251 @@
+#include "solvers/bspline/projection.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sculptline::solvers {
+namespace {
+
+// Newton iterations per candidate: quadratic convergence needs < 10 from a bracketed start; the
+// rest is for the bisection fallback (each halves the bracket: 2^-60 is below double resolution).
+constexpr int kMaxIterations = 80;
+
+std::vector<double> sampleParameters(int degree, const KnotVector& knots, int count, int perSpan)
+{
+    std::vector<double> out;
+    for (int i = degree; i < count; ++i) {
+        if (knots[i] == knots[i + 1]) continue;
+        for (int k = 0; k < perSpan; ++k) out.push_back(knots[i] + (knots[i + 1] - knots[i]) * k / perSpan);
+    }
+    out.push_back(knots[count]);
+    return out;
+}
+
+}  // namespace
+
+template <int Dim>
+CurveProjector<Dim>::CurveProjector(BSplineCurve<Dim> curve, int samplesPerSpan) : curve_(std::move(curve))
+{
+    params_ = sampleParameters(curve_.degree(), curve_.knots(), curve_.pointCount(), std::max(2, samplesPerSpan));
+    samples_.reserve(params_.size());
+    for (double u : params_) samples_.push_back(curve_.evaluate(u));
+}
+
+template <int Dim>
+double CurveProjector<Dim>::refine(const Point& x, double lo, double hi, double u) const
+{
+    // Safeguarded Newton (Numerical Recipes' rtsafe idea) on f(u) = C'(u)·(C(u) - x), which is
+    // negative left of a local minimum of the distance and positive right of it.
+    auto f = [&](double t, double* df) {
+        const auto d = curve_.derivatives(t, 2);
+        const Point r = d[0] - x;
+        if (df) *df = d[2].dot(r) + d[1].squaredNorm();
+        return d[1].dot(r);
+    };
+    const double resolution = 4 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(lo), std::abs(hi)});
+    double flo = f(lo, nullptr), fhi = f(hi, nullptr);
+    if (!(flo < 0 && fhi > 0)) {
+        // No sign change: the minimum is at a bracket end (or the bracket holds an inflexion).
+        const double dl = (curve_.evaluate(lo) - x).squaredNorm(), dh = (curve_.evaluate(hi) - x).squaredNorm();
+        const double du = (curve_.evaluate(u) - x).squaredNorm();
+        return du <= std::min(dl, dh) ? u : (dl <= dh ? lo : hi);
+    }
+    for (int iter = 0; iter < kMaxIterations && hi - lo > resolution; ++iter) {
+        double df = 0.0;
+        const double fu = f(u, &df);
+        if (fu == 0.0) break;
+        if (fu < 0) lo = u;
+        else hi = u;
+        double next = df > 0 ? u - fu / df : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);  // Newton left the bracket: bisect
+        if (std::abs(next - u) <= resolution) {
+            u = next;
+            break;
+        }
+        u = next;
+    }
+    return u;
+}
+
+template <int Dim>
+CurveProjection<Dim> CurveProjector<Dim>::project(const Point& x) const
+{
+    if (!x.allFinite()) throw GeometryError("points: not a finite number");
+    const size_t n = samples_.size();
+    std::vector<double> d2(n);
+    for (size_t i = 0; i < n; ++i) d2[i] = (samples_[i] - x).squaredNorm();
+    const bool closed = curve_.isClosed();
+    const double T = curve_.domainEnd() - curve_.domainStart();
+    // For a closed curve the last sample repeats the first; neighbours wrap around.
+    const size_t m = closed ? n - 1 : n;
+    CurveProjection<Dim> best;
+    best.distance = std::numeric_limits<double>::infinity();
+    auto consider = [&](double u) {
+        const Point c = curve_.evaluate(u);
+        const double dist = (c - x).norm();
+        if (dist < best.distance) {
+            best.u = curve_.normalizeParameter(u);
+            best.point = c;
+            best.distance = dist;
+        }
+    };
+    for (size_t i = 0; i < m; ++i) {
+        double lo, hi;
+        double dl, dh;
+        if (i == 0) {
+            if (closed) {
+                lo = params_[m - 1] - T;
+                dl = d2[m - 1];
+            } else {
+                lo = params_[0];
+                dl = std::numeric_limits<double>::infinity();
+            }
+        } else {
+            lo = params_[i - 1];
+            dl = d2[i - 1];
+        }
+        if (i + 1 == m && closed) {
+            hi = params_[0] + T;
+            dh = d2[0];
+        } else if (i + 1 >= n) {
+            hi = params_[i];
+            dh = std::numeric_limits<double>::infinity();
+        } else {
+            hi = params_[i + 1];
+            dh = d2[i + 1];
+        }
+        if (d2[i] <= dl && d2[i] <= dh) consider(refine(x, lo, hi, params_[i]));
+    }
+    if (!closed) {
+        consider(curve_.domainStart());
+        consider(curve_.domainEnd());
+    }
+    return best;
+}
+
+template <int Dim>
+CurveProjection<Dim> projectToCurve(const BSplineCurve<Dim>& curve, const Eigen::Matrix<double, Dim, 1>& x)
+{
+    return CurveProjector<Dim>(curve).project(x);
+}
+
+SurfaceProjector::SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan) : surface_(std::move(surface))
+{
+    const int per = std::max(2, samplesPerSpan);
+    us_ = sampleParameters(surface_.degreeU(), surface_.knotsU(), surface_.countU(), per);
+    vs_ = sampleParameters(surface_.degreeV(), surface_.knotsV(), surface_.countV(), per);
+    grid_.reserve(us_.size() * vs_.size());
+    for (double u : us_)
+        for (double v : vs_) grid_.push_back(surface_.evaluate(u, v));
+    const double u0 = surface_.domainStart(Direction::U), u1 = surface_.domainEnd(Direction::U);
+    const double v0 = surface_.domainStart(Direction::V), v1 = surface_.domainEnd(Direction::V);
+    for (double u : {u0, u1}) {
+        boundaries_.emplace_back(surface_.isoCurve(Direction::U, u));
+        boundaryParams_.emplace_back(0, u);
+    }
+    for (double v : {v0, v1}) {
+        boundaries_.emplace_back(surface_.isoCurve(Direction::V, v));
+        boundaryParams_.emplace_back(1, v);
+    }
+}
+
+SurfaceProjection SurfaceProjector::newton(const Eigen::Vector3d& x, double u, double v) const
+{
+    const double u0 = surface_.domainStart(Direction::U), u1 = surface_.domainEnd(Direction::U);
+    const double v0 = surface_.domainStart(Direction::V), v1 = surface_.domainEnd(Direction::V);
+    double dist2 = (surface_.evaluate(u, v) - x).squaredNorm();
+    for (int iter = 0; iter < kMaxIterations; ++iter) {
+        const auto d = surface_.derivatives(u, v, 2);
+        const Eigen::Vector3d r = d[0][0] - x;
+        // Gradient and Hessian of |S - x|^2 / 2 (The NURBS Book eqs. 6.6-6.7).
+        const Eigen::Vector2d g(r.dot(d[1][0]), r.dot(d[0][1]));
+        Eigen::Matrix2d H;
+        H(0, 0) = d[1][0].squaredNorm() + r.dot(d[2][0]);
+        H(0, 1) = H(1, 0) = d[1][0].dot(d[0][1]) + r.dot(d[1][1]);
+        H(1, 1) = d[0][1].squaredNorm() + r.dot(d[0][2]);
+        Eigen::Vector2d step;
+        const Eigen::LDLT<Eigen::Matrix2d> ldlt(H);
+        if (ldlt.info() == Eigen::Success && ldlt.isPositive() && H.determinant() > 0) {
+            step = -ldlt.solve(g);
+        } else {
+            // Not locally convex: a gradient step scaled by the first-order metric.
+            const double a = std::max(H(0, 0), d[1][0].squaredNorm()), b = std::max(H(1, 1), d[0][1].squaredNorm());
+            step = Eigen::Vector2d(-g[0] / std::max(a, 1e-300), -g[1] / std::max(b, 1e-300));
+        }
+        // Backtracking line search on the clamped step: the distance never increases.
+        double t = 1.0;
+        bool moved = false;
+        for (int k = 0; k < 40; ++k, t *= 0.5) {
+            const double nu = std::clamp(u + t * step[0], u0, u1), nv = std::clamp(v + t * step[1], v0, v1);
+            const double nd = (surface_.evaluate(nu, nv) - x).squaredNorm();
+            if (nd < dist2) {
+                moved = (std::abs(nu - u) > 1e-16 * (1 + std::abs(u))) || (std::abs(nv - v) > 1e-16 * (1 + std::abs(v)));
+                u = nu;
+                v = nv;
+                dist2 = nd;
+                break;
+            }
+        }
+        if (!moved) break;
+    }
+    SurfaceProjection out;
+    out.u = u;
+    out.v = v;
+    out.point = surface_.evaluate(u, v);
+    out.distance = (out.point - x).norm();
+    return out;
+}
+
+SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& x) const
+{
+    if (!x.allFinite()) throw GeometryError("points: not a finite number");
+    const int nu = static_cast<int>(us_.size()), nv = static_cast<int>(vs_.size());
+    std::vector<double> d2(grid_.size());
+    for (size_t i = 0; i < grid_.size(); ++i) d2[i] = (grid_[i] - x).squaredNorm();
+    SurfaceProjection best;
+    best.distance = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < nu; ++i) {
+        for (int j = 0; j < nv; ++j) {
+            const double here = d2[static_cast<size_t>(i) * nv + j];
+            bool isMin = true;
+            for (int di = -1; di <= 1 && isMin; ++di)
+                for (int dj = -1; dj <= 1; ++dj) {
+                    const int a = i + di, b = j + dj;
+                    if ((di || dj) && a >= 0 && a < nu && b >= 0 && b < nv && d2[static_cast<size_t>(a) * nv + b] < here) {
+                        isMin = false;
+                        break;
+                    }
+                }
+            if (!isMin) continue;
+            const SurfaceProjection c = newton(x, us_[i], vs_[j]);
+            if (c.distance < best.distance) best = c;
+        }
+    }
+    for (size_t k = 0; k < boundaries_.size(); ++k) {
+        const CurveProjection<3> c = boundaries_[k].project(x);
+        if (c.distance < best.distance) {
+            best.u = boundaryParams_[k].first == 0 ? boundaryParams_[k].second : c.u;
+            best.v = boundaryParams_[k].first == 0 ? c.u : boundaryParams_[k].second;
+            best.point = surface_.evaluate(best.u, best.v);
+            best.distance = (best.point - x).norm();
+        }
+    }
+    return best;
+}
+
+SurfaceProjection projectToSurface(const BSplineSurface<3>& surface, const Eigen::Vector3d& x)
+{
+    return SurfaceProjector(surface).project(x);
+}
+
+template class CurveProjector<2>;
+template class CurveProjector<3>;
+template CurveProjection<2> projectToCurve<2>(const BSplineCurve<2>&, const Eigen::Vector2d&);
+template CurveProjection<3> projectToCurve<3>(const BSplineCurve<3>&, const Eigen::Vector3d&);
+
+}  // namespace sculptline::solvers

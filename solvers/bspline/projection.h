@@ -1,0 +1,70 @@
+#pragma once
+// Closest-point projection onto curves and surfaces, global (not just the nearest local minimum).
+#include "solvers/bspline/bspline_surface.h"
+
+namespace sculptline::solvers {
+
+template <int Dim>
+struct CurveProjection {
+    double u = 0.0;
+    Eigen::Matrix<double, Dim, 1> point;
+    double distance = 0.0;
+};
+
+struct SurfaceProjection {
+    double u = 0.0;
+    double v = 0.0;
+    Eigen::Vector3d point;
+    double distance = 0.0;
+};
+
+/// Projects points onto one curve. The curve is sampled once (a few samples per knot span, enough
+/// that each sample interval holds at most one local minimum of the distance for ordinary curves);
+/// each query brackets every sampled local minimum, refines it with Newton's method on
+/// f(u) = C'(u)·(C(u) - x) (The NURBS Book eq. 6.3) safeguarded by bisection, compares with the
+/// end points (open curves) and returns the best. Closed curves wrap across the seam.
+template <int Dim>
+class CurveProjector {
+public:
+    using Point = Eigen::Matrix<double, Dim, 1>;
+    /// @param samplesPerSpan coarse samples per non-empty knot span (>= 2).
+    explicit CurveProjector(BSplineCurve<Dim> curve, int samplesPerSpan = 16);
+    CurveProjection<Dim> project(const Point& x) const;
+    const BSplineCurve<Dim>& curve() const { return curve_; }
+
+private:
+    double refine(const Point& x, double lo, double hi, double guess) const;
+
+    BSplineCurve<Dim> curve_;
+    std::vector<double> params_;
+    std::vector<Point> samples_;
+};
+
+template <int Dim>
+CurveProjection<Dim> projectToCurve(const BSplineCurve<Dim>& curve, const Eigen::Matrix<double, Dim, 1>& x);
+
+/// Projects points onto a 3D surface: a coarse grid per knot-span pair, every grid local minimum
+/// refined by Newton's method on the normal equations (The NURBS Book eqs. 6.6-6.7) with a
+/// backtracking line search and clamping to the domain, and the four boundary curves projected
+/// with CurveProjector so that minima on the boundary are found exactly.
+class SurfaceProjector {
+public:
+    explicit SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan = 8);
+    SurfaceProjection project(const Eigen::Vector3d& x) const;
+
+private:
+    SurfaceProjection newton(const Eigen::Vector3d& x, double u, double v) const;
+
+    BSplineSurface<3> surface_;
+    std::vector<double> us_, vs_;
+    std::vector<Eigen::Vector3d> grid_;  // grid_[i * vs_.size() + j]
+    std::vector<CurveProjector<3>> boundaries_;
+    std::vector<std::pair<int, double>> boundaryParams_;  // (fixed direction 0:u fixed / 1:v fixed, value)
+};
+
+SurfaceProjection projectToSurface(const BSplineSurface<3>& surface, const Eigen::Vector3d& x);
+
+extern template class CurveProjector<2>;
+extern template class CurveProjector<3>;
+
+}  // namespace sculptline::solvers
