@@ -1,0 +1,160 @@
+#include "solvers/io/geometry_json.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+namespace sculptline::solvers::io {
+namespace {
+
+using nlohmann::json;
+
+const json& arrayMember(const json& j, const std::string& key, const std::string& path)
+{
+    const json& a = member(j, key, path);
+    if (!a.is_array()) throw InputError(path + "." + key + ": must be an array");
+    return a;
+}
+
+std::vector<double> numbers(const json& a, const std::string& path)
+{
+    std::vector<double> out;
+    out.reserve(a.size());
+    for (size_t i = 0; i < a.size(); ++i) out.push_back(numberFromJson(a[i], path + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
+// Geometry validation errors name the field inside the object ("knots: ..."); prefix the object's path.
+template <typename F>
+auto validated(const std::string& path, F&& make)
+{
+    try {
+        return make();
+    } catch (const GeometryError& e) {
+        throw InputError(path + "." + e.what());
+    }
+}
+
+}  // namespace
+
+const json& member(const json& j, const std::string& key, const std::string& path)
+{
+    if (!j.is_object()) throw InputError(path + ": must be a JSON object");
+    const auto it = j.find(key);
+    if (it == j.end()) throw InputError(path + "." + key + ": missing");
+    return *it;
+}
+
+double numberFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_number()) throw InputError(path + ": must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) throw InputError(path + ": not a finite number");
+    return v;
+}
+
+int integerFromJson(const json& j, const std::string& path, int lo, int hi)
+{
+    if (!j.is_number_integer() && !(j.is_number_float() && std::floor(j.get<double>()) == j.get<double>())) {
+        throw InputError(path + ": must be an integer");
+    }
+    const double v = j.get<double>();
+    if (v < lo || v > hi) {
+        throw InputError(path + ": must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
+                         j.dump());
+    }
+    return static_cast<int>(v);
+}
+
+Eigen::Vector3d pointFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_array() || (j.size() != 2 && j.size() != 3)) throw InputError(path + ": a point must be [x, y] or [x, y, z]");
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (size_t k = 0; k < j.size(); ++k) p[k] = numberFromJson(j[k], path + "[" + std::to_string(k) + "]");
+    return p;
+}
+
+Curve3d curveFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_object()) throw InputError(path + ": must be a JSON object");
+    const int degree = integerFromJson(member(j, "degree", path), path + ".degree", 1, kMaxDegree);
+    const std::vector<double> knots = numbers(arrayMember(j, "knots", path), path + ".knots");
+    const json& pts = arrayMember(j, "points", path);
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) points.push_back(pointFromJson(pts[i], path + ".points[" + std::to_string(i) + "]"));
+    std::vector<double> weights;
+    if (j.contains("weights")) weights = numbers(arrayMember(j, "weights", path), path + ".weights");
+    bool closed = false;
+    if (j.contains("closed")) {
+        if (!j["closed"].is_boolean()) throw InputError(path + ".closed: must be true or false");
+        closed = j["closed"].get<bool>();
+    }
+    return validated(path, [&] { return Curve3d(degree, knots, points, weights, closed); });
+}
+
+Surface3d surfaceFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_object()) throw InputError(path + ": must be a JSON object");
+    constexpr int kMaxCount = std::numeric_limits<int>::max() / 4;
+    const int du = integerFromJson(member(j, "degreeU", path), path + ".degreeU", 1, kMaxDegree);
+    const int dv = integerFromJson(member(j, "degreeV", path), path + ".degreeV", 1, kMaxDegree);
+    const int cu = integerFromJson(member(j, "countU", path), path + ".countU", 1, kMaxCount);
+    const int cv = integerFromJson(member(j, "countV", path), path + ".countV", 1, kMaxCount);
+    const std::vector<double> ku = numbers(arrayMember(j, "knotsU", path), path + ".knotsU");
+    const std::vector<double> kv = numbers(arrayMember(j, "knotsV", path), path + ".knotsV");
+    const json& pts = arrayMember(j, "points", path);
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) points.push_back(pointFromJson(pts[i], path + ".points[" + std::to_string(i) + "]"));
+    std::vector<double> weights;
+    if (j.contains("weights")) weights = numbers(arrayMember(j, "weights", path), path + ".weights");
+    return validated(path, [&] { return Surface3d(du, dv, ku, kv, cu, cv, points, weights); });
+}
+
+json toJson(const Eigen::Vector3d& p)
+{
+    return json::array({p.x(), p.y(), p.z()});
+}
+
+json toJson(const Curve3d& c)
+{
+    json j;
+    j["degree"] = c.degree();
+    j["knots"] = c.knots();
+    json pts = json::array();
+    for (const auto& p : c.points()) pts.push_back(toJson(p));
+    j["points"] = std::move(pts);
+    if (c.isRational()) j["weights"] = c.weights();
+    if (c.isClosed()) j["closed"] = true;
+    return j;
+}
+
+json toJson(const Surface3d& s)
+{
+    json j;
+    j["degreeU"] = s.degreeU();
+    j["degreeV"] = s.degreeV();
+    j["knotsU"] = s.knotsU();
+    j["knotsV"] = s.knotsV();
+    j["countU"] = s.countU();
+    j["countV"] = s.countV();
+    json pts = json::array();
+    for (const auto& p : s.points()) pts.push_back(toJson(p));
+    j["points"] = std::move(pts);
+    if (s.isRational()) j["weights"] = s.weights();
+    return j;
+}
+
+json parseJson(const std::string& text)
+{
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        throw InputError(std::string("input: malformed JSON (") + e.what() + ")");
+    }
+}
+
+}  // namespace sculptline::solvers::io
