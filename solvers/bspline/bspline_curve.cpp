@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace sculptline::solvers {
@@ -253,7 +254,6 @@ template <int Dim>
 BSplineCurve<Dim> BSplineCurve<Dim>::removeKnots(double tolerance, int* removed) const
 {
     if (!std::isfinite(tolerance) || tolerance < 0) throw GeometryError("tolerance: must be a finite number >= 0");
-    if (closed_) throw GeometryError("closed: knot removal on closed curves is not supported yet; open the curve first");
     KnotVector knots = knots_;
     ControlMatrix pts = homogeneous();
     // Rational curves: a homogeneous displacement d moves the curve by at most d (1 + |P|max) / wmin
@@ -267,22 +267,55 @@ BSplineCurve<Dim> BSplineCurve<Dim>::removeKnots(double tolerance, int* removed)
         }
         budget = tolerance * wmin / (1.0 + pmax);
     }
+    const int groupSize = static_cast<int>(pts.cols());
     int count = 0;
     bool progress = true;
+    if (!closed_) {
+        while (progress && budget > 0) {
+            progress = false;
+            for (double u : interiorBreakpoints(degree_, knots)) {
+                if (static_cast<int>(pts.rows()) <= degree_ + 1) break;
+                const RemovalResult r = removeKnot(degree_, knots, pts, u, 1, budget, groupSize);
+                if (r.removed > 0) {
+                    budget -= r.errorBound;
+                    count += r.removed;
+                    progress = true;
+                }
+            }
+        }
+        if (removed) *removed = count;
+        return fromHomogeneous(degree_, std::move(knots), pts, isRational());
+    }
+    // Closed: remove a knot of the middle period of a periodic window, then its copies one period to
+    // either side (the same local computation, so the same error, counted once), and read the closed
+    // curve back from the middle period.
+    const double start = domainStart(), T = domainEnd() - start;
+    PeriodicWindow w = periodicExtension(degree_, knots, pts, kWindowPeriods);
+    int unique = pointCount() - degree_;
     while (progress && budget > 0) {
         progress = false;
-        for (double u : interiorBreakpoints(degree_, knots)) {
-            if (static_cast<int>(pts.rows()) <= degree_ + 1) break;
-            const RemovalResult r = removeKnot(degree_, knots, pts, u, 1, budget, static_cast<int>(pts.cols()));
-            if (r.removed > 0) {
-                budget -= r.errorBound;
-                count += r.removed;
-                progress = true;
+        std::vector<double> candidates;
+        for (double k : interiorBreakpoints(degree_, w.knots))
+            if (k >= start && k < start + T) candidates.push_back(k);
+        for (double u : candidates) {
+            if (unique <= degree_ + 1) break;
+            const RemovalResult r = removeKnot(degree_, w.knots, w.points, u, 1, budget, groupSize);
+            if (r.removed == 0) continue;
+            for (double copy : {u - T, u + T}) {
+                const auto it = std::min_element(w.knots.begin(), w.knots.end(), [&](double x, double y) {
+                    return std::abs(x - copy) < std::abs(y - copy);
+                });
+                removeKnot(degree_, w.knots, w.points, *it, 1, std::numeric_limits<double>::infinity(), groupSize);
             }
+            budget -= r.errorBound;
+            ++count;
+            --unique;
+            progress = true;
         }
     }
     if (removed) *removed = count;
-    return fromHomogeneous(degree_, std::move(knots), pts, isRational());
+    KnotsAndPoints c = periodicFromWindow(degree_, w.knots, w.points, start, T);
+    return fromHomogeneous(degree_, std::move(c.knots), c.points, isRational(), true);
 }
 
 template <int Dim>

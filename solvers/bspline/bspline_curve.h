@@ -65,6 +65,7 @@ public:
     BSplineCurve elevate(int times) const;
     /// Removes interior knots greedily while the total deviation stays within `tolerance` (model units,
     /// a bound, not an estimate: The NURBS Book A5.8 with eq. 5.30 for rational curves).
+    /// Closed curves stay closed (a removed seam knot moves the domain start to the next knot).
     /// @param removed receives the number of knots removed.
     BSplineCurve removeKnots(double tolerance, int* removed = nullptr) const;
 

@@ -37,7 +37,11 @@ KnotsAndPoints periodicFromWindow(int p, const KnotVector& K, const ControlMatri
     // Knots within this distance of a period boundary are that boundary: the window's copies of the
     // start knot are computed as start + q*T and may differ from it in the last bits.
     const double eps = 1e-12 * std::max(1.0, std::abs(start) + std::abs(period));
+    // The closed curve's domain starts at the first knot at or after `start` (start itself may have
+    // been removed); the parameterization is unchanged, only the seam moves.
     const auto lo = std::lower_bound(K.begin(), K.end(), start - eps);
+    if (lo == K.end()) throw GeometryError("closed: internal error, periodic window too small");
+    start = *lo;
     const auto hi = std::lower_bound(K.begin(), K.end(), start + period - eps);
     const int idx = static_cast<int>(lo - K.begin());
     const int perPeriod = static_cast<int>(hi - lo);

@@ -19,8 +19,9 @@ struct PeriodicWindow {
 /// The periodic extension of a closed curve repeated `periods` times on each side of its domain.
 PeriodicWindow periodicExtension(int degree, const KnotVector& knots, const ControlMatrix& points, int periods);
 
-/// Reads the closed curve back from an operated-on window: the unwrapped knots and rows of the
-/// period [start, start + period) (with the last degree rows equal to the first degree rows).
+/// Reads the closed curve back from an operated-on window: the unwrapped knots and rows of one
+/// period starting at the first window knot >= start (start itself, unless an operation removed
+/// that knot), with the last degree rows equal to the first degree rows.
 KnotsAndPoints periodicFromWindow(int degree, const KnotVector& windowKnots, const ControlMatrix& windowPoints,
                                   double start, double period);
 

@@ -1,0 +1,254 @@
+#include "solvers/bspline/tessellation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::solvers {
+namespace {
+
+/// Interior probes per segment for the chord test: at 1/4, 1/2 and 3/4. The midpoint alone misses
+/// S-shaped segments whose inflection sits at the middle (the midpoint then lies on the chord).
+constexpr int kChordProbes = 3;
+/// Tangents and normals at a segment's end are taken this fraction of the segment inside it, so a
+/// kink at a knot (multiplicity = degree) is seen from the segment's own side (findSpan picks the
+/// span to the right of a knot), instead of forcing endless bisection next to the kink.
+constexpr double kInsideNudge = 1e-7;
+/// Refinement rounds for surfaces (U then V); each round only adds parameters, and in practice the
+/// second round already changes nothing.
+constexpr int kMaxSurfaceRounds = 4;
+/// Floor of the relative chord tolerance's scale, so a degenerate (point-like) geometry still gets
+/// a positive tolerance.
+constexpr double kMinimumScale = 1e-12;
+
+double chordToleranceFor(const TessellationTolerance& t, double controlSize)
+{
+    if (t.chordTolerance > 0.0) return t.chordTolerance;
+    return kRelativeChordTolerance * std::max(controlSize, kMinimumScale);
+}
+
+/// Angle between two directions; 0 when either is (numerically) zero: no direction, no criterion.
+double turningAngle(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const double scale = a.norm() * b.norm();
+    if (!(scale > 0.0)) return 0.0;
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// Domain start, distinct interior knots, domain end: the knot spans of the domain.
+std::vector<double> spanBreaks(int degree, const KnotVector& knots, double start, double end)
+{
+    std::vector<double> breaks{start};
+    for (double k : interiorBreakpoints(degree, knots)) breaks.push_back(k);
+    breaks.push_back(end);
+    return breaks;
+}
+
+/// Every span cut into `segments` equal parts; increasing, both domain ends included.
+std::vector<double> initialParameters(const std::vector<double>& breaks, int segments)
+{
+    std::vector<double> params;
+    for (size_t s = 0; s + 1 < breaks.size(); ++s) {
+        for (int k = 0; k < segments; ++k) {
+            params.push_back(breaks[s] + (breaks[s + 1] - breaks[s]) * k / segments);
+        }
+    }
+    params.push_back(breaks.back());
+    return params;
+}
+
+int segmentsPerSpan(const TessellationTolerance& t) { return std::max(1, t.minSegmentsPerSpan); }
+
+class CurveRefiner {
+public:
+    CurveRefiner(const Curve3d& c, double chord, double angle) : curve_(c), chord_(chord), angle_(angle) {}
+
+    /// Appends a and the refinement points of (a, b) (not b) to out.
+    void refine(double a, double b, int depth, Polyline& out) const
+    {
+        if (depth < kMaxRefinementDepth && !flat(a, b)) {
+            const double m = 0.5 * (a + b);
+            refine(a, m, depth + 1, out);
+            refine(m, b, depth + 1, out);
+            return;
+        }
+        out.params.push_back(a);
+        out.points.push_back(curve_.evaluate(a));
+    }
+
+private:
+    bool flat(double a, double b) const
+    {
+        const Eigen::Vector3d pa = curve_.evaluate(a);
+        const Eigen::Vector3d pb = curve_.evaluate(b);
+        for (int k = 1; k <= kChordProbes; ++k) {
+            const double t = a + (b - a) * k / (kChordProbes + 1);
+            if (distanceToSegment(curve_.evaluate(t), pa, pb) > chord_) return false;
+        }
+        const double h = (b - a) * kInsideNudge;
+        const Eigen::Vector3d ta = curve_.derivatives(a + h, 1)[1];
+        const Eigen::Vector3d tb = curve_.derivatives(b - h, 1)[1];
+        return turningAngle(ta, tb) <= angle_;
+    }
+
+    const Curve3d& curve_;
+    double chord_;
+    double angle_;
+};
+
+/// Refines the parameters of one surface direction against the grid lines at the other direction's
+/// parameters (the "across" list).
+class SurfaceRefiner {
+public:
+    SurfaceRefiner(const Surface3d& s, double chord, double angle) : surface_(s), chord_(chord), angle_(angle) {}
+
+    /// Returns true when `along` gained parameters. minWidth stops bisection (depth limit).
+    bool refine(Direction d, std::vector<double>& along, const std::vector<double>& across, double minWidth) const
+    {
+        std::vector<double> out;
+        for (size_t i = 0; i + 1 < along.size(); ++i) split(d, along[i], along[i + 1], across, minWidth, out);
+        out.push_back(along.back());
+        const bool changed = out.size() != along.size();
+        along = std::move(out);
+        return changed;
+    }
+
+private:
+    Eigen::Vector3d point(Direction d, double t, double c) const
+    {
+        return d == Direction::U ? surface_.evaluate(t, c) : surface_.evaluate(c, t);
+    }
+    Eigen::Vector3d normal(Direction d, double t, double c) const
+    {
+        return d == Direction::U ? surface_.normal(t, c) : surface_.normal(c, t);
+    }
+
+    void split(Direction d, double a, double b, const std::vector<double>& across, double minWidth,
+               std::vector<double>& out) const
+    {
+        if (b - a > 2.0 * minWidth && !flat(d, a, b, across)) {
+            const double m = 0.5 * (a + b);
+            split(d, a, m, across, minWidth, out);
+            split(d, m, b, across, minWidth, out);
+            return;
+        }
+        out.push_back(a);
+    }
+
+    bool flat(Direction d, double a, double b, const std::vector<double>& across) const
+    {
+        const double h = (b - a) * kInsideNudge;
+        for (double c : across) {
+            const Eigen::Vector3d pa = point(d, a, c);
+            const Eigen::Vector3d pb = point(d, b, c);
+            for (int k = 1; k <= kChordProbes; ++k) {
+                const double t = a + (b - a) * k / (kChordProbes + 1);
+                if (distanceToSegment(point(d, t, c), pa, pb) > chord_) return false;
+            }
+            if (turningAngle(normal(d, a + h, c), normal(d, b - h, c)) > angle_) return false;
+        }
+        return true;
+    }
+
+    const Surface3d& surface_;
+    double chord_;
+    double angle_;
+};
+
+/// Control-net bounding-box diagonal of a surface (Surface3d has no controlSize()).
+double controlSize(const Surface3d& s)
+{
+    Eigen::Vector3d lo = s.points().front();
+    Eigen::Vector3d hi = lo;
+    for (const auto& p : s.points()) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
+}
+
+/// Smallest gap of an increasing list.
+double smallestGap(const std::vector<double>& p)
+{
+    double gap = p.back() - p.front();
+    for (size_t i = 0; i + 1 < p.size(); ++i) gap = std::min(gap, p[i + 1] - p[i]);
+    return gap;
+}
+
+}  // namespace
+
+double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const Eigen::Vector3d ab = b - a;
+    const double len2 = ab.squaredNorm();
+    if (!(len2 > 0.0)) return (p - a).norm();
+    const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+    return (p - (a + t * ab)).norm();
+}
+
+Polyline tessellate(const Curve3d& curve, const TessellationTolerance& tolerance)
+{
+    const CurveRefiner refiner(curve, chordToleranceFor(tolerance, curve.controlSize()), tolerance.maxTurningAngle);
+    const auto breaks = spanBreaks(curve.degree(), curve.knots(), curve.domainStart(), curve.domainEnd());
+    const auto params = initialParameters(breaks, segmentsPerSpan(tolerance));
+    Polyline out;
+    for (size_t i = 0; i + 1 < params.size(); ++i) refiner.refine(params[i], params[i + 1], 0, out);
+    out.params.push_back(params.back());
+    out.points.push_back(curve.evaluate(params.back()));
+    return out;
+}
+
+GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& tolerance)
+{
+    const SurfaceRefiner refiner(surface, chordToleranceFor(tolerance, controlSize(surface)),
+                                 tolerance.maxTurningAngle);
+    GridMesh mesh;
+    mesh.u = initialParameters(spanBreaks(surface.degreeU(), surface.knotsU(), surface.domainStart(Direction::U),
+                                          surface.domainEnd(Direction::U)),
+                               segmentsPerSpan(tolerance));
+    mesh.v = initialParameters(spanBreaks(surface.degreeV(), surface.knotsV(), surface.domainStart(Direction::V),
+                                          surface.domainEnd(Direction::V)),
+                               segmentsPerSpan(tolerance));
+    const double depthScale = std::ldexp(1.0, -kMaxRefinementDepth);
+    const double minWidthU = smallestGap(mesh.u) * depthScale;
+    const double minWidthV = smallestGap(mesh.v) * depthScale;
+    for (int round = 0; round < kMaxSurfaceRounds; ++round) {
+        const bool changedU = refiner.refine(Direction::U, mesh.u, mesh.v, minWidthU);
+        const bool changedV = refiner.refine(Direction::V, mesh.v, mesh.u, minWidthV);
+        if (!changedU && !changedV) break;
+    }
+
+    const int rows = mesh.rows();
+    const int cols = mesh.cols();
+    mesh.vertices.reserve(static_cast<size_t>(rows) * cols);
+    mesh.normals.reserve(static_cast<size_t>(rows) * cols);
+    for (double u : mesh.u) {
+        for (double v : mesh.v) {
+            mesh.vertices.push_back(surface.evaluate(u, v));
+            mesh.normals.push_back(surface.normal(u, v));
+        }
+    }
+    // Two triangles per cell; (p00, p10, p11) has face normal ~ Su x Sv, the kernel's normal side.
+    std::vector<Eigen::Vector3d> faceSum(mesh.vertices.size(), Eigen::Vector3d::Zero());
+    for (int r = 0; r + 1 < rows; ++r) {
+        for (int c = 0; c + 1 < cols; ++c) {
+            const int i00 = r * cols + c, i10 = (r + 1) * cols + c, i11 = i10 + 1, i01 = i00 + 1;
+            for (const Eigen::Vector3i& t : {Eigen::Vector3i(i00, i10, i11), Eigen::Vector3i(i00, i11, i01)}) {
+                mesh.triangles.push_back(t);
+                const Eigen::Vector3d n =
+                    (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+                for (int k = 0; k < 3; ++k) faceSum[t[k]] += n;
+            }
+        }
+    }
+    // Where the kernel defines no normal (a point with no tangent plane at all), the average of the
+    // adjacent faces is what shading needs; leave it zero only if the faces are degenerate too.
+    for (size_t i = 0; i < mesh.normals.size(); ++i) {
+        if (mesh.normals[i].squaredNorm() == 0.0 && faceSum[i].squaredNorm() > 0.0) {
+            mesh.normals[i] = faceSum[i].normalized();
+        }
+    }
+    return mesh;
+}
+
+}  // namespace sculptline::solvers

@@ -1,0 +1,204 @@
+// Adaptive tessellation: vertices on the geometry, chord bound by dense sampling, unit and
+// consistent normals (solvers/bspline/tessellation.h).
+#include "solvers/bspline/tessellation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace sculptline::solvers {
+namespace {
+
+/// Vertices are evaluations of the geometry: equal up to rounding of the evaluation itself.
+constexpr double kOnGeometry = 1e-12;
+/// Dense samples between two consecutive vertices for the chord-deviation check.
+constexpr int kDenseSamples = 64;
+/// Unit length of normals, up to rounding.
+constexpr double kUnit = 1e-12;
+
+/// A 3D cubic with a tight turn, an inflection and non-uniform interior knots (millimetres).
+Curve3d wigglyCurve()
+{
+    const std::vector<Eigen::Vector3d> p{{0, 0, 0},    {40, 60, 10}, {80, -50, 20}, {90, 0, 30},
+                                         {95, 2, 30},  {120, 40, 0}, {160, 0, -10}};
+    return Curve3d(3, {0, 0, 0, 0, 0.2, 0.25, 0.7, 1, 1, 1, 1}, p);
+}
+
+/// A bicubic saddle-and-bump patch on 5 x 6 control points over 200 x 200 mm.
+Surface3d bumpySurface()
+{
+    std::vector<Eigen::Vector3d> p;
+    for (int i = 0; i < 5; ++i) {
+        for (int j = 0; j < 6; ++j) {
+            const double x = -100.0 + 50.0 * i, y = -100.0 + 40.0 * j;
+            p.emplace_back(x, y, 30.0 * std::sin(0.03 * x) * std::cos(0.025 * y) + (i == 2 && j == 3 ? 60.0 : 0.0));
+        }
+    }
+    return Surface3d(3, 3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1}, {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1}, 5, 6, p);
+}
+
+double maxDeviation(const Curve3d& c, const Polyline& line)
+{
+    double worst = 0.0;
+    for (size_t i = 0; i + 1 < line.points.size(); ++i) {
+        for (int k = 1; k < kDenseSamples; ++k) {
+            const double t = line.params[i] + (line.params[i + 1] - line.params[i]) * k / kDenseSamples;
+            worst = std::max(worst, distanceToSegment(c.evaluate(t), line.points[i], line.points[i + 1]));
+        }
+    }
+    return worst;
+}
+
+TEST(CurveTessellation, VerticesLieOnTheCurveAndCoverTheDomain)
+{
+    // Given a cubic with uneven spans / When tessellated with default tolerances
+    const Curve3d c = wigglyCurve();
+    const Polyline line = tessellate(c);
+
+    // Then every vertex is C(param), params increase and run from end to end
+    ASSERT_EQ(line.points.size(), line.params.size());
+    ASSERT_GE(line.points.size(), 4u * kMinSegmentsPerSpan + 1);
+    EXPECT_EQ(line.params.front(), c.domainStart());
+    EXPECT_EQ(line.params.back(), c.domainEnd());
+    for (size_t i = 0; i < line.points.size(); ++i) {
+        EXPECT_LT((line.points[i] - c.evaluate(line.params[i])).norm(), kOnGeometry);
+        if (i > 0) EXPECT_GT(line.params[i], line.params[i - 1]);
+    }
+}
+
+TEST(CurveTessellation, ChordDeviationBoundHoldsUnderDenseSampling)
+{
+    const Curve3d c = wigglyCurve();
+    for (double tol : {1.0, 0.1, 0.01}) {
+        // Given an absolute chord tolerance / When tessellated
+        TessellationTolerance t;
+        t.chordTolerance = tol;
+        const Polyline line = tessellate(c, t);
+
+        // Then the curve between two vertices never leaves the chord by more than tol
+        EXPECT_LE(maxDeviation(c, line), tol) << "tolerance " << tol;
+    }
+}
+
+TEST(CurveTessellation, DefaultToleranceIsRelativeToSizeAndTangentsTurnLittle)
+{
+    const Curve3d c = wigglyCurve();
+    const Polyline line = tessellate(c);
+    EXPECT_LE(maxDeviation(c, line), kRelativeChordTolerance * c.controlSize());
+    for (size_t i = 0; i + 1 < line.params.size(); ++i) {
+        const double h = (line.params[i + 1] - line.params[i]) * 1e-7;
+        const Eigen::Vector3d a = c.derivatives(line.params[i] + h, 1)[1];
+        const Eigen::Vector3d b = c.derivatives(line.params[i + 1] - h, 1)[1];
+        EXPECT_LE(std::atan2(a.cross(b).norm(), a.dot(b)), kMaxTurningAngle + 1e-12);
+    }
+}
+
+TEST(CurveTessellation, TighterToleranceGivesMoreVertices)
+{
+    const Curve3d c = wigglyCurve();
+    TessellationTolerance coarse, fine;
+    coarse.chordTolerance = 1.0;
+    fine.chordTolerance = 0.01;
+    EXPECT_LT(tessellate(c, coarse).points.size(), tessellate(c, fine).points.size());
+}
+
+TEST(CurveTessellation, StraightCurveKeepsTheMinimumSampling)
+{
+    // Given a line as a clamped cubic: no refinement is needed anywhere
+    const Curve3d line = makeClampedUniform<3>(3, {{0, 0, 0}, {10, 0, 0}, {20, 0, 0}, {30, 0, 0}, {40, 0, 0}});
+    // Then each of the two spans gets exactly the minimum number of segments
+    EXPECT_EQ(tessellate(line).points.size(), 2u * kMinSegmentsPerSpan + 1);
+}
+
+TEST(CurveTessellation, ClosedCurveEndsWhereItStarts)
+{
+    const Curve3d circleish =
+        makeClosedUniform<3>(3, {{50, 0, 0}, {0, 50, 0}, {-50, 0, 0}, {0, -50, 0}});
+    const Polyline line = tessellate(circleish);
+    EXPECT_LT((line.points.front() - line.points.back()).norm(), kOnGeometry * 100);
+    EXPECT_LE(maxDeviation(circleish, line), kRelativeChordTolerance * circleish.controlSize());
+}
+
+TEST(CurveTessellation, KinkAtAKnotTerminates)
+{
+    // Given a cubic with a triple interior knot at a corner (C0): the tangent jumps there
+    const Curve3d corner(3, {0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1},
+                         {{0, 0, 0}, {10, 0, 0}, {20, 0, 0}, {30, 0, 0}, {30, 10, 0}, {30, 20, 0}, {30, 30, 0}});
+    // When tessellated / Then refinement stays at the minimum (both sides straight), the corner is a vertex
+    const Polyline line = tessellate(corner);
+    EXPECT_EQ(line.points.size(), 2u * kMinSegmentsPerSpan + 1);
+    EXPECT_LT((line.points[kMinSegmentsPerSpan] - Eigen::Vector3d(30, 0, 0)).norm(), 1e-12);
+}
+
+TEST(SurfaceTessellation, GridVerticesLieOnTheSurfaceWithUnitNormals)
+{
+    const Surface3d s = bumpySurface();
+    const GridMesh mesh = tessellate(s);
+
+    ASSERT_EQ(mesh.vertices.size(), static_cast<size_t>(mesh.rows() * mesh.cols()));
+    ASSERT_EQ(mesh.normals.size(), mesh.vertices.size());
+    EXPECT_EQ(mesh.triangles.size(), static_cast<size_t>(2 * (mesh.rows() - 1) * (mesh.cols() - 1)));
+    // At least the fixed sampling: 2 spans in U, 3 in V
+    EXPECT_GE(mesh.rows(), 2 * kMinSegmentsPerSpan + 1);
+    EXPECT_GE(mesh.cols(), 3 * kMinSegmentsPerSpan + 1);
+    for (int r = 0; r < mesh.rows(); ++r) {
+        for (int c = 0; c < mesh.cols(); ++c) {
+            const size_t i = static_cast<size_t>(r) * mesh.cols() + c;
+            EXPECT_LT((mesh.vertices[i] - s.evaluate(mesh.u[r], mesh.v[c])).norm(), kOnGeometry);
+            EXPECT_NEAR(mesh.normals[i].norm(), 1.0, kUnit);
+            EXPECT_LT((mesh.normals[i] - s.normal(mesh.u[r], mesh.v[c])).norm(), kUnit);
+        }
+    }
+}
+
+TEST(SurfaceTessellation, NormalsAgreeWithTriangleWinding)
+{
+    const GridMesh mesh = tessellate(bumpySurface());
+    for (const Eigen::Vector3i& t : mesh.triangles) {
+        const Eigen::Vector3d face =
+            (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
+        for (int k = 0; k < 3; ++k) EXPECT_GT(face.dot(mesh.normals[t[k]]), 0.0);
+    }
+}
+
+TEST(SurfaceTessellation, ChordDeviationBoundHoldsAlongEveryGridLine)
+{
+    const Surface3d s = bumpySurface();
+    TessellationTolerance t;
+    t.chordTolerance = 0.05;
+    const GridMesh mesh = tessellate(s, t);
+    double worst = 0.0;
+    const auto at = [&](int r, int c) { return mesh.vertices[static_cast<size_t>(r) * mesh.cols() + c]; };
+    for (int r = 0; r < mesh.rows(); ++r) {
+        for (int c = 0; c < mesh.cols(); ++c) {
+            for (int k = 1; k < kDenseSamples; ++k) {
+                const double f = static_cast<double>(k) / kDenseSamples;
+                if (r + 1 < mesh.rows()) {
+                    const double u = mesh.u[r] + (mesh.u[r + 1] - mesh.u[r]) * f;
+                    worst = std::max(worst, distanceToSegment(s.evaluate(u, mesh.v[c]), at(r, c), at(r + 1, c)));
+                }
+                if (c + 1 < mesh.cols()) {
+                    const double v = mesh.v[c] + (mesh.v[c + 1] - mesh.v[c]) * f;
+                    worst = std::max(worst, distanceToSegment(s.evaluate(mesh.u[r], v), at(r, c), at(r, c + 1)));
+                }
+            }
+        }
+    }
+    EXPECT_LE(worst, t.chordTolerance);
+}
+
+TEST(SurfaceTessellation, FlatPatchKeepsTheMinimumSampling)
+{
+    // Given a bilinear-flat bicubic (control points on the plane z = 0)
+    std::vector<Eigen::Vector3d> p;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) p.emplace_back(10.0 * i, 10.0 * j, 0.0);
+    const Surface3d flat(3, 3, {0, 0, 0, 0, 1, 1, 1, 1}, {0, 0, 0, 0, 1, 1, 1, 1}, 4, 4, p);
+    const GridMesh mesh = tessellate(flat);
+    EXPECT_EQ(mesh.rows(), kMinSegmentsPerSpan + 1);
+    EXPECT_EQ(mesh.cols(), kMinSegmentsPerSpan + 1);
+    for (const auto& n : mesh.normals) EXPECT_LT((n - Eigen::Vector3d::UnitZ()).norm(), kUnit);
+}
+
+}  // namespace
+}  // namespace sculptline::solvers
