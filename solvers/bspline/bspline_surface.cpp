@@ -56,7 +56,28 @@ BSplineSurface<Dim>::BSplineSurface(int degreeU, int degreeV, KnotVector knotsU,
 template <int Dim>
 typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::evaluate(double u, double v) const
 {
-    return derivatives(u, v, 0)[0][0];
+    if (!std::isfinite(u) || !std::isfinite(v)) throw GeometryError("params: not a finite number");
+    // The NURBS Book A3.5 / A4.3 in homogeneous coordinates, without the derivative machinery.
+    const int p = degree_[0], q = degree_[1];
+    u = std::clamp(u, domainStart(Direction::U), domainEnd(Direction::U));
+    v = std::clamp(v, domainStart(Direction::V), domainEnd(Direction::V));
+    const int uspan = findSpan(p, knots_[0], u);
+    const int vspan = findSpan(q, knots_[1], v);
+    double Nu[kMaxDegree + 1], Nv[kMaxDegree + 1];
+    basisFunctions(uspan, u, p, knots_[0], Nu);
+    basisFunctions(vspan, v, q, knots_[1], Nv);
+    Point sum = Point::Zero();
+    double w = 0.0;
+    for (int r = 0; r <= p; ++r) {
+        const int i = uspan - p + r;
+        for (int c = 0; c <= q; ++c) {
+            const int j = vspan - q + c;
+            const double b = Nu[r] * Nv[c] * weight(i, j);
+            sum += b * point(i, j);
+            w += b;
+        }
+    }
+    return sum / w;
 }
 
 template <int Dim>
