@@ -2,6 +2,7 @@
 // consistent normals (solvers/bspline/tessellation.h).
 #include "solvers/bspline/tessellation.h"
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -62,7 +63,9 @@ TEST(CurveTessellation, VerticesLieOnTheCurveAndCoverTheDomain)
     EXPECT_EQ(line.params.back(), c.domainEnd());
     for (size_t i = 0; i < line.points.size(); ++i) {
         EXPECT_LT((line.points[i] - c.evaluate(line.params[i])).norm(), kOnGeometry);
-        if (i > 0) EXPECT_GT(line.params[i], line.params[i - 1]);
+        if (i > 0) {
+            EXPECT_GT(line.params[i], line.params[i - 1]);
+        }
     }
 }
 
