@@ -1,0 +1,88 @@
+#include "app/gui/gui_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+#include <regex>
+
+namespace sculptline::app {
+namespace {
+
+/// Viewport edge limits: below 16 px nothing is visible; above 8192 px GL drivers refuse.
+constexpr int kMinEdge = 16;
+constexpr int kMaxEdge = 8192;
+
+/// "WxH" -> width, height; an empty string when valid, else CLI11's error message.
+std::string parseSize(const std::string& text, int& width, int& height)
+{
+    static const std::regex pattern("([0-9]{1,5})x([0-9]{1,5})");
+    std::smatch m;
+    if (!std::regex_match(text, m, pattern)) return "--size: expected WxH (e.g. 800x600), got '" + text + "'";
+    width = std::stoi(m[1].str());
+    height = std::stoi(m[2].str());
+    if (width < kMinEdge || height < kMinEdge || width > kMaxEdge || height > kMaxEdge) {
+        return "--size: width and height must be between " + std::to_string(kMinEdge) + " and " +
+               std::to_string(kMaxEdge) + ", got '" + text + "'";
+    }
+    return {};
+}
+
+}  // namespace
+
+ParseResult parseGuiOptions(int argc, const char* const* argv)
+{
+    CLI::App cli{"Sculptline: sketch-based 3D curve and surface modelling.", "sculptline"};
+    GuiOptions options;
+    std::string size;
+    cli.add_option("DOCUMENT", options.document, "Scene document (JSON) to open; default: the default scene");
+    cli.add_option("--size", size, "Size of the 3D viewport in pixels, WxH");
+    cli.add_option("--screenshot", options.screenshot, "Write the rendered viewport to this PNG file");
+    cli.add_flag("--quit", options.quit, "Quit after the other flags have acted");
+    // Accepted by the interface of later issues; refused here rather than misread as a document.
+    std::string replay, save, exportIv, stats;
+    bool listActions = false;
+    cli.add_option("--replay", replay, "Replay a recorded session (not implemented yet)");
+    cli.add_option("--save", save, "Save the document (not implemented yet)");
+    cli.add_option("--export-iv", exportIv, "Export the scene as Open Inventor (not implemented yet)");
+    cli.add_option("--stats", stats, "Write replay latency statistics (not implemented yet)");
+    cli.add_flag("--list-actions", listActions, "List the action names (not implemented yet)");
+
+    ParseResult result;
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::CallForHelp&) {
+        std::cout << cli.help();
+        return result;
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "sculptline: " << e.what() << "\nRun 'sculptline --help' for the flags.\n";
+        result.exitStatus = 2;
+        return result;
+    }
+    for (const char* flag : {"--replay", "--save", "--export-iv", "--stats", "--list-actions"}) {
+        if (cli.count(flag) > 0) {
+            std::cerr << "sculptline: " << flag << " is not implemented yet\n";
+            result.exitStatus = 2;
+            return result;
+        }
+    }
+    if (!size.empty()) {
+        if (const std::string error = parseSize(size, options.width, options.height); !error.empty()) {
+            std::cerr << "sculptline: " << error << "\n";
+            result.exitStatus = 2;
+            return result;
+        }
+    }
+    if (options.document.empty()) options.document = defaultDocumentPath();
+    result.options = options;
+    return result;
+}
+
+std::string defaultDocumentPath()
+{
+    const char* env = std::getenv("SCULPTLINE_DATA_DIR");
+    const std::string dir = (env && *env) ? env : SCULPTLINE_DATA_DIR;
+    return dir + "/default_scene.json";
+}
+
+}  // namespace sculptline::app

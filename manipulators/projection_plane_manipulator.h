@@ -1,0 +1,62 @@
+#pragma once
+// A projection plane the user can move: the plane's look (scene/plane_node.h) carried by a Coin
+// SoJackDragger whose translation, rotation and scale fields drive the plane's transform.
+#include "scene/scene_document.h"
+
+#include <Inventor/sensors/SoNodeSensor.h>
+
+#include <functional>
+
+class SoJackDragger;
+class SoSeparator;
+class SoTransform;
+
+namespace sculptline::manipulators {
+
+/// Dragger size relative to the plane's edge: large enough to grab, small enough not to hide the
+/// plane (the jack's own geometry spans about two units).
+constexpr double kDraggerScale = 0.12;
+
+/// Owns (ref()s) a graph
+///   SoSeparator "ProjectionPlane" {
+///     SoTransform placement      plane origin and normal from the document
+///     SoScale s                  dragger size (kDraggerScale * plane size)
+///     SoJackDragger
+///     SoTransform motion         fields connected from the dragger's translation/rotation/scaleFactor
+///     SoScale 1/s                undoes s for the plane, so the plane moves with the dragger
+///     plane geometry }
+/// Dragger fields are the public API: setting them (from code, a replay, or the mouse) moves the
+/// plane through the field connections; a node sensor reports every move to the callback.
+class ProjectionPlaneManipulator {
+public:
+    explicit ProjectionPlaneManipulator(const scene::PlaneSpec& plane);
+    ~ProjectionPlaneManipulator();
+    ProjectionPlaneManipulator(const ProjectionPlaneManipulator&) = delete;
+    ProjectionPlaneManipulator& operator=(const ProjectionPlaneManipulator&) = delete;
+
+    /// The graph root; add it to a scene (the scene refs it too; this object keeps its own ref).
+    SoSeparator* root() const { return root_; }
+    SoJackDragger* dragger() const { return dragger_; }
+    /// The transform the dragger drives (in dragger units: see the graph above).
+    SoTransform* motion() const { return motion_; }
+
+    /// The plane where it is now, in model coordinates (origin, unit normal, edge length).
+    scene::PlaneSpec plane() const;
+
+    /// Called (from Coin's delay queue, once per batch of field changes) after the plane moved.
+    void setMovedCallback(std::function<void()> callback) { moved_ = std::move(callback); }
+
+private:
+    static void motionChanged(void* self, SoSensor* sensor);
+
+    scene::PlaneSpec initial_;
+    double draggerScale_;
+    SoSeparator* root_ = nullptr;
+    SoTransform* placement_ = nullptr;
+    SoJackDragger* dragger_ = nullptr;
+    SoTransform* motion_ = nullptr;
+    SoNodeSensor sensor_;
+    std::function<void()> moved_;
+};
+
+}  // namespace sculptline::manipulators

@@ -1,0 +1,83 @@
+#include "scene/geometry_nodes.h"
+
+#include "scene/eigen_coin.h"
+#include "solvers/bspline/tessellation.h"
+
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoNormal.h>
+#include <Inventor/nodes/SoNormalBinding.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
+
+namespace sculptline::scene {
+
+SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
+{
+    const solvers::Polyline line = solvers::tessellate(curve);
+
+    auto* root = new SoSeparator;
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    root->addChild(lightModel);
+    auto* color = new SoBaseColor;
+    color->rgb = style.color;
+    root->addChild(color);
+    auto* drawStyle = new SoDrawStyle;
+    drawStyle->lineWidth = style.lineWidth;
+    root->addChild(drawStyle);
+    auto* coords = new SoCoordinate3;
+    setPoints(coords->point, line.points);
+    root->addChild(coords);
+    auto* lines = new SoLineSet;
+    lines->numVertices.setValue(static_cast<int32_t>(line.points.size()));
+    root->addChild(lines);
+    return root;
+}
+
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
+{
+    const solvers::GridMesh mesh = solvers::tessellate(surface);
+
+    auto* root = new SoSeparator;
+    auto* material = new SoMaterial;
+    material->diffuseColor = style.color;
+    material->ambientColor = style.color * 0.3f;
+    material->specularColor = SbColor(0.35f, 0.35f, 0.35f);
+    material->shininess = style.shininess;
+    root->addChild(material);
+    // UNKNOWN_SHAPE_TYPE makes Coin light both sides: an open patch shows its back to the camera.
+    auto* hints = new SoShapeHints;
+    hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+    hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
+    root->addChild(hints);
+    auto* coords = new SoCoordinate3;
+    setPoints(coords->point, mesh.vertices);
+    root->addChild(coords);
+    auto* normals = new SoNormal;
+    setPoints(normals->vector, mesh.normals);
+    root->addChild(normals);
+    auto* binding = new SoNormalBinding;
+    // With normalIndex left at its default, PER_VERTEX_INDEXED reuses coordIndex for the normals.
+    binding->value = SoNormalBinding::PER_VERTEX_INDEXED;
+    root->addChild(binding);
+    auto* faces = new SoIndexedFaceSet;
+    faces->coordIndex.setNum(static_cast<int>(mesh.triangles.size() * 4));
+    int32_t* index = faces->coordIndex.startEditing();
+    for (const Eigen::Vector3i& t : mesh.triangles) {
+        *index++ = t[0];
+        *index++ = t[1];
+        *index++ = t[2];
+        *index++ = SO_END_FACE_INDEX;
+    }
+    faces->coordIndex.finishEditing();
+    root->addChild(faces);
+    return root;
+}
+
+}  // namespace sculptline::scene

@@ -1,0 +1,105 @@
+#include "scene/plane_node.h"
+
+#include "scene/eigen_coin.h"
+
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoFaceSet.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoNormal.h>
+#include <Inventor/nodes/SoNormalBinding.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoShapeHints.h>
+#include <Inventor/nodes/SoTransform.h>
+
+#include <vector>
+
+namespace sculptline::scene {
+namespace {
+
+const SbColor kPlaneColor(0.55f, 0.72f, 0.95f);
+/// Mostly see-through: the plane is a drawing aid and must not hide the geometry behind it.
+constexpr float kPlaneTransparency = 0.8f;
+
+SoSeparator* makeQuad(float half)
+{
+    auto* quad = new SoSeparator;
+    auto* material = new SoMaterial;
+    material->diffuseColor = kPlaneColor;
+    material->transparency = kPlaneTransparency;
+    quad->addChild(material);
+    auto* hints = new SoShapeHints;
+    hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+    hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
+    quad->addChild(hints);
+    auto* coords = new SoCoordinate3;
+    const SbVec3f corners[4] = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
+    coords->point.setValues(0, 4, corners);
+    quad->addChild(coords);
+    auto* normal = new SoNormal;
+    normal->vector.setValue(SbVec3f(0, 0, 1));
+    quad->addChild(normal);
+    auto* binding = new SoNormalBinding;
+    binding->value = SoNormalBinding::OVERALL;
+    quad->addChild(binding);
+    auto* face = new SoFaceSet;
+    face->numVertices.setValue(4);
+    quad->addChild(face);
+    return quad;
+}
+
+SoSeparator* makeGridLines(float half)
+{
+    std::vector<SbVec3f> endpoints;
+    for (int k = 0; k <= kPlaneGridCells; ++k) {
+        const float t = -half + 2.0f * half * static_cast<float>(k) / kPlaneGridCells;
+        endpoints.insert(endpoints.end(), {SbVec3f(t, -half, 0), SbVec3f(t, half, 0), SbVec3f(-half, t, 0), SbVec3f(half, t, 0)});
+    }
+    auto* lines = new SoSeparator;
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    lines->addChild(lightModel);
+    auto* color = new SoBaseColor;
+    color->rgb = kPlaneColor * 0.8f;
+    lines->addChild(color);
+    auto* coords = new SoCoordinate3;
+    coords->point.setValues(0, static_cast<int>(endpoints.size()), endpoints.data());
+    lines->addChild(coords);
+    auto* set = new SoLineSet;
+    const std::vector<int32_t> counts(endpoints.size() / 2, 2);
+    set->numVertices.setValues(0, static_cast<int>(counts.size()), counts.data());
+    lines->addChild(set);
+    return lines;
+}
+
+}  // namespace
+
+SoSeparator* makePlaneGeometry(double size)
+{
+    const float half = static_cast<float>(size / 2.0);
+    auto* root = new SoSeparator;
+    root->setName("PlaneGeometry");
+    root->addChild(makeGridLines(half));
+    root->addChild(makeQuad(half));
+    return root;
+}
+
+SoTransform* makePlanePlacement(const PlaneSpec& plane)
+{
+    auto* placement = new SoTransform;
+    placement->translation = toSb(plane.origin);
+    placement->rotation = rotationFromZ(plane.normal);
+    return placement;
+}
+
+SoSeparator* makePlaneNode(const PlaneSpec& plane)
+{
+    auto* root = new SoSeparator;
+    root->addChild(makePlanePlacement(plane));
+    root->addChild(makePlaneGeometry(plane.size));
+    return root;
+}
+
+}  // namespace sculptline::scene

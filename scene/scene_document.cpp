@@ -1,0 +1,94 @@
+#include "scene/scene_document.h"
+
+#include "solvers/io/geometry_json.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace sculptline::scene {
+namespace io = solvers::io;
+using nlohmann::json;
+
+namespace {
+
+/// Grid lines per edge beyond which a grid is a fill, not lines (and a typo like spacing 0.0001).
+constexpr double kMaxGridLines = 2000.0;
+
+double positive(const json& j, const std::string& path)
+{
+    const double v = io::numberFromJson(j, path);
+    if (!(v > 0.0)) throw io::InputError(path + ": must be positive");
+    return v;
+}
+
+/// The array member `key` of j, or an empty array when absent.
+const json& optionalArray(const json& j, const std::string& key)
+{
+    static const json kEmpty = json::array();
+    const auto it = j.find(key);
+    if (it == j.end()) return kEmpty;
+    if (!it->is_array()) throw io::InputError(key + ": must be an array");
+    return *it;
+}
+
+PlaneSpec planeFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_object()) throw io::InputError(path + ": must be a JSON object");
+    PlaneSpec p;
+    p.origin = io::pointFromJson(io::member(j, "origin", path), path + ".origin");
+    const Eigen::Vector3d n = io::pointFromJson(io::member(j, "normal", path), path + ".normal");
+    if (!(n.norm() > 0.0)) throw io::InputError(path + ".normal: must not be zero");
+    p.normal = n.normalized();
+    p.size = positive(io::member(j, "size", path), path + ".size");
+    return p;
+}
+
+GridSpec gridFromJson(const json& j)
+{
+    if (!j.is_object()) throw io::InputError("grid: must be a JSON object");
+    GridSpec g;
+    g.size = positive(io::member(j, "size", "grid"), "grid.size");
+    g.spacing = positive(io::member(j, "spacing", "grid"), "grid.spacing");
+    if (g.spacing > g.size) throw io::InputError("grid.spacing: must not exceed grid.size");
+    if (g.size / g.spacing > kMaxGridLines) throw io::InputError("grid.spacing: too small for grid.size (over 2000 lines)");
+    return g;
+}
+
+}  // namespace
+
+SceneDocument documentFromJson(const json& j)
+{
+    if (!j.is_object()) throw io::InputError("document: must be a JSON object");
+    SceneDocument doc;
+    if (const auto it = j.find("grid"); it != j.end()) doc.grid = gridFromJson(*it);
+    const json& planes = optionalArray(j, "planes");
+    for (size_t i = 0; i < planes.size(); ++i) {
+        doc.planes.push_back(planeFromJson(planes[i], "planes[" + std::to_string(i) + "]"));
+    }
+    const json& curves = optionalArray(j, "curves");
+    for (size_t i = 0; i < curves.size(); ++i) {
+        doc.curves.push_back(io::curveFromJson(curves[i], "curves[" + std::to_string(i) + "]"));
+    }
+    const json& surfaces = optionalArray(j, "surfaces");
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], "surfaces[" + std::to_string(i) + "]"));
+    }
+    return doc;
+}
+
+SceneDocument loadDocument(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw io::InputError(path + ": cannot open file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw io::InputError(path + ": cannot read file");
+    try {
+        return documentFromJson(io::parseJson(text.str()));
+    } catch (const io::InputError& e) {
+        throw io::InputError(path + ": " + e.what());
+    }
+}
+
+}  // namespace sculptline::scene

@@ -1,0 +1,43 @@
+#pragma once
+// The document a scene is built from: projection planes, a ground grid, curves and surfaces, read
+// from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
+// its error messages are testable on their own.
+#include "solvers/bspline/bspline_surface.h"
+
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace sculptline::scene {
+
+/// A square projection plane.
+struct PlaneSpec {
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< centre, model units
+    Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit after reading
+    double size = 200.0;  ///< edge length, model units, > 0
+};
+
+/// The ground grid in the plane z = 0, centred on the origin.
+struct GridSpec {
+    double size = 200.0;  ///< edge length, model units, > 0
+    double spacing = 10.0;  ///< distance between lines, model units, in (0, size]
+};
+
+struct SceneDocument {
+    GridSpec grid;
+    std::vector<PlaneSpec> planes;
+    std::vector<solvers::Curve3d> curves;
+    std::vector<solvers::Surface3d> surfaces;
+};
+
+/// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every
+/// member is optional (absent = default grid / none), curves and surfaces use the JSON geometry of
+/// ../shared/interfaces.md.
+/// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
+SceneDocument documentFromJson(const nlohmann::json& j);
+
+/// Reads and parses the file at `path`.
+/// @throws solvers::io::InputError whose message starts with the path ("x.json: cannot open file").
+SceneDocument loadDocument(const std::string& path);
+
+}  // namespace sculptline::scene
