@@ -1,0 +1,34 @@
+#pragma once
+// Cholesky factorization of a symmetric positive definite band matrix, O(n w^2) time and O(n w)
+// memory (Golub & Van Loan, Matrix Computations, 4th ed., Alg. 4.3.5 "band Cholesky").
+// The least-squares B-spline normal matrix of degree p has half-bandwidth p (de Boor,
+// A Practical Guide to Splines, ch. XIV: B_i B_j vanishes for |i - j| > p).
+#include <Eigen/Core>
+#include <vector>
+
+namespace sculptline::solvers::stroke {
+
+/// A symmetric band matrix stored by its lower band: entry (i, i - d), d = 0..bandwidth.
+class BandMatrix {
+public:
+    BandMatrix(int size, int bandwidth) : n_(size), w_(bandwidth), a_(static_cast<size_t>(size) * (bandwidth + 1), 0.0) {}
+    int size() const { return n_; }
+    int bandwidth() const { return w_; }
+    /// Entry (i, j) of the lower triangle, |i - j| <= bandwidth, j <= i.
+    double& at(int i, int j) { return a_[static_cast<size_t>(i) * (w_ + 1) + (i - j)]; }
+    double at(int i, int j) const { return a_[static_cast<size_t>(i) * (w_ + 1) + (i - j)]; }
+    /// Adds v to (i, j) of the symmetric matrix (either triangle).
+    void add(int i, int j, double v) { i >= j ? at(i, j) += v : at(j, i) += v; }
+
+    /// Factors in place into L (L L^T = A). Returns false if a pivot is not positive.
+    bool factor();
+    /// Solves A X = B for the factored matrix; B has one row per unknown, any number of columns.
+    void solveInPlace(Eigen::MatrixXd& b) const;
+
+private:
+    int n_;
+    int w_;
+    std::vector<double> a_;
+};
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,200 @@
+#include "solvers/stroke/conditioning.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+std::string at(const std::string& field, size_t i) { return "stroke." + field + "[" + std::to_string(i) + "]"; }
+
+void validate(const Stroke& s)
+{
+    if (s.points.empty()) throw GeometryError("stroke.points: empty stroke, at least two distinct points are needed");
+    for (size_t i = 0; i < s.points.size(); ++i) {
+        if (!s.points[i].allFinite()) throw GeometryError(at("points", i) + ": not a finite number");
+    }
+    if (!s.times.empty() && s.times.size() != s.points.size()) {
+        throw GeometryError("stroke.times: " + std::to_string(s.times.size()) + " values for " +
+                            std::to_string(s.points.size()) + " points");
+    }
+    for (size_t i = 0; i < s.times.size(); ++i) {
+        if (!std::isfinite(s.times[i])) throw GeometryError(at("times", i) + ": not a finite number");
+    }
+    if (!s.pressure.empty() && s.pressure.size() != s.points.size()) {
+        throw GeometryError("stroke.pressure: " + std::to_string(s.pressure.size()) + " values for " +
+                            std::to_string(s.points.size()) + " points");
+    }
+    for (size_t i = 0; i < s.pressure.size(); ++i) {
+        if (!std::isfinite(s.pressure[i])) throw GeometryError(at("pressure", i) + ": not a finite number");
+    }
+}
+
+// Closest pair between the first and the last `window` points, searched with a stride that keeps
+// the work bounded (at most ~400 x 400 distance evaluations).
+struct EndPair {
+    int head = 0;
+    int tail = 0;
+    double gap = std::numeric_limits<double>::infinity();
+};
+
+EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
+{
+    const int n = cs.size();
+    const double total = cs.arc.back();
+    int headEnd = 0;
+    while (headEnd + 1 < n && cs.arc[headEnd + 1] <= windowLength) ++headEnd;
+    int tailStart = n - 1;
+    while (tailStart - 1 > headEnd && total - cs.arc[tailStart - 1] <= windowLength) --tailStart;
+    const int strideH = std::max(1, (headEnd + 1) / 400);
+    const int strideT = std::max(1, (n - tailStart) / 400);
+    EndPair best;
+    for (int i = 0; i <= headEnd; i += strideH) {
+        for (int j = n - 1; j >= tailStart; j -= strideT) {
+            const double d = (cs.points[i] - cs.points[j]).norm();
+            if (d < best.gap) best = {i, j, d};
+        }
+    }
+    return best;
+}
+
+template <typename T>
+void keepRange(std::vector<T>& v, int first, int last)
+{
+    v = std::vector<T>(v.begin() + first, v.begin() + last + 1);
+}
+
+}  // namespace
+
+double ConditionedStroke::length() const
+{
+    if (points.empty()) return 0.0;
+    return arc.back() + (closed ? (points.back() - points.front()).norm() : 0.0);
+}
+
+double boundingDiagonal(const std::vector<Eigen::Vector3d>& points)
+{
+    if (points.size() < 2) return 0.0;
+    Eigen::Vector3d lo = points[0], hi = points[0];
+    for (const auto& p : points) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    return (hi - lo).norm();
+}
+
+void updateArcLength(ConditionedStroke& cs)
+{
+    cs.arc.assign(cs.points.size(), 0.0);
+    for (size_t i = 1; i < cs.points.size(); ++i) cs.arc[i] = cs.arc[i - 1] + (cs.points[i] - cs.points[i - 1]).norm();
+}
+
+ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOptions& options)
+{
+    validate(stroke);
+    ConditionedStroke cs;
+    cs.diagonal = boundingDiagonal(stroke.points);
+    // Exact duplicates differ by rounding only; a stroke whose extent is below this fraction of its
+    // largest coordinate has no shape to fit.
+    const double scale = stroke.points[0].cwiseAbs().maxCoeff() + cs.diagonal;
+    if (!(cs.diagonal > 1e-12 * scale) || cs.diagonal == 0.0) {
+        throw GeometryError("stroke.points: all points coincide, a curve needs at least two distinct points");
+    }
+
+    bool timed = !stroke.times.empty();
+    for (size_t i = 1; timed && i < stroke.times.size(); ++i) {
+        if (stroke.times[i] < stroke.times[i - 1]) {
+            timed = false;
+            cs.warnings.push_back("stroke.times: decreasing at index " + std::to_string(i) +
+                                  ", timestamps ignored and speed estimated from sample spacing");
+        }
+    }
+    if (timed && !(stroke.times.back() > stroke.times.front())) timed = false;
+    cs.timed = timed;
+
+    // Duplicate and near-coincident samples (seed 003 §3.1, first filtering step). The merge
+    // distance is at least length / maxSamples, so the conditioned count is bounded by ~maxSamples
+    // for any input size (a million-sample stroke is thinned in one linear pass).
+    double rawLength = 0.0;
+    for (size_t i = 1; i < stroke.points.size(); ++i) rawLength += (stroke.points[i] - stroke.points[i - 1]).norm();
+    const double minDist =
+        std::max(options.minSpacing * cs.diagonal, rawLength / std::max(16, options.maxSamples));
+    const int last = static_cast<int>(stroke.points.size()) - 1;
+    for (int i = 0; i <= last; ++i) {
+        const Eigen::Vector3d& p = stroke.points[i];
+        if (!cs.points.empty() && (p - cs.points.back()).norm() < minDist) {
+            if (i != last) continue;
+            if (cs.points.size() > 1) {  // the last sample replaces a near-coincident predecessor
+                cs.points.pop_back();
+                cs.source.pop_back();
+                cs.time.pop_back();
+            } else {
+                continue;
+            }
+        }
+        cs.points.push_back(p);
+        cs.source.push_back(i);
+        cs.time.push_back(timed ? stroke.times[i] : static_cast<double>(i));
+    }
+    if (cs.points.size() < 2) {
+        throw GeometryError("stroke.points: fewer than two distinct points after removing duplicates");
+    }
+    updateArcLength(cs);
+
+    // Closure: the two ends meet (or overshoot) within closeGap of the length. An overshoot past
+    // the start is trimmed at the closest pair of points between the head and the tail.
+    if (options.closure != Closure::Open && cs.size() >= 6) {
+        const double total = cs.arc.back();
+        const EndPair c = closestEnds(cs, 0.15 * total);
+        const bool meets = c.gap <= options.closeGap * total && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
+        if (meets || options.closure == Closure::Closed) {
+            cs.closed = true;
+            const EndPair cut = meets ? c : EndPair{0, cs.size() - 1, 0.0};
+            if (cut.head > 0 || cut.tail < cs.size() - 1) {
+                cs.warnings.push_back("stroke: loop overshoot trimmed to samples " + std::to_string(cs.source[cut.head]) +
+                                      ".." + std::to_string(cs.source[cut.tail]));
+                keepRange(cs.points, cut.head, cut.tail);
+                keepRange(cs.source, cut.head, cut.tail);
+                keepRange(cs.time, cut.head, cut.tail);
+            }
+            // The two ends of a loop are one place; keep one of them if they nearly coincide.
+            if (cs.size() > 3 && (cs.points.back() - cs.points.front()).norm() < minDist) {
+                cs.points.pop_back();
+                cs.source.pop_back();
+                cs.time.pop_back();
+            }
+            updateArcLength(cs);
+        }
+    } else if (options.closure == Closure::Closed) {
+        cs.closed = true;
+    }
+    return cs;
+}
+
+void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixed, int passes)
+{
+    const int n = cs.size();
+    if (n < 3 || passes <= 0) return;
+    std::vector<char> hold(n, 0);
+    for (int f : fixed) hold[f] = 1;
+    if (!cs.closed) hold[0] = hold[n - 1] = 1;
+    std::vector<Eigen::Vector3d> next(n);
+    for (int pass = 0; pass < passes; ++pass) {
+        for (int i = 0; i < n; ++i) {
+            if (hold[i]) {
+                next[i] = cs.points[i];
+                continue;
+            }
+            const int a = i == 0 ? n - 1 : i - 1;
+            const int b = i == n - 1 ? 0 : i + 1;
+            next[i] = (cs.points[a] + cs.points[i] + cs.points[b]) / 3.0;
+        }
+        cs.points.swap(next);
+    }
+    updateArcLength(cs);
+}
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,30 @@
+#pragma once
+// Input conditioning (thesis §4.1; seed 003 §3.1 "input data filtering"): validation, removal of
+// duplicate and near-coincident samples, timestamp repair, loop closure, and a mean filter that
+// removes digitizer noise without moving corners.
+#include "solvers/stroke/stroke.h"
+
+namespace sculptline::solvers::stroke {
+
+/// Validates and de-duplicates a raw stroke, detects whether it closes on itself (trimming an
+/// overshoot past the start), and fills the cumulative chord lengths. No smoothing yet: corners
+/// must be found on the unsmoothed points first (see smoothPreservingCorners).
+/// @throws GeometryError naming the field ("stroke.points", "stroke.times[4]", ...) for an empty
+///         stroke, non-finite numbers, mismatched array sizes, or fewer than two distinct points.
+/// @note Timestamps that decrease are not an error: they are ignored (speed is then estimated
+///       from sample spacing) and a warning is recorded.
+ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOptions& options = {});
+
+/// `passes` rounds of the 3-point mean filter p_i <- (p_{i-1} + p_i + p_{i+1}) / 3 over the
+/// conditioned points (cyclically for a closed stroke). The points listed in `fixed` (corners)
+/// and the ends of an open stroke keep their positions, so the filter rounds no corner off.
+/// Recomputes the cumulative chord lengths.
+void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixed, int passes);
+
+/// Recomputes cs.arc from cs.points.
+void updateArcLength(ConditionedStroke& cs);
+
+/// Bounding-box diagonal of a point set (0 for fewer than two points).
+double boundingDiagonal(const std::vector<Eigen::Vector3d>& points);
+
+}  // namespace sculptline::solvers::stroke

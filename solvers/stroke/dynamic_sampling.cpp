@@ -1,0 +1,42 @@
+#include "solvers/stroke/dynamic_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::solvers::stroke {
+
+double samplingThreshold(double speed, double averageSpeed, double unit, const SamplingOptions& o)
+{
+    if (!(averageSpeed > 0.0)) return unit;
+    const double ratio = speed / averageSpeed;
+    if (ratio < 1.0) return std::round(o.slowFactor * ratio + 0.5) * unit;  // eq. 4-2
+    return o.fastFactor * ratio * unit;                                    // eq. 4-3
+}
+
+std::vector<int> dynamicThresholdSamples(const ConditionedStroke& cs, const StrokeFeatures& f,
+                                         const std::vector<int>& keep, int rawCount, const SamplingOptions& o)
+{
+    const int n = cs.size();
+    std::vector<char> forced(n, 0);
+    forced[0] = forced[n - 1] = 1;
+    for (int k : keep) forced[k] = 1;
+    const double unit = std::max(cs.length() / std::max(1, rawCount - 1), o.minUnit * cs.diagonal);
+
+    std::vector<int> out;
+    out.push_back(0);
+    double since = 0.0;  // path length since the last sample taken
+    for (int i = 1; i < n; ++i) {
+        since += cs.arc[i] - cs.arc[i - 1];
+        const double m = samplingThreshold(f.speed[i], f.averageSpeed, unit, o);
+        if (forced[i] || since >= m) {
+            // A forced sample (a corner, the end) replaces a sample taken just before it if the two
+            // would be closer than one unit: the corner matters more than the regular sample.
+            if (forced[i] && !forced[out.back()] && since < unit && out.size() > 1) out.pop_back();
+            out.push_back(i);
+            since = 0.0;
+        }
+    }
+    return out;
+}
+
+}  // namespace sculptline::solvers::stroke

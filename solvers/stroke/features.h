@@ -1,0 +1,48 @@
+#pragma once
+// Per-sample stroke features and corner detection (thesis §4.1.1, eq. 4-1; seed 003 §3.2).
+#include "solvers/stroke/stroke.h"
+
+namespace sculptline::solvers::stroke {
+
+/// Eq. 4-1 as we read it (the formula is lost in the thesis text; the prose defines its terms):
+///   d_n = phi(angle of P_{n+k} - P_{n-k})                      direction, phi wraps to (-pi, pi]
+///   C_n = phi(angle(P_n - P_{n-k}, P_{n+k} - P_n)) / D(n-k, n+k)  curvature = turning / path length
+/// with D(n-k, n+k) the path length between the neighbours. The thesis fixes k = 2 for tablet
+/// samples a pixel or two apart; our samples are thinned to >= 0.2 % of the diagonal apart, and a
+/// jitter of that order over only two samples would turn the direction by tens of degrees, so k
+/// starts at 2 and grows until each side of the neighbourhood is `neighbourhood` long.
+struct FeatureOptions {
+    int k = 2;                     ///< minimum neighbourhood in samples (thesis: 2)
+    double neighbourhood = 0.015;  ///< minimum one-sided neighbourhood length / stroke diagonal
+};
+
+struct StrokeFeatures {
+    std::vector<double> direction;  ///< d_n, radians in (-pi, pi], in the xy-plane
+    std::vector<double> turning;    ///< turning angle over the neighbourhood, radians in [0, pi]
+    std::vector<double> wideTurning;///< the same over a neighbourhood twice as long (sharpness test)
+    std::vector<double> curvature;  ///< C_n, 1 / model unit
+    std::vector<double> speed;      ///< S_n = D(n-k, n+k) / elapsed time (model units per second or per sample)
+    std::vector<int> lo, hi;        ///< neighbourhood ends n-k, n+k (indices; cyclic for closed strokes)
+    double averageSpeed = 0.0;      ///< S_avg = length / duration (thesis §4.1.1)
+};
+
+StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions& options = {});
+
+/// Corner detection combining the three cues of thesis §4.1.1 (curvature, direction change,
+/// slowing down; cf. Sezgin et al. 2001 "Sketch based interfaces"):
+/// a sample is a corner candidate when its turning angle is at least `strongAngle`, or at least
+/// `slowAngle` while the pen moved slower than `slowFraction` of the average speed; the turn must
+/// also be sharp (concentrated: turning / wideTurning >= `sharpness`, a smooth bend doubles its
+/// turning when the window doubles, a corner does not). Candidates are thinned to the local maxima
+/// of turning within their neighbourhood. Ends of an open stroke are never corners.
+struct CornerOptions {
+    double strongAngle = 0.96;   ///< 55 degrees
+    double slowAngle = 0.52;     ///< 30 degrees, accepted only where the hand slowed down
+    double slowFraction = 0.55;  ///< "slow" = speed below this fraction of S_avg
+    double sharpness = 0.62;     ///< turning / wideTurning; 0.5 for a circular arc, 1 for a corner
+};
+
+/// Indices of the corner samples, increasing.
+std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures& f, const CornerOptions& options = {});
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,369 @@
+#include "solvers/stroke/lsq_fit.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/stroke/banded_cholesky.h"
+
+#include <Eigen/Sparse>
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+constexpr int kDegree = 3;
+using Vec3 = Eigen::Vector3d;
+
+double safeDiv(double a, double b) { return b == 0.0 ? 0.0 : a / b; }  // 0/0 := 0 for repeated knots
+
+// The spline being fitted: distinct breakpoints (open: 0 = b_0 < .. < b_s = 1; closed: 0 = b_0 < .. <
+// b_{N-1} < 1, period 1), the full knot vector and the (unwrapped) control points.
+struct Spline {
+    bool closed = false;
+    std::vector<double> breaks;
+    KnotVector knots;
+    std::vector<Vec3> ctrl;
+
+    int unknowns() const { return closed ? static_cast<int>(breaks.size()) : static_cast<int>(breaks.size()) + 2; }
+    void makeKnots()
+    {
+        knots.clear();
+        if (!closed) {
+            knots.assign(kDegree, 0.0);
+            knots.insert(knots.end(), breaks.begin(), breaks.end());
+            knots.insert(knots.end(), kDegree, 1.0);
+            return;
+        }
+        // Periodic: U_i = b_{(i-3) mod N} + floor((i-3)/N), i = 0..N+6, so that U_3 = b_0 = 0 and U_{N+3} = 1.
+        const int n = static_cast<int>(breaks.size());
+        for (int i = 0; i <= n + 2 * kDegree; ++i) {
+            const int j = i - kDegree;
+            const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
+            knots.push_back(breaks[j - q * n] + q);
+        }
+    }
+    double wrap(double u) const { return closed ? u - std::floor(u) : std::clamp(u, 0.0, 1.0); }
+    // Point and derivatives at u.
+    void eval(double u, Vec3 out[3]) const
+    {
+        u = wrap(u);
+        const int span = findSpan(kDegree, knots, u);
+        double d[3][4];
+        cubicBasisDerivatives(knots, span, u, d);
+        for (int k = 0; k < 3; ++k) {
+            out[k].setZero();
+            for (int j = 0; j < 4; ++j) out[k] += d[k][j] * ctrl[span - kDegree + j];
+        }
+    }
+    int spanOf(double u) const  // index into breaks of the span holding u
+    {
+        u = wrap(u);
+        const auto it = std::upper_bound(breaks.begin(), breaks.end(), u);
+        return std::max(0, static_cast<int>(it - breaks.begin()) - 1);
+    }
+};
+
+// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
+double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi)
+{
+    Vec3 c[3];
+    s.eval(u, c);
+    const Vec3 r = c[0] - x;
+    const double f = c[1].dot(r);
+    const double df = c[2].dot(r) + c[1].squaredNorm();
+    if (!(df > 0.0)) return u;
+    return std::clamp(u - f / df, lo, hi);
+}
+
+double distanceAt(const Spline& s, const Vec3& x, double u)
+{
+    Vec3 c[3];
+    s.eval(u, c);
+    return (c[0] - x).norm();
+}
+
+// Least squares with the fairing term; open curves keep P_0 = X_first and P_n = X_last fixed
+// (The NURBS Book eqs. 9.63-9.67: the fixed points move to the right-hand side).
+void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+               double fairing)
+{
+    const int nCtrl = s.unknowns();
+    const int nFree = nCtrl - 2;
+    const Vec3 first = X[S.front()], last = X[S.back()];
+    BandMatrix a(nFree, kDegree);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nFree, 3);
+    double basis[kDegree + 1];
+    for (size_t k = 1; k + 1 < S.size(); ++k) {
+        const int span = findSpan(kDegree, s.knots, u[k]);
+        basisFunctions(span, u[k], kDegree, s.knots, basis);
+        Vec3 rhs = X[S[k]];
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = span - kDegree + q;
+            if (i == 0) rhs -= basis[q] * first;
+            if (i == nCtrl - 1) rhs -= basis[q] * last;
+        }
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = span - kDegree + q - 1;  // unknown index
+            if (i < 0 || i >= nFree) continue;
+            b.row(i) += basis[q] * rhs.transpose();
+            for (int r = 0; r <= q; ++r) {
+                const int j = span - kDegree + r - 1;
+                if (j >= 0) a.add(i, j, basis[q] * basis[r]);
+            }
+        }
+    }
+    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / nCtrl);
+    for (int c = 1; c + 1 < nCtrl; ++c) {  // rows (1, -2, 1) on control points c-1, c, c+1
+        const int idx[3] = {c - 1, c, c + 1};
+        const double w[3] = {1.0, -2.0, 1.0};
+        Vec3 fixedPart = Vec3::Zero();
+        for (int t = 0; t < 3; ++t) {
+            if (idx[t] == 0) fixedPart += w[t] * first;
+            if (idx[t] == nCtrl - 1) fixedPart += w[t] * last;
+        }
+        for (int t = 0; t < 3; ++t) {
+            const int i = idx[t] - 1;
+            if (i < 0 || i >= nFree) continue;
+            b.row(i) -= lambda * w[t] * fixedPart.transpose();
+            for (int r = 0; r <= t; ++r) {
+                const int j = idx[r] - 1;
+                if (j >= 0) a.add(i, j, lambda * w[t] * w[r]);
+            }
+        }
+    }
+    if (!a.factor()) throw GeometryError("stroke: least-squares system is not positive definite");
+    a.solveInPlace(b);
+    s.ctrl.assign(nCtrl, Vec3::Zero());
+    s.ctrl.front() = first;
+    s.ctrl.back() = last;
+    for (int i = 0; i < nFree; ++i) s.ctrl[i + 1] = b.row(i).transpose();
+}
+
+// Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal
+// matrix is cyclic-banded, factored by a sparse LDL^T (fill-in stays O(N) for a cyclic band).
+void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                 double fairing)
+{
+    const int n = s.unknowns();
+    std::vector<Eigen::Triplet<double>> trip;
+    trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 3);
+    double basis[kDegree + 1];
+    for (size_t k = 0; k < S.size(); ++k) {
+        const double uk = s.wrap(u[k]);
+        const int span = findSpan(kDegree, s.knots, uk);
+        basisFunctions(span, uk, kDegree, s.knots, basis);
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = (span - kDegree + q) % n;
+            b.row(i) += basis[q] * X[S[k]].transpose();
+            for (int r = 0; r <= kDegree; ++r) trip.emplace_back(i, (span - kDegree + r) % n, basis[q] * basis[r]);
+        }
+    }
+    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
+    for (int c = 0; c < n; ++c) {
+        const int idx[3] = {(c + n - 1) % n, c, (c + 1) % n};
+        const double w[3] = {1.0, -2.0, 1.0};
+        for (int t = 0; t < 3; ++t)
+            for (int r = 0; r < 3; ++r) trip.emplace_back(idx[t], idx[r], lambda * w[t] * w[r]);
+    }
+    Eigen::SparseMatrix<double> a(n, n);
+    a.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+    if (ldlt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
+    const Eigen::MatrixXd x = ldlt.solve(b);
+    s.ctrl.resize(n + kDegree);
+    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = x.row(i % n).transpose();
+}
+
+void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+           double fairing)
+{
+    s.makeKnots();
+    if (s.closed) solveClosed(s, X, S, u, fairing);
+    else solveOpen(s, X, S, u, fairing);
+}
+
+// Parameters of all points: piecewise linear in chord length between the samples' (corrected)
+// parameters, then two Newton steps toward the foot point.
+std::vector<double> checkParameters(const Spline& s, const SplineFitInput& in, const std::vector<int>& S,
+                                    const std::vector<double>& u)
+{
+    const auto& X = *in.points;
+    const int m = static_cast<int>(X.size());
+    std::vector<double> out(m);
+    size_t k = 0;
+    for (int i = 0; i < m; ++i) {
+        while (k + 1 < S.size() && S[k + 1] <= i) ++k;
+        const double c0 = in.chord[S[k]], u0 = u[k];
+        const bool wrapEnd = k + 1 == S.size();
+        const double c1 = wrapEnd ? (in.closed ? 1.0 + in.chord[S[0]] : 1.0) : in.chord[S[k + 1]];
+        const double u1 = wrapEnd ? (in.closed ? 1.0 + u[0] : 1.0) : u[k + 1];
+        const double t = c1 > c0 ? (in.chord[i] - c0) / (c1 - c0) : 0.0;
+        double ui = u0 + t * (u1 - u0);
+        const double lo = in.closed ? ui - 0.5 : 0.0, hi = in.closed ? ui + 0.5 : 1.0;
+        for (int it = 0; it < 2; ++it) ui = newtonStep(s, X[i], ui, lo, hi);
+        out[i] = ui;
+    }
+    return out;
+}
+
+// Inserts one knot into every break interval whose samples deviate by more than the tolerance.
+int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<double>& err, double tol)
+{
+    const int spans = static_cast<int>(s.closed ? s.breaks.size() : s.breaks.size() - 1);
+    std::vector<double> wsum(spans, 0.0), wmax(spans, 0.0);
+    for (size_t k = 0; k < u.size(); ++k) {
+        const int j = std::min(s.spanOf(u[k]), spans - 1);
+        if (err[k] > tol) wsum[j] += err[k];
+        wmax[j] = std::max(wmax[j], err[k]);
+    }
+    std::vector<double> acc(spans, 0.0), newKnots;
+    std::vector<char> done(spans, 0);
+    for (size_t k = 0; k < u.size(); ++k) {
+        const int j = std::min(s.spanOf(u[k]), spans - 1);
+        if (wmax[j] <= tol || done[j] || err[k] <= tol) continue;
+        acc[j] += err[k];
+        if (acc[j] < 0.5 * wsum[j]) continue;
+        done[j] = 1;
+        const double lo = s.breaks[j];
+        const double hi = j + 1 < static_cast<int>(s.breaks.size()) ? s.breaks[j + 1] : 1.0;
+        const double h = hi - lo;
+        if (h < 1e-9) continue;  // spans below 1e-9 of the piece cannot be resolved in double precision
+        newKnots.push_back(std::clamp(s.wrap(u[k]), lo + 0.2 * h, hi - 0.2 * h));
+    }
+    s.breaks.insert(s.breaks.end(), newKnots.begin(), newKnots.end());
+    std::sort(s.breaks.begin(), s.breaks.end());
+    return static_cast<int>(newKnots.size());
+}
+
+}  // namespace
+
+void cubicBasisDerivatives(const KnotVector& U, int span, double u, double ders[3][4])
+{
+    constexpr int p = kDegree;
+    double ndu[p + 1][p + 1], left[p + 1], right[p + 1], a[2][p + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = safeDiv(ndu[r][j - 1], ndu[j][r]);
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a[0][0] = 1.0;
+        for (int k = 1; k <= 2; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a[s2][0] = safeDiv(a[s1][0], ndu[pk + 1][rk]);
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            const int j1 = rk >= -1 ? 1 : -rk;
+            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a[s2][j] = safeDiv(a[s1][j] - a[s1][j - 1], ndu[pk + 1][rk + j]);
+                d += a[s2][j] * ndu[rk + j][pk];
+            }
+            if (r <= pk) {
+                a[s2][k] = safeDiv(-a[s1][k - 1], ndu[pk + 1][r]);
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[k][r] = d;
+            std::swap(s1, s2);
+        }
+    }
+    for (int j = 0; j <= p; ++j) {
+        ders[1][j] *= p;
+        ders[2][j] *= p * (p - 1);
+    }
+}
+
+SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions& opt)
+{
+    const auto& X = *in.points;
+    const int m = static_cast<int>(X.size());
+    if (opt.tolerance <= 0.0) throw GeometryError("tolerance: must be positive");
+    if (m < 2 || in.samples.size() < 2 || in.samples.front() != 0) throw GeometryError("stroke: too few samples to fit");
+    Spline s;
+    s.closed = in.closed;
+    s.breaks = {0.0, 1.0};
+    if (s.closed) s.breaks = {0.0, 0.2, 0.4, 0.6, 0.8};
+
+    std::vector<int> S = in.samples;
+    if (!in.closed && S.back() != m - 1) S.push_back(m - 1);
+    std::vector<double> u(S.size());
+    for (size_t k = 0; k < S.size(); ++k) u[k] = in.chord[S[k]];
+    // Beyond one control point per sample the least squares is interpolation with extra freedom.
+    const int maxUnknowns = std::max(in.closed ? 5 : 4, static_cast<int>(m) + 2);
+
+    SplineFitResult res;
+    std::vector<double> err(S.size());
+    for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
+        solve(s, X, S, u, opt.fairing);
+        const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
+        std::fill(err.begin(), err.end(), 0.0);
+        for (size_t k = first; k < last; ++k) {
+            if (opt.correctParameters) {
+                const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
+                const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+                u[k] = newtonStep(s, X[S[k]], u[k], lo, hi);
+            }
+            err[k] = distanceAt(s, X[S[k]], u[k]);
+        }
+        const double worst = *std::max_element(err.begin(), err.end());
+        if (worst > opt.tolerance && s.unknowns() < maxUnknowns) {
+            if (insertKnots(s, u, err, opt.tolerance) > 0) continue;
+        }
+        // All samples fit (or no more knots help): verify every point, and add the worst offender of
+        // each span to the samples so that the next solve sees it.
+        const std::vector<double> cu = checkParameters(s, in, S, u);
+        const int spans = static_cast<int>(s.breaks.size());
+        std::vector<int> offender(spans, -1);
+        std::vector<double> offErr(spans, opt.tolerance);
+        res.maxError = 0.0;
+        for (int i = 0; i < m; ++i) {
+            const double e = distanceAt(s, X[i], cu[i]);
+            res.maxError = std::max(res.maxError, e);
+            const int j = s.spanOf(cu[i]);
+            if (e > offErr[j]) {
+                offErr[j] = e;
+                offender[j] = i;
+            }
+        }
+        bool added = false;
+        if (res.maxError > opt.tolerance && s.unknowns() < maxUnknowns) {
+            for (int j = 0; j < spans; ++j) {
+                const int i = offender[j];
+                if (i < 0) continue;
+                const auto pos = std::lower_bound(S.begin(), S.end(), i);
+                if (pos != S.end() && *pos == i) continue;
+                const size_t at = static_cast<size_t>(pos - S.begin());
+                S.insert(pos, i);
+                const double lo = u[at - 1], hi = at < u.size() ? u[at] : (in.closed ? u[0] + 1.0 : 1.0);
+                u.insert(u.begin() + static_cast<long>(at), std::clamp(cu[i], lo, hi));
+                added = true;
+            }
+        }
+        if (!added) break;
+        err.resize(S.size());
+    }
+    if (res.iterations > opt.maxIterations) {  // stopped while still refining: measure what we have
+        const std::vector<double> cu = checkParameters(s, in, S, u);
+        res.maxError = 0.0;
+        for (int i = 0; i < m; ++i) res.maxError = std::max(res.maxError, distanceAt(s, X[i], cu[i]));
+    }
+    res.converged = res.maxError <= opt.tolerance;
+    res.knots = s.knots;
+    res.points = s.ctrl;
+    res.samples = S;
+    return res;
+}
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,57 @@
+#pragma once
+// Error-driven least-squares cubic B-spline approximation (thesis §4.1.2, eqs. 4-4..4-22; de Boor,
+// A Practical Guide to Splines, ch. XIV; The NURBS Book §9.4.1 for the end-point constrained form).
+#include "solvers/bspline/basis.h"
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace sculptline::solvers::stroke {
+
+struct SplineFitOptions {
+    double tolerance = 0.0;  ///< maximum allowed deviation, model units (> 0)
+    /// Weight of the control-polygon second-difference term sum |P_{i-1} - 2 P_i + P_{i+1}|^2,
+    /// relative to the average number of samples per control point. It only has to make the normal
+    /// matrix definite when a knot span holds no sample (Schoenberg-Whitney condition violated);
+    /// 1e-6 keeps its pull on the fit far below any tolerance while leaving the pivots well above
+    /// round-off (condition number <= ~1e8 in double precision).
+    double fairing = 1e-6;
+    int maxIterations = 64;
+    /// Parameter correction (Hoschek 1988, "Intrinsic parametrization for approximation"): one
+    /// Newton step per sample and iteration moves its parameter toward the foot point on the curve.
+    bool correctParameters = true;
+};
+
+/// Data for one piece: ordered points with chord-length parameters normalized to [0, 1]
+/// (closed: chord[0] = 0 and chord.back() < 1, the rest of [0, 1) being the seam gap).
+struct SplineFitInput {
+    const std::vector<Eigen::Vector3d>* points = nullptr;  ///< every conditioned point (the check set)
+    std::vector<double> chord;                              ///< one parameter per point, increasing
+    std::vector<int> samples;                               ///< indices used by the least squares, increasing,
+                                                            ///< containing 0 (and the last point when open)
+    bool closed = false;
+};
+
+struct SplineFitResult {
+    KnotVector knots;                      ///< open: clamped on [0, 1]; closed: periodic, domain [0, 1]
+    std::vector<Eigen::Vector3d> points;   ///< open: n+1 points; closed: unwrapped (last 3 repeat first 3)
+    std::vector<int> samples;              ///< the samples finally used (the input set plus any added)
+    double maxError = 0.0;                 ///< max distance from a point to its (corrected) curve point
+    bool converged = false;                ///< maxError <= tolerance
+    int iterations = 0;
+};
+
+/// Open curves interpolate the first and last points and approximate the others; closed curves are
+/// periodic C2 cubics. Starting from one span (open) or five (closed), the loop solves the least
+/// squares, corrects parameters, and inserts a knot into every span whose samples deviate by more
+/// than the tolerance, at the error-weighted median of those samples (so knots go where the shape
+/// needs them). When all samples are within tolerance the whole check set is verified and the
+/// worst offending points are added as samples. Normal equations are band (open, half-bandwidth 3,
+/// banded Cholesky) or cyclic band (closed, sparse LDL^T): O(samples + control points) per solve.
+SplineFitResult fitCubicSpline(const SplineFitInput& input, const SplineFitOptions& options);
+
+/// The four cubic B-splines non-zero on `span` and their first and second derivatives at u:
+/// ders[k][j] = d^k/du^k N_{span-3+j}(u). The NURBS Book A2.3 with n = 2, allocation-free.
+void cubicBasisDerivatives(const KnotVector& knots, int span, double u, double ders[3][4]);
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,56 @@
+#pragma once
+// A pen stroke as it arrives from a digitizer, and the conditioned form the fitting and
+// recognition stages work on (thesis ch. 4 §4.1; seed 003 §3.1).
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+namespace sculptline::solvers::stroke {
+
+/// Raw samples between one pen-down and pen-up. The JSON form is
+/// {"points": [[x,y] or [x,y,z], ..], "times": [seconds, ..], "pressure": [0..1, ..]}
+/// (../shared/interfaces.md); 2D strokes are stored with z = 0 and `dimension` = 2.
+struct Stroke {
+    std::vector<Eigen::Vector3d> points;  ///< model units of the drawing plane
+    std::vector<double> times;            ///< seconds, optional (empty or one per point)
+    std::vector<double> pressure;         ///< 0..1, optional (empty or one per point)
+    int dimension = 2;                    ///< 2 or 3
+};
+
+/// How the stroke's ends are treated.
+enum class Closure { Auto, Open, Closed };
+
+/// Parameters of input conditioning. Distances are fractions of the stroke's bounding-box
+/// diagonal so that the result does not depend on the drawing's scale.
+struct ConditioningOptions {
+    /// Consecutive samples closer than this (relative to the diagonal) are merged: they carry no
+    /// shape at the default fitting tolerance (0.5 %), only digitizer jitter (seed 003 §3.1).
+    double minSpacing = 0.002;
+    /// A stroke whose ends come within this fraction of its length closes on itself. Hand-drawn
+    /// loops typically miss or overshoot by a few per cent of their perimeter.
+    double closeGap = 0.06;
+    Closure closure = Closure::Auto;
+    /// Passes of the 3-point mean filter (seed 003 §3.1 "3x3 mean filter"); corners are held fixed.
+    int smoothingPasses = 2;
+    /// Upper bound on the conditioned sample count; denser input is thinned first so that a
+    /// million-sample stroke is handled in bounded time.
+    int maxSamples = 20000;
+};
+
+/// The stroke after validation, de-duplication, closure detection and corner-preserving smoothing.
+struct ConditionedStroke {
+    std::vector<Eigen::Vector3d> points;  ///< smoothed positions
+    std::vector<int> source;              ///< index of each point in the raw stroke
+    std::vector<double> time;             ///< seconds, or the raw sample index when no usable times
+    std::vector<double> arc;              ///< cumulative chord length, arc[0] = 0
+    bool closed = false;                  ///< points form a loop; the seam gap is points.back() -> points[0]
+    bool timed = false;                   ///< `time` holds real timestamps
+    double diagonal = 0.0;                ///< bounding-box diagonal of the raw stroke
+    std::vector<std::string> warnings;    ///< repairs applied (ignored timestamps, trimmed overshoot)
+
+    int size() const { return static_cast<int>(points.size()); }
+    /// Total length, including the closing gap of a closed stroke.
+    double length() const;
+};
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,50 @@
+#pragma once
+// From raw pen samples to a fair cubic B-spline (thesis ch. 4 §4.1; seed 003 §3): conditioning,
+// features and corners, dynamic-threshold sampling, and error-driven least-squares approximation.
+#include "solvers/bspline/bspline_curve.h"
+#include "solvers/stroke/conditioning.h"
+#include "solvers/stroke/dynamic_sampling.h"
+#include "solvers/stroke/features.h"
+#include "solvers/stroke/lsq_fit.h"
+
+namespace sculptline::solvers::stroke {
+
+/// Default fitting tolerance as a fraction of the stroke's bounding-box diagonal: 0.5 % is about
+/// one pixel on a 200-pixel sketch, below what a designer perceives as a change of shape.
+constexpr double kDefaultRelativeTolerance = 0.005;
+
+struct FitOptions {
+    double tolerance = 0.0;  ///< max deviation in model units; <= 0 means relativeTolerance * diagonal
+    double relativeTolerance = kDefaultRelativeTolerance;
+    /// false: every conditioned sample enters the least squares ("speed-only" sampling of thesis
+    /// Fig. 4-3 a, whose density follows the hand's slowness); true: eqs. 4-2/4-3.
+    bool dynamicSampling = true;
+    ConditioningOptions conditioning;
+    FeatureOptions features;
+    CornerOptions corners;
+    SamplingOptions sampling;
+    SplineFitOptions spline;
+};
+
+struct FitResult {
+    /// Cubic; closed (periodic) for a closed stroke. (Initialized to a placeholder segment: curves
+    /// have no empty state.)
+    Curve3d curve{1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}};
+    std::vector<int> corners;            ///< raw-sample indices of the corners (G0 joints of the curve)
+    std::vector<int> samples;            ///< raw-sample indices used by the least squares
+    double maxError = 0.0;               ///< max distance of a conditioned sample to the curve (an upper
+                                         ///< bound: distance to a curve point near the foot point)
+    double tolerance = 0.0;              ///< the tolerance used, model units
+    bool converged = false;              ///< maxError <= tolerance
+    std::vector<std::string> warnings;   ///< repairs made to the input
+    ConditionedStroke conditioned;       ///< the smoothed input (for tests and recognition)
+};
+
+/// Fits one stroke. The curve is C2 except at the detected corners, where three coincident knots
+/// make it G0 (the corner sample is interpolated); the stroke's ends are interpolated; a stroke that
+/// closes on itself gives a closed curve (periodic C2, or C0 at its corners).
+/// @throws GeometryError for an empty stroke, a single or all-identical points, NaN or infinite
+///         input, or mismatched times/pressure arrays (the message names the field).
+FitResult fitStroke(const Stroke& stroke, const FitOptions& options = {});
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,26 @@
+#pragma once
+// Independent measurements of a fitted curve for the stroke tests.
+#include "solvers/bspline/bspline_curve.h"
+#include "synthetic_strokes.h"
+
+#include <algorithm>
+
+namespace sculptline::stroketest {
+
+/// Max distance from `pts` to the curve, measured against a 20,000-segment polyline of it (the
+/// chord sagitta at that resolution is below 1e-7 of the curve's size). Dense sampling rather than
+/// CurveProjector: the projector can miss the foot point at a G0 kink (triple knot), see the report
+/// of issue 3.
+inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& pts)
+{
+    std::vector<Vec3> dense;
+    constexpr int kSegments = 20000;
+    for (int i = 0; i <= kSegments; ++i) {
+        dense.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / kSegments));
+    }
+    double m = 0;
+    for (const auto& p : pts) m = std::max(m, distanceToPolyline(p, dense, false));
+    return m;
+}
+
+}  // namespace sculptline::stroketest

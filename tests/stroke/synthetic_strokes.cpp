@@ -1,0 +1,160 @@
+#include "synthetic_strokes.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::stroketest {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr int kDense = 4000;  // reference resolution per shape
+
+Shape fromFunction(const std::function<Vec3(double)>& f, double t0, double t1, bool closed)
+{
+    Shape s;
+    s.closed = closed;
+    const int n = closed ? kDense : kDense + 1;
+    for (int i = 0; i < n; ++i) s.reference.push_back(f(t0 + (t1 - t0) * i / kDense));
+    return s;
+}
+
+}  // namespace
+
+Shape lineShape(const Vec3& a, const Vec3& b)
+{
+    return fromFunction([&](double t) { return Vec3(a + t * (b - a)); }, 0.0, 1.0, false);
+}
+
+Shape arcShape(const Vec3& c, double r, double a0, double a1)
+{
+    return fromFunction([&](double t) { return Vec3(c + r * Vec3(std::cos(t), std::sin(t), 0.0)); }, a0, a1, false);
+}
+
+Shape circleShape(const Vec3& c, double r, double start)
+{
+    return fromFunction([&](double t) { return Vec3(c + r * Vec3(std::cos(t), std::sin(t), 0.0)); }, start,
+                        start + 2 * kPi, true);
+}
+
+Shape ellipseShape(const Vec3& c, double a, double b, double rot)
+{
+    const double cr = std::cos(rot), sr = std::sin(rot);
+    return fromFunction(
+        [&](double t) {
+            const double x = a * std::cos(t), y = b * std::sin(t);
+            return Vec3(c + Vec3(cr * x - sr * y, sr * x + cr * y, 0.0));
+        },
+        0.4, 0.4 + 2 * kPi, true);
+}
+
+Shape polygonShape(const std::vector<Vec3>& v, bool closed)
+{
+    Shape s;
+    s.closed = closed;
+    const size_t edges = closed ? v.size() : v.size() - 1;
+    const int per = kDense / static_cast<int>(edges);
+    for (size_t e = 0; e < edges; ++e) {
+        const Vec3 a = v[e], b = v[(e + 1) % v.size()];
+        if (e > 0 || closed) s.corners.push_back(static_cast<int>(s.reference.size()));
+        for (int i = 0; i < per; ++i) s.reference.push_back(a + (b - a) * (double(i) / per));
+    }
+    if (!closed) s.reference.push_back(v.back());
+    return s;
+}
+
+Shape sCurveShape(double size)
+{
+    return fromFunction([&](double t) { return Vec3(size * t, 0.25 * size * std::sin(2 * kPi * t), 0.0); }, 0.0, 1.0,
+                        false);
+}
+
+Shape spiralShape(double size, double turns)
+{
+    return fromFunction(
+        [&](double t) {
+            const double r = size * (0.15 + 0.85 * t);
+            return Vec3(r * std::cos(2 * kPi * turns * t), r * std::sin(2 * kPi * turns * t), 0.0);
+        },
+        0.0, 1.0, false);
+}
+
+Stroke draw(const Shape& shape, const DrawOptions& o)
+{
+    const auto& ref = shape.reference;
+    const int n = static_cast<int>(ref.size());
+    // Speed per reference vertex: two-thirds power law on the discrete curvature, times a dip near
+    // corners whose width is a few per cent of the length.
+    std::vector<double> arc(n + 1, 0.0);
+    const int segs = shape.closed ? n : n - 1;
+    for (int i = 0; i < segs; ++i) arc[i + 1] = arc[i] + (ref[(i + 1) % n] - ref[i]).norm();
+    const double total = arc[segs];
+    std::vector<double> speed(n, o.peakSpeed);
+    for (int i = 0; i < n; ++i) {
+        const int a = shape.closed ? (i + n - 8) % n : std::max(0, i - 8);
+        const int b = shape.closed ? (i + 8) % n : std::min(n - 1, i + 8);
+        const Vec3 u = ref[i] - ref[a], w = ref[b] - ref[i];
+        const double len = u.norm() + w.norm();
+        const double turn = (u.norm() > 0 && w.norm() > 0) ? std::atan2(u.cross(w).norm(), u.dot(w)) : 0.0;
+        const double kappa = len > 0 ? turn / len : 0.0;
+        speed[i] = o.peakSpeed * std::min(1.0, std::pow(1.0 + kappa * total / (2 * kPi), -1.0 / 3.0) * 1.6);
+    }
+    for (int c : shape.corners) {
+        for (int i = 0; i < n; ++i) {
+            double d = std::abs(arc[i] - arc[c]);
+            if (shape.closed) d = std::min(d, total - d);
+            const double w = 0.04 * total;
+            speed[i] *= 1.0 - (1.0 - o.cornerSlowdown) * std::exp(-(d * d) / (w * w));
+        }
+    }
+    // Ends: the pen accelerates from and decelerates to rest over ~3 % of the length.
+    if (!shape.closed) {
+        for (int i = 0; i < n; ++i) {
+            const double d = std::min(arc[i], total - arc[i]) / (0.03 * total);
+            speed[i] *= 0.3 + 0.7 * std::min(1.0, d);
+        }
+    }
+    std::mt19937 rng(o.seed);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    const double end = shape.closed ? total * (1.0 + o.closureOffset) : total;
+    auto at = [&](double s, int* segOut) {
+        if (shape.closed) s = std::fmod(s, total);
+        const int seg = std::clamp(int(std::upper_bound(arc.begin(), arc.begin() + segs + 1, s) - arc.begin()) - 1, 0,
+                                   segs - 1);
+        const double h = arc[seg + 1] - arc[seg];
+        const double f = h > 0 ? (s - arc[seg]) / h : 0.0;
+        *segOut = seg;
+        return Vec3(ref[seg] + f * (ref[(seg + 1) % n] - ref[seg]));
+    };
+    Stroke s;
+    s.dimension = 2;
+    const double dt = 1.0 / o.rate;
+    double pos = 0.0, t = 0.0;
+    while (true) {
+        int seg = 0;
+        Vec3 p = at(pos, &seg);
+        if (o.noise > 0) p += o.noise * Vec3(gauss(rng), gauss(rng), 0.0);
+        s.points.push_back(p);
+        if (o.withTimes) s.times.push_back(t);
+        if (pos >= end) break;
+        pos = std::min(end, pos + speed[seg] * dt);
+        t += dt;
+    }
+    return s;
+}
+
+double distanceToPolyline(const Vec3& p, const std::vector<Vec3>& poly, bool closed)
+{
+    double best = std::numeric_limits<double>::infinity();
+    const size_t segs = closed ? poly.size() : poly.size() - 1;
+    for (size_t i = 0; i < segs; ++i) {
+        const Vec3& a = poly[i];
+        const Vec3& b = poly[(i + 1) % poly.size()];
+        const Vec3 ab = b - a;
+        const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+        best = std::min(best, (a + t * ab - p).norm());
+    }
+    return best;
+}
+
+}  // namespace sculptline::stroketest

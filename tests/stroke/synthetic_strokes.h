@@ -1,0 +1,50 @@
+#pragma once
+// Strokes synthesized from known curves with human-like timing and digitizer noise, shared by the
+// stroke tests and benchmarks. Timing follows the two-thirds power law of hand movement (Lacquaniti,
+// Terzuolo & Viviani 1983: speed ~ curvature^(-1/3)), with a further slow-down approaching corners
+// (the pen nearly stops at a vertex), sampled at a fixed digitizer rate.
+#include "solvers/stroke/stroke.h"
+
+#include <functional>
+#include <random>
+
+namespace sculptline::stroketest {
+
+using solvers::stroke::Stroke;
+using Vec3 = Eigen::Vector3d;
+
+/// A planar test shape: a dense polyline of the exact curve (the reference), and which vertices are
+/// intended corners.
+struct Shape {
+    std::vector<Vec3> reference;  ///< dense, exact
+    std::vector<int> corners;     ///< indices into reference
+    bool closed = false;
+};
+
+Shape lineShape(const Vec3& a, const Vec3& b);
+Shape arcShape(const Vec3& center, double radius, double a0, double a1);
+Shape circleShape(const Vec3& center, double radius, double startAngle = 0.3);
+Shape ellipseShape(const Vec3& center, double a, double b, double rotation);
+Shape polygonShape(const std::vector<Vec3>& vertices, bool closed);
+Shape sCurveShape(double size);
+Shape spiralShape(double size, double turns);
+
+struct DrawOptions {
+    double rate = 120.0;        ///< digitizer samples per second
+    double peakSpeed = 400.0;   ///< model units per second on straight parts
+    double noise = 0.0;         ///< standard deviation of positional noise, model units
+    double cornerSlowdown = 0.12; ///< speed factor at a corner (1 = no slow-down)
+    unsigned seed = 1;
+    bool withTimes = true;
+    /// Closed shapes: the pen stops this fraction of the perimeter past its start (negative: short
+    /// of it), as hand-drawn loops overshoot or leave a gap.
+    double closureOffset = 0.0;
+};
+
+/// Draws the shape as a hand would: arc-length speed profile, fixed-rate samples, Gaussian noise.
+Stroke draw(const Shape& shape, const DrawOptions& options = {});
+
+/// Max distance from points to the reference polyline (point-to-segment, brute force).
+double distanceToPolyline(const Vec3& p, const std::vector<Vec3>& poly, bool closed);
+
+}  // namespace sculptline::stroketest
