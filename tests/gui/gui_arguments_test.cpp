@@ -1,0 +1,93 @@
+// The sculptline executable's argument and document errors: status 2 and a message on stderr, no
+// crash. These are checked before Qt starts, so the tests run without a display (DISPLAY unset).
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace {
+
+struct ProgramRun {
+    int status = -1;  ///< exit status, or -1 when the program did not exit normally (a crash)
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Runs sculptline with `arguments` and extra environment assignments `env` ("NAME=value ...").
+ProgramRun runSculptline(const std::string& arguments, const std::string& env = "")
+{
+    const std::string command = "env -u DISPLAY " + env + " '" SCULPTLINE_EXE "' " + arguments + " 2>&1";
+    ProgramRun run;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return run;
+    char buffer[4096];
+    size_t n = 0;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0) run.output.append(buffer, n);
+    const int wait = pclose(pipe);
+    if (WIFEXITED(wait)) run.status = WEXITSTATUS(wait);
+    return run;
+}
+
+void expectError(const std::string& arguments, const std::string& expected)
+{
+    const ProgramRun run = runSculptline(arguments);
+    EXPECT_EQ(run.status, 2) << "sculptline " << arguments << "\n" << run.output;
+    EXPECT_NE(run.output.find(expected), std::string::npos)
+        << "sculptline " << arguments << ": expected \"" << expected << "\" in\n" << run.output;
+}
+
+TEST(GuiArguments, HelpListsTheFlags)
+{
+    const ProgramRun run = runSculptline("--help");
+    EXPECT_EQ(run.status, 0);
+    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT"}) {
+        EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
+    }
+}
+
+TEST(GuiArguments, BadSizesAreRefused)
+{
+    expectError("--size banana", "--size: expected WxH");
+    expectError("--size 800x", "--size: expected WxH");
+    expectError("--size 0x600", "--size: width and height must be between");
+    expectError("--size 99999x600", "--size: width and height must be between");
+    expectError("--size", "--size");
+}
+
+TEST(GuiArguments, UnknownFlagsAreRefused) { expectError("--no-such-flag", "no-such-flag"); }
+
+TEST(GuiArguments, FlagsOfLaterIssuesSayNotImplemented)
+{
+    expectError("--replay session.json", "--replay is not implemented yet");
+    expectError("--save out.json", "--save is not implemented yet");
+    expectError("--export-iv out.iv", "--export-iv is not implemented yet");
+    expectError("--stats stats.json", "--stats is not implemented yet");
+    expectError("--list-actions", "--list-actions is not implemented yet");
+}
+
+TEST(GuiArguments, UnreadableDocumentsAreRefused)
+{
+    expectError("/nonexistent/scene.json", "/nonexistent/scene.json: cannot open file");
+
+    const std::string bad = testing::TempDir() + "sculptline_gui_bad_scene.json";
+    std::ofstream(bad) << R"({"curves": [{"degree": 3, "knots": [0, 1], "points": [[0, 0], [1, 1]]}]})";
+    expectError("'" + bad + "'", "curves[0]");
+    std::remove(bad.c_str());
+
+    const std::string broken = testing::TempDir() + "sculptline_gui_broken_scene.json";
+    std::ofstream(broken) << "{\"planes\": [";
+    expectError("'" + broken + "'", "malformed JSON");
+    std::remove(broken.c_str());
+}
+
+TEST(GuiArguments, MissingDefaultDataDirectoryIsAnError)
+{
+    // SCULPTLINE_DATA_DIR overrides the baked-in data directory
+    const ProgramRun run = runSculptline("", "SCULPTLINE_DATA_DIR=/nonexistent/data");
+    EXPECT_EQ(run.status, 2);
+    EXPECT_NE(run.output.find("/nonexistent/data/default_scene.json: cannot open file"), std::string::npos) << run.output;
+}
+
+}  // namespace
