@@ -115,6 +115,26 @@ std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures
         if (f.turning[f.hi[i]] > f.turning[i]) best = false;
         if (best) corners.push_back(i);
     }
+    // Merge corners closer than mergeDistance along the path (cyclically on a loop).
+    const double merge = o.mergeDistance * cs.diagonal;
+    const double total = cs.length();
+    auto gap = [&](int a, int b) {
+        const double d = cs.arc[b] - cs.arc[a];
+        return cs.closed ? std::min(d, total - d) : d;
+    };
+    bool changed = true;
+    while (changed && corners.size() > 1) {
+        changed = false;
+        const size_t pairs = cs.closed ? corners.size() : corners.size() - 1;
+        for (size_t k = 0; k < pairs; ++k) {
+            const size_t next = (k + 1) % corners.size();
+            if (std::abs(gap(corners[k], corners[next])) >= merge) continue;
+            const size_t drop = f.turning[corners[k]] >= f.turning[corners[next]] ? next : k;
+            corners.erase(corners.begin() + static_cast<long>(drop));
+            changed = true;
+            break;
+        }
+    }
     return corners;
 }
 

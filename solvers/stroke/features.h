@@ -37,8 +37,12 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
 /// of turning within their neighbourhood. Ends of an open stroke are never corners.
 struct CornerOptions {
     double strongAngle = 0.96;   ///< 55 degrees
-    double slowAngle = 0.52;     ///< 30 degrees, accepted only where the hand slowed down
+    double slowAngle = 0.75;     ///< 43 degrees, accepted only where the hand slowed down (below
+                                 ///< ~40 degrees the slow-down around a true vertex, with jitter,
+                                 ///< produced false corners a few samples beside it)
     double slowFraction = 0.55;  ///< "slow" = speed below this fraction of S_avg
+    /// Corners closer than this (path length / diagonal) are one corner: the one turning most stays.
+    double mergeDistance = 0.05;
     double sharpness = 0.62;     ///< turning / wideTurning; 0.5 for a circular arc, 1 for a corner
 };
 

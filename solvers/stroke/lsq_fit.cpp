@@ -81,6 +81,17 @@ double distanceAt(const Spline& s, const Vec3& x, double u)
     return (c[0] - x).norm();
 }
 
+// Distance from C(u) to the segment [a, b].
+double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
+{
+    Vec3 c[3];
+    s.eval(u, c);
+    const Vec3 ab = b - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0.0 ? std::clamp((c[0] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - c[0]).norm();
+}
+
 // Least squares with the fairing term; open curves keep P_0 = X_first and P_n = X_last fixed
 // (The NURBS Book eqs. 9.63-9.67: the fixed points move to the right-hand side).
 void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
@@ -310,12 +321,11 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
         std::fill(err.begin(), err.end(), 0.0);
         for (size_t k = first; k < last; ++k) {
-            if (opt.correctParameters) {
-                const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
-                const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
-                u[k] = newtonStep(s, X[S[k]], u[k], lo, hi);
-            }
-            err[k] = distanceAt(s, X[S[k]], u[k]);
+            const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
+            const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+            const double foot = newtonStep(s, X[S[k]], u[k], lo, hi);
+            if (opt.correctParameters) u[k] = foot;
+            err[k] = distanceAt(s, X[S[k]], opt.measureAtFootPoint ? foot : u[k]);
         }
         const double worst = *std::max_element(err.begin(), err.end());
         if (worst > opt.tolerance && s.unknowns() < maxUnknowns) {
@@ -337,6 +347,22 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 offender[j] = i;
             }
         }
+        // The other direction (curve to data): between two consecutive points the curve must stay
+        // near the chord joining them, or it loops where no sample holds it. The offender is the
+        // neighbour not yet sampled.
+        for (int i = 0; i + 1 < m || (in.closed && i < m); ++i) {
+            const int next = (i + 1) % m;
+            const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
+            if (!(u1 > cu[i])) continue;
+            const double e = chordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
+            res.maxError = std::max(res.maxError, e);
+            const int j = s.spanOf(0.5 * (cu[i] + u1));
+            const int pick = std::binary_search(S.begin(), S.end(), next) ? i : next;
+            if (e > offErr[j] && !std::binary_search(S.begin(), S.end(), pick)) {
+                offErr[j] = e;
+                offender[j] = pick;
+            }
+        }
         bool added = false;
         if (res.maxError > opt.tolerance && s.unknowns() < maxUnknowns) {
             for (int j = 0; j < spans; ++j) {
@@ -347,7 +373,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 const size_t at = static_cast<size_t>(pos - S.begin());
                 S.insert(pos, i);
                 const double lo = u[at - 1], hi = at < u.size() ? u[at] : (in.closed ? u[0] + 1.0 : 1.0);
-                u.insert(u.begin() + static_cast<long>(at), std::clamp(cu[i], lo, hi));
+                const double ui = opt.correctParameters ? cu[i] : in.chord[i];
+                u.insert(u.begin() + static_cast<long>(at), std::clamp(ui, lo, hi));
                 added = true;
             }
         }
@@ -358,6 +385,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         const std::vector<double> cu = checkParameters(s, in, S, u);
         res.maxError = 0.0;
         for (int i = 0; i < m; ++i) res.maxError = std::max(res.maxError, distanceAt(s, X[i], cu[i]));
+        for (int i = 0; i + 1 < m; ++i) res.maxError = std::max(res.maxError, chordGap(s, X[i], X[i + 1], 0.5 * (cu[i] + cu[i + 1])));
     }
     res.converged = res.maxError <= opt.tolerance;
     res.knots = s.knots;

@@ -1,0 +1,105 @@
+// Given polygons drawn with human-like timing (slowing at vertices) and noise, when corners are
+// detected, then precision and recall are high; smooth shapes yield no corners.
+#include "solvers/stroke/stroke_fitter.h"
+#include "synthetic_strokes.h"
+
+#include <gtest/gtest.h>
+
+namespace sculptline::stroketest {
+namespace {
+
+using namespace solvers::stroke;
+
+constexpr double kNoiseSigma = 0.25;
+// A detected corner matches a true vertex within 3 % of the stroke length (a few samples).
+constexpr double kMatchFraction = 0.03;
+constexpr double kMinPrecision = 0.95;
+constexpr double kMinRecall = 0.95;
+
+struct Counts {
+    int truePositive = 0, detected = 0, expected = 0;
+};
+
+void score(const Shape& shape, const Stroke& s, const FitResult& r, Counts& c)
+{
+    double length = 0;
+    for (size_t i = 1; i < s.points.size(); ++i) length += (s.points[i] - s.points[i - 1]).norm();
+    // Vertices at the stroke's start/end of a closed polygon count once.
+    std::vector<Vec3> truth;
+    for (int k : shape.corners) truth.push_back(shape.reference[k]);
+    if (shape.closed && std::find(shape.corners.begin(), shape.corners.end(), 0) == shape.corners.end()) {
+        truth.push_back(shape.reference[0]);
+    }
+    c.expected += static_cast<int>(truth.size());
+    c.detected += static_cast<int>(r.corners.size());
+    std::vector<char> used(truth.size(), 0);
+    for (int idx : r.corners) {
+        for (size_t t = 0; t < truth.size(); ++t) {
+            if (!used[t] && (s.points[idx] - truth[t]).norm() <= kMatchFraction * length) {
+                used[t] = 1;
+                ++c.truePositive;
+                break;
+            }
+        }
+    }
+}
+
+TEST(CornerDetection, GivenPolygonsWithSlowVertices_WhenFitted_ThenPrecisionAndRecallAreHigh)
+{
+    const std::vector<Shape> shapes = {
+        polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true),
+        polygonShape({{0, 0, 0}, {160, 10, 0}, {70, 120, 0}}, true),
+        polygonShape({{50, 0, 0}, {100, 60, 0}, {50, 120, 0}, {0, 60, 0}}, true),
+        polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false),
+        polygonShape({{0, 0, 0}, {150, 0, 0}, {150, 90, 0}}, false),
+        polygonShape({{0, 0, 0}, {80, 0, 0}, {105, 75, 0}, {40, 120, 0}, {-25, 75, 0}}, true),
+    };
+    Counts c;
+    for (const Shape& shape : shapes) {
+        for (unsigned seed = 1; seed <= 5; ++seed) {
+            DrawOptions d;
+            d.noise = kNoiseSigma;
+            d.seed = seed;
+            const Stroke s = draw(shape, d);
+            score(shape, s, fitStroke(s), c);
+        }
+    }
+    const double precision = double(c.truePositive) / std::max(1, c.detected);
+    const double recall = double(c.truePositive) / c.expected;
+    std::printf("corners: expected %d detected %d matched %d precision %.3f recall %.3f\n", c.expected, c.detected,
+                c.truePositive, precision, recall);
+    EXPECT_GE(precision, kMinPrecision);
+    EXPECT_GE(recall, kMinRecall);
+}
+
+TEST(CornerDetection, GivenSmoothCurves_WhenFitted_ThenNoCorners)
+{
+    const std::vector<Shape> shapes = {circleShape({0, 0, 0}, 80), ellipseShape({0, 0, 0}, 120, 50, 0.7),
+                                       sCurveShape(200), spiralShape(100, 2.0), arcShape({0, 0, 0}, 90, 0.0, 3.0)};
+    int falseCorners = 0;
+    for (const Shape& shape : shapes) {
+        for (unsigned seed = 1; seed <= 5; ++seed) {
+            DrawOptions d;
+            d.noise = kNoiseSigma;
+            d.seed = seed;
+            falseCorners += static_cast<int>(fitStroke(draw(shape, d)).corners.size());
+        }
+    }
+    EXPECT_EQ(falseCorners, 0);
+}
+
+TEST(CornerDetection, GivenNoTimestamps_WhenFitted_ThenCornersFoundFromSpacing)
+{
+    DrawOptions d;
+    d.noise = kNoiseSigma;
+    d.withTimes = false;
+    const Shape shape = polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false);
+    const Stroke s = draw(shape, d);
+    Counts c;
+    score(shape, s, fitStroke(s), c);
+    EXPECT_EQ(c.truePositive, 2);
+    EXPECT_EQ(c.detected, 2);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest
