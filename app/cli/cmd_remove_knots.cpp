@@ -6,7 +6,7 @@
 //
 // "tolerance" is in model units, >= 0. Note that the kernel removes nothing at tolerance 0, even a
 // knot whose removal would be exact: pass a small positive tolerance (e.g. 1e-9) for exact removal.
-// Closed curves are rejected (not supported by the kernel yet).
+// Closed curves stay closed (a knot is removed in every period).
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 

@@ -37,6 +37,67 @@ auto validated(const std::string& path, F&& make)
     }
 }
 
+// Finds the JSON path ("curve.points[1][0]") of the value at which parsing stopped. Used only after
+// the DOM parse failed on a number that overflows a double ("1e999"), so that it is reported against
+// its field like any other non-finite number; it builds nothing.
+class PathLocator : public nlohmann::json_sax<json> {
+public:
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(false); }
+    bool key(string_t& k) override
+    {
+        frames_.back().key = k;
+        return true;
+    }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(true); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string& lastToken, const json::exception&) override
+    {
+        token_ = lastToken;
+        return false;
+    }
+
+    std::string path() const
+    {
+        std::string p;
+        for (const Frame& f : frames_) p += f.array ? "[" + std::to_string(f.index) + "]" : (p.empty() ? "" : ".") + f.key;
+        return p.empty() || p[0] == '[' ? "input" + p : p;
+    }
+    const std::string& token() const { return token_; }
+
+private:
+    struct Frame {
+        bool array = false;
+        size_t index = 0;  // arrays: index of the value being read
+        std::string key;   // objects: key of the value being read
+    };
+    bool value()
+    {
+        if (!frames_.empty() && frames_.back().array) ++frames_.back().index;
+        return true;
+    }
+    bool open(bool array)
+    {
+        frames_.push_back({array, 0, {}});
+        return true;
+    }
+    bool close()
+    {
+        frames_.pop_back();
+        return value();  // the finished container is a value of its parent
+    }
+
+    std::vector<Frame> frames_;
+    std::string token_;
+};
+
 }  // namespace
 
 const json& member(const json& j, const std::string& key, const std::string& path)
@@ -61,6 +122,9 @@ int integerFromJson(const json& j, const std::string& path, int lo, int hi)
         throw InputError(path + ": must be an integer");
     }
     const double v = j.get<double>();
+    // A json built in code (not parsed: the parser rejects 1e999) may hold infinity, which passes the
+    // integer test above; name it as what it is.
+    if (!std::isfinite(v)) throw InputError(path + ": not a finite number");
     if (v < lo || v > hi) {
         throw InputError(path + ": must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
                          j.dump());
@@ -154,6 +218,11 @@ json parseJson(const std::string& text)
         return json::parse(text);
     } catch (const json::parse_error& e) {
         throw InputError(std::string("input: malformed JSON (") + e.what() + ")");
+    } catch (const json::out_of_range&) {
+        // nlohmann rejects a number that overflows a double (error 406) with no position in the tree.
+        PathLocator locator;
+        json::sax_parse(text, &locator);
+        throw InputError(locator.path() + ": not a finite number (" + locator.token() + " overflows a double)");
     }
 }
 

@@ -33,7 +33,8 @@ nlohmann::json toJson(const Curve3d& c);
 nlohmann::json toJson(const Surface3d& s);
 nlohmann::json toJson(const Eigen::Vector3d& p);
 
-/// Parses text as JSON, turning parse errors into InputError ("input: malformed JSON at byte N: ...").
+/// Parses text as JSON, turning parse errors into InputError ("input: malformed JSON (...)"); a number
+/// that overflows a double (1e999) is named by its path ("curve.points[1][0]: not a finite number").
 nlohmann::json parseJson(const std::string& text);
 
 }  // namespace sculptline::solvers::io
