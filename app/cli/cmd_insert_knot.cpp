@@ -12,6 +12,18 @@
 namespace sculptline::cli {
 namespace {
 
+// For open curves the kernel reports a multiplicity above the degree against "times"; for closed
+// ones it inserts a copy per period and would name one of those copies instead, so check here.
+void checkClosedMultiplicity(const solvers::Curve3d& curve, double knot, int times)
+{
+    const double u = curve.normalizeParameter(knot);
+    const int s = solvers::knotMultiplicity(curve.knots(), u);
+    if (s + times > curve.degree()) {
+        throw InputError("times: knot " + json(knot).dump() + " has multiplicity " + std::to_string(s) + "; inserting it " +
+                         std::to_string(times) + " more times exceeds the degree " + std::to_string(curve.degree()));
+    }
+}
+
 json run(const json& input, const Options&)
 {
     const bool isCurve = curveOrSurface(input) == GeometryKind::Curve;
@@ -23,6 +35,7 @@ json run(const json& input, const Options&)
     json out;
     if (isCurve) {
         const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
+        if (curve.isClosed()) checkClosedMultiplicity(curve, knot, times);
         const Stopwatch clock;
         const solvers::Curve3d result = runOperation(input, "curve", [&] { return curve.insertKnot(knot, times); });
         const double ms = clock.elapsedMs();

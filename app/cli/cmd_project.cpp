@@ -12,6 +12,20 @@
 namespace sculptline::cli {
 namespace {
 
+// Input is validated before projecting, so a kernel error here comes from arithmetic overflow on
+// extreme (finite) magnitudes; its own field names ("parameter") are not input fields, so name the
+// point instead.
+template <typename Projector>
+auto projectOne(const Projector& projector, const std::vector<Eigen::Vector3d>& points, size_t i)
+{
+    try {
+        return projector.project(points[i]);
+    } catch (const solvers::GeometryError& e) {
+        throw InputError("points[" + std::to_string(i) + "]: cannot be projected (" + e.what() +
+                         "); do the magnitudes overflow double precision?");
+    }
+}
+
 json projectOnCurve(const json& input)
 {
     const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
@@ -21,7 +35,7 @@ json projectOnCurve(const json& input)
     const solvers::CurveProjector<3> projector(curve);
     std::vector<solvers::CurveProjection<3>> found;
     found.reserve(points.size());
-    for (const auto& x : points) found.push_back(projector.project(x));
+    for (size_t i = 0; i < points.size(); ++i) found.push_back(projectOne(projector, points, i));
     const double ms = clock.elapsedMs();
 
     json out = {{"params", json::array()}, {"points", json::array()}, {"distances", json::array()}};
@@ -43,7 +57,7 @@ json projectOnSurface(const json& input)
     const solvers::SurfaceProjector projector(surface);
     std::vector<solvers::SurfaceProjection> found;
     found.reserve(points.size());
-    for (const auto& x : points) found.push_back(projector.project(x));
+    for (size_t i = 0; i < points.size(); ++i) found.push_back(projectOne(projector, points, i));
     const double ms = clock.elapsedMs();
 
     json out = {{"params", json::array()}, {"points", json::array()}, {"distances", json::array()}};

@@ -80,6 +80,11 @@ TEST(CliInsertKnot, RejectsTooManyInsertionsAndKnotsOutsideTheDomain)
     const CliResult tooMany = runCli({"insert-knot"}, json{{"curve", curve}, {"knot", 4}, {"times", 1}}.dump());
     EXPECT_EQ(tooMany.status, 2);
     EXPECT_EQ(tooMany.err.rfind("sculptline-cli: times: ", 0), 0u) << tooMany.err;
+    // Closed curves insert a copy per period; the message still names "times", not a copy.
+    const CliResult closedTooMany =
+        runCli({"insert-knot"}, json{{"curve", loadData("closed_cubic.json")}, {"knot", 8}, {"times", 3}}.dump());
+    EXPECT_EQ(closedTooMany.status, 2);
+    EXPECT_EQ(closedTooMany.err.rfind("sculptline-cli: times: knot 8.0 has multiplicity 1", 0), 0u) << closedTooMany.err;
     const CliResult outside = runCli({"insert-knot"}, json{{"curve", curve}, {"knot", 7}}.dump());
     EXPECT_EQ(outside.status, 2);
     EXPECT_EQ(outside.err.rfind("sculptline-cli: knot: ", 0), 0u) << outside.err;
