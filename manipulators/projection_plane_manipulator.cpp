@@ -19,24 +19,36 @@ ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneSpec& p
 
     placement_ = scene::makePlanePlacement(plane);
     root_->addChild(placement_);
-    auto* up = new SoScale;
-    up->scaleFactor.setValue(SbVec3f(1, 1, 1) * static_cast<float>(draggerScale_));
-    root_->addChild(up);
-    dragger_ = new SoJackDragger;
-    root_->addChild(dragger_);
+    const SbVec3f up = SbVec3f(1, 1, 1) * static_cast<float>(draggerScale_);
 
-    // A dragger moves only its own geometry; the plane follows through these field connections.
-    // Between the two scales, motion acts as S * T * S^-1, i.e. translations in dragger units
-    // times s: the plane stays under the dragger as it moves.
+    // The plane, moved by the dragger through field connections (a dragger moves only its own
+    // geometry). Between the two scales, motion acts as S * T * S^-1, i.e. translations in dragger
+    // units times s: the plane stays under the dragger as it moves.
+    auto* planeGroup = new SoSeparator;
+    auto* scaleUp = new SoScale;
+    scaleUp->scaleFactor = up;
+    planeGroup->addChild(scaleUp);
     motion_ = new SoTransform;
+    planeGroup->addChild(motion_);
+    auto* scaleDown = new SoScale;
+    scaleDown->scaleFactor.setValue(1.0f / up[0], 1.0f / up[1], 1.0f / up[2]);
+    planeGroup->addChild(scaleDown);
+    planeGroup->addChild(scene::makePlaneGeometry(plane.size));
+    root_->addChild(planeGroup);
+
+    // The dragger in a separator of its own, drawn after the translucent plane; only the
+    // placement above is shared, so the dragger and the plane meet in the same frame.
+    auto* draggerGroup = new SoSeparator;
+    auto* draggerScale = new SoScale;
+    draggerScale->scaleFactor = up;
+    draggerGroup->addChild(draggerScale);
+    dragger_ = new SoJackDragger;
+    draggerGroup->addChild(dragger_);
+    root_->addChild(draggerGroup);
+
     motion_->translation.connectFrom(&dragger_->translation);
     motion_->rotation.connectFrom(&dragger_->rotation);
     motion_->scaleFactor.connectFrom(&dragger_->scaleFactor);
-    root_->addChild(motion_);
-    auto* down = new SoScale;
-    down->scaleFactor.setValue(SbVec3f(1, 1, 1) / static_cast<float>(draggerScale_));
-    root_->addChild(down);
-    root_->addChild(scene::makePlaneGeometry(plane.size));
 
     sensor_.setFunction(&ProjectionPlaneManipulator::motionChanged);
     sensor_.setData(this);

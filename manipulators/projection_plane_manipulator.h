@@ -19,12 +19,13 @@ constexpr double kDraggerScale = 0.12;
 
 /// Owns (ref()s) a graph
 ///   SoSeparator "ProjectionPlane" {
-///     SoTransform placement      plane origin and normal from the document
-///     SoScale s                  dragger size (kDraggerScale * plane size)
-///     SoJackDragger
-///     SoTransform motion         fields connected from the dragger's translation/rotation/scaleFactor
-///     SoScale 1/s                undoes s for the plane, so the plane moves with the dragger
-///     plane geometry }
+///     SoTransform placement        plane origin and normal from the document
+///     SoSeparator {
+///       SoScale s                  dragger size (kDraggerScale * plane size)
+///       SoTransform motion         fields connected from the dragger's translation/rotation/scaleFactor
+///       SoScale 1/s                undoes s for the plane, so the plane moves with the dragger
+///       plane geometry }
+///     SoSeparator { SoScale s, SoJackDragger } }
 /// Dragger fields are the public API: setting them (from code, a replay, or the mouse) moves the
 /// plane through the field connections; a node sensor reports every move to the callback.
 class ProjectionPlaneManipulator {

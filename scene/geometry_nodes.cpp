@@ -7,15 +7,61 @@
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
+#include <Inventor/nodes/SoIndexedLineSet.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoNormal.h>
 #include <Inventor/nodes/SoNormalBinding.h>
+#include <Inventor/nodes/SoPolygonOffset.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 
+#include <algorithm>
+#include <vector>
+
 namespace sculptline::scene {
+namespace {
+
+/// Iso-lines darken the surface colour by this factor: visible on it, clearly part of it.
+constexpr float kIsoLineShade = 0.55f;
+
+bool isKnot(const solvers::KnotVector& knots, double t)
+{
+    return std::find(knots.begin(), knots.end(), t) != knots.end();
+}
+
+/// The grid lines of `mesh` at knot values: the patch boundaries and the knot spans a designer
+/// reads the surface's structure from. Tessellation parameters hit knots exactly (they start at
+/// the span breaks), so exact comparison is right here.
+SoSeparator* makeIsoLines(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SbColor& color)
+{
+    std::vector<int32_t> index;
+    const int rows = mesh.rows(), cols = mesh.cols();
+    for (int r = 0; r < rows; ++r) {
+        if (!isKnot(surface.knotsU(), mesh.u[r])) continue;
+        for (int c = 0; c < cols; ++c) index.push_back(r * cols + c);
+        index.push_back(SO_END_LINE_INDEX);
+    }
+    for (int c = 0; c < cols; ++c) {
+        if (!isKnot(surface.knotsV(), mesh.v[c])) continue;
+        for (int r = 0; r < rows; ++r) index.push_back(r * cols + c);
+        index.push_back(SO_END_LINE_INDEX);
+    }
+    auto* lines = new SoSeparator;
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    lines->addChild(lightModel);
+    auto* base = new SoBaseColor;
+    base->rgb = color * kIsoLineShade;
+    lines->addChild(base);
+    auto* set = new SoIndexedLineSet;
+    set->coordIndex.setValues(0, static_cast<int>(index.size()), index.data());
+    lines->addChild(set);
+    return lines;
+}
+
+}  // namespace
 
 SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
 {
@@ -66,6 +112,8 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     // With normalIndex left at its default, PER_VERTEX_INDEXED reuses coordIndex for the normals.
     binding->value = SoNormalBinding::PER_VERTEX_INDEXED;
     root->addChild(binding);
+    // Pushes the faces back in depth so the iso-lines drawn on them are not half hidden.
+    root->addChild(new SoPolygonOffset);
     auto* faces = new SoIndexedFaceSet;
     faces->coordIndex.setNum(static_cast<int>(mesh.triangles.size() * 4));
     int32_t* index = faces->coordIndex.startEditing();
@@ -77,6 +125,7 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     }
     faces->coordIndex.finishEditing();
     root->addChild(faces);
+    root->addChild(makeIsoLines(surface, mesh, style.color));
     return root;
 }
 

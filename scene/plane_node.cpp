@@ -8,8 +8,7 @@
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoMaterial.h>
-#include <Inventor/nodes/SoNormal.h>
-#include <Inventor/nodes/SoNormalBinding.h>
+#include <Inventor/nodes/SoPolygonOffset.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 #include <Inventor/nodes/SoTransform.h>
@@ -21,11 +20,16 @@ namespace {
 
 const SbColor kPlaneColor(0.55f, 0.72f, 0.95f);
 /// Mostly see-through: the plane is a drawing aid and must not hide the geometry behind it.
-constexpr float kPlaneTransparency = 0.8f;
+constexpr float kPlaneTransparency = 0.7f;
 
+/// The quad is drawn unlit: a drawing aid reads as a flat tint, and its colour then does not
+/// depend on where the light is (a shaded plane seen edge-on turns dark and hides its grid).
 SoSeparator* makeQuad(float half)
 {
     auto* quad = new SoSeparator;
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    quad->addChild(lightModel);
     auto* material = new SoMaterial;
     material->diffuseColor = kPlaneColor;
     material->transparency = kPlaneTransparency;
@@ -34,16 +38,12 @@ SoSeparator* makeQuad(float half)
     hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
     hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
     quad->addChild(hints);
+    // The grid lines lie in the quad's plane: push the quad back so they are not half hidden.
+    quad->addChild(new SoPolygonOffset);
     auto* coords = new SoCoordinate3;
     const SbVec3f corners[4] = {{-half, -half, 0}, {half, -half, 0}, {half, half, 0}, {-half, half, 0}};
     coords->point.setValues(0, 4, corners);
     quad->addChild(coords);
-    auto* normal = new SoNormal;
-    normal->vector.setValue(SbVec3f(0, 0, 1));
-    quad->addChild(normal);
-    auto* binding = new SoNormalBinding;
-    binding->value = SoNormalBinding::OVERALL;
-    quad->addChild(binding);
     auto* face = new SoFaceSet;
     face->numVertices.setValue(4);
     quad->addChild(face);

@@ -25,6 +25,9 @@ const SbColor kBackground(0.16f, 0.17f, 0.2f);
 /// From the front right (-Y, +X) and above: the three-quarter view of a draughtsman.
 const Eigen::Vector3d kViewDirection(-1.0, 1.6, -0.9);
 
+/// Share of viewAll's camera distance kept after framing (closer = larger scene on screen).
+constexpr float kFramingZoom = 0.9f;
+
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
@@ -84,6 +87,12 @@ void MainWindow::showDocument(const scene::SceneDocument& doc, const QString& ti
     if (SoCamera* camera = viewer_->getCamera()) {
         camera->orientation = scene::rotationLookingAlong(kViewDirection, Eigen::Vector3d::UnitZ());
         viewer_->viewAll();
+        // viewAll frames the bounding sphere, which leaves a wide margin around a flat-ish scene.
+        SbVec3f forward;
+        camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), forward);
+        const float distance = camera->focalDistance.getValue();
+        camera->position = camera->position.getValue() + forward * (distance * (1.0f - kFramingZoom));
+        camera->focalDistance = distance * kFramingZoom;
     }
     setWindowTitle(QStringLiteral("Sculptline — %1").arg(title));
     statusBar()->showMessage(tr("%1: %2 curve(s), %3 surface(s), %4 plane(s)")
