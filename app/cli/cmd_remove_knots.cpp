@@ -4,8 +4,8 @@
 //   {"curve": C, "tolerance": e}                          -> {"curve": C', "removed": n, "elapsed_ms": ms}
 //   {"surface": S, "direction": "u"|"v", "tolerance": e}  -> {"surface": S', "removed": n, "elapsed_ms": ms}
 //
-// "tolerance" is in model units, >= 0. Note that the kernel removes nothing at tolerance 0, even a
-// knot whose removal would be exact: pass a small positive tolerance (e.g. 1e-9) for exact removal.
+// "tolerance" is in model units, >= 0. Knots that insertion added come out again only up to
+// round-off, so undoing an insertion needs a small positive tolerance (e.g. 1e-9).
 // Closed curves stay closed (a knot is removed in every period).
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"

@@ -56,6 +56,17 @@ TEST(CliRemoveKnots, SurfaceDirection)
     EXPECT_EQ(io::surfaceFromJson(out["surface"], "surface").knotsV(), original.knotsV());
 }
 
+// The middle knot of a straight polyline with its middle point exactly on the line can be removed
+// with no deviation at all (every operation of A5.8 is exact here), so tolerance 0 must remove it.
+// Known kernel bug (reported): removeKnots skips its loop when the budget is 0.
+TEST(CliRemoveKnots, ExactRemovalAtToleranceZero)
+{
+    const json line = {{"degree", 1}, {"knots", {0, 0, 0.5, 1, 1}}, {"points", {{0, 0}, {1, 1}, {2, 2}}}};
+    const json out = runOk("remove-knots", {{"curve", line}, {"tolerance", 0}});
+    EXPECT_EQ(out["removed"], 1);
+    EXPECT_EQ(out["curve"]["knots"], json({0.0, 0.0, 1.0, 1.0}));
+}
+
 TEST(CliRemoveKnots, RejectsNegativeTolerance)
 {
     const CliResult r =
