@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -75,15 +76,15 @@ double ConditionedStroke::length() const
     return arc.back() + (closed ? (points.back() - points.front()).norm() : 0.0);
 }
 
-double boundingDiagonal(const std::vector<Eigen::Vector3d>& points)
+double strokeExtent(const std::vector<Eigen::Vector3d>& points)
 {
     if (points.size() < 2) return 0.0;
-    Eigen::Vector3d lo = points[0], hi = points[0];
-    for (const auto& p : points) {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    return (hi - lo).norm();
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const auto& p : points) centroid += p;
+    centroid /= static_cast<double>(points.size());
+    double r = 0.0;
+    for (const auto& p : points) r = std::max(r, (p - centroid).squaredNorm());
+    return 2.0 * std::sqrt(r);
 }
 
 void updateArcLength(ConditionedStroke& cs)
@@ -96,11 +97,11 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
 {
     validate(stroke);
     ConditionedStroke cs;
-    cs.diagonal = boundingDiagonal(stroke.points);
+    cs.extent = strokeExtent(stroke.points);
     // Exact duplicates differ by rounding only; a stroke whose extent is below this fraction of its
     // largest coordinate has no shape to fit.
-    const double scale = stroke.points[0].cwiseAbs().maxCoeff() + cs.diagonal;
-    if (!(cs.diagonal > 1e-12 * scale) || cs.diagonal == 0.0) {
+    const double scale = stroke.points[0].cwiseAbs().maxCoeff() + cs.extent;
+    if (!(cs.extent > 1e-12 * scale) || cs.extent == 0.0) {
         throw GeometryError("stroke.points: all points coincide, a curve needs at least two distinct points");
     }
 
@@ -121,7 +122,7 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     double rawLength = 0.0;
     for (size_t i = 1; i < stroke.points.size(); ++i) rawLength += (stroke.points[i] - stroke.points[i - 1]).norm();
     const double minDist =
-        std::max(options.minSpacing * cs.diagonal, rawLength / std::max(16, options.maxSamples));
+        std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
     const int last = static_cast<int>(stroke.points.size()) - 1;
     for (int i = 0; i <= last; ++i) {
         const Eigen::Vector3d& p = stroke.points[i];
@@ -149,7 +150,15 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     if (options.closure != Closure::Open && cs.size() >= 6) {
         const double total = cs.arc.back();
         const EndPair c = closestEnds(cs, 0.15 * total);
-        const bool meets = c.gap <= options.closeGap * total && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
+        // A loop must also enclose area: a stroke drawn out and straight back has close ends but is
+        // a doubled line. Vector area of the closed polygon (half the sum of p_i x p_{i+1}) against
+        // minLoopArea * L^2 (a circle has L^2 / 4 pi = 0.08 L^2, a 10:1 rectangle 0.02 L^2).
+        Eigen::Vector3d area = Eigen::Vector3d::Zero();
+        for (int i = c.head; i < c.tail; ++i) area += cs.points[i].cross(cs.points[i + 1]);
+        area += cs.points[c.tail].cross(cs.points[c.head]);
+        const bool encloses = 0.5 * area.norm() >= options.minLoopArea * total * total;
+        const bool meets =
+            encloses && c.gap <= options.closeGap * total && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
         if (meets || options.closure == Closure::Closed) {
             cs.closed = true;
             const EndPair cut = meets ? c : EndPair{0, cs.size() - 1, 0.0};

@@ -24,7 +24,9 @@ void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixe
 /// Recomputes cs.arc from cs.points.
 void updateArcLength(ConditionedStroke& cs);
 
-/// Bounding-box diagonal of a point set (0 for fewer than two points).
-double boundingDiagonal(const std::vector<Eigen::Vector3d>& points);
+/// The size every relative tolerance refers to: twice the largest distance from the centroid (0 for
+/// fewer than two points). Unlike a bounding-box diagonal it does not change when the stroke is
+/// rotated; for a segment it is its length, for a square its diagonal.
+double strokeExtent(const std::vector<Eigen::Vector3d>& points);
 
 }  // namespace sculptline::solvers::stroke

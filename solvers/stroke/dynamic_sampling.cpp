@@ -20,7 +20,7 @@ std::vector<int> dynamicThresholdSamples(const ConditionedStroke& cs, const Stro
     std::vector<char> forced(n, 0);
     forced[0] = forced[n - 1] = 1;
     for (int k : keep) forced[k] = 1;
-    const double unit = std::max(cs.length() / std::max(1, rawCount - 1), o.minUnit * cs.diagonal);
+    const double unit = std::max(cs.length() / std::max(1, rawCount - 1), o.minUnit * cs.extent);
 
     std::vector<int> out;
     out.push_back(0);

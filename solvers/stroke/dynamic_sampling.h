@@ -22,7 +22,7 @@ namespace sculptline::solvers::stroke {
 struct SamplingOptions {
     double slowFactor = 2.0;  ///< the 2 of eq. 4-2
     double fastFactor = 7.0;  ///< the 7 of eq. 4-3
-    /// Lower bound on u as a fraction of the stroke diagonal: very dense input must not yield
+    /// Lower bound on u as a fraction of the stroke extent (strokeExtent): very dense input must not yield
     /// samples closer than the noise the conditioning already removed.
     double minUnit = 0.002;
 };

@@ -60,7 +60,7 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     f.speed.resize(n);
     f.lo.resize(n);
     f.hi.resize(n);
-    const double minLen = options.neighbourhood * cs.diagonal;
+    const double minLen = options.neighbourhood * cs.extent;
     const double duration = cs.time.back() - cs.time.front();
     f.averageSpeed = duration > 0.0 ? cs.arc.back() / duration : 0.0;
 
@@ -116,7 +116,7 @@ std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures
         if (best) corners.push_back(i);
     }
     // Merge corners closer than mergeDistance along the path (cyclically on a loop).
-    const double merge = o.mergeDistance * cs.diagonal;
+    const double merge = o.mergeDistance * cs.extent;
     const double total = cs.length();
     auto gap = [&](int a, int b) {
         const double d = cs.arc[b] - cs.arc[a];

@@ -8,12 +8,12 @@ namespace sculptline::solvers::stroke {
 ///   d_n = phi(angle of P_{n+k} - P_{n-k})                      direction, phi wraps to (-pi, pi]
 ///   C_n = phi(angle(P_n - P_{n-k}, P_{n+k} - P_n)) / D(n-k, n+k)  curvature = turning / path length
 /// with D(n-k, n+k) the path length between the neighbours. The thesis fixes k = 2 for tablet
-/// samples a pixel or two apart; our samples are thinned to >= 0.2 % of the diagonal apart, and a
+/// samples a pixel or two apart; our samples are thinned to >= 0.2 % of the extent apart, and a
 /// jitter of that order over only two samples would turn the direction by tens of degrees, so k
 /// starts at 2 and grows until each side of the neighbourhood is `neighbourhood` long.
 struct FeatureOptions {
     int k = 2;                     ///< minimum neighbourhood in samples (thesis: 2)
-    double neighbourhood = 0.015;  ///< minimum one-sided neighbourhood length / stroke diagonal
+    double neighbourhood = 0.015;  ///< minimum one-sided neighbourhood length / stroke extent (strokeExtent)
 };
 
 struct StrokeFeatures {
@@ -41,7 +41,7 @@ struct CornerOptions {
                                  ///< ~40 degrees the slow-down around a true vertex, with jitter,
                                  ///< produced false corners a few samples beside it)
     double slowFraction = 0.55;  ///< "slow" = speed below this fraction of S_avg
-    /// Corners closer than this (path length / diagonal) are one corner: the one turning most stays.
+    /// Corners closer than this (path length / extent) are one corner: the one turning most stays.
     double mergeDistance = 0.05;
     double sharpness = 0.62;     ///< turning / wideTurning; 0.5 for a circular arc, 1 for a corner
 };

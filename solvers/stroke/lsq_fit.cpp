@@ -81,7 +81,9 @@ double distanceAt(const Spline& s, const Vec3& x, double u)
     return (c[0] - x).norm();
 }
 
-// Distance from C(u) to the segment [a, b].
+// Distance from C(u) to the segment [a, b] when the curve leaves it by more than a quarter of the
+// segment's length (an excursion where no data holds the curve), else 0: a smooth curve through
+// a and b bulges from their chord by its sagitta, which is geometry, not error.
 double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
 {
     Vec3 c[3];
@@ -89,7 +91,8 @@ double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
     const Vec3 ab = b - a;
     const double l2 = ab.squaredNorm();
     const double t = l2 > 0.0 ? std::clamp((c[0] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    return (a + t * ab - c[0]).norm();
+    const double gap = (a + t * ab - c[0]).norm();
+    return gap > 0.25 * std::sqrt(l2) ? gap : 0.0;
 }
 
 // Least squares with the fairing term; open curves keep P_0 = X_first and P_n = X_last fixed

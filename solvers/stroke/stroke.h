@@ -21,14 +21,16 @@ struct Stroke {
 enum class Closure { Auto, Open, Closed };
 
 /// Parameters of input conditioning. Distances are fractions of the stroke's bounding-box
-/// diagonal so that the result does not depend on the drawing's scale.
+/// extent (strokeExtent: twice the largest distance from the centroid) so that the result does not depend on the drawing's scale.
 struct ConditioningOptions {
-    /// Consecutive samples closer than this (relative to the diagonal) are merged: they carry no
+    /// Consecutive samples closer than this (relative to the extent) are merged: they carry no
     /// shape at the default fitting tolerance (0.5 %), only digitizer jitter (seed 003 §3.1).
     double minSpacing = 0.002;
     /// A stroke whose ends come within this fraction of its length closes on itself. Hand-drawn
     /// loops typically miss or overshoot by a few per cent of their perimeter.
     double closeGap = 0.06;
+    /// ... and enclose at least this area relative to length^2 (a circle: 0.08, a 10:1 rectangle: 0.02).
+    double minLoopArea = 0.01;
     Closure closure = Closure::Auto;
     /// Passes of the 3-point mean filter (seed 003 §3.1 "3x3 mean filter"); corners are held fixed.
     int smoothingPasses = 2;
@@ -45,7 +47,7 @@ struct ConditionedStroke {
     std::vector<double> arc;              ///< cumulative chord length, arc[0] = 0
     bool closed = false;                  ///< points form a loop; the seam gap is points.back() -> points[0]
     bool timed = false;                   ///< `time` holds real timestamps
-    double diagonal = 0.0;                ///< bounding-box diagonal of the raw stroke
+    double extent = 0.0;                  ///< strokeExtent of the raw stroke (the scale of relative sizes)
     std::vector<std::string> warnings;    ///< repairs applied (ignored timestamps, trimmed overshoot)
 
     int size() const { return static_cast<int>(points.size()); }

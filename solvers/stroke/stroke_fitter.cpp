@@ -85,13 +85,13 @@ Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q)
 FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
 {
     FitResult res;
-    const double diagonal = boundingDiagonal(stroke.points);
+    const double extent = strokeExtent(stroke.points);
     ConditioningOptions copt = options.conditioning;
-    if (options.tolerance > 0.0 && diagonal > 0.0) {
-        copt.minSpacing = std::min(copt.minSpacing, 0.4 * options.tolerance / diagonal);
+    if (options.tolerance > 0.0 && extent > 0.0) {
+        copt.minSpacing = std::min(copt.minSpacing, 0.4 * options.tolerance / extent);
     }
     ConditionedStroke cs = conditionStroke(stroke, copt);
-    res.tolerance = options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * cs.diagonal;
+    res.tolerance = options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * cs.extent;
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
     const StrokeFeatures f = computeFeatures(cs, options.features);

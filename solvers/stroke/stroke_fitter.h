@@ -9,12 +9,12 @@
 
 namespace sculptline::solvers::stroke {
 
-/// Default fitting tolerance as a fraction of the stroke's bounding-box diagonal: 0.5 % is about
+/// Default fitting tolerance as a fraction of the stroke's extent (strokeExtent): 0.5 % is about
 /// one pixel on a 200-pixel sketch, below what a designer perceives as a change of shape.
 constexpr double kDefaultRelativeTolerance = 0.005;
 
 struct FitOptions {
-    double tolerance = 0.0;  ///< max deviation in model units; <= 0 means relativeTolerance * diagonal
+    double tolerance = 0.0;  ///< max deviation in model units; <= 0 means relativeTolerance * extent
     double relativeTolerance = kDefaultRelativeTolerance;
     /// false: every conditioned sample enters the least squares ("speed-only" sampling of thesis
     /// Fig. 4-3 a, whose density follows the hand's slowness); true: eqs. 4-2/4-3.

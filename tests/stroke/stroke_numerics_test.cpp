@@ -1,0 +1,100 @@
+// Given the numerical building blocks, then they agree with reference computations.
+#include "solvers/bspline/basis.h"
+#include "solvers/stroke/banded_cholesky.h"
+#include "solvers/stroke/dynamic_sampling.h"
+#include "solvers/stroke/lsq_fit.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+namespace sculptline::stroketest {
+namespace {
+
+using namespace solvers::stroke;
+
+TEST(BandedCholesky, GivenRandomSpdBandMatrix_WhenSolved_ThenMatchesDenseLlt)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    const int n = 40, w = 3;
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+    BandMatrix band(n, w);
+    for (int i = 0; i < n; ++i) {
+        for (int j = std::max(0, i - w); j < i; ++j) {
+            const double v = uni(rng);
+            dense(i, j) = dense(j, i) = v;
+            band.at(i, j) = v;
+        }
+        dense(i, i) = band.at(i, i) = 8.0 + uni(rng);  // diagonally dominant: SPD
+    }
+    Eigen::MatrixXd b = Eigen::MatrixXd::Random(n, 3);
+    const Eigen::MatrixXd expected = dense.llt().solve(b);
+
+    ASSERT_TRUE(band.factor());
+    band.solveInPlace(b);
+
+    EXPECT_LE((b - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(BandedCholesky, GivenIndefiniteMatrix_ThenFactorReportsFailure)
+{
+    BandMatrix band(3, 1);
+    band.at(0, 0) = 1;
+    band.at(1, 0) = 2;
+    band.at(1, 1) = 1;
+    band.at(2, 2) = 1;
+    EXPECT_FALSE(band.factor());
+}
+
+TEST(CubicBasisDerivatives, GivenClampedAndInteriorSpans_ThenMatchKernelA23)
+{
+    const solvers::KnotVector knots = {0, 0, 0, 0, 0.1, 0.35, 0.35, 0.35, 0.6, 1, 1, 1, 1};
+    for (double u : {0.0, 0.05, 0.1, 0.2, 0.349, 0.35, 0.5, 0.77, 1.0}) {
+        const int span = solvers::findSpan(3, knots, u);
+        double d[3][4];
+        cubicBasisDerivatives(knots, span, u, d);
+        const Eigen::MatrixXd ref = solvers::basisDerivatives(span, u, 3, 2, knots);
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < 4; ++j) EXPECT_NEAR(d[k][j], ref(k, j), 1e-9 * (1 + std::abs(ref(k, j)))) << u;
+    }
+}
+
+TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
+{
+    const double unit = 2.0;
+    // Slow (eq. 4-2): round(2 r + 0.5) units.
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.1, 1.0, unit), 1 * unit);   // round(0.7) = 1
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.5, 1.0, unit), 2 * unit);   // round(1.5) = 2
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.9, 1.0, unit), 2 * unit);   // round(2.3) = 2
+    // Fast (eq. 4-3): 7 r units.
+    EXPECT_DOUBLE_EQ(samplingThreshold(1.0, 1.0, unit), 7 * unit);
+    EXPECT_DOUBLE_EQ(samplingThreshold(3.0, 1.5, unit), 14 * unit);
+}
+
+TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
+{
+    // A single cubic Bezier segment is in the spline space: the fit must reproduce it.
+    std::vector<Eigen::Vector3d> pts;
+    SplineFitInput in;
+    for (int i = 0; i <= 50; ++i) {
+        const double t = i / 50.0;
+        pts.emplace_back(t, t * t * t - t, 0.5 * t * t);
+        in.chord.push_back(t);
+        in.samples.push_back(i);
+    }
+    in.points = &pts;
+    SplineFitOptions o;
+    o.tolerance = 1e-6;
+    o.fairing = 0.0;  // no bias: the exact answer is in the space
+
+    const SplineFitResult r = fitCubicSpline(in, o);
+
+    EXPECT_EQ(r.points.size(), 4u);
+    EXPECT_LE(r.maxError, 1e-10);
+    EXPECT_TRUE(r.converged);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest

@@ -1,0 +1,132 @@
+// Given degenerate or hostile input, when fitted, then a clear error or a sensible curve, quickly.
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/stroke/stroke_fitter.h"
+#include "fit_checks.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace sculptline::stroketest {
+namespace {
+
+using namespace solvers::stroke;
+using solvers::GeometryError;
+
+std::string errorOf(const Stroke& s)
+{
+    try {
+        fitStroke(s);
+    } catch (const GeometryError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(StrokeRobustness, GivenEmptyStroke_ThenErrorNamesPoints)
+{
+    EXPECT_NE(errorOf(Stroke{}).find("stroke.points"), std::string::npos);
+}
+
+TEST(StrokeRobustness, GivenOnePointOrIdenticalPoints_ThenErrorSaysTheyCoincide)
+{
+    Stroke one;
+    one.points = {{1, 2, 0}};
+    Stroke same;
+    same.points.assign(50, Vec3(3, 4, 0));
+    EXPECT_NE(errorOf(one).find("coincide"), std::string::npos);
+    EXPECT_NE(errorOf(same).find("coincide"), std::string::npos);
+}
+
+TEST(StrokeRobustness, GivenNanOrInfinity_ThenErrorNamesTheSample)
+{
+    Stroke s = draw(lineShape({0, 0, 0}, {100, 0, 0}));
+    s.points[7].y() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_NE(errorOf(s).find("stroke.points[7]"), std::string::npos);
+    Stroke t = draw(lineShape({0, 0, 0}, {100, 0, 0}));
+    t.times[3] = std::numeric_limits<double>::infinity();
+    EXPECT_NE(errorOf(t).find("stroke.times[3]"), std::string::npos);
+}
+
+TEST(StrokeRobustness, GivenMismatchedTimes_ThenErrorNamesTimes)
+{
+    Stroke s = draw(lineShape({0, 0, 0}, {100, 0, 0}));
+    s.times.pop_back();
+    EXPECT_NE(errorOf(s).find("stroke.times"), std::string::npos);
+}
+
+TEST(StrokeRobustness, GivenDecreasingTimestamps_ThenTimesIgnoredWithWarningAndCurveFits)
+{
+    DrawOptions d;
+    d.noise = 0.2;
+    Stroke s = draw(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 80, 0}}, false), d);
+    std::swap(s.times[10], s.times[11]);
+
+    const FitResult r = fitStroke(s);
+
+    ASSERT_FALSE(r.warnings.empty());
+    EXPECT_NE(r.warnings[0].find("decreasing"), std::string::npos);
+    EXPECT_TRUE(r.converged);
+    EXPECT_EQ(r.corners.size(), 1u);
+}
+
+TEST(StrokeRobustness, GivenTwoPoints_ThenAStraightCubic)
+{
+    Stroke s;
+    s.points = {{0, 0, 0}, {10, 5, 0}};
+    const FitResult r = fitStroke(s);
+    const Vec3 mid = r.curve.evaluate(0.5 * (r.curve.domainStart() + r.curve.domainEnd()));
+    EXPECT_NEAR(mid.x(), 5.0, 1e-6);
+    EXPECT_NEAR(mid.y(), 2.5, 1e-6);
+}
+
+TEST(StrokeRobustness, GivenMillionSamples_ThenFittedInBoundedTime)
+{
+    DrawOptions d;
+    d.rate = 1e6 / 3.0;  // ~1e6 samples over the ~3 s a slow spiral takes
+    d.peakSpeed = 300;
+    d.noise = 0.1;
+    const Stroke s = draw(spiralShape(100, 3.0), d);
+    ASSERT_GT(s.points.size(), 500000u);
+
+    const auto t0 = std::chrono::steady_clock::now();
+    const FitResult r = fitStroke(s);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    EXPECT_TRUE(r.converged);
+    EXPECT_LT(seconds, 5.0) << "bounded time (a generous bound for a loaded machine; benchmarks hold the real numbers)";
+    EXPECT_LT(r.conditioned.size(), 25000);
+}
+
+TEST(StrokeRobustness, GivenStrokeDoublingBack_ThenTurnaroundIsACornerAndFitHolds)
+{
+    DrawOptions d;
+    d.noise = 0.2;
+    const Shape back = polygonShape({{0, 0, 0}, {150, 0, 0}, {10, 2, 0}}, false);
+    const Stroke s = draw(back, d);
+
+    const FitResult r = fitStroke(s);
+
+    EXPECT_EQ(r.corners.size(), 1u);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+}
+
+TEST(StrokeRobustness, Given3DStroke_ThenFitIn3D)
+{
+    Stroke s;
+    s.dimension = 3;
+    for (int i = 0; i <= 200; ++i) {
+        const double t = i / 200.0 * 4 * 3.14159265358979;
+        s.points.emplace_back(50 * std::cos(t), 50 * std::sin(t), 10 * t);
+    }
+    const FitResult r = fitStroke(s);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+    EXPECT_NEAR(r.curve.evaluate(r.curve.domainEnd()).z(), s.points.back().z(), 1e-9);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest
