@@ -1,7 +1,7 @@
 // Given polygons drawn with human-like timing (slowing at vertices) and noise, when corners are
 // detected, then precision and recall are high; smooth shapes yield no corners.
 #include "solvers/stroke/stroke_fitter.h"
-#include "synthetic_strokes.h"
+#include "fit_checks.h"
 
 #include <gtest/gtest.h>
 

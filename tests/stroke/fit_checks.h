@@ -1,11 +1,14 @@
 #pragma once
 // Independent measurements of a fitted curve for the stroke tests.
 #include "solvers/bspline/bspline_curve.h"
-#include "synthetic_strokes.h"
+#include "solvers/stroke/stroke_synthesis.h"
 
 #include <algorithm>
 
 namespace sculptline::stroketest {
+
+using Vec3 = Eigen::Vector3d;
+using namespace solvers::stroke;
 
 /// Max distance from `pts` to the curve, measured against a 20,000-segment polyline of it (the
 /// chord sagitta at that resolution is below 1e-7 of the curve's size). Dense sampling rather than

@@ -1,16 +1,17 @@
-#include "synthetic_strokes.h"
+#include "solvers/stroke/stroke_synthesis.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
-namespace sculptline::stroketest {
+namespace sculptline::solvers::stroke {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr int kDense = 4000;  // reference resolution per shape
 
-Shape fromFunction(const std::function<Vec3(double)>& f, double t0, double t1, bool closed)
+Shape fromFunction(const std::function<Eigen::Vector3d(double)>& f, double t0, double t1, bool closed)
 {
     Shape s;
     s.closed = closed;
@@ -21,41 +22,41 @@ Shape fromFunction(const std::function<Vec3(double)>& f, double t0, double t1, b
 
 }  // namespace
 
-Shape lineShape(const Vec3& a, const Vec3& b)
+Shape lineShape(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
-    return fromFunction([&](double t) { return Vec3(a + t * (b - a)); }, 0.0, 1.0, false);
+    return fromFunction([&](double t) { return Eigen::Vector3d(a + t * (b - a)); }, 0.0, 1.0, false);
 }
 
-Shape arcShape(const Vec3& c, double r, double a0, double a1)
+Shape arcShape(const Eigen::Vector3d& c, double r, double a0, double a1)
 {
-    return fromFunction([&](double t) { return Vec3(c + r * Vec3(std::cos(t), std::sin(t), 0.0)); }, a0, a1, false);
+    return fromFunction([&](double t) { return Eigen::Vector3d(c + r * Eigen::Vector3d(std::cos(t), std::sin(t), 0.0)); }, a0, a1, false);
 }
 
-Shape circleShape(const Vec3& c, double r, double start)
+Shape circleShape(const Eigen::Vector3d& c, double r, double start)
 {
-    return fromFunction([&](double t) { return Vec3(c + r * Vec3(std::cos(t), std::sin(t), 0.0)); }, start,
+    return fromFunction([&](double t) { return Eigen::Vector3d(c + r * Eigen::Vector3d(std::cos(t), std::sin(t), 0.0)); }, start,
                         start + 2 * kPi, true);
 }
 
-Shape ellipseShape(const Vec3& c, double a, double b, double rot)
+Shape ellipseShape(const Eigen::Vector3d& c, double a, double b, double rot)
 {
     const double cr = std::cos(rot), sr = std::sin(rot);
     return fromFunction(
         [&](double t) {
             const double x = a * std::cos(t), y = b * std::sin(t);
-            return Vec3(c + Vec3(cr * x - sr * y, sr * x + cr * y, 0.0));
+            return Eigen::Vector3d(c + Eigen::Vector3d(cr * x - sr * y, sr * x + cr * y, 0.0));
         },
         0.4, 0.4 + 2 * kPi, true);
 }
 
-Shape polygonShape(const std::vector<Vec3>& v, bool closed)
+Shape polygonShape(const std::vector<Eigen::Vector3d>& v, bool closed)
 {
     Shape s;
     s.closed = closed;
     const size_t edges = closed ? v.size() : v.size() - 1;
     const int per = kDense / static_cast<int>(edges);
     for (size_t e = 0; e < edges; ++e) {
-        const Vec3 a = v[e], b = v[(e + 1) % v.size()];
+        const Eigen::Vector3d a = v[e], b = v[(e + 1) % v.size()];
         if (e > 0 || closed) s.corners.push_back(static_cast<int>(s.reference.size()));
         for (int i = 0; i < per; ++i) s.reference.push_back(a + (b - a) * (double(i) / per));
     }
@@ -65,7 +66,7 @@ Shape polygonShape(const std::vector<Vec3>& v, bool closed)
 
 Shape sCurveShape(double size)
 {
-    return fromFunction([&](double t) { return Vec3(size * t, 0.25 * size * std::sin(2 * kPi * t), 0.0); }, 0.0, 1.0,
+    return fromFunction([&](double t) { return Eigen::Vector3d(size * t, 0.25 * size * std::sin(2 * kPi * t), 0.0); }, 0.0, 1.0,
                         false);
 }
 
@@ -74,7 +75,7 @@ Shape spiralShape(double size, double turns)
     return fromFunction(
         [&](double t) {
             const double r = size * (0.15 + 0.85 * t);
-            return Vec3(r * std::cos(2 * kPi * turns * t), r * std::sin(2 * kPi * turns * t), 0.0);
+            return Eigen::Vector3d(r * std::cos(2 * kPi * turns * t), r * std::sin(2 * kPi * turns * t), 0.0);
         },
         0.0, 1.0, false);
 }
@@ -93,7 +94,7 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
     for (int i = 0; i < n; ++i) {
         const int a = shape.closed ? (i + n - 8) % n : std::max(0, i - 8);
         const int b = shape.closed ? (i + 8) % n : std::min(n - 1, i + 8);
-        const Vec3 u = ref[i] - ref[a], w = ref[b] - ref[i];
+        const Eigen::Vector3d u = ref[i] - ref[a], w = ref[b] - ref[i];
         const double len = u.norm() + w.norm();
         const double turn = (u.norm() > 0 && w.norm() > 0) ? std::atan2(u.cross(w).norm(), u.dot(w)) : 0.0;
         const double kappa = len > 0 ? turn / len : 0.0;
@@ -124,7 +125,7 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
         const double h = arc[seg + 1] - arc[seg];
         const double f = h > 0 ? (s - arc[seg]) / h : 0.0;
         *segOut = seg;
-        return Vec3(ref[seg] + f * (ref[(seg + 1) % n] - ref[seg]));
+        return Eigen::Vector3d(ref[seg] + f * (ref[(seg + 1) % n] - ref[seg]));
     };
     Stroke s;
     s.dimension = 2;
@@ -132,8 +133,8 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
     double pos = 0.0, t = 0.0;
     while (true) {
         int seg = 0;
-        Vec3 p = at(pos, &seg);
-        if (o.noise > 0) p += o.noise * Vec3(gauss(rng), gauss(rng), 0.0);
+        Eigen::Vector3d p = at(pos, &seg);
+        if (o.noise > 0) p += o.noise * Eigen::Vector3d(gauss(rng), gauss(rng), 0.0);
         s.points.push_back(p);
         if (o.withTimes) s.times.push_back(t);
         if (pos >= end) break;
@@ -143,18 +144,18 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
     return s;
 }
 
-double distanceToPolyline(const Vec3& p, const std::vector<Vec3>& poly, bool closed)
+double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& poly, bool closed)
 {
     double best = std::numeric_limits<double>::infinity();
     const size_t segs = closed ? poly.size() : poly.size() - 1;
     for (size_t i = 0; i < segs; ++i) {
-        const Vec3& a = poly[i];
-        const Vec3& b = poly[(i + 1) % poly.size()];
-        const Vec3 ab = b - a;
+        const Eigen::Vector3d& a = poly[i];
+        const Eigen::Vector3d& b = poly[(i + 1) % poly.size()];
+        const Eigen::Vector3d ab = b - a;
         const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
         best = std::min(best, (a + t * ab - p).norm());
     }
     return best;
 }
 
-}  // namespace sculptline::stroketest
+}  // namespace sculptline::solvers::stroke

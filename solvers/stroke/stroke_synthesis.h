@@ -1,31 +1,30 @@
 #pragma once
-// Strokes synthesized from known curves with human-like timing and digitizer noise, shared by the
-// stroke tests and benchmarks. Timing follows the two-thirds power law of hand movement (Lacquaniti,
-// Terzuolo & Viviani 1983: speed ~ curvature^(-1/3)), with a further slow-down approaching corners
-// (the pen nearly stops at a vertex), sampled at a fixed digitizer rate.
+// Strokes synthesized from known curves with human-like timing and digitizer noise: the ground truth
+// of the stroke tests, benchmarks and the splprep comparison (scripts/compare_splprep.py). Timing
+// follows the two-thirds power law of hand movement (Lacquaniti, Terzuolo & Viviani 1983: speed ~
+// curvature^(-1/3)), with a further slow-down approaching corners (the pen nearly stops at a
+// vertex), sampled at a fixed digitizer rate.
 #include "solvers/stroke/stroke.h"
 
 #include <functional>
 #include <random>
 
-namespace sculptline::stroketest {
+namespace sculptline::solvers::stroke {
 
-using solvers::stroke::Stroke;
-using Vec3 = Eigen::Vector3d;
 
 /// A planar test shape: a dense polyline of the exact curve (the reference), and which vertices are
 /// intended corners.
 struct Shape {
-    std::vector<Vec3> reference;  ///< dense, exact
+    std::vector<Eigen::Vector3d> reference;  ///< dense, exact
     std::vector<int> corners;     ///< indices into reference
     bool closed = false;
 };
 
-Shape lineShape(const Vec3& a, const Vec3& b);
-Shape arcShape(const Vec3& center, double radius, double a0, double a1);
-Shape circleShape(const Vec3& center, double radius, double startAngle = 0.3);
-Shape ellipseShape(const Vec3& center, double a, double b, double rotation);
-Shape polygonShape(const std::vector<Vec3>& vertices, bool closed);
+Shape lineShape(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+Shape arcShape(const Eigen::Vector3d& center, double radius, double a0, double a1);
+Shape circleShape(const Eigen::Vector3d& center, double radius, double startAngle = 0.3);
+Shape ellipseShape(const Eigen::Vector3d& center, double a, double b, double rotation);
+Shape polygonShape(const std::vector<Eigen::Vector3d>& vertices, bool closed);
 Shape sCurveShape(double size);
 Shape spiralShape(double size, double turns);
 
@@ -45,6 +44,6 @@ struct DrawOptions {
 Stroke draw(const Shape& shape, const DrawOptions& options = {});
 
 /// Max distance from points to the reference polyline (point-to-segment, brute force).
-double distanceToPolyline(const Vec3& p, const std::vector<Vec3>& poly, bool closed);
+double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& poly, bool closed);
 
-}  // namespace sculptline::stroketest
+}  // namespace sculptline::solvers::stroke
