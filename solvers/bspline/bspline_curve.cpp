@@ -256,33 +256,10 @@ BSplineCurve<Dim> BSplineCurve<Dim>::removeKnots(double tolerance, int* removed)
     if (!std::isfinite(tolerance) || tolerance < 0) throw GeometryError("tolerance: must be a finite number >= 0");
     KnotVector knots = knots_;
     ControlMatrix pts = homogeneous();
-    // Rational curves: a homogeneous displacement d moves the curve by at most d (1 + |P|max) / wmin
-    // (The NURBS Book eq. 5.30), so the homogeneous tolerance is scaled down accordingly.
-    double budget = tolerance;
-    if (isRational()) {
-        double wmin = weights_[0], pmax = 0.0;
-        for (int i = 0; i < pointCount(); ++i) {
-            wmin = std::min(wmin, weights_[i]);
-            pmax = std::max(pmax, points_[i].norm());
-        }
-        budget = tolerance * wmin / (1.0 + pmax);
-    }
+    double budget = removalBudget(pts, Dim, isRational(), tolerance);
     const int groupSize = static_cast<int>(pts.cols());
-    int count = 0;
-    bool progress = true;
     if (!closed_) {
-        while (progress && budget > 0) {
-            progress = false;
-            for (double u : interiorBreakpoints(degree_, knots)) {
-                if (static_cast<int>(pts.rows()) <= degree_ + 1) break;
-                const RemovalResult r = removeKnot(degree_, knots, pts, u, 1, budget, groupSize);
-                if (r.removed > 0) {
-                    budget -= r.errorBound;
-                    count += r.removed;
-                    progress = true;
-                }
-            }
-        }
+        const int count = removeKnotsWithinBudget(degree_, knots, pts, budget, groupSize);
         if (removed) *removed = count;
         return fromHomogeneous(degree_, std::move(knots), pts, isRational());
     }
@@ -292,6 +269,8 @@ BSplineCurve<Dim> BSplineCurve<Dim>::removeKnots(double tolerance, int* removed)
     const double start = domainStart(), T = domainEnd() - start;
     PeriodicWindow w = periodicExtension(degree_, knots, pts, kWindowPeriods);
     int unique = pointCount() - degree_;
+    int count = 0;
+    bool progress = true;
     while (progress && budget > 0) {
         progress = false;
         std::vector<double> candidates;

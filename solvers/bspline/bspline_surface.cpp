@@ -234,29 +234,8 @@ BSplineSurface<Dim> BSplineSurface<Dim>::removeKnots(Direction d, double toleran
     if (!std::isfinite(tolerance) || tolerance < 0) throw GeometryError("tolerance: must be a finite number >= 0");
     KnotsAndPoints cur{knots(d), groupedRows(d)};
     const int h = Dim + (isRational() ? 1 : 0);
-    double budget = tolerance;
-    if (isRational()) {  // The NURBS Book eq. 5.30, as for curves.
-        double wmin = weights_[0], pmax = 0.0;
-        for (size_t i = 0; i < points_.size(); ++i) {
-            wmin = std::min(wmin, weights_[i]);
-            pmax = std::max(pmax, points_[i].norm());
-        }
-        budget = tolerance * wmin / (1.0 + pmax);
-    }
-    int count = 0;
-    bool progress = true;
-    while (progress && budget > 0) {
-        progress = false;
-        for (double t : interiorBreakpoints(degree(d), cur.knots)) {
-            if (static_cast<int>(cur.points.rows()) <= degree(d) + 1) break;
-            const RemovalResult r = removeKnot(degree(d), cur.knots, cur.points, t, 1, budget, h);
-            if (r.removed > 0) {
-                budget -= r.errorBound;
-                count += r.removed;
-                progress = true;
-            }
-        }
-    }
+    double budget = removalBudget(cur.points, Dim, isRational(), tolerance);
+    const int count = removeKnotsWithinBudget(degree(d), cur.knots, cur.points, budget, h);
     if (removed) *removed = count;
     return rebuild(*this, d, degree(d), std::move(cur));
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace sculptline::solvers {
@@ -379,6 +380,41 @@ RemovalResult removeKnot(int p, KnotVector& U, ControlMatrix& P, double u, int n
     for (int k = i + 1; k <= n; ++k) P.row(j++) = P.row(k);
     P.conservativeResize(P.rows() - t, Eigen::NoChange);
     return result;
+}
+
+double removalBudget(const ControlMatrix& points, int dim, bool rational, double tolerance)
+{
+    const int group = dim + (rational ? 1 : 0);
+    double wmin = std::numeric_limits<double>::infinity(), pmax = 0.0;
+    for (Eigen::Index r = 0; r < points.rows(); ++r) {
+        for (Eigen::Index c = 0; c + group <= points.cols(); c += group) {
+            const double w = rational ? points(r, c + dim) : 1.0;
+            wmin = std::min(wmin, w);
+            pmax = std::max(pmax, points.row(r).segment(c, dim).norm() / w);
+        }
+    }
+    const double floor = kRemovalRoundOff * (1.0 + pmax);
+    const double budget = rational ? tolerance * wmin / (1.0 + pmax) : tolerance;
+    return std::max(budget, floor);
+}
+
+int removeKnotsWithinBudget(int degree, KnotVector& knots, ControlMatrix& points, double& budget, int groupSize)
+{
+    int count = 0;
+    bool progress = true;
+    while (progress && budget > 0) {
+        progress = false;
+        for (double u : interiorBreakpoints(degree, knots)) {
+            if (static_cast<int>(points.rows()) <= degree + 1) break;
+            const RemovalResult r = removeKnot(degree, knots, points, u, 1, budget, groupSize);
+            if (r.removed > 0) {
+                budget -= r.errorBound;
+                count += r.removed;
+                progress = true;
+            }
+        }
+    }
+    return count;
 }
 
 }  // namespace sculptline::solvers

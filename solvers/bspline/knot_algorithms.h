@@ -46,4 +46,18 @@ struct RemovalResult {
 RemovalResult removeKnot(int degree, KnotVector& knots, ControlMatrix& points, double u, int times, double tolerance,
                          int groupSize);
 
+/// Round-off floor of knot removal, relative to the geometry's size: a knot that insertion put there
+/// comes back out with differences of a few ulps, so tolerance 0 removes exactly-removable knots.
+constexpr double kRemovalRoundOff = 1e-12;
+
+/// The budget, in the coordinates of `points`, for removing knots within the Euclidean `tolerance`:
+/// the tolerance itself for non-rational rows; for homogeneous rows (groups of dim+1 columns, the
+/// last the weight) tolerance * wmin / (1 + |P|max) (The NURBS Book eq. 5.30). Never below the
+/// round-off floor kRemovalRoundOff * (1 + |P|max).
+double removalBudget(const ControlMatrix& points, int dim, bool rational, double tolerance);
+
+/// Greedy removal (A5.8 on each distinct interior knot, repeated while any goes) that spends at
+/// most `budget` of summed error bounds; keeps at least degree+1 rows. Returns the count removed.
+int removeKnotsWithinBudget(int degree, KnotVector& knots, ControlMatrix& points, double& budget, int groupSize);
+
 }  // namespace sculptline::solvers
