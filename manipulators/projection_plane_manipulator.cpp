@@ -43,12 +43,14 @@ ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneSpec& p
     draggerScale->scaleFactor = up;
     draggerGroup->addChild(draggerScale);
     dragger_ = new SoJackDragger;
+    // Planes are moved and turned, not resized: without its scaler, a press on the jack's centre
+    // goes to the translator instead of shrinking the plane towards nothing.
+    dragger_->setPart("scaler", nullptr);
     draggerGroup->addChild(dragger_);
     root_->addChild(draggerGroup);
 
     motion_->translation.connectFrom(&dragger_->translation);
     motion_->rotation.connectFrom(&dragger_->rotation);
-    motion_->scaleFactor.connectFrom(&dragger_->scaleFactor);
 
     sensor_.setFunction(&ProjectionPlaneManipulator::motionChanged);
     sensor_.setData(this);
@@ -76,8 +78,7 @@ scene::PlaneSpec ProjectionPlaneManipulator::plane() const
     scene::PlaneSpec now;
     now.origin = initial_.origin + scene::toEigen(offset);
     now.normal = scene::toEigen(normal).normalized();
-    // The jack scales uniformly, so any component is the scale.
-    now.size = initial_.size * motion_->scaleFactor.getValue()[0];
+    now.size = initial_.size;
     return now;
 }
 

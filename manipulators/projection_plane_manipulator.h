@@ -1,6 +1,7 @@
 #pragma once
 // A projection plane the user can move: the plane's look (scene/plane_node.h) carried by a Coin
-// SoJackDragger whose translation, rotation and scale fields drive the plane's transform.
+// SoJackDragger (without its scaler: planes keep their size) whose translation and rotation fields
+// drive the plane's transform.
 #include "scene/scene_document.h"
 
 #include <Inventor/sensors/SoNodeSensor.h>
@@ -22,7 +23,7 @@ constexpr double kDraggerScale = 0.12;
 ///     SoTransform placement        plane origin and normal from the document
 ///     SoSeparator {
 ///       SoScale s                  dragger size (kDraggerScale * plane size)
-///       SoTransform motion         fields connected from the dragger's translation/rotation/scaleFactor
+///       SoTransform motion         fields connected from the dragger's translation and rotation
 ///       SoScale 1/s                undoes s for the plane, so the plane moves with the dragger
 ///       plane geometry }
 ///     SoSeparator { SoScale s, SoJackDragger } }

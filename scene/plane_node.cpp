@@ -8,6 +8,7 @@
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoPolygonOffset.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
@@ -81,6 +82,12 @@ SoSeparator* makePlaneGeometry(double size)
     const float half = static_cast<float>(size / 2.0);
     auto* root = new SoSeparator;
     root->setName("PlaneGeometry");
+    // Unpickable: the plane is moved through its dragger, which sits in the plane; a pickable quad
+    // would take the clicks meant for the dragger. Drawing on the plane intersects the mouse ray
+    // with the plane's equation, not with this geometry.
+    auto* pick = new SoPickStyle;
+    pick->style = SoPickStyle::UNPICKABLE;
+    root->addChild(pick);
     root->addChild(makeGridLines(half));
     root->addChild(makeQuad(half));
     return root;

@@ -11,7 +11,8 @@ namespace sculptline::scene {
 constexpr int kPlaneGridCells = 10;
 
 /// The plane's geometry centred on the local origin in the XY plane (normal +Z), edge `size`: a
-/// translucent two-sided quad, its border and grid lines. Reference count 0.
+/// translucent two-sided quad, its border and grid lines; unpickable (clicks go to what is behind
+/// it, or to the dragger carrying it). Reference count 0.
 SoSeparator* makePlaneGeometry(double size);
 
 /// The transform placing local XY-plane geometry at plane.origin with +Z along plane.normal.

@@ -2,12 +2,18 @@
 // the dragger's fields are its API, so setting them stands in for a mouse drag.
 #include "manipulators/projection_plane_manipulator.h"
 
+#include "scene/eigen_coin.h"
+
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInteraction.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/actions/SoHandleEventAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/draggers/SoJackDragger.h>
+#include <Inventor/events/SoLocation2Event.h>
+#include <Inventor/events/SoMouseButtonEvent.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTransform.h>
 #include <Inventor/sensors/SoSensorManager.h>
@@ -107,6 +113,113 @@ TEST_F(ProjectionPlane, RootStaysAliveWhileTheSceneHoldsIt)
     manipulator_.reset();
     EXPECT_EQ(root->getRefCount(), 1);
     scene->unref();
+}
+
+}  // namespace
+}  // namespace sculptline::manipulators
+
+namespace sculptline::manipulators {
+namespace {
+
+/// A drag with simulated Coin events (SoHandleEventAction): the path a mouse takes in the viewer,
+/// without a window.
+class DraggedWithTheMouse : public ProjectionPlane {
+protected:
+    static constexpr short kWidth = 400, kHeight = 400;
+    /// Rounding of the projected centre to whole pixels, on both ends of the drag.
+    static constexpr int kPixelTolerance = 1;
+
+    void SetUp() override
+    {
+        ProjectionPlane::SetUp();
+        scene_ = new SoSeparator;
+        scene_->ref();
+        camera_ = new SoOrthographicCamera;
+        scene_->addChild(camera_);
+        scene_->addChild(manipulator_->root());
+        // Look straight down: the jack's centre box lies in the dragger's local XZ plane, which the
+        // placement turns into the world's horizontal plane, so from above it is seen face-on.
+        camera_->viewAll(scene_, viewport());
+    }
+    void TearDown() override { scene_->unref(); }
+
+    SbViewportRegion viewport() const { return SbViewportRegion(kWidth, kHeight); }
+
+    /// Pixel (origin bottom-left, as in Coin events) of a world point.
+    SbVec2s pixelOf(const Eigen::Vector3d& p) const
+    {
+        SbVec3f ndc;
+        camera_->getViewVolume(1.0f).projectToScreen(scene::toSb(p), ndc);
+        return SbVec2s(static_cast<short>(ndc[0] * kWidth), static_cast<short>(ndc[1] * kHeight));
+    }
+
+    void send(SoEvent& event, const SbVec2s& pixel)
+    {
+        event.setPosition(pixel);
+        event.setTime(SbTime::getTimeOfDay());
+        SoHandleEventAction action(viewport());
+        action.setEvent(&event);
+        action.apply(scene_);
+    }
+
+    void press(const SbVec2s& pixel)
+    {
+        SoMouseButtonEvent e;
+        e.setButton(SoMouseButtonEvent::BUTTON1);
+        e.setState(SoButtonEvent::DOWN);
+        send(e, pixel);
+    }
+    void move(const SbVec2s& pixel)
+    {
+        SoLocation2Event e;
+        send(e, pixel);
+    }
+    void release(const SbVec2s& pixel)
+    {
+        SoMouseButtonEvent e;
+        e.setButton(SoMouseButtonEvent::BUTTON1);
+        e.setState(SoButtonEvent::UP);
+        send(e, pixel);
+    }
+
+    SoSeparator* scene_ = nullptr;
+    SoOrthographicCamera* camera_ = nullptr;
+};
+
+TEST_F(DraggedWithTheMouse, PressMoveReleaseMovesThePlane)
+{
+    // Given a press on the jack's centre (its translator box, seen face-on from above)
+    int starts = 0, finishes = 0;
+    const auto count = [](void* counter, SoDragger*) { ++*static_cast<int*>(counter); };
+    manipulator_->dragger()->addStartCallback(count, &starts);
+    manipulator_->dragger()->addFinishCallback(count, &finishes);
+    // Off the axes: at the centre itself the jack's vertical line translator, seen end-on, wins
+    const SbVec2s centre = pixelOf(spec_.origin);
+    const SbVec2s start(centre[0] + 7, centre[1] + 7);
+    press(start);
+    ASSERT_EQ(starts, 1) << "the press at " << start[0] << "," << start[1] << " grabbed no part of the jack";
+
+    // When the mouse moves 40 pixels right and up (in four steps), then releases
+    int moves = 0;
+    manipulator_->setMovedCallback([&moves]() { ++moves; });
+    const SbVec2s end(start[0] + 40, start[1] + 40);
+    for (int step = 1; step <= 4; ++step) move(SbVec2s(start[0] + 10 * step, start[1] + 10 * step));
+    release(end);
+    SoDB::getSensorManager()->processDelayQueue(FALSE);
+
+    // Then the plane followed the mouse: its centre is now 40 pixels right and up of where it was
+    // (the box translator moves in the horizontal plane, seen face-on), it has not turned, its
+    // geometry agrees with plane(), and listeners heard of it
+    const scene::PlaneSpec now = manipulator_->plane();
+    const SbVec2s landed = pixelOf(now.origin);
+    EXPECT_NEAR(landed[0] - centre[0], 40, kPixelTolerance);
+    EXPECT_NEAR(landed[1] - centre[1], 40, kPixelTolerance);
+    EXPECT_NEAR(now.origin.z(), spec_.origin.z(), kTolerance);
+    EXPECT_LT((now.normal - spec_.normal).norm(), kTolerance);
+    EXPECT_EQ(finishes, 1);
+    const SbBox3f box = planeBounds();
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(box.getCenter()[k], now.origin[k], kTolerance) << "axis " << k;
+    EXPECT_GE(moves, 1);
 }
 
 }  // namespace
