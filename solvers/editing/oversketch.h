@@ -1,0 +1,90 @@
+#pragma once
+// Over-sketching: a stroke drawn over a curve replaces the part it covers, with smooth transitions.
+// Two methods: `local-c2` (seed 001_08db50965017e161, Kim & Kim, Alg. 1-1/1-2, eqs. 1-2) and
+// `blend` (thesis 002_d9515b9d07f9cfd1 §4.2, eqs. 4-23..4-26; seed 003 §4).
+#include "solvers/bspline/bspline_curve.h"
+#include "solvers/bspline/projection.h"
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sculptline::solvers::editing {
+
+enum class OversketchMethod {
+    LocalC2,  ///< constrained least squares on [t_k, t_l]: exact outside, C2, adds only needed knots
+    Blend,    ///< control point replacement with scale factor and length/tangent transitions
+};
+
+/// "local-c2" or "blend"; nullopt otherwise.
+std::optional<OversketchMethod> parseOversketchMethod(const std::string& name);
+
+struct OversketchOptions {
+    /// The default, chosen by measurement (see oversketch.cpp and bench/editing_bench.cpp).
+    OversketchMethod method = OversketchMethod::LocalC2;
+    /// Fit tolerance as a fraction of the stroke's length (local-c2: Alg. 1-1's ε; blend: the
+    /// tolerance of the stroke's own least-squares fit). (0, 1).
+    double tolerance = 0.002;
+    /// Blend: eq. 4-23's scale in [0, 1]; 1 follows the stroke, 0 leaves the curve as it is.
+    double scale = 1.0;
+    /// Local-c2: transition length as a multiple of the stroke end's distance from the curve
+    /// (seed 001 §3: d1 = 3|C(u_s) - h_0|, "we could choose a value larger than three").
+    double transitionFactor = 3.0;
+    /// Local-c2: the transition is at least this fraction of the stroke's length, so a stroke that
+    /// starts exactly on the curve still gets a blend (d1 = 0 in the paper would give a kink).
+    double minTransition = 0.1;
+};
+
+
+/// Over-sketches `curve` (non-rational; open or closed) with `stroke` (in the curve's space).
+/// A stroke drawn against the curve's direction is reversed first. Open curves: a stroke running
+/// past an end extends the curve (local-c2) or replaces the end (blend).
+/// @param span receives the new curve's parameter interval that was replaced.
+/// @param maxError receives the max distance from the fitted target (model units).
+/// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite), "curve"
+///         (rational, degree != 3 for local-c2), "scale" or "tolerance" (out of range).
+template <int Dim>
+BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke,
+                             const OversketchOptions& options = {}, std::pair<double, double>* span = nullptr,
+                             double* maxError = nullptr);
+
+/// Repeated over-sketching of one curve (the interactive loop): keeps the current curve and its
+/// projector, so each stroke costs one edit plus one projector rebuild.
+template <int Dim>
+class OversketchSolver {
+public:
+    explicit OversketchSolver(BSplineCurve<Dim> curve, OversketchOptions options = {});
+    /// Applies one stroke; returns the replaced parameter span of the new curve.
+    std::pair<double, double> apply(const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke);
+    const BSplineCurve<Dim>& curve() const { return curve_; }
+
+private:
+    BSplineCurve<Dim> curve_;
+    OversketchOptions options_;
+};
+
+namespace detail {
+
+/// The stroke, cleaned (duplicates dropped) and oriented along the curve, with the parameters of
+/// its ends' projections (closed curves: u_e may exceed the domain end, u_e - u_s < period).
+template <int Dim>
+struct StrokeOnCurve {
+    std::vector<Eigen::Matrix<double, Dim, 1>> points;
+    double us = 0.0, ue = 0.0;
+    double length = 0.0;
+};
+
+template <int Dim>
+StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke);
+
+template <int Dim>
+BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& curve, const StrokeOnCurve<Dim>& s,
+                                    const OversketchOptions& o, std::pair<double, double>& span, double& maxError);
+
+template <int Dim>
+BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& curve, const StrokeOnCurve<Dim>& s,
+                                  const OversketchOptions& o, std::pair<double, double>& span, double& maxError);
+
+}  // namespace detail
+}  // namespace sculptline::solvers::editing

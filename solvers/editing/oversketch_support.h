@@ -1,0 +1,199 @@
+#pragma once
+// Internal helpers shared by the over-sketching methods: arc length with wrapping, the break
+// points of seed 001 §3 and the blended target polyline h̄. Not part of the public API.
+#include "solvers/bspline/arc_length.h"
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/editing/oversketch.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::solvers::editing::detail {
+
+/// Arc length s(u) and its inverse; closed curves continue periodically beyond their domain.
+template <int Dim>
+class CurveLengths {
+public:
+    explicit CurveLengths(const BSplineCurve<Dim>& c)
+        : table_(c), closed_(c.isClosed()), a_(c.domainStart()), T_(c.domainEnd() - c.domainStart())
+    {
+    }
+    double total() const { return table_.totalLength(); }
+    double lengthAt(double u) const
+    {
+        if (!closed_) return table_.lengthAt(std::clamp(u, a_, a_ + T_));
+        const double q = std::floor((u - a_) / T_);
+        return table_.lengthAt(std::clamp(u - q * T_, a_, a_ + T_)) + q * total();
+    }
+    double parameterAt(double s) const
+    {
+        if (!closed_) return table_.parameterAt(std::clamp(s, 0.0, total()));
+        const double q = std::floor(s / total());
+        return table_.parameterAt(s - q * total()) + q * T_;
+    }
+
+private:
+    ArcLengthParameterization<Dim> table_;
+    bool closed_;
+    double a_, T_;
+};
+
+/// Largest knot value <= u (below = true) or smallest >= u, periodic for closed curves.
+template <int Dim>
+double nearestKnot(const BSplineCurve<Dim>& c, double u, bool below)
+{
+    const auto& k = c.knots();
+    const int p = c.degree();
+    const int last = c.pointCount();  // index of the domain end knot
+    const double a = c.domainStart(), T = c.domainEnd() - a;
+    double shift = 0.0;
+    if (c.isClosed()) {
+        shift = std::floor((u - a) / T) * T;
+        u -= shift;
+    }
+    u = std::clamp(u, a, a + T);
+    if (below) {
+        const auto it = std::upper_bound(k.begin() + p, k.begin() + last + 1, u);
+        return *(it - 1) + shift;
+    }
+    const auto it = std::lower_bound(k.begin() + p, k.begin() + last + 1, u);
+    return *it + shift;
+}
+
+/// Seed 001 §3: u_s, u_e, u_ps = u_s - d1, u_pe = u_e + d2 (arc length), t_k <= u_ps, t_l >= u_pe.
+struct Breaks {
+    double us = 0, ue = 0, ups = 0, upe = 0, tk = 0, tl = 0, d1 = 0, d2 = 0;
+    bool leftFree = false, rightFree = false;      // the new curve's end is pinned to h̄'s end
+    bool leftExtend = false, rightExtend = false;  // the stroke runs past that end of the curve
+};
+
+template <int Dim>
+Breaks breakPoints(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& len, const StrokeOnCurve<Dim>& st,
+                   const OversketchOptions& o)
+{
+    Breaks b;
+    b.us = st.us;
+    b.ue = st.ue;
+    const auto& h = st.points;
+    b.d1 = std::max(o.transitionFactor * (c.evaluate(b.us) - h.front()).norm(), o.minTransition * st.length);
+    b.d2 = std::max(o.transitionFactor * (c.evaluate(b.ue) - h.back()).norm(), o.minTransition * st.length);
+    const double a = c.domainStart(), e = c.domainEnd();
+    const double offTol = o.tolerance * st.length;  // "on the curve's end" within the fit tolerance
+    const double uTol = 1e-9 * (e - a);
+    if (!c.isClosed()) {
+        b.leftExtend = b.us <= a + uTol && (h.front() - c.evaluate(a)).norm() > offTol;
+        b.rightExtend = b.ue >= e - uTol && (h.back() - c.evaluate(e)).norm() > offTol;
+    }
+    b.ups = b.leftExtend ? a : len.parameterAt(len.lengthAt(b.us) - b.d1);
+    b.upe = b.rightExtend ? e : len.parameterAt(len.lengthAt(b.ue) + b.d2);
+    b.tk = nearestKnot(c, b.ups, true);
+    b.tl = nearestKnot(c, b.upe, false);
+    if (!c.isClosed()) {
+        b.leftFree = b.tk <= a;
+        b.rightFree = b.tl >= e;
+    } else if (b.tl - b.tk >= e - a) {
+        throw GeometryError("stroke: the over-sketch with its transitions covers the whole closed curve");
+    }
+    return b;
+}
+
+template <int Dim>
+struct Target {
+    std::vector<double> params;
+    std::vector<Eigen::Matrix<double, Dim, 1>> points;
+};
+
+constexpr double kTangentSpan = 0.01;
+
+/// Unit direction of the stroke leaving its first point (forward = true) or arriving at its last,
+/// measured over kTangentSpan of its length (short enough to be the tangent of a curved stroke,
+/// long enough that single-sample pen jitter at the tip does not set it).
+template <int Dim>
+Eigen::Matrix<double, Dim, 1> strokeTangent(const StrokeOnCurve<Dim>& st, bool atStart)
+{
+    const auto& h = st.points;
+    const int n = static_cast<int>(h.size());
+    for (int i = 1; i < n; ++i) {
+        const auto& q = atStart ? h[i] : h[n - 1 - i];
+        const auto& e = atStart ? h.front() : h.back();
+        if ((q - e).norm() >= kTangentSpan * st.length || i == n - 1) {
+            return atStart ? Eigen::Matrix<double, Dim, 1>((q - e).normalized()) : Eigen::Matrix<double, Dim, 1>((e - q).normalized());
+        }
+    }
+    return Eigen::Matrix<double, Dim, 1>::UnitX();
+}
+
+/// Seed 001 §3: h̄ = E^l ∪ B^l ∪ h ∪ B^r ∪ E^r on [t_k, t_l]. E keeps the curve's own parameters;
+/// B blends the curve into the line L tangent to the stroke at its end, of length d (Baudel 1994),
+/// with the C1 smoothstep weight 3t² - 2t³; the middle gets chord-length parameters on [u_ps, u_pe].
+template <int Dim>
+Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*len*/, const StrokeOnCurve<Dim>& st,
+                        const Breaks& b)
+{
+    using Pt = Eigen::Matrix<double, Dim, 1>;
+    constexpr int K = 24;  // samples per curve piece: enough to pin a few spans of shape
+    Target<Dim> t;
+    auto smooth = [](double x) { return x * x * (3.0 - 2.0 * x); };
+    for (int i = 0; i < K && b.ups > b.tk; ++i) {
+        const double u = b.tk + (b.ups - b.tk) * i / K;
+        t.params.push_back(u);
+        t.points.push_back(c.evaluate(u));
+    }
+    std::vector<Pt> mid;
+    const Pt h0 = st.points.front(), hm = st.points.back();
+    if (!b.leftExtend && b.us > b.ups) {
+        const Pt tan = strokeTangent(st, true);
+        for (int i = 0; i < K; ++i) {
+            const double x = double(i) / K;
+            const Pt line = h0 - (1.0 - x) * b.d1 * tan;
+            mid.push_back((1.0 - smooth(x)) * c.evaluate(b.ups + (b.us - b.ups) * x) + smooth(x) * line);
+        }
+    }
+    mid.insert(mid.end(), st.points.begin(), st.points.end());
+    if (!b.rightExtend && b.upe > b.ue) {
+        const Pt tan = strokeTangent(st, false);
+        for (int i = 1; i <= K; ++i) {
+            const double x = double(i) / K;
+            const Pt line = hm + x * b.d2 * tan;
+            mid.push_back(smooth(1.0 - x) * line + (1.0 - smooth(1.0 - x)) * c.evaluate(b.ue + (b.upe - b.ue) * x));
+        }
+    }
+    std::vector<double> chord(mid.size(), 0.0);
+    for (size_t i = 1; i < mid.size(); ++i) chord[i] = chord[i - 1] + (mid[i] - mid[i - 1]).norm();
+    for (size_t i = 0; i < mid.size(); ++i) {
+        t.params.push_back(b.ups + (b.upe - b.ups) * (chord.back() > 0 ? chord[i] / chord.back() : 0.0));
+        t.points.push_back(mid[i]);
+    }
+    for (int i = 1; i <= K && b.tl > b.upe; ++i) {
+        const double u = b.upe + (b.tl - b.upe) * i / K;
+        t.params.push_back(u);
+        t.points.push_back(c.evaluate(u));
+    }
+    return t;
+}
+
+/// A closed curve with the spans outside [span.first, span.second] split `times` times (exact knot
+/// insertion), so that the edit's support fits inside one period.
+template <int Dim>
+BSplineCurve<Dim> refineOutside(const BSplineCurve<Dim>& c, std::pair<double, double> span, int times)
+{
+    BSplineCurve<Dim> r = c;
+    const double a = c.domainStart(), T = c.domainEnd() - a;
+    for (int k = 0; k < times; ++k) {
+        std::vector<double> mids;
+        const auto& kn = r.knots();
+        for (int i = r.degree(); i < r.pointCount(); ++i) {
+            if (kn[i + 1] <= kn[i]) continue;
+            const double m = 0.5 * (kn[i] + kn[i + 1]);
+            const double rel = std::fmod(m - span.first + 4.0 * T, T);
+            if (rel > span.second - span.first) mids.push_back(m);
+        }
+        std::sort(mids.begin(), mids.end());
+        if (mids.empty()) break;
+        r = r.refine(mids);
+    }
+    (void)a;
+    return r;
+}
+
+}  // namespace sculptline::solvers::editing::detail

@@ -1,0 +1,214 @@
+// Over-sketching (seed 001 Alg. 1-1/1-2 "local-c2"; thesis §4.2 "blend"). Given / When / Then.
+#include "solvers/editing/oversketch.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <cstdio>
+
+using namespace sculptline::solvers;
+using namespace sculptline::solvers::editing;
+
+namespace {
+
+// Round-off bound for "unchanged": the curves are ~30 units across; blossoming and evaluation
+// lose a few ulps per level, so 1e-12 absolute is ~100 ulps of the coordinates.
+constexpr double kUnchanged = 1e-12;
+
+Curve2d wave(int n)
+{
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i < n; ++i) pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
+    return makeClampedUniform<2>(3, pts);
+}
+
+// A bump of height h over the curve's parameter range [u0, u1], `count` samples.
+std::vector<Eigen::Vector2d> bump(const Curve2d& c, double u0, double u1, double h, int count)
+{
+    std::vector<Eigen::Vector2d> s;
+    for (int i = 0; i < count; ++i) {
+        const double t = double(i) / (count - 1);
+        const double u = u0 + (u1 - u0) * t;
+        const auto d = c.derivatives(u, 1);
+        const Eigen::Vector2d normal(-d[1].y(), d[1].x());
+        s.push_back(d[0] + h * std::sin(M_PI * t) * normal.normalized() + 0.2 * h * normal.normalized());
+    }
+    return s;
+}
+
+double maxDistanceToCurve(const Curve2d& c, const std::vector<Eigen::Vector2d>& pts)
+{
+    const CurveProjector<2> pr(c);
+    double worst = 0.0;
+    for (const auto& p : pts) worst = std::max(worst, pr.project(p).distance);
+    return worst;
+}
+
+// Largest jump of the k-th derivative across any interior knot, relative to its size: the two
+// one-sided limits are evaluated exactly from the polynomial pieces on either side (The NURBS Book
+// A2.3 on the left span and on the right span), not by finite differences.
+double maxJump(const Curve2d& c, int k)
+{
+    const auto& U = c.knots();
+    const int p = c.degree();
+    double worst = 0.0;
+    auto piece = [&](int span, double t) {
+        const Eigen::MatrixXd d = basisDerivatives(span, t, p, k, U);
+        Eigen::Vector2d v = Eigen::Vector2d::Zero();
+        for (int j = 0; j <= p; ++j) v += d(k, j) * c.points()[(span - p + j) % c.pointCount()];
+        return v;
+    };
+    for (int i = p + 1; i < c.pointCount(); ++i) {
+        if (U[i] == U[i - 1] || U[i] == U[i + 1]) continue;  // multiple knots are reported by the caller's checks
+        const Eigen::Vector2d l = piece(i - 1, U[i]), r = piece(i, U[i]);
+        worst = std::max(worst, (l - r).norm() / std::max(1.0, l.norm()));
+    }
+    return worst;
+}
+
+bool simpleInteriorKnots(const Curve2d& c)
+{
+    for (double t : interiorBreakpoints(c.degree(), c.knots())) {
+        if (knotMultiplicity(c.knots(), t) != 1) return false;
+    }
+    return true;
+}
+
+OversketchOptions method(OversketchMethod m)
+{
+    OversketchOptions o;
+    o.method = m;
+    return o;
+}
+
+}  // namespace
+
+TEST(OversketchLocalC2, GivenBumpStroke_WhenOversketched_ThenUnchangedOutsideSpanAndC2AndFollowsStroke)
+{
+    const Curve2d curve = wave(30);
+    const auto stroke = bump(curve, 0.4, 0.6, 2.0, 300);
+
+    std::pair<double, double> span;
+    double err = 0.0;
+    const Curve2d out = oversketch(curve, stroke, method(OversketchMethod::LocalC2), &span, &err);
+
+    ASSERT_LT(span.first, span.second);
+    for (int i = 0; i <= 1000; ++i) {
+        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * i / 1000.0;
+        if (u <= span.first || u >= span.second) {
+            EXPECT_LT((out.evaluate(u) - curve.evaluate(u)).norm(), kUnchanged) << "u = " << u;
+        }
+    }
+    EXPECT_TRUE(simpleInteriorKnots(out));
+    EXPECT_LT(maxJump(out, 2), 1e-9) << "C2: second derivative continuous at every knot";
+    const double strokeLength = 2.0 * 2.0 + 8.0;  // rough; tolerance is relative to the real length
+    EXPECT_LT(maxDistanceToCurve(out, stroke), 0.01 * strokeLength);
+    std::printf("local-c2: %d -> %d control points, span [%.3f, %.3f], max error %.4f\n", curve.pointCount(),
+                out.pointCount(), span.first, span.second, err);
+}
+
+TEST(OversketchLocalC2, GivenReversedStroke_WhenOversketched_ThenSameAsForward)
+{
+    const Curve2d curve = wave(20);
+    auto stroke = bump(curve, 0.3, 0.5, 1.5, 200);
+    const Curve2d forward = oversketch(curve, stroke);
+    std::reverse(stroke.begin(), stroke.end());
+
+    const Curve2d backward = oversketch(curve, stroke);
+
+    ASSERT_EQ(forward.pointCount(), backward.pointCount());
+    for (int i = 0; i < forward.pointCount(); ++i) EXPECT_LT((forward.points()[i] - backward.points()[i]).norm(), 1e-9);
+}
+
+TEST(OversketchLocalC2, GivenTwentyEditsOfOneRegion_WhenOversketched_ThenControlPointsStayBounded)
+{
+    // Strokes alternate up and down over the same region of the original curve (a designer
+    // redrawing one part again and again).
+    const Curve2d original = wave(30);
+    OversketchSolver<2> solver(original);
+    const int start = solver.curve().pointCount();
+    int most = start;
+    for (int k = 0; k < 20; ++k) {
+        const double h = (k % 2 ? -1.0 : 1.0) * (1.0 + 0.05 * k);
+        solver.apply(bump(original, 0.4, 0.6, h, 300));
+        most = std::max(most, solver.curve().pointCount());
+    }
+    std::printf("local-c2, 20 edits: %d -> %d control points (max %d)\n", start, solver.curve().pointCount(), most);
+    EXPECT_LT(most, 2 * start) << "the knot vector must not explode";
+    EXPECT_LT(maxJump(solver.curve(), 2), 1e-9);
+}
+
+TEST(OversketchLocalC2, GivenStraightStrokeOverWigglyPart_WhenOversketched_ThenFewerControlPoints)
+{
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i < 40; ++i) pts.emplace_back(0.5 * i, (i > 8 && i < 32) ? 0.6 * std::sin(2.1 * i) : 0.0);
+    const Curve2d curve = makeClampedUniform<2>(3, pts);
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 200; ++i) stroke.emplace_back(4.0 + 12.0 * i / 200.0, 0.3);
+
+    const Curve2d out = oversketch(curve, stroke);
+
+    EXPECT_LT(out.pointCount(), curve.pointCount());
+    EXPECT_LT(maxDistanceToCurve(out, stroke), 0.01 * 12.0);
+}
+
+TEST(OversketchLocalC2, GivenStrokePastTheEnd_WhenOversketched_ThenCurveIsExtendedToStrokeEnd)
+{
+    const Curve2d curve = wave(12);  // x in [0, 11]
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 100; ++i) {
+        const double x = 9.0 + 5.0 * i / 100.0;
+        stroke.emplace_back(x, x < 11.0 ? curve.evaluate((x) / 11.0).y() : curve.evaluate(1.0).y() + 0.3 * (x - 11.0));
+    }
+
+    const Curve2d out = oversketch(curve, stroke);
+
+    EXPECT_LT((out.evaluate(out.domainEnd()) - stroke.back()).norm(), 1e-9);
+    EXPECT_LT((out.evaluate(0.1) - curve.evaluate(0.1)).norm(), kUnchanged);
+}
+
+TEST(OversketchLocalC2, GivenClosedCurve_WhenOversketchedAcrossTheSeam_ThenClosedC2AndLocal)
+{
+    std::vector<Eigen::Vector2d> loop;
+    for (int i = 0; i < 16; ++i) loop.emplace_back(8 * std::cos(i * M_PI / 8), 5 * std::sin(i * M_PI / 8));
+    const Curve2d curve = makeClosedUniform<2>(3, loop);
+    // The seam is at u = 0 (point near (8, 0)); the stroke bulges outwards across it.
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 150; ++i) {
+        const double a = -0.5 + 1.0 * i / 150.0;
+        stroke.emplace_back((8.0 + 1.5 * std::cos(M_PI * (a))) * std::cos(a), 5.5 * std::sin(a));
+    }
+
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, {}, &span);
+
+    ASSERT_TRUE(out.isClosed());
+    const auto d0 = out.derivatives(out.domainStart(), 2), d1 = out.derivatives(out.domainEnd(), 2);
+    for (int k = 0; k < 3; ++k) EXPECT_LT((d0[k] - d1[k]).norm(), 1e-8) << "C2 across the seam, order " << k;
+    EXPECT_LT(maxJump(out, 2), 1e-9);
+    // Locality: the far side of the loop (around (-8, 0)) is unchanged.
+    const CurveProjector<2> pr(out);
+    for (double ang = 2.4; ang <= 3.9; ang += 0.1) {
+        const Eigen::Vector2d q(8 * std::cos(ang), 5 * std::sin(ang));
+        const auto oldP = CurveProjector<2>(curve).project(q).point;
+        EXPECT_LT(pr.project(oldP).distance, kUnchanged);
+    }
+    EXPECT_LT(maxDistanceToCurve(out, stroke), 0.05);
+}
+
+TEST(Oversketch, GivenDegenerateStrokes_WhenOversketched_ThenErrorOrValidCurveNeverCrash)
+{
+    const Curve2d curve = wave(15);
+    for (auto m : {OversketchMethod::LocalC2, OversketchMethod::Blend}) {
+        EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{}, method(m)), GeometryError);
+        EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{{3, 1}, {3, 1}}, method(m)), GeometryError);
+        EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{{3, 1}, {NAN, 1}}, method(m)), GeometryError);
+        // Entirely off the curve, 20 units above it: a valid curve that follows the stroke.
+        std::vector<Eigen::Vector2d> far;
+        for (int i = 0; i <= 50; ++i) far.emplace_back(4.0 + 6.0 * i / 50.0, 20.0);
+        const Curve2d out = oversketch(curve, far, method(m));
+        EXPECT_LT(maxDistanceToCurve(out, far), 0.5) << (m == OversketchMethod::Blend ? "blend" : "local-c2");
+    }
+}
