@@ -14,7 +14,9 @@
 #include <QTimer>
 #include <QWindow>
 
+#include <cstdlib>
 #include <iostream>
+#include <string>
 
 namespace {
 
@@ -33,6 +35,16 @@ bool writeScreenshot(sculptline::ui::MainWindow& window, const std::string& path
     return true;
 }
 
+/// Qt aborts (SIGABRT) when its default X11 platform finds no display; say why and exit instead.
+bool haveDisplay()
+{
+    const char* platform = std::getenv("QT_QPA_PLATFORM");
+    if (platform && *platform && std::string(platform).rfind("xcb", 0) != 0) return true;  // offscreen, wayland, ...
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (display && *display) || (wayland && *wayland);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -48,6 +60,11 @@ int main(int argc, char** argv)
     } catch (const std::exception& e) {
         std::cerr << "sculptline: " << e.what() << "\n";
         return 2;
+    }
+
+    if (!haveDisplay()) {
+        std::cerr << "sculptline: no display (DISPLAY is not set); run it in a desktop session or under xvfb-run\n";
+        return 1;
     }
 
     // CLI11 has consumed the arguments; Qt gets only the program name.

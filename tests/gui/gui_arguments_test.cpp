@@ -18,7 +18,7 @@ struct ProgramRun {
 /// Runs sculptline with `arguments` and extra environment assignments `env` ("NAME=value ...").
 ProgramRun runSculptline(const std::string& arguments, const std::string& env = "")
 {
-    const std::string command = "env -u DISPLAY " + env + " '" SCULPTLINE_EXE "' " + arguments + " 2>&1";
+    const std::string command = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + env + " '" SCULPTLINE_EXE "' " + arguments + " 2>&1";
     ProgramRun run;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return run;
@@ -88,6 +88,14 @@ TEST(GuiArguments, MissingDefaultDataDirectoryIsAnError)
     const ProgramRun run = runSculptline("", "SCULPTLINE_DATA_DIR=/nonexistent/data");
     EXPECT_EQ(run.status, 2);
     EXPECT_NE(run.output.find("/nonexistent/data/default_scene.json: cannot open file"), std::string::npos) << run.output;
+}
+
+TEST(GuiArguments, NoDisplayIsAMessageNotAnAbort)
+{
+    // Given valid arguments but no display / Then a message and status 1 (Qt alone would abort)
+    const ProgramRun run = runSculptline("--quit");
+    EXPECT_EQ(run.status, 1) << run.output;
+    EXPECT_NE(run.output.find("no display"), std::string::npos) << run.output;
 }
 
 }  // namespace
