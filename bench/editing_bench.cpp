@@ -1,0 +1,126 @@
+// Curve editing benchmarks (issue 4): sculptline-bench --benchmark_filter=Editing
+#include "solvers/editing/curve_manipulation.h"
+#include "solvers/editing/lift.h"
+#include "solvers/editing/oversketch.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+using namespace sculptline::solvers;
+using namespace sculptline::solvers::editing;
+
+namespace {
+
+Curve2d wave(int n)
+{
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i < n; ++i) pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
+    return makeClampedUniform<2>(3, pts);
+}
+
+std::vector<Eigen::Vector2d> bump(const Curve2d& c, double u0, double u1, double h, int count)
+{
+    std::vector<Eigen::Vector2d> s;
+    for (int i = 0; i < count; ++i) {
+        const double t = double(i) / (count - 1);
+        const auto d = c.derivatives(u0 + (u1 - u0) * t, 1);
+        const Eigen::Vector2d normal = Eigen::Vector2d(-d[1].y(), d[1].x()).normalized();
+        s.push_back(d[0] + h * (std::sin(M_PI * t) + 0.2) * normal);
+    }
+    return s;
+}
+
+// One over-sketch of a 30-control-point curve with a 300-sample stroke (issue 4 §4).
+void oversketchOnce(benchmark::State& state, OversketchMethod m)
+{
+    const Curve2d curve = wave(30);
+    const auto stroke = bump(curve, 0.4, 0.6, 2.0, 300);
+    OversketchOptions o;
+    o.method = m;
+    for (auto _ : state) benchmark::DoNotOptimize(oversketch(curve, stroke, o));
+}
+void BM_EditingOversketchLocalC2(benchmark::State& s) { oversketchOnce(s, OversketchMethod::LocalC2); }
+void BM_EditingOversketchBlend(benchmark::State& s) { oversketchOnce(s, OversketchMethod::Blend); }
+BENCHMARK(BM_EditingOversketchLocalC2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EditingOversketchBlend)->Unit(benchmark::kMillisecond);
+
+// A drag with 3 constraints on a 50-control-point curve (thesis Fig. 6-3: a moving point, a kept
+// tangent, a kept distance).
+std::vector<CurveConstraint<3>> dragConstraints(const Curve3d& c)
+{
+    std::vector<CurveConstraint<3>> cs(3);
+    cs[0].type = ConstraintType::Position;
+    cs[0].u = 0.45;
+    cs[0].value = c.evaluate(0.45);
+    cs[1].type = ConstraintType::Tangent;
+    cs[1].u = 0.5;
+    cs[1].value = c.derivatives(0.5, 1)[1];
+    cs[2].type = ConstraintType::Distance;
+    cs[2].u = 0.5;
+    cs[2].u2 = 0.55;
+    cs[2].value = c.evaluate(0.55) - c.evaluate(0.5);
+    return cs;
+}
+
+Curve3d helix(int n)
+{
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < n; ++i) pts.emplace_back(10 * std::cos(0.4 * i), 10 * std::sin(0.4 * i), 0.8 * i);
+    return makeClampedUniform<3>(3, pts);
+}
+
+void BM_EditingDragPreprocess(benchmark::State& state)
+{
+    const Curve3d curve = helix(50);
+    const auto cs = dragConstraints(curve);
+    for (auto _ : state) benchmark::DoNotOptimize(CurveManipulationSolver<3>(curve, cs, {0, 49}));
+}
+BENCHMARK(BM_EditingDragPreprocess)->Unit(benchmark::kMicrosecond);
+
+// Per event, the bare stage of thesis §6.1: d = C b.
+void BM_EditingDragPerEventDisplacements(benchmark::State& state)
+{
+    const Curve3d curve = helix(50);
+    const auto cs = dragConstraints(curve);
+    const CurveManipulationSolver<3> solver(curve, cs, {0, 49});
+    std::vector<Eigen::Vector3d> targets = {cs[0].value, cs[1].value, cs[2].value};
+    CurveManipulationSolver<3>::Displacements d;
+    double t = 0.0;
+    for (auto _ : state) {
+        t += 1e-3;
+        targets[0] = cs[0].value + Eigen::Vector3d(t, 0.5 * t, 0.0);
+        solver.displacements(targets, d);
+        benchmark::DoNotOptimize(d.data());
+    }
+}
+BENCHMARK(BM_EditingDragPerEventDisplacements)->Unit(benchmark::kMicrosecond);
+
+// Per event including building the new curve value (what a viewer update needs).
+void BM_EditingDragPerEventCurve(benchmark::State& state)
+{
+    const Curve3d curve = helix(50);
+    const auto cs = dragConstraints(curve);
+    const CurveManipulationSolver<3> solver(curve, cs, {0, 49});
+    std::vector<Eigen::Vector3d> targets = {cs[0].value, cs[1].value, cs[2].value};
+    double t = 0.0;
+    for (auto _ : state) {
+        t += 1e-3;
+        targets[0] = cs[0].value + Eigen::Vector3d(t, 0.5 * t, 0.0);
+        benchmark::DoNotOptimize(solver.solve(targets));
+    }
+}
+BENCHMARK(BM_EditingDragPerEventCurve)->Unit(benchmark::kMicrosecond);
+
+void BM_EditingLift300(benchmark::State& state)
+{
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i < 300; ++i) {
+        const double t = i / 299.0;
+        stroke.emplace_back(10 * t, 6 * std::sin(2.5 * t) + 0.5 * std::sin(9 * t));
+    }
+    for (auto _ : state) benchmark::DoNotOptimize(liftStroke(stroke, 0.0, 5.0));
+}
+BENCHMARK(BM_EditingLift300)->Unit(benchmark::kMillisecond);
+
+}  // namespace
