@@ -211,6 +211,11 @@ BSplineCurve<Dim> BSplineCurve<Dim>::insertKnot(double u, int times) const
         return fromHomogeneous(degree_, std::move(r.knots), r.points, isRational());
     }
     const double un = normalizeParameter(u);
+    if (times < 0 || knotMultiplicity(knots_, un) + times > degree_) {
+        std::ostringstream msg;
+        msg << "times: inserting knot " << un << " " << times << " times would exceed the degree " << degree_;
+        throw GeometryError(msg.str());
+    }
     std::vector<double> all;
     const PeriodicWindow w = periodicExtension(degree_, knots_, homogeneous(), kWindowPeriods);
     for (int q = -kWindowPeriods; q <= kWindowPeriods; ++q)

@@ -48,7 +48,9 @@ double CurveProjector<Dim>::refine(const Point& x, double lo, double hi, double 
         return d[1].dot(r);
     };
     const double resolution = 4 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(lo), std::abs(hi)});
-    double flo = f(lo, nullptr), fhi = f(hi, nullptr);
+    // At a knot the kernel evaluates the span to its right; the upper end needs the left limit
+    // (they differ at a C0 corner), hence the step one ulp inside.
+    double flo = f(lo, nullptr), fhi = f(std::nextafter(hi, lo), nullptr);
     if (!(flo < 0 && fhi > 0)) {
         // No sign change: the minimum is at a bracket end (or the bracket holds an inflexion).
         const double dl = (curve_.evaluate(lo) - x).squaredNorm(), dh = (curve_.evaluate(hi) - x).squaredNorm();
@@ -119,7 +121,14 @@ CurveProjection<Dim> CurveProjector<Dim>::project(const Point& x) const
             hi = params_[i + 1];
             dh = d2[i + 1];
         }
-        if (d2[i] <= dl && d2[i] <= dh) consider(refine(x, lo, hi, params_[i]));
+        if (d2[i] <= dl && d2[i] <= dh) {
+            // A sampled local minimum: each side of the sample may hold a minimum of its own (at a
+            // C0 knot the distance has one on each side of the corner), so refine both halves.
+            const double u = params_[i];
+            consider(u);
+            if (lo < u) consider(refine(x, lo, u, 0.5 * (lo + u)));
+            if (u < hi) consider(refine(x, u, hi, 0.5 * (u + hi)));
+        }
     }
     if (!closed) {
         consider(curve_.domainStart());

@@ -20,7 +20,8 @@ struct SurfaceProjection {
 
 /// Projects points onto one curve. The curve is sampled once (a few samples per knot span, enough
 /// that each sample interval holds at most one local minimum of the distance for ordinary curves);
-/// each query brackets every sampled local minimum, refines it with Newton's method on
+/// each query brackets every sampled local minimum, refines both of its half-intervals (a C0 knot
+/// has a minimum on each side) with Newton's method on
 /// f(u) = C'(u)·(C(u) - x) (The NURBS Book eq. 6.3) safeguarded by bisection, compares with the
 /// end points (open curves) and returns the best. Closed curves wrap across the seam.
 template <int Dim>

@@ -121,3 +121,17 @@ TEST(SurfaceProjection, GlobalMinimumAgainstDenseGrid)
         EXPECT_LT((s.evaluate(r.u, r.v) - r.point).norm(), kExact);
     }
 }
+
+TEST(CurveProjection, BothSidesOfACornerKnotAreSearched)
+{
+    // Given a quadratic with a double knot at 4 (a C0 corner) and a point whose nearest point lies
+    // just before the corner while the corner is the nearest sample (found by the CLI tests)
+    const std::vector<Eigen::Vector3d> pts = {{0, 0, 0}, {1, 2, 0.5}, {2, 0, 1}, {3, 3, -1}, {4, 1, 2}, {5, 4, 0}, {6, 0, 1}, {7, 2, 3}};
+    const Curve3d c(2, {0, 0, 0, 1, 2, 3, 4, 4, 5, 5, 5}, pts);
+    const Eigen::Vector3d x(5, 4, 0.1);
+    // When it is projected
+    const CurveProjection<3> r = projectToCurve(c, x);
+    // Then the global minimum (dense search: u ~ 3.99285, distance ~ 0.0845589) is found
+    EXPECT_LE(r.distance, denseMinimum(c, x) + kOptimalitySlack);
+    EXPECT_LT(r.u, 4.0);
+}
