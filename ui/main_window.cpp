@@ -46,7 +46,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 
 MainWindow::~MainWindow()
 {
-    // The viewer holds a ref of its own; drop ours before the manipulators release their subgraphs.
+    // Detach the graph from the viewer (it holds a ref of its own), drop ours, then let the
+    // manipulators release their subgraphs; the viewer goes last.
     viewer_->setSceneGraph(nullptr);
     clearScene();
     delete viewer_;
