@@ -61,12 +61,15 @@ int segmentsPerSpan(const TessellationTolerance& t) { return std::max(1, t.minSe
 
 class CurveRefiner {
 public:
-    CurveRefiner(const Curve3d& c, double chord, double angle) : curve_(c), chord_(chord), angle_(angle) {}
+    CurveRefiner(const Curve3d& c, double chord, double angle, size_t budget)
+        : curve_(c), chord_(chord), angle_(angle), budget_(budget)
+    {
+    }
 
     /// Appends a and the refinement points of (a, b) (not b) to out.
     void refine(double a, double b, int depth, Polyline& out) const
     {
-        if (depth < kMaxRefinementDepth && !flat(a, b)) {
+        if (depth < kMaxRefinementDepth && out.points.size() < budget_ && !flat(a, b)) {
             const double m = 0.5 * (a + b);
             refine(a, m, depth + 1, out);
             refine(m, b, depth + 1, out);
@@ -94,6 +97,7 @@ private:
     const Curve3d& curve_;
     double chord_;
     double angle_;
+    size_t budget_;  ///< no bisection once the polyline has this many points
 };
 
 /// Refines the parameters of one surface direction against the grid lines at the other direction's
@@ -102,11 +106,16 @@ class SurfaceRefiner {
 public:
     SurfaceRefiner(const Surface3d& s, double chord, double angle) : surface_(s), chord_(chord), angle_(angle) {}
 
-    /// Returns true when `along` gained parameters. minWidth stops bisection (depth limit).
-    bool refine(Direction d, std::vector<double>& along, const std::vector<double>& across, double minWidth) const
+    /// Returns true when `along` gained parameters. minWidth stops bisection (depth limit), and so
+    /// does reaching `maxVertices` grid vertices.
+    bool refine(Direction d, std::vector<double>& along, const std::vector<double>& across, double minWidth,
+                size_t maxVertices) const
     {
         std::vector<double> out;
-        for (size_t i = 0; i + 1 < along.size(); ++i) split(d, along[i], along[i + 1], across, minWidth, out);
+        // Splits allowed: the budget's share of this direction, less the parameters already there.
+        const size_t maxAlong = std::max(along.size(), maxVertices / std::max<size_t>(across.size(), 1));
+        size_t splits = maxAlong - along.size();
+        for (size_t i = 0; i + 1 < along.size(); ++i) split(d, along[i], along[i + 1], across, minWidth, splits, out);
         out.push_back(along.back());
         const bool changed = out.size() != along.size();
         along = std::move(out);
@@ -123,13 +132,14 @@ private:
         return d == Direction::U ? surface_.normal(t, c) : surface_.normal(c, t);
     }
 
-    void split(Direction d, double a, double b, const std::vector<double>& across, double minWidth,
+    void split(Direction d, double a, double b, const std::vector<double>& across, double minWidth, size_t& splits,
                std::vector<double>& out) const
     {
-        if (b - a > 2.0 * minWidth && !flat(d, a, b, across)) {
+        if (splits > 0 && b - a > 2.0 * minWidth && !flat(d, a, b, across)) {
+            --splits;
             const double m = 0.5 * (a + b);
-            split(d, a, m, across, minWidth, out);
-            split(d, m, b, across, minWidth, out);
+            split(d, a, m, across, minWidth, splits, out);
+            split(d, m, b, across, minWidth, splits, out);
             return;
         }
         out.push_back(a);
@@ -188,9 +198,10 @@ double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, con
 
 Polyline tessellate(const Curve3d& curve, const TessellationTolerance& tolerance)
 {
-    const CurveRefiner refiner(curve, chordToleranceFor(tolerance, curve.controlSize()), tolerance.maxTurningAngle);
     const auto breaks = spanBreaks(curve.degree(), curve.knots(), curve.domainStart(), curve.domainEnd());
     const auto params = initialParameters(breaks, segmentsPerSpan(tolerance));
+    const CurveRefiner refiner(curve, chordToleranceFor(tolerance, curve.controlSize()), tolerance.maxTurningAngle,
+                               static_cast<size_t>(std::max(tolerance.maxVertices, 0)));
     Polyline out;
     for (size_t i = 0; i + 1 < params.size(); ++i) refiner.refine(params[i], params[i + 1], 0, out);
     out.params.push_back(params.back());
@@ -212,9 +223,10 @@ GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& toler
     const double depthScale = std::ldexp(1.0, -kMaxRefinementDepth);
     const double minWidthU = smallestGap(mesh.u) * depthScale;
     const double minWidthV = smallestGap(mesh.v) * depthScale;
+    const size_t budget = static_cast<size_t>(std::max(tolerance.maxVertices, 0));
     for (int round = 0; round < kMaxSurfaceRounds; ++round) {
-        const bool changedU = refiner.refine(Direction::U, mesh.u, mesh.v, minWidthU);
-        const bool changedV = refiner.refine(Direction::V, mesh.v, mesh.u, minWidthV);
+        const bool changedU = refiner.refine(Direction::U, mesh.u, mesh.v, minWidthU, budget);
+        const bool changedV = refiner.refine(Direction::V, mesh.v, mesh.u, minWidthV, budget);
         if (!changedU && !changedV) break;
     }
 

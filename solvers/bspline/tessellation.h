@@ -22,12 +22,18 @@ constexpr int kMinSegmentsPerSpan = 4;
 /// viewer uses, and a guarantee of termination at cusps or degenerate (zero-length) tangents.
 constexpr int kMaxRefinementDepth = 12;
 
+/// Vertex budget of one tessellation: a million vertices is about 50 MB of mesh with normals and
+/// more than a viewport shows pixel for pixel. Bounds time and memory on hostile input (a document
+/// with a huge, wildly oscillating patch) where the tolerances cannot be met.
+constexpr int kMaxTessellationVertices = 1000000;
+
 /// Tolerances of a tessellation. chordTolerance <= 0 means "relative": kRelativeChordTolerance
 /// times the geometry's controlSize().
 struct TessellationTolerance {
     double chordTolerance = 0.0;  ///< model units; maximum distance of the geometry from a chord
     double maxTurningAngle = kMaxTurningAngle;  ///< radians, in (0, pi)
     int minSegmentsPerSpan = kMinSegmentsPerSpan;  ///< >= 1
+    int maxVertices = kMaxTessellationVertices;  ///< refinement stops at this many vertices
 };
 
 /// A polyline through points on a curve; params[i] is the curve parameter of points[i].
@@ -53,12 +59,16 @@ struct GridMesh {
 /// minSegmentsPerSpan segments, then segments are bisected until the curve stays within
 /// chordTolerance of each chord (probed at interior points) and the tangent turns by at most
 /// maxTurningAngle across it. A closed curve's last point repeats its first.
+/// @note Bisection stops once maxVertices points exist (the minimum sampling and the halves already
+///       pending in the bisection, at most kMaxRefinementDepth, are still emitted), so
+///       the tolerances hold only when the budget suffices; the default is ample for real curves.
 Polyline tessellate(const Curve3d& curve, const TessellationTolerance& tolerance = {});
 
 /// Grid mesh of `surface`: per knot span in each direction minSegmentsPerSpan segments, then each
 /// parameter interval is bisected while, on any grid line across it, the surface leaves the chord
 /// by more than chordTolerance or the normal turns by more than maxTurningAngle. U and V are refined
 /// alternately until neither changes, so the bound holds along every grid line of the result.
+/// @note As for curves, refinement stops at maxVertices grid vertices (rows * cols).
 GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& tolerance = {});
 
 /// Distance from p to the segment [a, b] (a == b allowed).

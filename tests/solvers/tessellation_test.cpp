@@ -133,6 +133,29 @@ TEST(CurveTessellation, KinkAtAKnotTerminates)
     EXPECT_LT((line.points[kMinSegmentsPerSpan] - Eigen::Vector3d(30, 0, 0)).norm(), 1e-12);
 }
 
+TEST(CurveTessellation, VertexBudgetBoundsAnUnreachableTolerance)
+{
+    // Given a tolerance far below what the budget allows
+    TessellationTolerance t;
+    t.chordTolerance = 1e-12;
+    t.maxVertices = 100;
+    // When tessellated / Then refinement stops at the budget; what is left is the start points of
+    // the halves pending in the recursion (one per level) and the minimum sampling of 4 spans
+    const Polyline line = tessellate(wigglyCurve(), t);
+    EXPECT_LE(line.points.size(), 100u + kMaxRefinementDepth + 4u * kMinSegmentsPerSpan + 1u);
+    EXPECT_GE(line.points.size(), 100u);
+}
+
+TEST(SurfaceTessellation, VertexBudgetBoundsAnUnreachableTolerance)
+{
+    TessellationTolerance t;
+    t.chordTolerance = 1e-12;
+    t.maxVertices = 2000;
+    const GridMesh mesh = tessellate(bumpySurface(), t);
+    EXPECT_LE(mesh.rows() * mesh.cols(), 2000);
+    EXPECT_GE(mesh.rows() * mesh.cols(), 1000) << "the budget should be mostly used";
+}
+
 TEST(SurfaceTessellation, GridVerticesLieOnTheSurfaceWithUnitNormals)
 {
     const Surface3d s = bumpySurface();
