@@ -12,6 +12,10 @@ using nlohmann::json;
 
 namespace {
 
+/// Largest coordinate or size the scene accepts, in model units (a kilometre in millimetres): Coin
+/// draws in float, whose resolution at 1e6 is 0.06 units, and beyond ~1e38 not at all.
+constexpr double kMaxExtent = 1e6;
+
 /// Grid lines per edge beyond which a grid is a fill, not lines (and a typo like spacing 0.0001).
 constexpr double kMaxGridLines = 2000.0;
 
@@ -19,7 +23,19 @@ double positive(const json& j, const std::string& path)
 {
     const double v = io::numberFromJson(j, path);
     if (!(v > 0.0)) throw io::InputError(path + ": must be positive");
+    if (v > kMaxExtent) throw io::InputError(path + ": must not exceed 1e6 model units");
     return v;
+}
+
+void checkExtent(const Eigen::Vector3d& p, const std::string& path)
+{
+    if (p.cwiseAbs().maxCoeff() > kMaxExtent) throw io::InputError(path + ": coordinates must lie within +-1e6 model units");
+}
+
+template <typename Points>
+void checkExtent(const Points& points, const std::string& path)
+{
+    for (size_t i = 0; i < points.size(); ++i) checkExtent(points[i], path + ".points[" + std::to_string(i) + "]");
 }
 
 /// The array member `key` of j, or an empty array when absent.
@@ -37,6 +53,7 @@ PlaneSpec planeFromJson(const json& j, const std::string& path)
     if (!j.is_object()) throw io::InputError(path + ": must be a JSON object");
     PlaneSpec p;
     p.origin = io::pointFromJson(io::member(j, "origin", path), path + ".origin");
+    checkExtent(p.origin, path + ".origin");
     const Eigen::Vector3d n = io::pointFromJson(io::member(j, "normal", path), path + ".normal");
     if (!(n.norm() > 0.0)) throw io::InputError(path + ".normal: must not be zero");
     p.normal = n.normalized();
@@ -68,11 +85,15 @@ SceneDocument documentFromJson(const json& j)
     }
     const json& curves = optionalArray(j, "curves");
     for (size_t i = 0; i < curves.size(); ++i) {
-        doc.curves.push_back(io::curveFromJson(curves[i], "curves[" + std::to_string(i) + "]"));
+        const std::string path = "curves[" + std::to_string(i) + "]";
+        doc.curves.push_back(io::curveFromJson(curves[i], path));
+        checkExtent(doc.curves.back().points(), path);
     }
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {
-        doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], "surfaces[" + std::to_string(i) + "]"));
+        const std::string path = "surfaces[" + std::to_string(i) + "]";
+        doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
+        checkExtent(doc.surfaces.back().points(), path);
     }
     return doc;
 }

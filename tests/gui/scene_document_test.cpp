@@ -74,6 +74,10 @@ TEST(SceneDocument, MalformedDocumentsNameTheField)
         {{{"curves", {validCurve(), json{{"degree", 3}, {"points", {{0, 0}}}}}}}, "curves[1]"},
         {{{"curves", {json{{"degree", 1}, {"knots", {0, 1, 0, 1}}, {"points", {{0, 0}, {1, 0}}}}}}}, "curves[0]"},
         {{{"surfaces", {json{{"degreeU", 3}}}}}, "surfaces[0]"},
+        // Coin draws in float: coordinates far beyond a kilometre are refused, not drawn as inf
+        {{{"planes", {json{{"origin", {0, 1e300, 0}}, {"normal", {0, 0, 1}}, {"size", 10}}}}}, "planes[0].origin: coordinates must lie within"},
+        {{{"planes", {json{{"origin", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"size", 1e40}}}}}, "planes[0].size: must not exceed"},
+        {{{"curves", {json{{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0}, {1e39, 0}}}}}}}, "curves[0].points[1]: coordinates"},
     };
     for (const Case& c : cases) {
         const std::string message = errorOf(c.doc);
