@@ -32,7 +32,8 @@ struct SceneDocument {
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every
 /// member is optional (absent = default grid / none), curves and surfaces use the JSON geometry of
-/// ../shared/interfaces.md.
+/// ../shared/interfaces.md. Coordinates and sizes must lie within 1e6 model units (Coin draws in
+/// float).
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
 SceneDocument documentFromJson(const nlohmann::json& j);
 
