@@ -1,0 +1,121 @@
+// sculptline-cli oversketch / lift / constrain-curve, run as the real binary (../shared/interfaces.md).
+#include "solvers/io/geometry_json.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+using nlohmann::json;
+using namespace sculptline::solvers;
+
+namespace {
+
+struct CliRun {
+    int status = -1;
+    std::string out;
+};
+
+CliRun runCli(const std::string& sub, const std::string& input)
+{
+    const std::string path = ::testing::TempDir() + "editing_cli_input.json";
+    std::ofstream(path) << input;
+    const std::string cmd = std::string(SCULPTLINE_CLI_PATH) + " " + sub + " " + path + " 2>/dev/null";
+    CliRun r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int st = pclose(pipe);
+    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return r;
+}
+
+json wave()
+{
+    json pts = json::array();
+    for (int i = 0; i < 12; ++i) pts.push_back({double(i), 2.0 * std::sin(0.4 * i)});
+    json knots = {0, 0, 0, 0};
+    for (int i = 1; i < 9; ++i) knots.push_back(i / 9.0);
+    for (int i = 0; i < 4; ++i) knots.push_back(1);
+    return {{"degree", 3}, {"knots", knots}, {"points", pts}};
+}
+
+json stroke()
+{
+    json pts = json::array();
+    for (int t = 0; t <= 50; ++t) {
+        const double x = 3.0 + 4.0 * t / 50.0;
+        pts.push_back({x, 2.0 * std::sin(0.4 * x) + std::sin(M_PI * t / 50.0) + 0.3});
+    }
+    return {{"points", pts}};
+}
+
+}  // namespace
+
+TEST(EditingCli, GivenOversketchInput_WhenRun_ThenCurveSpanAndElapsed)
+{
+    for (const char* method : {"local-c2", "blend"}) {
+        const CliRun r = runCli("oversketch", json{{"curve", wave()}, {"stroke", stroke()}, {"method", method}}.dump());
+        ASSERT_EQ(r.status, 0) << method;
+        const json out = json::parse(r.out);
+        const Curve3d c = io::curveFromJson(out["curve"], "curve");
+        EXPECT_LT(out["span"][0].get<double>(), out["span"][1].get<double>());
+        EXPECT_TRUE(out.contains("elapsed_ms"));
+        EXPECT_EQ(out["method"], method);
+        // The stroke's middle is on the new curve (within the fit tolerance of either method).
+        const Eigen::Vector3d mid(5.0, 2.0 * std::sin(2.0) + 1.3, 0.0);
+        double best = 1e9;
+        for (int i = 0; i <= 2000; ++i) best = std::min(best, (c.evaluate(i / 2000.0) - mid).norm());
+        EXPECT_LT(best, 0.1) << method;
+    }
+}
+
+TEST(EditingCli, GivenLiftInput_WhenRun_ThenSpaceCurveWithEndDepths)
+{
+    json pts = json::array();
+    for (int t = 0; t < 100; ++t) pts.push_back({10.0 * t / 99.0, 6.0 * std::sin(2.5 * t / 99.0)});
+    const CliRun r = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}}.dump());
+    ASSERT_EQ(r.status, 0);
+    const Curve3d c = io::curveFromJson(json::parse(r.out)["curve"], "curve");
+    EXPECT_NEAR(c.evaluate(c.domainStart()).z(), 1.0, 1e-9);
+    EXPECT_NEAR(c.evaluate(c.domainEnd()).z(), 6.0, 1e-9);
+}
+
+TEST(EditingCli, GivenConstraints_WhenRun_ThenMetAndReported)
+{
+    const json in = {{"curve", wave()},
+                     {"constraints", {{{"type", "position"}, {"u", 0.4}, {"value", {4, 3}}},
+                                      {{"type", "distance"}, {"u", 0.6}, {"u2", 0.7}, {"value", 1.5}}}},
+                     {"blocked", {0, 11}}};
+    const CliRun r = runCli("constrain-curve", in.dump());
+    ASSERT_EQ(r.status, 0);
+    const json out = json::parse(r.out);
+    const Curve3d c = io::curveFromJson(out["curve"], "curve");
+    EXPECT_LT((c.evaluate(0.4) - Eigen::Vector3d(4, 3, 0)).norm(), 1e-9);
+    EXPECT_NEAR((c.evaluate(0.7) - c.evaluate(0.6)).norm(), 1.5, 1e-9);
+    EXPECT_LT(out["max_residual"].get<double>(), 1e-9);
+    EXPECT_FALSE(out["compromise"].get<bool>());
+}
+
+TEST(EditingCli, GivenInvalidInputs_WhenRun_ThenExitStatus2)
+{
+    const json bad[][2] = {
+        {"constrain-curve", {{"curve", wave()}, {"constraints", {{{"type", "bogus"}, {"u", 0.4}, {"value", {4, 3}}}}}}},
+        {"constrain-curve", {{"curve", wave()}, {"constraints", {{{"type", "position"}, {"u", 1.4}, {"value", {4, 3}}}}}}},
+        {"constrain-curve", {{"curve", wave()}, {"constraints", json::array()}, {"blocked", {99}}}},
+        {"oversketch", {{"curve", wave()}, {"stroke", {{"points", {{1, 1}}}}}}},
+        {"oversketch", {{"curve", wave()}, {"stroke", stroke()}, {"method", "foo"}}},
+        {"oversketch", {{"curve", wave()}, {"stroke", stroke()}, {"scale", 2}}},
+        {"oversketch", {{"curve", wave()}}},
+        {"lift", {{"stroke", {{"points", {{1, 1}, {2, 2}}}}}, {"depth", {0}}}},
+        {"lift", {{"stroke", {{"points", json::array()}}}, {"depth", {0, 1}}}},
+    };
+    for (const auto& b : bad) EXPECT_EQ(runCli(b[0].get<std::string>(), b[1].dump()).status, 2) << b[1].dump().substr(0, 200);
+    EXPECT_EQ(runCli("lift", "{\"stroke\": ").status, 2);
+}
