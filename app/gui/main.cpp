@@ -45,6 +45,14 @@ bool haveDisplay()
     return (display && *display) || (wayland && *wayland);
 }
 
+/// SoQt's default reaction to a failed OpenGL set-up is a modal dialog, which blocks forever where
+/// nobody can click it (a headless run); report and leave instead.
+void onSoQtFatalError(const SbString message, SoQt::FatalErrors, void*)
+{
+    std::cerr << "sculptline: " << message.getString() << "\n";
+    std::exit(1);
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -72,6 +80,7 @@ int main(int argc, char** argv)
     QApplication application(qtArgc, argv);
     // SoQt only records the top-level widget (used by SoQt::mainLoop, which we do not use).
     SoQt::init(static_cast<QWidget*>(nullptr));
+    SoQt::setFatalErrorHandler(&onSoQtFatalError, nullptr);
 
     ui::MainWindow window;
     window.showDocument(document, QFileInfo(QString::fromStdString(options.document)).fileName());

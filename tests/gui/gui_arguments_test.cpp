@@ -90,6 +90,18 @@ TEST(GuiArguments, MissingDefaultDataDirectoryIsAnError)
     EXPECT_NE(run.output.find("/nonexistent/data/default_scene.json: cannot open file"), std::string::npos) << run.output;
 }
 
+TEST(GuiArguments, NoOpenGLIsAMessageNotAHang)
+{
+    // Given Qt's offscreen platform, where SoQt usually finds no GL canvas and by default would
+    // open a modal error dialog nobody can close / Then the program ends: status 1 with the reason,
+    // or, where the platform does have GL, a normal 0. `timeout` turns a hang into status 124.
+    const ProgramRun run = runSculptline("--quit", "QT_QPA_PLATFORM=offscreen timeout 60");
+    EXPECT_TRUE(run.status == 0 || run.status == 1) << "status " << run.status << "\n" << run.output;
+    if (run.status == 1) {
+        EXPECT_NE(run.output.find("OpenGL"), std::string::npos) << run.output;
+    }
+}
+
 TEST(GuiArguments, NoDisplayIsAMessageNotAnAbort)
 {
     // Given valid arguments but no display / Then a message and status 1 (Qt alone would abort)
