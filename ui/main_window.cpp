@@ -96,7 +96,10 @@ void MainWindow::showDocument(const scene::SceneDocument& doc, const QString& ti
         camera->focalDistance = distance * kFramingZoom;
     }
     setWindowTitle(QStringLiteral("Sculptline — %1").arg(title));
-    statusBar()->showMessage(tr("%1: %2 curve(s), %3 surface(s), %4 plane(s)")
+    // The examiner viewer starts in viewing mode, where the mouse turns the camera and draggers get
+    // no events; Esc toggles to interaction mode (SoQt's convention), so say so.
+    statusBar()->showMessage(tr("%1: %2 curve(s), %3 surface(s), %4 plane(s). Esc: switch between "
+                                "turning the view and dragging the plane.")
                                  .arg(title)
                                  .arg(doc.curves.size())
                                  .arg(doc.surfaces.size())
