@@ -3,7 +3,6 @@
 // Qt starts, so errors exit with status 2 and a message even without a display.
 #include "app/gui/gui_options.h"
 #include "scene/scene_document.h"
-#include "solvers/io/geometry_json.h"
 #include "ui/main_window.h"
 
 #include <Inventor/Qt/SoQt.h>
