@@ -42,8 +42,9 @@ struct OversketchOptions {
 /// past an end extends the curve (local-c2) or replaces the end (blend).
 /// @param span receives the new curve's parameter interval that was replaced.
 /// @param maxError receives the max distance from the fitted target (model units).
-/// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite), "curve"
-///         (rational, degree != 3 for local-c2), "scale" or "tolerance" (out of range).
+/// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite, or covering a
+///         whole closed curve), "curve" (rational), "scale" or "tolerance" (out of range).
+/// @note Any degree works; local-c2 then pins `degree` points per side and is C^{degree-1}.
 template <int Dim>
 BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke,
                              const OversketchOptions& options = {}, std::pair<double, double>* span = nullptr,

@@ -160,8 +160,20 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
     }
     std::vector<double> chord(mid.size(), 0.0);
     for (size_t i = 1; i < mid.size(); ++i) chord[i] = chord[i - 1] + (mid[i] - mid[i - 1]).norm();
+    // Parameters of the middle: du/ds runs from the curve's own 1/|C'| at u_ps to that at u_pe (plus
+    // a parabolic bump so that the total is u_pe - u_ps), so the parameter speed has no jump where
+    // E^l and E^r (which keep the curve's parameters) meet the middle; a jump there forces the C2
+    // fit into a visible wiggle. Falls back to plain chord length if the bump would go negative.
+    const double lm = chord.back();
+    const double a0 = 1.0 / std::max(c.derivatives(b.ups, 1)[1].norm(), 1e-300);
+    const double a1 = 1.0 / std::max(c.derivatives(b.upe, 1)[1].norm(), 1e-300);
+    const double bumpC = lm > 0.0 ? 1.5 * ((b.upe - b.ups) / lm - 0.5 * (a0 + a1)) : 0.0;
+    const bool smoothSpeed = !b.leftExtend && !b.rightExtend && std::min(a0, a1) + std::min(0.0, bumpC) > 0.0;
     for (size_t i = 0; i < mid.size(); ++i) {
-        t.params.push_back(b.ups + (b.upe - b.ups) * (chord.back() > 0 ? chord[i] / chord.back() : 0.0));
+        const double sg = lm > 0 ? chord[i] / lm : 0.0;
+        const double f = smoothSpeed ? lm * (a0 * sg + 0.5 * (a1 - a0) * sg * sg + bumpC * (2.0 * sg * sg - 4.0 / 3.0 * sg * sg * sg))
+                                     : (b.upe - b.ups) * sg;
+        t.params.push_back(b.ups + f);
         t.points.push_back(mid[i]);
     }
     for (int i = 1; i <= K && b.tl > b.upe; ++i) {
