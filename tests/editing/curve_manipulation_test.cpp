@@ -215,3 +215,26 @@ TEST(CurveManipulation, GivenBadInput_WhenConstructed_ThenGeometryErrorNotCrash)
     EXPECT_TRUE(r.tooFewFreePoints);
     EXPECT_GT(r.maxResidual, 50.0);
 }
+
+TEST(CurveManipulation, GivenFig63Setup_WhenPointDragged_ThenTangentAndDistanceKeptEveryEvent)
+{
+    // Thesis Fig. 6-3: one point moves while a tangent and a distance between two points are kept.
+    const Curve3d curve = helixOpen(20);
+    std::vector<CurveConstraint<3>> cs = {
+        make<3>(ConstraintType::Position, 0.3, curve.evaluate(0.3)),
+        make<3>(ConstraintType::Tangent, 0.6, curve.derivatives(0.6, 1)[1]),
+        make<3>(ConstraintType::Distance, 0.6, curve.evaluate(0.7) - curve.evaluate(0.6), 0.7),
+    };
+    CurveManipulationSolver<3> solver(curve, cs, {0, 19});
+    for (int step = 1; step <= 10; ++step) {
+        const Eigen::Vector3d target = curve.evaluate(0.3) + 0.2 * step * Eigen::Vector3d(1, 0.5, -0.3);
+        ManipulationReport report;
+        const Curve3d out = solver.solve({target, cs[1].value, cs[2].value}, &report);
+        EXPECT_LT((out.evaluate(0.3) - target).norm(), kConstraintTolerance);
+        EXPECT_LT((out.derivatives(0.6, 1)[1] - cs[1].value).norm(), kConstraintTolerance * 10.0)
+            << "derivatives are ~20 units per parameter here";
+        EXPECT_LT((out.evaluate(0.7) - out.evaluate(0.6) - cs[2].value).norm(), kConstraintTolerance);
+        EXPECT_EQ(out.points().front(), curve.points().front());
+        EXPECT_EQ(out.points().back(), curve.points().back());
+    }
+}

@@ -316,3 +316,43 @@ TEST(OversketchBlend, GivenClosedCurve_WhenBlendedAcrossSeam_ThenClosedSmoothAnd
     }
     EXPECT_LT(maxDistanceToCurve(out, stroke), 0.1);
 }
+
+TEST(OversketchLocalC2, GivenStrokeBeforeTheStart_WhenOversketched_ThenCurveIsExtendedBackwards)
+{
+    const Curve2d curve = wave(12);  // x in [0, 11], starts at (0, 0)
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 100; ++i) {
+        const double x = -3.0 + 6.0 * i / 100.0;
+        stroke.emplace_back(x, x < 0.0 ? 0.5 * x : curve.evaluate(x / 11.0).y());
+    }
+
+    const Curve2d out = oversketch(curve, stroke);
+
+    EXPECT_LT((out.evaluate(out.domainStart()) - stroke.front()).norm(), 1e-9);
+    EXPECT_LT((out.evaluate(0.9) - curve.evaluate(0.9)).norm(), kUnchanged);
+}
+
+class OversketchLocalDegree : public ::testing::TestWithParam<int> {};
+
+TEST_P(OversketchLocalDegree, GivenDegreeP_WhenOversketched_ThenLocalAndCpMinus1)
+{
+    const int p = GetParam();
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i < 30; ++i) pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
+    const Curve2d curve = makeClampedUniform<2>(p, pts);
+    const auto stroke = bump(curve, 0.4, 0.6, 2.0, 300);
+
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, {}, &span);
+
+    for (int i = 0; i <= 500; ++i) {
+        const double u = i / 500.0;
+        if (u <= span.first || u >= span.second) {
+            EXPECT_LT((out.evaluate(u) - curve.evaluate(u)).norm(), kUnchanged) << "u = " << u;
+        }
+    }
+    EXPECT_TRUE(simpleInteriorKnots(out));
+    EXPECT_LT(maxJump(out, p - 1), 1e-9) << "C^{p-1} at every knot";
+}
+
+INSTANTIATE_TEST_SUITE_P(Degrees, OversketchLocalDegree, ::testing::Values(2, 4, 5));
