@@ -85,6 +85,13 @@ TEST(EditingCli, GivenLiftInput_WhenRun_ThenSpaceCurveWithEndDepths)
     const Curve3d c = io::curveFromJson(json::parse(r.out)["curve"], "curve");
     EXPECT_NEAR(c.evaluate(c.domainStart()).z(), 1.0, 1e-9);
     EXPECT_NEAR(c.evaluate(c.domainEnd()).z(), 6.0, 1e-9);
+
+    // A view looking along -x: depth maps to -x, the stroke's x to y and its y to z.
+    const json view = {{"origin", {0, 0, 0}}, {"right", {0, 1, 0}}, {"up", {0, 0, 1}}, {"depth", {-1, 0, 0}}};
+    const CliRun v = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}, {"view", view}}.dump());
+    ASSERT_EQ(v.status, 0);
+    const Curve3d cv = io::curveFromJson(json::parse(v.out)["curve"], "curve");
+    EXPECT_LT((cv.evaluate(cv.domainEnd()) - Eigen::Vector3d(-6.0, 10.0, 6.0 * std::sin(2.5))).norm(), 1e-9);
 }
 
 TEST(EditingCli, GivenConstraints_WhenRun_ThenMetAndReported)
