@@ -50,15 +50,20 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
     while (headEnd + 1 < n && cs.arc[headEnd + 1] <= windowLength) ++headEnd;
     int tailStart = n - 1;
     while (tailStart - 1 > headEnd && total - cs.arc[tailStart - 1] <= windowLength) --tailStart;
-    const int strideH = std::max(1, (headEnd + 1) / 400);
-    const int strideT = std::max(1, (n - tailStart) / 400);
+    // Coarse pass with at most ~64 x 64 pairs, then the exact pairs around the coarse winner.
+    const int strideH = std::max(1, (headEnd + 1) / 64);
+    const int strideT = std::max(1, (n - tailStart) / 64);
     EndPair best;
-    for (int i = 0; i <= headEnd; i += strideH) {
-        for (int j = n - 1; j >= tailStart; j -= strideT) {
-            const double d = (cs.points[i] - cs.points[j]).norm();
-            if (d < best.gap) best = {i, j, d};
-        }
-    }
+    auto consider = [&](int i, int j) {
+        const double d = (cs.points[i] - cs.points[j]).norm();
+        if (d < best.gap) best = {i, j, d};
+    };
+    for (int i = 0; i <= headEnd; i += strideH)
+        for (int j = n - 1; j >= tailStart; j -= strideT) consider(i, j);
+    const EndPair coarse = best;
+    for (int i = std::max(0, coarse.head - strideH); i <= std::min(headEnd, coarse.head + strideH); ++i)
+        for (int j = std::max(tailStart, coarse.tail - strideT); j <= std::min(n - 1, coarse.tail + strideT); ++j)
+            consider(i, j);
     return best;
 }
 
@@ -116,29 +121,50 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     if (timed && !(stroke.times.back() > stroke.times.front())) timed = false;
     cs.timed = timed;
 
-    // Duplicate and near-coincident samples (seed 003 §3.1, first filtering step). The merge
-    // distance is at least length / maxSamples, so the conditioned count is bounded by ~maxSamples
-    // for any input size (a million-sample stroke is thinned in one linear pass).
+    // Duplicate and near-coincident samples (seed 003 §3.1: duplicates are removed, and data "within
+    // some small distance of each other" are mean-filtered): consecutive samples within minDist of
+    // a cluster's first sample become their centroid, which averages the jitter of a slow or densely
+    // sampled pen instead of keeping one noisy sample of it. The stroke's first and last samples
+    // are kept exactly (the fit interpolates them). minDist is at least length / maxSamples, so the
+    // conditioned count is bounded by ~maxSamples for any input size, in one linear pass.
     double rawLength = 0.0;
     for (size_t i = 1; i < stroke.points.size(); ++i) rawLength += (stroke.points[i] - stroke.points[i - 1]).norm();
-    const double minDist =
-        std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
+    const double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
     const int last = static_cast<int>(stroke.points.size()) - 1;
-    for (int i = 0; i <= last; ++i) {
-        const Eigen::Vector3d& p = stroke.points[i];
-        if (!cs.points.empty() && (p - cs.points.back()).norm() < minDist) {
-            if (i != last) continue;
-            if (cs.points.size() > 1) {  // the last sample replaces a near-coincident predecessor
-                cs.points.pop_back();
-                cs.source.pop_back();
-                cs.time.pop_back();
-            } else {
-                continue;
+    auto timeOf = [&](int i) { return timed ? stroke.times[i] : static_cast<double>(i); };
+    for (int i = 0; i <= last;) {
+        int j = i + 1;
+        while (j <= last && (stroke.points[j] - stroke.points[i]).norm() < minDist) ++j;
+        if (i == 0) {
+            cs.points.push_back(stroke.points[0]);
+            cs.source.push_back(0);
+            cs.time.push_back(timeOf(0));
+        } else if (j > last) {
+            cs.points.push_back(stroke.points[last]);
+            cs.source.push_back(last);
+            cs.time.push_back(timeOf(last));
+        } else {
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            double t = 0.0;
+            for (int k = i; k < j; ++k) {
+                sum += stroke.points[k];
+                t += timeOf(k);
             }
+            cs.points.push_back(sum / (j - i));
+            cs.source.push_back(i + (j - 1 - i) / 2);
+            cs.time.push_back(t / (j - i));
         }
-        cs.points.push_back(p);
-        cs.source.push_back(i);
-        cs.time.push_back(timed ? stroke.times[i] : static_cast<double>(i));
+        i = j;
+    }
+    if (cs.points.size() >= 2 && last > 0 && cs.source.back() != last) {  // the start cluster held every sample
+        cs.points.push_back(stroke.points[last]);
+        cs.source.push_back(last);
+        cs.time.push_back(timeOf(last));
+    }
+    if (cs.points.size() == 1 && (stroke.points[last] - stroke.points[0]).norm() > 0.0) {
+        cs.points.push_back(stroke.points[last]);
+        cs.source.push_back(last);
+        cs.time.push_back(timeOf(last));
     }
     if (cs.points.size() < 2) {
         throw GeometryError("stroke.points: fewer than two distinct points after removing duplicates");

@@ -30,7 +30,8 @@ double segment(const ConditionedStroke& cs, int a, int b)  // length of the chor
     return (cs.points[b] - cs.points[a]).norm();
 }
 
-// Moves from i by `step` at least `minSteps` samples and at least `minLength` along the path.
+// Moves from i by `step` at least `minSteps` samples and until the chord from i is at least
+// `minLength` (the chord, not the path: jitter lengthens the path without moving the pen on).
 // Returns the index reached and the path length; stops at an open end (index clamped there).
 std::pair<int, double> reach(const ConditionedStroke& cs, int i, int step, int minSteps, double minLength)
 {
@@ -38,7 +39,7 @@ std::pair<int, double> reach(const ConditionedStroke& cs, int i, int step, int m
     int j = i;
     double len = 0.0;
     for (int s = 0; s < n / 2; ++s) {
-        if (s >= minSteps && len >= minLength) break;
+        if (s >= minSteps && (cs.points[j] - cs.points[i]).norm() >= minLength) break;
         const int next = stepIndex(j, step, n, cs.closed);
         if (next < 0) break;
         len += segment(cs, j, next);
@@ -97,9 +98,9 @@ std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures
         if (!cs.closed && (i == 0 || i == n - 1 || f.lo[i] == 0 || f.hi[i] == n - 1)) continue;
         const double t = f.turning[i];
         const bool slow = f.averageSpeed > 0.0 && f.speed[i] < o.slowFraction * f.averageSpeed;
-        const bool turns = t >= o.strongAngle || (slow && t >= o.slowAngle);
-        const bool sharp = f.wideTurning[i] <= 0.0 || t / f.wideTurning[i] >= o.sharpness;
-        candidate[i] = turns && sharp;
+        const double ratio = f.wideTurning[i] > 0.0 ? t / f.wideTurning[i] : 1.0;
+        candidate[i] = (t >= o.strongAngle && ratio >= o.sharpnessFast) ||
+                       (slow && t >= o.slowAngle && ratio >= o.sharpness);
     }
     // Non-maximum suppression: keep a candidate only if no sample in its neighbourhood turns more
     // (ties broken towards the lower index so that a plateau yields one corner).

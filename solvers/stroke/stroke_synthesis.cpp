@@ -80,6 +80,23 @@ Shape spiralShape(double size, double turns)
         0.0, 1.0, false);
 }
 
+Shape flourishShape(double size)
+{
+    return fromFunction(
+        [&](double t) {
+            return Eigen::Vector3d(size * t, size * (0.2 * std::sin(3 * kPi * t) + 0.08 * std::sin(8 * kPi * t + 0.5)),
+                                   0.0);
+        },
+        0.0, 1.0, false);
+}
+
+Stroke drawWithSamples(const Shape& shape, int samples, DrawOptions o)
+{
+    const Stroke probe = draw(shape, o);
+    o.rate *= std::max(1.0, samples - 1.0) / std::max<double>(1.0, probe.points.size() - 1.0);
+    return draw(shape, o);
+}
+
 Stroke draw(const Shape& shape, const DrawOptions& o)
 {
     const auto& ref = shape.reference;

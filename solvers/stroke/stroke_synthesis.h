@@ -27,6 +27,12 @@ Shape ellipseShape(const Eigen::Vector3d& center, double a, double b, double rot
 Shape polygonShape(const std::vector<Eigen::Vector3d>& vertices, bool closed);
 Shape sCurveShape(double size);
 Shape spiralShape(double size, double turns);
+/// A free-hand flourish: a wave of two superposed frequencies, several tight bends where the hand
+/// slows down (the kind of stroke of thesis Fig. 4-3).
+Shape flourishShape(double size);
+
+/// Draws `shape` with about `samples` samples (the digitizer rate is scaled to reach the count).
+
 
 struct DrawOptions {
     double rate = 120.0;        ///< digitizer samples per second
@@ -42,6 +48,9 @@ struct DrawOptions {
 
 /// Draws the shape as a hand would: arc-length speed profile, fixed-rate samples, Gaussian noise.
 Stroke draw(const Shape& shape, const DrawOptions& options = {});
+
+/// Draws `shape` with about `samples` samples (the digitizer rate is scaled to reach the count).
+Stroke drawWithSamples(const Shape& shape, int samples, DrawOptions options = {});
 
 /// Max distance from points to the reference polyline (point-to-segment, brute force).
 double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& poly, bool closed);
