@@ -55,7 +55,7 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
     const int strideT = std::max(1, (n - tailStart) / 64);
     EndPair best;
     auto consider = [&](int i, int j) {
-        const double d = (cs.points[i] - cs.points[j]).norm();
+        const double d = (cs.points[i] - cs.points[j]).squaredNorm();
         if (d < best.gap) best = {i, j, d};
     };
     for (int i = 0; i <= headEnd; i += strideH)
@@ -64,6 +64,7 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
     for (int i = std::max(0, coarse.head - strideH); i <= std::min(headEnd, coarse.head + strideH); ++i)
         for (int j = std::max(tailStart, coarse.tail - strideT); j <= std::min(n - 1, coarse.tail + strideT); ++j)
             consider(i, j);
+    best.gap = std::sqrt(best.gap);
     return best;
 }
 
@@ -130,11 +131,12 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     double rawLength = 0.0;
     for (size_t i = 1; i < stroke.points.size(); ++i) rawLength += (stroke.points[i] - stroke.points[i - 1]).norm();
     const double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
+    const double minDist2 = minDist * minDist;
     const int last = static_cast<int>(stroke.points.size()) - 1;
     auto timeOf = [&](int i) { return timed ? stroke.times[i] : static_cast<double>(i); };
     for (int i = 0; i <= last;) {
         int j = i + 1;
-        while (j <= last && (stroke.points[j] - stroke.points[i]).norm() < minDist) ++j;
+        while (j <= last && (stroke.points[j] - stroke.points[i]).squaredNorm() < minDist2) ++j;
         if (i == 0) {
             cs.points.push_back(stroke.points[0]);
             cs.source.push_back(0);

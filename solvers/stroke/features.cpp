@@ -5,47 +5,55 @@
 #include <cmath>
 
 namespace sculptline::solvers::stroke {
-namespace {
+double fastAtan2(double y, double x)
+{
+    const double ax = std::abs(x), ay = std::abs(y);
+    const double mx = std::max(ax, ay), mn = std::min(ax, ay);
+    if (mx == 0.0) return 0.0;
+    const double a = mn / mx, s = a * a;
+    double r = ((((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s + 0.19354346) * s - 0.33262347) * s +
+               0.99997726;
+    r *= a;
+    if (ay > ax) r = 1.57079632679489662 - r;
+    if (x < 0.0) r = 3.14159265358979324 - r;
+    return y < 0.0 ? -r : r;
+}
 
-constexpr double kPi = 3.14159265358979323846;
+namespace {
 
 double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
-    const double na = a.norm(), nb = b.norm();
-    if (na == 0.0 || nb == 0.0) return 0.0;
     // atan2 of |a x b| and a.b is accurate for small and for nearly opposite angles alike.
-    return std::atan2(a.cross(b).norm(), a.dot(b));
+    return fastAtan2(a.cross(b).norm(), a.dot(b));
 }
 
-// Walks index j by `step` (+1/-1), cyclically on a closed stroke; returns -1 past an open end.
-int stepIndex(int j, int step, int n, bool closed)
-{
-    j += step;
-    if (closed) return (j + n) % n;
-    return (j < 0 || j >= n) ? -1 : j;
-}
-
-double segment(const ConditionedStroke& cs, int a, int b)  // length of the chord a -> b, adjacent samples
-{
-    return (cs.points[b] - cs.points[a]).norm();
-}
-
-// Moves from i by `step` at least `minSteps` samples and until the chord from i is at least
-// `minLength` (the chord, not the path: jitter lengthens the path without moving the pen on).
-// Returns the index reached and the path length; stops at an open end (index clamped there).
-std::pair<int, double> reach(const ConditionedStroke& cs, int i, int step, int minSteps, double minLength)
+// Neighbourhood ends for every sample, with unwrapped indices (a closed stroke's may run below 0
+// or past n - 1): lo[i] is the largest index <= i - minSteps whose chord to i is at least
+// minLength, hi[i] the smallest >= i + minSteps likewise (the chord, not the path: jitter lengthens
+// the path without moving the pen on). Both ends only move forward as i does, so two pointers find
+// them all in O(n) (chord length is taken as monotone along the window, true up to jitter).
+// An open stroke's ends clamp to 0 and n - 1; a closed stroke's window spans at most half the loop.
+void windows(const ConditionedStroke& cs, int minSteps, double minLength, std::vector<int>& lo, std::vector<int>& hi)
 {
     const int n = cs.size();
-    int j = i;
-    double len = 0.0;
-    for (int s = 0; s < n / 2; ++s) {
-        if (s >= minSteps && (cs.points[j] - cs.points[i]).norm() >= minLength) break;
-        const int next = stepIndex(j, step, n, cs.closed);
-        if (next < 0) break;
-        len += segment(cs, j, next);
-        j = next;
+    const auto at = [&](int j) -> const Eigen::Vector3d& { return cs.points[j < 0 ? j + n : (j >= n ? j - n : j)]; };
+    const int reachMax = cs.closed ? n / 2 : n;
+    const double min2 = minLength * minLength;
+    lo.assign(n, 0);
+    hi.assign(n, 0);
+    int a = cs.closed ? -reachMax : 0;
+    int b = 0;
+    for (int i = 0; i < n; ++i) {
+        const int aMin = cs.closed ? i - reachMax : 0;
+        const int aMax = cs.closed ? i - minSteps : std::max(0, i - minSteps);
+        a = std::clamp(a, aMin, aMax);
+        while (a + 1 <= aMax && (at(a + 1) - at(i)).squaredNorm() >= min2) ++a;
+        lo[i] = a;
+        const int bMax = cs.closed ? i + reachMax : n - 1;
+        b = std::clamp(std::max(b, i + minSteps), i, bMax);
+        while (b < bMax && (at(b) - at(i)).squaredNorm() < min2) ++b;
+        hi[i] = b;
     }
-    return {j, len};
 }
 
 }  // namespace
@@ -59,34 +67,36 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     f.wideTurning.resize(n);
     f.curvature.resize(n);
     f.speed.resize(n);
-    f.lo.resize(n);
-    f.hi.resize(n);
     const double minLen = options.neighbourhood * cs.extent;
     const double duration = cs.time.back() - cs.time.front();
     f.averageSpeed = duration > 0.0 ? cs.arc.back() / duration : 0.0;
-
+    std::vector<int> wideLo, wideHi;
+    windows(cs, options.k, minLen, f.lo, f.hi);
+    windows(cs, 2 * options.k, 2.0 * minLen, wideLo, wideHi);
+    const double total = cs.length();
+    // Unwrapped path position and time of index j (a closed stroke's seam gap counts as path).
+    const auto arcAt = [&](int j) {
+        const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
+        return cs.arc[j - q * n] + q * total;
+    };
+    const auto wrap = [&](int j) { return ((j % n) + n) % n; };
     for (int i = 0; i < n; ++i) {
-        const auto [a, la] = reach(cs, i, -1, options.k, minLen);
-        const auto [b, lb] = reach(cs, i, +1, options.k, minLen);
-        f.lo[i] = a;
-        f.hi[i] = b;
-        const Eigen::Vector3d chord = cs.points[b] - cs.points[a];
-        f.direction[i] = std::atan2(chord.y(), chord.x());
-        f.turning[i] = angleBetween(cs.points[i] - cs.points[a], cs.points[b] - cs.points[i]);
-        const double path = la + lb;
+        const int a = f.lo[i], b = f.hi[i];
+        const Eigen::Vector3d& pa = cs.points[wrap(a)];
+        const Eigen::Vector3d& pb = cs.points[wrap(b)];
+        const Eigen::Vector3d chord = pb - pa;
+        f.direction[i] = fastAtan2(chord.y(), chord.x());
+        f.turning[i] = angleBetween(cs.points[i] - pa, pb - cs.points[i]);
+        const double path = arcAt(b) - arcAt(a);
         f.curvature[i] = path > 0.0 ? f.turning[i] / path : 0.0;
-        const auto [wa, wla] = reach(cs, i, -1, 2 * options.k, 2.0 * std::max(la, minLen));
-        const auto [wb, wlb] = reach(cs, i, +1, 2 * options.k, 2.0 * std::max(lb, minLen));
-        (void)wla;
-        (void)wlb;
-        f.wideTurning[i] = angleBetween(cs.points[i] - cs.points[wa], cs.points[wb] - cs.points[i]);
-        // Elapsed time over the neighbourhood; on a closed stroke the window may wrap over the seam,
-        // where time restarts: the wrapped part then counts one sample interval per sample.
-        double dt = cs.time[b] - cs.time[a];
-        if (cs.closed && (a > i || b < i)) dt = 0.0;
+        f.wideTurning[i] = angleBetween(cs.points[i] - cs.points[wrap(wideLo[i])], cs.points[wrap(wideHi[i])] - cs.points[i]);
+        // Elapsed time over the neighbourhood; a window across a loop's seam, where time restarts,
+        // gets the average speed.
+        const double dt = (a >= 0 && b < n) ? cs.time[b] - cs.time[a] : 0.0;
         f.speed[i] = dt > 0.0 ? path / dt : f.averageSpeed;
+        f.lo[i] = wrap(a);
+        f.hi[i] = wrap(b);
     }
-    (void)kPi;
     return f;
 }
 

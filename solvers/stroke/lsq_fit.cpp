@@ -5,6 +5,7 @@
 
 #include <Eigen/Sparse>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace sculptline::solvers::stroke {
@@ -42,23 +43,54 @@ struct Spline {
         }
     }
     double wrap(double u) const { return closed ? u - std::floor(u) : std::clamp(u, 0.0, 1.0); }
-    // Point and derivatives at u.
+    // The spline in power form per span (Taylor coefficients at the span start): evaluation is a
+    // Horner step, an order of magnitude cheaper than the basis recursion, and the fit evaluates
+    // every point a few times per iteration.
+    std::vector<std::array<Vec3, 4>> coef;
+    int spanCount() const { return static_cast<int>(closed ? breaks.size() : breaks.size() - 1); }
+    double spanEnd(int j) const { return j + 1 < static_cast<int>(breaks.size()) ? breaks[j + 1] : 1.0; }
+    void buildPowerForm()
+    {
+        coef.resize(spanCount());
+        for (int j = 0; j < spanCount(); ++j) {
+            const double a = breaks[j], h = spanEnd(j) - a;
+            const int span = findSpan(kDegree, knots, a);
+            double d0[3][4], d1[3][4];
+            cubicBasisDerivatives(knots, span, a, d0);
+            cubicBasisDerivatives(knots, span, a + h, d1);
+            Vec3 c[3], e2 = Vec3::Zero();
+            for (int k = 0; k < 3; ++k) c[k].setZero();
+            for (int q = 0; q < 4; ++q) {
+                const Vec3& p = ctrl[span - kDegree + q];
+                for (int k = 0; k < 3; ++k) c[k] += d0[k][q] * p;
+                e2 += d1[2][q] * p;
+            }
+            coef[j] = {c[0], c[1], 0.5 * c[2], h > 0.0 ? (e2 - c[2]) / (6.0 * h) : Vec3::Zero().eval()};
+        }
+    }
+    // Point and first two derivatives at u.
     void eval(double u, Vec3 out[3]) const
     {
         u = wrap(u);
-        const int span = findSpan(kDegree, knots, u);
-        double d[3][4];
-        cubicBasisDerivatives(knots, span, u, d);
-        for (int k = 0; k < 3; ++k) {
-            out[k].setZero();
-            for (int j = 0; j < 4; ++j) out[k] += d[k][j] * ctrl[span - kDegree + j];
-        }
+        const int j = spanOf(u);
+        const double t = u - breaks[j];
+        const auto& c = coef[j];
+        out[0] = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+        out[1] = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+        out[2] = 6.0 * c[3] * t + 2.0 * c[2];
     }
-    int spanOf(double u) const  // index into breaks of the span holding u
+    Vec3 point(double u) const
     {
         u = wrap(u);
+        const int j = spanOf(u);
+        const double t = u - breaks[j];
+        const auto& c = coef[j];
+        return ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+    }
+    int spanOf(double u) const  // index into breaks of the span holding u (u already wrapped)
+    {
         const auto it = std::upper_bound(breaks.begin(), breaks.end(), u);
-        return std::max(0, static_cast<int>(it - breaks.begin()) - 1);
+        return std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, spanCount() - 1);
     }
 };
 
@@ -74,11 +106,25 @@ double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi
     return std::clamp(u - f / df, lo, hi);
 }
 
-double distanceAt(const Spline& s, const Vec3& x, double u)
+double distanceAt(const Spline& s, const Vec3& x, double u) { return (s.point(u) - x).norm(); }
+
+// Distance from x to the curve near parameter u: |C(u) - x| when that is within `tol`, else the
+// best of up to two Newton steps toward the foot point (inside [lo, hi]). Either way the distance
+// to an actual curve point, so an upper bound on the true distance; the Newton steps (costly
+// derivatives) are spent only where the cheap bound does not already settle the question.
+double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot = nullptr)
 {
-    Vec3 c[3];
-    s.eval(u, c);
-    return (c[0] - x).norm();
+    double best = distanceAt(s, x, u), bestU = u;
+    for (int it = 0; it < 2 && best > tol; ++it) {
+        u = newtonStep(s, x, u, lo, hi);
+        const double d = distanceAt(s, x, u);
+        if (d < best) {
+            best = d;
+            bestU = u;
+        }
+    }
+    if (foot) *foot = bestU;
+    return best;
 }
 
 // Distance from C(u) to the segment [a, b] when the curve leaves it by more than a quarter of the
@@ -86,12 +132,11 @@ double distanceAt(const Spline& s, const Vec3& x, double u)
 // a and b bulges from their chord by its sagitta, which is geometry, not error.
 double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
 {
-    Vec3 c[3];
-    s.eval(u, c);
+    const Vec3 c = s.point(u);
     const Vec3 ab = b - a;
     const double l2 = ab.squaredNorm();
-    const double t = l2 > 0.0 ? std::clamp((c[0] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    const double gap = (a + t * ab - c[0]).norm();
+    const double t = l2 > 0.0 ? std::clamp((c - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    const double gap = (a + t * ab - c).norm();
     return gap > 0.25 * std::sqrt(l2) ? gap : 0.0;
 }
 
@@ -194,11 +239,11 @@ void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, con
     s.makeKnots();
     if (s.closed) solveClosed(s, X, S, u, fairing);
     else solveOpen(s, X, S, u, fairing);
+    s.buildPowerForm();
 }
 
-// Parameters of all points: piecewise linear in chord length between the samples' (corrected)
-// parameters, then two Newton steps toward the foot point.
-std::vector<double> checkParameters(const Spline& s, const SplineFitInput& in, const std::vector<int>& S,
+// Parameters of all points: piecewise linear in chord length between the samples' parameters.
+std::vector<double> checkParameters(const SplineFitInput& in, const std::vector<int>& S,
                                     const std::vector<double>& u)
 {
     const auto& X = *in.points;
@@ -212,10 +257,7 @@ std::vector<double> checkParameters(const Spline& s, const SplineFitInput& in, c
         const double c1 = wrapEnd ? (in.closed ? 1.0 + in.chord[S[0]] : 1.0) : in.chord[S[k + 1]];
         const double u1 = wrapEnd ? (in.closed ? 1.0 + u[0] : 1.0) : u[k + 1];
         const double t = c1 > c0 ? (in.chord[i] - c0) / (c1 - c0) : 0.0;
-        double ui = u0 + t * (u1 - u0);
-        const double lo = in.closed ? ui - 0.5 : 0.0, hi = in.closed ? ui + 0.5 : 1.0;
-        for (int it = 0; it < 2; ++it) ui = newtonStep(s, X[i], ui, lo, hi);
-        out[i] = ui;
+        out[i] = u0 + t * (u1 - u0);
     }
     return out;
 }
@@ -226,14 +268,14 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     const int spans = static_cast<int>(s.closed ? s.breaks.size() : s.breaks.size() - 1);
     std::vector<double> wsum(spans, 0.0), wmax(spans, 0.0);
     for (size_t k = 0; k < u.size(); ++k) {
-        const int j = std::min(s.spanOf(u[k]), spans - 1);
+        const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
         if (err[k] > tol) wsum[j] += err[k];
         wmax[j] = std::max(wmax[j], err[k]);
     }
     std::vector<double> acc(spans, 0.0), newKnots;
     std::vector<char> done(spans, 0);
     for (size_t k = 0; k < u.size(); ++k) {
-        const int j = std::min(s.spanOf(u[k]), spans - 1);
+        const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
         if (wmax[j] <= tol || done[j] || err[k] <= tol) continue;
         acc[j] += err[k];
         if (acc[j] < 0.5 * wsum[j]) continue;
@@ -326,9 +368,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         for (size_t k = first; k < last; ++k) {
             const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
             const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
-            const double foot = newtonStep(s, X[S[k]], u[k], lo, hi);
-            if (opt.correctParameters) u[k] = foot;
-            err[k] = distanceAt(s, X[S[k]], opt.measureAtFootPoint ? foot : u[k]);
+            if (opt.correctParameters) u[k] = newtonStep(s, X[S[k]], u[k], lo, hi);
+            err[k] = opt.measureAtFootPoint ? footDistance(s, X[S[k]], u[k], lo, hi, opt.tolerance)
+                                            : distanceAt(s, X[S[k]], u[k]);
         }
         const double worst = *std::max_element(err.begin(), err.end());
         if (worst > opt.tolerance && s.unknowns() < maxUnknowns) {
@@ -336,15 +378,16 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         // All samples fit (or no more knots help): verify every point, and add the worst offender of
         // each span to the samples so that the next solve sees it.
-        const std::vector<double> cu = checkParameters(s, in, S, u);
+        std::vector<double> cu = checkParameters(in, S, u);
         const int spans = static_cast<int>(s.breaks.size());
         std::vector<int> offender(spans, -1);
         std::vector<double> offErr(spans, opt.tolerance);
         res.maxError = 0.0;
         for (int i = 0; i < m; ++i) {
-            const double e = distanceAt(s, X[i], cu[i]);
+            const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
+            const double e = footDistance(s, X[i], cu[i], lo, hi, opt.tolerance, &cu[i]);
             res.maxError = std::max(res.maxError, e);
-            const int j = s.spanOf(cu[i]);
+            const int j = s.spanOf(s.wrap(cu[i]));
             if (e > offErr[j]) {
                 offErr[j] = e;
                 offender[j] = i;
@@ -359,7 +402,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             if (!(u1 > cu[i])) continue;
             const double e = chordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
             res.maxError = std::max(res.maxError, e);
-            const int j = s.spanOf(0.5 * (cu[i] + u1));
+            const int j = s.spanOf(s.wrap(0.5 * (cu[i] + u1)));
             const int pick = std::binary_search(S.begin(), S.end(), next) ? i : next;
             if (e > offErr[j] && !std::binary_search(S.begin(), S.end(), pick)) {
                 offErr[j] = e;
@@ -385,9 +428,12 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         err.resize(S.size());
     }
     if (res.iterations > opt.maxIterations) {  // stopped while still refining: measure what we have
-        const std::vector<double> cu = checkParameters(s, in, S, u);
+        const std::vector<double> cu = checkParameters(in, S, u);
         res.maxError = 0.0;
-        for (int i = 0; i < m; ++i) res.maxError = std::max(res.maxError, distanceAt(s, X[i], cu[i]));
+        for (int i = 0; i < m; ++i) {
+            const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
+            res.maxError = std::max(res.maxError, footDistance(s, X[i], cu[i], lo, hi, opt.tolerance));
+        }
         for (int i = 0; i + 1 < m; ++i) res.maxError = std::max(res.maxError, chordGap(s, X[i], X[i + 1], 0.5 * (cu[i] + cu[i + 1])));
     }
     res.converged = res.maxError <= opt.tolerance;

@@ -2,6 +2,7 @@
 #include "solvers/bspline/basis.h"
 #include "solvers/stroke/banded_cholesky.h"
 #include "solvers/stroke/dynamic_sampling.h"
+#include "solvers/stroke/features.h"
 #include "solvers/stroke/lsq_fit.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +72,21 @@ TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
     // Fast (eq. 4-3): 7 r units.
     EXPECT_DOUBLE_EQ(samplingThreshold(1.0, 1.0, unit), 7 * unit);
     EXPECT_DOUBLE_EQ(samplingThreshold(3.0, 1.5, unit), 14 * unit);
+}
+
+TEST(FastAtan2, GivenAllDirections_ThenWithin1e5OfLibm)
+{
+    constexpr double kAngleTolerance = 1e-5;  // the documented bound
+    double worst = 0;
+    for (int i = 0; i < 100000; ++i) {
+        const double a = -3.14159265358979 + 6.28318530717958 * i / 100000.0;
+        for (double r : {1e-3, 1.0, 1e4}) {
+            const double y = r * std::sin(a), x = r * std::cos(a);
+            worst = std::max(worst, std::abs(fastAtan2(y, x) - std::atan2(y, x)));
+        }
+    }
+    EXPECT_LE(worst, kAngleTolerance);
+    EXPECT_EQ(fastAtan2(0.0, 0.0), 0.0);
 }
 
 TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
