@@ -71,6 +71,30 @@ auto runOperation(const json& input, const std::string& geometryName, F&& operat
     }
 }
 
+/// The shared shape of the geometry-to-geometry subcommands: reads the input's "curve" or "surface"
+/// (and "direction" for a surface), applies the matching operation under runOperation, timing it
+/// alone, and returns {"curve"|"surface": result, "elapsed_ms": t}.
+template <typename CurveOp, typename SurfaceOp>
+json transformGeometry(const json& input, CurveOp&& curveOp, SurfaceOp&& surfaceOp)
+{
+    json out;
+    if (curveOrSurface(input) == GeometryKind::Curve) {
+        const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
+        const Stopwatch clock;
+        const solvers::Curve3d result = runOperation(input, "curve", [&] { return curveOp(curve); });
+        out["elapsed_ms"] = clock.elapsedMs();
+        out["curve"] = solvers::io::toJson(result);
+    } else {
+        const solvers::Surface3d surface = solvers::io::surfaceFromJson(field(input, "surface"), "surface");
+        const solvers::Direction direction = directionFromJson(input);
+        const Stopwatch clock;
+        const solvers::Surface3d result = runOperation(input, "surface", [&] { return surfaceOp(surface, direction); });
+        out["elapsed_ms"] = clock.elapsedMs();
+        out["surface"] = solvers::io::toJson(result);
+    }
+    return out;
+}
+
 /// Throws InputError naming the first non-finite number in a result (an overflow caused by huge
 /// but finite input); JSON has no representation for it and nlohmann would write null.
 void requireFiniteOutput(const json& output, const std::string& path = "result");

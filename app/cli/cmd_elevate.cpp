@@ -13,28 +13,11 @@ namespace {
 
 json run(const json& input, const Options&)
 {
-    const bool isCurve = curveOrSurface(input) == GeometryKind::Curve;
     const int times =
         input.contains("times") ? solvers::io::integerFromJson(input["times"], "times", 0, solvers::kMaxDegree) : 1;
-    json out;
-    if (isCurve) {
-        const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
-        const Stopwatch clock;
-        const solvers::Curve3d result = runOperation(input, "curve", [&] { return curve.elevate(times); });
-        const double ms = clock.elapsedMs();
-        out["curve"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    } else {
-        const solvers::Surface3d surface = solvers::io::surfaceFromJson(field(input, "surface"), "surface");
-        const solvers::Direction direction = directionFromJson(input);
-        const Stopwatch clock;
-        const solvers::Surface3d result =
-            runOperation(input, "surface", [&] { return surface.elevate(direction, times); });
-        const double ms = clock.elapsedMs();
-        out["surface"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    }
-    return out;
+    return transformGeometry(
+        input, [&](const solvers::Curve3d& c) { return c.elevate(times); },
+        [&](const solvers::Surface3d& s, solvers::Direction d) { return s.elevate(d, times); });
 }
 
 const SubcommandRegistrar registrar{

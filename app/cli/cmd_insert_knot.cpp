@@ -12,46 +12,16 @@
 namespace sculptline::cli {
 namespace {
 
-// For open curves the kernel reports a multiplicity above the degree against "times"; for closed
-// ones it inserts a copy per period and would name one of those copies instead, so check here.
-void checkClosedMultiplicity(const solvers::Curve3d& curve, double knot, int times)
-{
-    const double u = curve.normalizeParameter(knot);
-    const int s = solvers::knotMultiplicity(curve.knots(), u);
-    if (s + times > curve.degree()) {
-        throw InputError("times: knot " + json(knot).dump() + " has multiplicity " + std::to_string(s) + "; inserting it " +
-                         std::to_string(times) + " more times exceeds the degree " + std::to_string(curve.degree()));
-    }
-}
-
 json run(const json& input, const Options&)
 {
-    const bool isCurve = curveOrSurface(input) == GeometryKind::Curve;
     const double knot = solvers::io::numberFromJson(field(input, "knot"), "knot");
     // The kernel bounds times by degree - multiplicity; the range here only keeps the integer sane.
     const int times = input.contains("times")
                           ? solvers::io::integerFromJson(input["times"], "times", 0, solvers::kMaxDegree + 1)
                           : 1;
-    json out;
-    if (isCurve) {
-        const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
-        if (curve.isClosed()) checkClosedMultiplicity(curve, knot, times);
-        const Stopwatch clock;
-        const solvers::Curve3d result = runOperation(input, "curve", [&] { return curve.insertKnot(knot, times); });
-        const double ms = clock.elapsedMs();
-        out["curve"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    } else {
-        const solvers::Surface3d surface = solvers::io::surfaceFromJson(field(input, "surface"), "surface");
-        const solvers::Direction direction = directionFromJson(input);
-        const Stopwatch clock;
-        const solvers::Surface3d result =
-            runOperation(input, "surface", [&] { return surface.insertKnot(direction, knot, times); });
-        const double ms = clock.elapsedMs();
-        out["surface"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    }
-    return out;
+    return transformGeometry(
+        input, [&](const solvers::Curve3d& c) { return c.insertKnot(knot, times); },
+        [&](const solvers::Surface3d& s, solvers::Direction d) { return s.insertKnot(d, knot, times); });
 }
 
 const SubcommandRegistrar registrar{

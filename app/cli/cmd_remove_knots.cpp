@@ -15,29 +15,12 @@ namespace {
 
 json run(const json& input, const Options&)
 {
-    const bool isCurve = curveOrSurface(input) == GeometryKind::Curve;
     const double tolerance = solvers::io::numberFromJson(field(input, "tolerance"), "tolerance");
     if (tolerance < 0) throw InputError("tolerance: must be >= 0, got " + field(input, "tolerance").dump());
-    json out;
     int removed = 0;
-    if (isCurve) {
-        const solvers::Curve3d curve = solvers::io::curveFromJson(field(input, "curve"), "curve");
-        const Stopwatch clock;
-        const solvers::Curve3d result =
-            runOperation(input, "curve", [&] { return curve.removeKnots(tolerance, &removed); });
-        const double ms = clock.elapsedMs();
-        out["curve"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    } else {
-        const solvers::Surface3d surface = solvers::io::surfaceFromJson(field(input, "surface"), "surface");
-        const solvers::Direction direction = directionFromJson(input);
-        const Stopwatch clock;
-        const solvers::Surface3d result =
-            runOperation(input, "surface", [&] { return surface.removeKnots(direction, tolerance, &removed); });
-        const double ms = clock.elapsedMs();
-        out["surface"] = solvers::io::toJson(result);
-        out["elapsed_ms"] = ms;
-    }
+    json out = transformGeometry(
+        input, [&](const solvers::Curve3d& c) { return c.removeKnots(tolerance, &removed); },
+        [&](const solvers::Surface3d& s, solvers::Direction d) { return s.removeKnots(d, tolerance, &removed); });
     out["removed"] = removed;
     return out;
 }

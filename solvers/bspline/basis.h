@@ -36,6 +36,14 @@ Eigen::MatrixXd basisDerivatives(int span, double u, int degree, int n, const Kn
 /// Multiplicity of the knot value u (exact comparison; knots are data, not results of arithmetic).
 int knotMultiplicity(const KnotVector& knots, double u);
 
+/// The binomial coefficient C(n, k) as a double (exact for the small n of spline degrees).
+inline double binomial(int n, int k)
+{
+    double b = 1.0;
+    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
+    return b;
+}
+
 /// Distinct knot values strictly inside (knots[degree], knots[size-degree-1]).
 std::vector<double> interiorBreakpoints(int degree, const KnotVector& knots);
 

@@ -22,13 +22,6 @@ constexpr double kPeriodicRelativeTolerance = 1e-9;
 // knots that elevation introduces.
 constexpr int kWindowPeriods = 2;
 
-double binomial(int n, int k)
-{
-    double b = 1.0;
-    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-    return b;
-}
-
 }  // namespace
 
 template <int Dim>
@@ -211,9 +204,14 @@ BSplineCurve<Dim> BSplineCurve<Dim>::insertKnot(double u, int times) const
         return fromHomogeneous(degree_, std::move(r.knots), r.points, isRational());
     }
     const double un = normalizeParameter(u);
-    if (times < 0 || knotMultiplicity(knots_, un) + times > degree_) {
+    // Checked here, on the knot as given: the window below holds a copy per period, and the
+    // window's own check would name one of those copies.
+    const int s = knotMultiplicity(knots_, un);
+    if (times < 0) throw GeometryError("times: must be non-negative, got " + std::to_string(times));
+    if (s + times > degree_) {
         std::ostringstream msg;
-        msg << "times: inserting knot " << un << " " << times << " times would exceed the degree " << degree_;
+        msg << "times: knot " << u << " has multiplicity " << s << "; inserting it " << times
+            << " more times exceeds the degree " << degree_;
         throw GeometryError(msg.str());
     }
     std::vector<double> all;

@@ -8,17 +8,6 @@
 #include <sstream>
 
 namespace sculptline::solvers {
-namespace {
-
-double binomial(int n, int k)
-{
-    double b = 1.0;
-    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-    return b;
-}
-
-}  // namespace
-
 template <int Dim>
 BSplineSurface<Dim>::BSplineSurface(int degreeU, int degreeV, KnotVector knotsU, KnotVector knotsV, int countU,
                                     int countV, std::vector<Point> points, std::vector<double> weights)

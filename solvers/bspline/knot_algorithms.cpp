@@ -10,13 +10,6 @@
 namespace sculptline::solvers {
 namespace {
 
-double binomial(int n, int k)
-{
-    double b = 1.0;
-    for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
-    return b;
-}
-
 // Largest Euclidean distance over groups of `groupSize` columns (see removeKnot).
 double groupDistance(const Eigen::RowVectorXd& a, const Eigen::RowVectorXd& b, int groupSize)
 {
