@@ -164,7 +164,9 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
         KnotVector U;
         std::vector<Pt<Dim>> P;
         if (c.isClosed()) {
-            const PeriodicWindow w = periodicExtension(p, c.knots(), c.homogeneous(), 1);
+            // Two periods each side: [t_k, t_l] lies within one period of [a - T, a + 2T] (breakPoints
+            // checks t_l - t_k < T) and the pinned points reach p spans further.
+            const PeriodicWindow w = periodicExtension(p, c.knots(), c.homogeneous(), 2);
             U = w.knots;
             for (Eigen::Index i = 0; i < w.points.rows(); ++i) P.push_back(w.points.row(i).transpose());
         } else {
@@ -181,7 +183,6 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
 
         // Closed: read one period [A, A + T] off the edited window such that no changed point's
         // support crosses its ends (then the wrapped points are unchanged copies and repeat).
-        const double T = c.domainEnd() - c.domainStart();
         const int n0 = c.pointCount() - p;
         const int nNew = n0 + static_cast<int>(e.knots.size() - U.size());
         const int sigma = e.localLast + p + 1;
@@ -189,7 +190,6 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
         if (iA >= p && iA <= e.localFirst && sigma + p < static_cast<int>(e.knots.size())) {
             KnotVector k(e.knots.begin() + iA - p, e.knots.begin() + sigma + p + 1);
             std::vector<Pt<Dim>> q(e.points.begin() + iA - p, e.points.begin() + sigma);
-            (void)T;
             return BSplineCurve<Dim>(p, std::move(k), std::move(q), {}, true);
         }
         if (attempt >= 3) throw GeometryError("stroke: the over-sketch covers (almost) the whole closed curve");

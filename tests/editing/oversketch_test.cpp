@@ -356,3 +356,28 @@ TEST_P(OversketchLocalDegree, GivenDegreeP_WhenOversketched_ThenLocalAndCpMinus1
 }
 
 INSTANTIATE_TEST_SUITE_P(Degrees, OversketchLocalDegree, ::testing::Values(2, 4, 5));
+
+TEST(Oversketch, GivenStrokesAroundMostOfALoop_WhenOversketched_ThenClosedResultOrErrorNeverCrash)
+{
+    std::vector<Eigen::Vector2d> loop;
+    for (int i = 0; i < 10; ++i) loop.emplace_back(8 * std::cos(i * M_PI / 5), 5 * std::sin(i * M_PI / 5));
+    const Curve2d curve = makeClosedUniform<2>(3, loop);
+    for (double extent : {1.0, 3.0, 5.0, 6.0}) {  // radians of the loop covered by the stroke
+        std::vector<Eigen::Vector2d> stroke;
+        for (int i = 0; i <= 200; ++i) {
+            const double a = 2.0 + extent * i / 200.0;
+            stroke.emplace_back(9.0 * std::cos(a), 6.0 * std::sin(a));
+        }
+        for (auto m : {OversketchMethod::LocalC2, OversketchMethod::Blend}) {
+            try {
+                const Curve2d out = oversketch(curve, stroke, method(m));
+                EXPECT_TRUE(out.isClosed());
+                EXPECT_LT(maxJump(out, 2), 1e-9);
+                EXPECT_LT(maxDistanceToCurve(out, stroke), 0.5) << "extent " << extent;
+            } catch (const GeometryError& e) {
+                EXPECT_NE(std::string(e.what()).find("stroke"), std::string::npos) << e.what();
+                EXPECT_GE(extent, 5.0) << "only strokes around most of the loop may be refused: " << e.what();
+            }
+        }
+    }
+}
