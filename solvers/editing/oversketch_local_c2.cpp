@@ -159,8 +159,21 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
     const double tol = o.tolerance * st.length;
     const CurveLengths<Dim> lengths(curve);
 
+    // Closed curves with few spans: rounding [u_ps, u_pe] out to knots may span a whole period, or
+    // the edit's support may not fit inside one; exact knot insertion (everywhere, or outside the
+    // edit) makes the knots denser and the attempt is repeated.
+    constexpr int kMaxRefinements = 4;
+    BSplineCurve<Dim> c = curve;
     for (int attempt = 0;; ++attempt) {
-        const BSplineCurve<Dim> c = attempt == 0 ? curve : refineOutside(curve, span, attempt);
+        const Breaks br = breakPoints(c, lengths, st, o);
+        span = {br.tk, br.tl};
+        if (br.tooWide) {
+            if (attempt >= kMaxRefinements) {
+                throw GeometryError("stroke: the over-sketch with its transitions covers the whole closed curve");
+            }
+            c = refineOutside(c, {br.tk, br.tk}, 1);
+            continue;
+        }
         KnotVector U;
         std::vector<Pt<Dim>> P;
         if (c.isClosed()) {
@@ -173,8 +186,6 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
             U = c.knots();
             P = c.points();
         }
-        const Breaks br = breakPoints(c, lengths, st, o);
-        span = {br.tk, br.tl};
         const Target<Dim> tgt = buildTarget(c, lengths, st, br);
         const Edit<Dim> e = localApproximation<Dim>(p, U, P, br.tk, br.tl, br.leftFree, br.rightFree, tgt.params,
                                                     tgt.points, tol);
@@ -192,7 +203,10 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
             std::vector<Pt<Dim>> q(e.points.begin() + iA - p, e.points.begin() + sigma);
             return BSplineCurve<Dim>(p, std::move(k), std::move(q), {}, true);
         }
-        if (attempt >= 3) throw GeometryError("stroke: the over-sketch covers (almost) the whole closed curve");
+        if (attempt >= kMaxRefinements) {
+            throw GeometryError("stroke: the over-sketch covers (almost) the whole closed curve");
+        }
+        c = refineOutside(c, span, 1);
     }
 }
 

@@ -65,6 +65,7 @@ struct Breaks {
     double us = 0, ue = 0, ups = 0, upe = 0, tk = 0, tl = 0, d1 = 0, d2 = 0;
     bool leftFree = false, rightFree = false;      // the new curve's end is pinned to h̄'s end
     bool leftExtend = false, rightExtend = false;  // the stroke runs past that end of the curve
+    bool tooWide = false;  // closed: [t_k, t_l] rounded out to knots spans a whole period
 };
 
 template <int Dim>
@@ -78,6 +79,18 @@ Breaks breakPoints(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& len, con
     b.d1 = std::max(o.transitionFactor * (c.evaluate(b.us) - h.front()).norm(), o.minTransition * st.length);
     b.d2 = std::max(o.transitionFactor * (c.evaluate(b.ue) - h.back()).norm(), o.minTransition * st.length);
     const double a = c.domainStart(), e = c.domainEnd();
+    if (c.isClosed()) {
+        // The transitions share what the stroke leaves of the loop; they are shortened to half of
+        // it at most so that [t_k, t_l] (rounded out to knots) can stay within one period.
+        const double free = len.total() - (len.lengthAt(b.ue) - len.lengthAt(b.us));
+        if (free <= 0.0) throw GeometryError("stroke: the over-sketch covers the whole closed curve");
+        const double room = 0.5 * free;
+        if (b.d1 + b.d2 > room) {
+            const double f = room / (b.d1 + b.d2);
+            b.d1 *= f;
+            b.d2 *= f;
+        }
+    }
     const double offTol = o.tolerance * st.length;  // "on the curve's end" within the fit tolerance
     const double uTol = 1e-9 * (e - a);
     if (!c.isClosed()) {
@@ -91,9 +104,8 @@ Breaks breakPoints(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& len, con
     if (!c.isClosed()) {
         b.leftFree = b.tk <= a;
         b.rightFree = b.tl >= e;
-    } else if (b.tl - b.tk >= e - a) {
-        throw GeometryError("stroke: the over-sketch with its transitions covers the whole closed curve");
     }
+    b.tooWide = c.isClosed() && b.tl - b.tk >= e - a;
     return b;
 }
 
