@@ -40,8 +40,14 @@ void oversketchOnce(benchmark::State& state, OversketchMethod m)
     o.method = m;
     for (auto _ : state) benchmark::DoNotOptimize(oversketch(curve, stroke, o));
 }
-void BM_EditingOversketchLocalC2(benchmark::State& s) { oversketchOnce(s, OversketchMethod::LocalC2); }
-void BM_EditingOversketchBlend(benchmark::State& s) { oversketchOnce(s, OversketchMethod::Blend); }
+void BM_EditingOversketchLocalC2(benchmark::State& s)
+{
+    oversketchOnce(s, OversketchMethod::LocalC2);
+}
+void BM_EditingOversketchBlend(benchmark::State& s)
+{
+    oversketchOnce(s, OversketchMethod::Blend);
+}
 BENCHMARK(BM_EditingOversketchLocalC2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EditingOversketchBlend)->Unit(benchmark::kMillisecond);
 

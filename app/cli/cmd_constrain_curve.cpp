@@ -42,11 +42,16 @@ std::vector<CurveConstraint<3>> constraintsFromJson(const json& j, const solvers
         const json& type = solvers::io::member(c, "type", path);
         const std::string t = type.is_string() ? type.get<std::string>() : "";
         CurveConstraint<3> k;
-        if (t == "position") k.type = ConstraintType::Position;
-        else if (t == "tangent") k.type = ConstraintType::Tangent;
-        else if (t == "curvature") k.type = ConstraintType::Curvature;
-        else if (t == "distance") k.type = ConstraintType::Distance;
-        else throw InputError(path + ".type: expected position, tangent, curvature or distance, got " + type.dump());
+        if (t == "position")
+            k.type = ConstraintType::Position;
+        else if (t == "tangent")
+            k.type = ConstraintType::Tangent;
+        else if (t == "curvature")
+            k.type = ConstraintType::Curvature;
+        else if (t == "distance")
+            k.type = ConstraintType::Distance;
+        else
+            throw InputError(path + ".type: expected position, tangent, curvature or distance, got " + type.dump());
         k.u = parameter(c, "u", path, curve);
         if (k.type == ConstraintType::Distance) k.u2 = parameter(c, "u2", path, curve);
         const json& v = solvers::io::member(c, "value", path);
@@ -67,7 +72,8 @@ json run(const json& input, const Options&)
 {
     const solvers::Curve3d curve0 = solvers::io::curveFromJson(field(input, "curve"), "curve");
     if (curve0.isRational()) throw InputError("curve: constrain-curve needs a non-rational curve (no weights)");
-    const int rounds = input.contains("insert_knots") ? solvers::io::integerFromJson(input["insert_knots"], "insert_knots", 0, 8) : 0;
+    const int rounds =
+        input.contains("insert_knots") ? solvers::io::integerFromJson(input["insert_knots"], "insert_knots", 0, 8) : 0;
     const auto constraints = constraintsFromJson(field(input, "constraints"), curve0);
     const solvers::Curve3d curve = solvers::editing::insertKnotsNearConstraints(curve0, constraints, rounds);
     std::vector<int> blocked;
@@ -82,9 +88,8 @@ json run(const json& input, const Options&)
 
     const Stopwatch clock;
     solvers::editing::ManipulationReport report;
-    const solvers::Curve3d result = runOperation(input, "curve", [&] {
-        return solvers::editing::constrainCurve(curve, constraints, blocked, &report);
-    });
+    const solvers::Curve3d result = runOperation(
+        input, "curve", [&] { return solvers::editing::constrainCurve(curve, constraints, blocked, &report); });
     const double ms = clock.elapsedMs();
     json out;
     out["curve"] = solvers::io::toJson(result);

@@ -1,7 +1,8 @@
 // sculptline-cli lift: a 2D stroke and its end depths -> the minimum-curvature space curve (seed 004
 // §3; solvers/editing/lift.h).
 //
-//   {"stroke": K (2D), "depth": [z0, z1], "view": V} -> {"curve": C (3D), "critical": [indices], "fit_error": d, "elapsed_ms": t}
+//   {"stroke": K (2D), "depth": [z0, z1], "view": V} -> {"curve": C (3D), "critical": [indices], "fit_error": d,
+//   "elapsed_ms": t}
 //
 // The stroke is in view coordinates (x right, y up; a z coordinate is ignored) and depth runs along
 // the view direction. The optional "view" {"origin": p, "right": r, "up": u, "depth": d} maps a view
@@ -21,7 +22,8 @@ json run(const json& input, const Options&)
         pointArray(solvers::io::member(stroke, "points", "stroke"), "stroke.points");
     if (points.empty()) throw InputError("stroke.points: empty, a stroke needs points");
     const std::vector<double> depth = numberArray(field(input, "depth"), "depth");
-    if (depth.size() != 2) throw InputError("depth: expected [z0, z1], got " + std::to_string(depth.size()) + " numbers");
+    if (depth.size() != 2)
+        throw InputError("depth: expected [z0, z1], got " + std::to_string(depth.size()) + " numbers");
     solvers::editing::ViewFrame view;
     if (input.contains("view")) {
         const json& v = input["view"];

@@ -23,7 +23,8 @@ json run(const json& input, const Options&)
     solvers::editing::OversketchOptions options;
     if (input.contains("method")) {
         const json& m = input["method"];
-        const auto parsed = m.is_string() ? solvers::editing::parseOversketchMethod(m.get<std::string>()) : std::nullopt;
+        const auto parsed =
+            m.is_string() ? solvers::editing::parseOversketchMethod(m.get<std::string>()) : std::nullopt;
         if (!parsed) throw InputError("method: expected \"blend\" or \"local-c2\", got " + m.dump());
         options.method = *parsed;
     }

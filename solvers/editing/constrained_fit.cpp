@@ -95,8 +95,10 @@ std::vector<Eigen::Matrix<double, Dim, 1>> fitFixedKnots(const FixedKnotFit<Dim>
         rhs.row(k) = pr.samples[k].transpose();
         for (int j = 0; j <= p; ++j) {
             const int i = span - p + j;
-            if (col[i] >= 0) a(k, col[i]) += basis[j];
-            else rhs.row(k) -= basis[j] * result[i].transpose();
+            if (col[i] >= 0)
+                a(k, col[i]) += basis[j];
+            else
+                rhs.row(k) -= basis[j] * result[i].transpose();
         }
     }
     const double w = std::sqrt(kFitFairing * std::max(1.0, double(rowsData) / n));
@@ -104,8 +106,10 @@ std::vector<Eigen::Matrix<double, Dim, 1>> fitFixedKnots(const FixedKnotFit<Dim>
         const double coef[3] = {w, -2.0 * w, w};
         for (int j = 0; j < 3; ++j) {
             const int i = r + j;
-            if (col[i] >= 0) a(rowsData + r, col[i]) += coef[j];
-            else rhs.row(rowsData + r) -= coef[j] * result[i].transpose();
+            if (col[i] >= 0)
+                a(rowsData + r, col[i]) += coef[j];
+            else
+                rhs.row(rowsData + r) -= coef[j] * result[i].transpose();
         }
     }
     const Eigen::Matrix<double, Eigen::Dynamic, Dim> x = a.householderQr().solve(rhs);
@@ -115,13 +119,13 @@ std::vector<Eigen::Matrix<double, Dim, 1>> fitFixedKnots(const FixedKnotFit<Dim>
     return result;
 }
 
-#define SCULPTLINE_INSTANTIATE(D)                                                                                      \
-    template std::vector<Eigen::Matrix<double, D, 1>> fitFixedKnots<D>(const FixedKnotFit<D>&);                       \
-    template std::vector<double> chordLengths<D>(const std::vector<Eigen::Matrix<double, D, 1>>&);                    \
-    template std::vector<Eigen::Matrix<double, D, 1>> resampleByArcLength<D>(                                          \
-        const std::vector<Eigen::Matrix<double, D, 1>>&, int);                                                         \
-    template std::vector<Eigen::Matrix<double, D, 1>> dropDuplicates<D>(const std::vector<Eigen::Matrix<double, D, 1>>&, \
-                                                                        double);
+#define SCULPTLINE_INSTANTIATE(D)                                                                  \
+    template std::vector<Eigen::Matrix<double, D, 1>> fitFixedKnots<D>(const FixedKnotFit<D>&);    \
+    template std::vector<double> chordLengths<D>(const std::vector<Eigen::Matrix<double, D, 1>>&); \
+    template std::vector<Eigen::Matrix<double, D, 1>> resampleByArcLength<D>(                      \
+        const std::vector<Eigen::Matrix<double, D, 1>>&, int);                                     \
+    template std::vector<Eigen::Matrix<double, D, 1>> dropDuplicates<D>(                           \
+        const std::vector<Eigen::Matrix<double, D, 1>>&, double);
 SCULPTLINE_INSTANTIATE(2)
 SCULPTLINE_INSTANTIATE(3)
 #undef SCULPTLINE_INSTANTIATE

@@ -14,9 +14,9 @@ template <int Dim>
 struct FixedKnotFit {
     using Point = Eigen::Matrix<double, Dim, 1>;
     int degree = 3;
-    KnotVector knots;                       ///< clamped or not; n + degree + 1 values
-    std::vector<double> params;             ///< one parameter per sample, inside the domain
-    std::vector<Point> samples;             ///< the data
+    KnotVector knots;                         ///< clamped or not; n + degree + 1 values
+    std::vector<double> params;               ///< one parameter per sample, inside the domain
+    std::vector<Point> samples;               ///< the data
     std::vector<std::optional<Point>> fixed;  ///< size n (or empty): a value pins that control point
 };
 

@@ -58,13 +58,19 @@ Eigen::VectorXd constraintRow(const BSplineCurve<Dim>& curve, const CurveConstra
 {
     Eigen::VectorXd row = Eigen::VectorXd::Zero(uniqueCount(curve));
     switch (c.type) {
-    case ConstraintType::Position: addBasisRow(curve, c.u, 0, 1.0, row); break;
-    case ConstraintType::Tangent: addBasisRow(curve, c.u, 1, 1.0, row); break;
-    case ConstraintType::Curvature: addBasisRow(curve, c.u, 2, 1.0, row); break;
-    case ConstraintType::Distance:
-        addBasisRow(curve, c.u2, 0, 1.0, row);
-        addBasisRow(curve, c.u, 0, -1.0, row);
-        break;
+        case ConstraintType::Position:
+            addBasisRow(curve, c.u, 0, 1.0, row);
+            break;
+        case ConstraintType::Tangent:
+            addBasisRow(curve, c.u, 1, 1.0, row);
+            break;
+        case ConstraintType::Curvature:
+            addBasisRow(curve, c.u, 2, 1.0, row);
+            break;
+        case ConstraintType::Distance:
+            addBasisRow(curve, c.u2, 0, 1.0, row);
+            addBasisRow(curve, c.u, 0, -1.0, row);
+            break;
     }
     return row;
 }
@@ -108,7 +114,8 @@ CurveManipulationSolver<Dim>::CurveManipulationSolver(Curve curve, std::vector<C
     rank_ = static_cast<int>(qr.rank());
     if (rank_ == 0) return;
     const Eigen::MatrixXd q1 = qr.householderQ() * Eigen::MatrixXd::Identity(m, rank_);
-    const Eigen::MatrixXd a = qr.matrixR().topRows(rank_).template triangularView<Eigen::Upper>().toDenseMatrix().transpose();
+    const Eigen::MatrixXd a =
+        qr.matrixR().topRows(rank_).template triangularView<Eigen::Upper>().toDenseMatrix().transpose();
     // a (rows × rank) has full column rank: its least-squares solution operator, column by column.
     const Eigen::MatrixXd aPlus = a.householderQr().solve(Eigen::MatrixXd::Identity(rows, rows));
     C_ = q1 * (aPlus * qr.colsPermutation().transpose());
@@ -128,7 +135,8 @@ void CurveManipulationSolver<Dim>::displacements(const std::vector<Point>& targe
 }
 
 template <int Dim>
-BSplineCurve<Dim> CurveManipulationSolver<Dim>::solve(const std::vector<Point>& targets, ManipulationReport* report) const
+BSplineCurve<Dim> CurveManipulationSolver<Dim>::solve(const std::vector<Point>& targets,
+                                                      ManipulationReport* report) const
 {
     for (const Point& t : targets) {
         if (!t.allFinite()) throw GeometryError("constraints: value is not a finite number");
@@ -198,12 +206,12 @@ BSplineCurve<Dim> insertKnotsNearConstraints(const BSplineCurve<Dim>& curve,
     return result;
 }
 
-#define SCULPTLINE_INSTANTIATE(D)                                                                                      \
-    template class CurveManipulationSolver<D>;                                                                         \
-    template Eigen::VectorXd constraintRow<D>(const BSplineCurve<D>&, const CurveConstraint<D>&);                      \
-    template BSplineCurve<D> constrainCurve<D>(const BSplineCurve<D>&, const std::vector<CurveConstraint<D>>&,         \
-                                               const std::vector<int>&, ManipulationReport*);                          \
-    template BSplineCurve<D> insertKnotsNearConstraints<D>(const BSplineCurve<D>&,                                     \
+#define SCULPTLINE_INSTANTIATE(D)                                                                              \
+    template class CurveManipulationSolver<D>;                                                                 \
+    template Eigen::VectorXd constraintRow<D>(const BSplineCurve<D>&, const CurveConstraint<D>&);              \
+    template BSplineCurve<D> constrainCurve<D>(const BSplineCurve<D>&, const std::vector<CurveConstraint<D>>&, \
+                                               const std::vector<int>&, ManipulationReport*);                  \
+    template BSplineCurve<D> insertKnotsNearConstraints<D>(const BSplineCurve<D>&,                             \
                                                            const std::vector<CurveConstraint<D>>&, int);
 SCULPTLINE_INSTANTIATE(2)
 SCULPTLINE_INSTANTIATE(3)

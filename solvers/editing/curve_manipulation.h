@@ -23,21 +23,21 @@ template <int Dim>
 struct CurveConstraint {
     using Point = Eigen::Matrix<double, Dim, 1>;
     ConstraintType type = ConstraintType::Position;
-    double u = 0.0;   ///< curve parameter (open curves: clamped to the domain; closed: wrapped)
-    double u2 = 0.0;  ///< second parameter, Distance only
+    double u = 0.0;               ///< curve parameter (open curves: clamped to the domain; closed: wrapped)
+    double u2 = 0.0;              ///< second parameter, Distance only
     Point value = Point::Zero();  ///< target, in model units (per unit parameter for derivatives)
 };
 
 /// What the solve achieved.
 struct ManipulationReport {
-    int constraintRows = 0;        ///< number of constraints (rows of F)
-    int freePoints = 0;            ///< control points allowed to move (columns of F)
-    int rank = 0;                  ///< numerical rank of F
-    bool tooFewFreePoints = false; ///< rows > free points: thesis §7.5; try insertKnotsNearConstraints
-    bool compromise = false;       ///< rank < rows: over-determined or contradictory, least-squares answer
-    double maxResidual = 0.0;      ///< max over constraints of |f_j(new curve) - value_j| (model units)
-    std::vector<double> residuals; ///< per constraint, same units
-    std::string message;           ///< human-readable summary of the two flags above (empty when fine)
+    int constraintRows = 0;         ///< number of constraints (rows of F)
+    int freePoints = 0;             ///< control points allowed to move (columns of F)
+    int rank = 0;                   ///< numerical rank of F
+    bool tooFewFreePoints = false;  ///< rows > free points: thesis §7.5; try insertKnotsNearConstraints
+    bool compromise = false;        ///< rank < rows: over-determined or contradictory, least-squares answer
+    double maxResidual = 0.0;       ///< max over constraints of |f_j(new curve) - value_j| (model units)
+    std::vector<double> residuals;  ///< per constraint, same units
+    std::string message;            ///< human-readable summary of the two flags above (empty when fine)
 };
 
 /// Stateful solver for a drag: the preprocessing stage (constructor) builds F for the constraint
@@ -80,9 +80,9 @@ public:
 private:
     Curve curve_;
     std::vector<CurveConstraint<Dim>> constraints_;
-    std::vector<int> free_;        // unique indices of the free control points
-    Eigen::MatrixXd F_;            // rows × free
-    Eigen::MatrixXd C_;            // free × rows: d = C b
+    std::vector<int> free_;  // unique indices of the free control points
+    Eigen::MatrixXd F_;      // rows × free
+    Eigen::MatrixXd C_;      // free × rows: d = C b
     std::vector<Point> current_;
     int rank_ = 0;
 };

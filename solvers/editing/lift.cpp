@@ -86,7 +86,8 @@ LiftResult liftStroke(const std::vector<Eigen::Vector2d>& stroke, double z0, dou
 {
     if (!std::isfinite(z0) || !std::isfinite(z1)) throw GeometryError("depth: not a finite number");
     for (size_t i = 0; i < stroke.size(); ++i) {
-        if (!stroke[i].allFinite()) throw GeometryError("stroke.points[" + std::to_string(i) + "]: not a finite number");
+        if (!stroke[i].allFinite())
+            throw GeometryError("stroke.points[" + std::to_string(i) + "]: not a finite number");
     }
     if (options.samples < 3 || !(options.lambda > 0.0 && options.lambda < 1.0) || options.filterIterations < 0 ||
         !(options.linearityThreshold > 0.0) || !(options.fitTolerance > 0.0)) {

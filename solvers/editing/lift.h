@@ -51,7 +51,7 @@ std::vector<int> criticalPoints(const std::vector<Eigen::Vector2d>& pts, double 
 /// Alg. 2 and §3.1: depths equally spaced over the critical list (Theorem 1), arc-length
 /// interpolation between them, then the Laplacian filter with the end depths held.
 /// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite) or "depth".
-LiftResult liftStroke(const std::vector<Eigen::Vector2d>& stroke, double z0, double z1,
-                      const LiftOptions& options = {}, const ViewFrame& view = {});
+LiftResult liftStroke(const std::vector<Eigen::Vector2d>& stroke, double z0, double z1, const LiftOptions& options = {},
+                      const ViewFrame& view = {});
 
 }  // namespace sculptline::solvers::editing

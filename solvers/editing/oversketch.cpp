@@ -39,7 +39,8 @@ template <int Dim>
 StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke)
 {
     for (size_t i = 0; i < stroke.size(); ++i) {
-        if (!stroke[i].allFinite()) throw GeometryError("stroke.points[" + std::to_string(i) + "]: not a finite number");
+        if (!stroke[i].allFinite())
+            throw GeometryError("stroke.points[" + std::to_string(i) + "]: not a finite number");
     }
     double extent = 0.0;
     for (const auto& p : stroke) extent = std::max(extent, (p - stroke.front()).norm());

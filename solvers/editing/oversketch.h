@@ -36,7 +36,6 @@ struct OversketchOptions {
     double minTransition = 0.1;
 };
 
-
 /// Over-sketches `curve` (non-rational; open or closed) with `stroke` (in the curve's space).
 /// A stroke drawn against the curve's direction is reversed first. Open curves: a stroke running
 /// past an end extends the curve (local-c2) or replaces the end (blend).
@@ -77,7 +76,8 @@ struct StrokeOnCurve {
 };
 
 template <int Dim>
-StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke);
+StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve,
+                               const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke);
 
 template <int Dim>
 BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& curve, const StrokeOnCurve<Dim>& s,

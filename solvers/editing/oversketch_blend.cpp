@@ -73,8 +73,7 @@ Polygon<Dim> polygonOf(const BSplineCurve<Dim>& c)
 constexpr int kNone = std::numeric_limits<int>::min();
 
 template <int Dim>
-int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>& strokeEnd, double M,
-                                   int maxSteps)
+int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>& strokeEnd, double M, int maxSteps)
 {
     int best = kNone, fallback = kNone;
     double bestPhi = 0.0;
@@ -87,8 +86,9 @@ int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>&
         }
         if (dd >= M) {
             const bool hasPrev = poly.closed || (i - dir >= 0 && i - dir < poly.size());
-            const Pt<Dim> edge = hasPrev ? Pt<Dim>(dir < 0 ? poly.at(i) - poly.at(i - dir) : poly.at(i - dir) - poly.at(i))
-                                         : Pt<Dim>(Pt<Dim>::Zero());
+            const Pt<Dim> edge = hasPrev
+                                     ? Pt<Dim>(dir < 0 ? poly.at(i) - poly.at(i - dir) : poly.at(i - dir) - poly.at(i))
+                                     : Pt<Dim>(Pt<Dim>::Zero());
             const Pt<Dim> toStroke = dir < 0 ? Pt<Dim>(strokeEnd - poly.at(i)) : Pt<Dim>(poly.at(i) - strokeEnd);
             const double phi = angleBetween<Dim>(edge, toStroke);
             if (best == kNone || phi < bestPhi) {
@@ -206,9 +206,11 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     int iE = before(ue) + 1;
     if (c.isClosed() && ue < us) iE += n;  // the stroke crosses the seam
     const int maxSteps = poly.closed ? n / 2 : n;
-    const bool openLeftEnd = !c.isClosed() && (h.front() - c.evaluate(c.domainStart())).norm() > o.tolerance * st.length &&
+    const bool openLeftEnd = !c.isClosed() &&
+                             (h.front() - c.evaluate(c.domainStart())).norm() > o.tolerance * st.length &&
                              st.us <= c.domainStart();
-    const bool openRightEnd = !c.isClosed() && (h.back() - c.evaluate(c.domainEnd())).norm() > o.tolerance * st.length &&
+    const bool openRightEnd = !c.isClosed() &&
+                              (h.back() - c.evaluate(c.domainEnd())).norm() > o.tolerance * st.length &&
                               st.ue >= c.domainEnd();
     const int cs = openLeftEnd ? kNone : transitionPoint(poly, iS, -1, h.front(), M, maxSteps);
     const int ce = openRightEnd ? kNone : transitionPoint(poly, iE, +1, h.back(), M, maxSteps);
@@ -226,8 +228,10 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
             P.insert(P.end(), poly.pts.begin() + b, poly.pts.end());
             const int total = static_cast<int>(P.size());
             KnotVector K;
-            if (a >= 0) K.assign(U.begin(), U.begin() + a + p + 1);
-            else K.assign(p + 1, U[p]);
+            if (a >= 0)
+                K.assign(U.begin(), U.begin() + a + p + 1);
+            else
+                K.assign(p + 1, U[p]);
             const int rightCount = b < n ? n + p + 1 - (b + 1) : p + 1;
             const int middle = total + p + 1 - static_cast<int>(K.size()) - rightCount;
             const double left = K.back();

@@ -25,16 +25,15 @@
 namespace sculptline::solvers::editing::detail {
 namespace {
 
-// Samples per curve piece of h̄ (E^l, B^l, B^r, E^r): enough to pin the shape of up to a few spans.
-constexpr int kSamplesPerPiece = 24;
 // Alg. 1-1 stops adding knots once a span would hold fewer than two samples of h̄ on average.
 constexpr int kSamplesPerKnotMin = 2;
 
 template <int Dim>
 using Pt = Eigen::Matrix<double, Dim, 1>;
 
-// Blossom of the degree-p polynomial piece on span r at x[0..p-1]: de Boor's triangle with one
-// argument per level (Ramshaw; The NURBS Book A2.? / eq. 5.? in blossom form).
+// Blossom of the degree-p polynomial piece on span r at x[0..p-1]: de Boor's evaluation triangle
+// with the k-th level taking the k-th argument instead of u (Ramshaw 1989, "Blossoms are polar
+// forms"; with all x = u it is The NURBS Book's de Boor recurrence, eq. 5.15 form).
 template <int Dim>
 Pt<Dim> blossom(const KnotVector& U, const std::vector<Pt<Dim>>& P, int p, int r, const double* x)
 {
@@ -65,7 +64,7 @@ Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Di
                              bool leftFree, bool rightFree, const std::vector<double>& params,
                              const std::vector<Pt<Dim>>& target, double tolerance)
 {
-    const int a = static_cast<int>(std::upper_bound(U.begin(), U.end(), tk) - U.begin());  // knots <= tk
+    const int a = static_cast<int>(std::upper_bound(U.begin(), U.end(), tk) - U.begin());      // knots <= tk
     const int ibOld = static_cast<int>(std::lower_bound(U.begin(), U.end(), tl) - U.begin());  // first == tl
     const int ibLastOld = static_cast<int>(std::upper_bound(U.begin(), U.end(), tl) - U.begin()) - 1;
     const int rLeft = a - 1 - static_cast<int>(std::count(U.begin(), U.begin() + a, tk));  // last span ending at tk
@@ -94,7 +93,8 @@ Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Di
         if (leftFree) {
             fit.fixed.front() = target.front();
         } else {
-            for (int j = std::max(rLeft - p, L0); j <= rLeft; ++j) fit.fixed[j - L0] = blossom<Dim>(U, P, p, rLeft, &Un[j + 1]);
+            for (int j = std::max(rLeft - p, L0); j <= rLeft; ++j)
+                fit.fixed[j - L0] = blossom<Dim>(U, P, p, rLeft, &Un[j + 1]);
         }
         if (rightFree) {
             fit.fixed.back() = target.back();
@@ -187,8 +187,8 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
             P = c.points();
         }
         const Target<Dim> tgt = buildTarget(c, lengths, st, br);
-        const Edit<Dim> e = localApproximation<Dim>(p, U, P, br.tk, br.tl, br.leftFree, br.rightFree, tgt.params,
-                                                    tgt.points, tol);
+        const Edit<Dim> e =
+            localApproximation<Dim>(p, U, P, br.tk, br.tl, br.leftFree, br.rightFree, tgt.params, tgt.points, tol);
         maxError = e.error;
         if (!c.isClosed()) return BSplineCurve<Dim>(p, e.knots, e.points);
 

@@ -65,7 +65,7 @@ struct Breaks {
     double us = 0, ue = 0, ups = 0, upe = 0, tk = 0, tl = 0, d1 = 0, d2 = 0;
     bool leftFree = false, rightFree = false;      // the new curve's end is pinned to h̄'s end
     bool leftExtend = false, rightExtend = false;  // the stroke runs past that end of the curve
-    bool tooWide = false;  // closed: [t_k, t_l] rounded out to knots spans a whole period
+    bool tooWide = false;                          // closed: [t_k, t_l] rounded out to knots spans a whole period
 };
 
 template <int Dim>
@@ -129,7 +129,8 @@ Eigen::Matrix<double, Dim, 1> strokeTangent(const StrokeOnCurve<Dim>& st, bool a
         const auto& q = atStart ? h[i] : h[n - 1 - i];
         const auto& e = atStart ? h.front() : h.back();
         if ((q - e).norm() >= kTangentSpan * st.length || i == n - 1) {
-            return atStart ? Eigen::Matrix<double, Dim, 1>((q - e).normalized()) : Eigen::Matrix<double, Dim, 1>((e - q).normalized());
+            return atStart ? Eigen::Matrix<double, Dim, 1>((q - e).normalized())
+                           : Eigen::Matrix<double, Dim, 1>((e - q).normalized());
         }
     }
     return Eigen::Matrix<double, Dim, 1>::UnitX();
@@ -143,7 +144,7 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
                         const Breaks& b)
 {
     using Pt = Eigen::Matrix<double, Dim, 1>;
-    constexpr int K = 24;  // samples per curve piece: enough to pin a few spans of shape
+    constexpr int K = 24;  // samples per piece of h̄ (E^l, B^l, B^r, E^r): enough to pin a few spans
     Target<Dim> t;
     auto smooth = [](double x) { return x * x * (3.0 - 2.0 * x); };
     for (int i = 0; i < K && b.ups > b.tk; ++i) {
@@ -183,8 +184,10 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
     const bool smoothSpeed = !b.leftExtend && !b.rightExtend && std::min(a0, a1) + std::min(0.0, bumpC) > 0.0;
     for (size_t i = 0; i < mid.size(); ++i) {
         const double sg = lm > 0 ? chord[i] / lm : 0.0;
-        const double f = smoothSpeed ? lm * (a0 * sg + 0.5 * (a1 - a0) * sg * sg + bumpC * (2.0 * sg * sg - 4.0 / 3.0 * sg * sg * sg))
-                                     : (b.upe - b.ups) * sg;
+        const double f =
+            smoothSpeed
+                ? lm * (a0 * sg + 0.5 * (a1 - a0) * sg * sg + bumpC * (2.0 * sg * sg - 4.0 / 3.0 * sg * sg * sg))
+                : (b.upe - b.ups) * sg;
         t.params.push_back(b.ups + f);
         t.points.push_back(mid[i]);
     }

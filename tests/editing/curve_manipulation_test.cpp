@@ -82,7 +82,8 @@ TEST(CurveManipulation, GivenBlockedPoints_WhenDragged_ThenTheyAreExactlyFixed)
 {
     const Curve2d curve = wavyOpen(12);
     const std::vector<int> blocked = {0, 1, 5, 6, 11};
-    CurveManipulationSolver<2> solver(curve, {make<2>(ConstraintType::Position, 0.45, Eigen::Vector2d::Zero())}, blocked);
+    CurveManipulationSolver<2> solver(curve, {make<2>(ConstraintType::Position, 0.45, Eigen::Vector2d::Zero())},
+                                      blocked);
 
     const Curve2d out = solver.solve({curve.evaluate(0.45) + Eigen::Vector2d(0.0, 2.0)});
 
@@ -208,7 +209,8 @@ TEST(CurveManipulation, GivenBadInput_WhenConstructed_ThenGeometryErrorNotCrash)
 {
     const Curve2d curve = wavyOpen(6);
     EXPECT_THROW(CurveManipulationSolver<2>(curve, {}, {7}), GeometryError);
-    EXPECT_THROW(constrainCurve(curve, {make<2>(ConstraintType::Position, NAN, Eigen::Vector2d::Zero())}), GeometryError);
+    EXPECT_THROW(constrainCurve(curve, {make<2>(ConstraintType::Position, NAN, Eigen::Vector2d::Zero())}),
+                 GeometryError);
     // All points blocked: nothing can move, the report says the constraint is not met.
     ManipulationReport r;
     constrainCurve(curve, {make<2>(ConstraintType::Position, 0.5, Eigen::Vector2d(100, 100))}, {0, 1, 2, 3, 4, 5}, &r);

@@ -97,8 +97,9 @@ TEST(EditingCli, GivenLiftInput_WhenRun_ThenSpaceCurveWithEndDepths)
 TEST(EditingCli, GivenConstraints_WhenRun_ThenMetAndReported)
 {
     const json in = {{"curve", wave()},
-                     {"constraints", {{{"type", "position"}, {"u", 0.4}, {"value", {4, 3}}},
-                                      {{"type", "distance"}, {"u", 0.6}, {"u2", 0.7}, {"value", 1.5}}}},
+                     {"constraints",
+                      {{{"type", "position"}, {"u", 0.4}, {"value", {4, 3}}},
+                       {{"type", "distance"}, {"u", 0.6}, {"u2", 0.7}, {"value", 1.5}}}},
                      {"blocked", {0, 11}}};
     const CliRun r = runCli("constrain-curve", in.dump());
     ASSERT_EQ(r.status, 0);
@@ -114,7 +115,8 @@ TEST(EditingCli, GivenInvalidInputs_WhenRun_ThenExitStatus2)
 {
     const json bad[][2] = {
         {"constrain-curve", {{"curve", wave()}, {"constraints", {{{"type", "bogus"}, {"u", 0.4}, {"value", {4, 3}}}}}}},
-        {"constrain-curve", {{"curve", wave()}, {"constraints", {{{"type", "position"}, {"u", 1.4}, {"value", {4, 3}}}}}}},
+        {"constrain-curve",
+         {{"curve", wave()}, {"constraints", {{{"type", "position"}, {"u", 1.4}, {"value", {4, 3}}}}}}},
         {"constrain-curve", {{"curve", wave()}, {"constraints", json::array()}, {"blocked", {99}}}},
         {"oversketch", {{"curve", wave()}, {"stroke", {{"points", {{1, 1}}}}}}},
         {"oversketch", {{"curve", wave()}, {"stroke", stroke()}, {"method", "foo"}}},
@@ -123,6 +125,7 @@ TEST(EditingCli, GivenInvalidInputs_WhenRun_ThenExitStatus2)
         {"lift", {{"stroke", {{"points", {{1, 1}, {2, 2}}}}}, {"depth", {0}}}},
         {"lift", {{"stroke", {{"points", json::array()}}}, {"depth", {0, 1}}}},
     };
-    for (const auto& b : bad) EXPECT_EQ(runCli(b[0].get<std::string>(), b[1].dump()).status, 2) << b[1].dump().substr(0, 200);
+    for (const auto& b : bad)
+        EXPECT_EQ(runCli(b[0].get<std::string>(), b[1].dump()).status, 2) << b[1].dump().substr(0, 200);
     EXPECT_EQ(runCli("lift", "{\"stroke\": ").status, 2);
 }

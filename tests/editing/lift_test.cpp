@@ -18,7 +18,8 @@ constexpr double kZ1 = 12.0;
 std::vector<Eigen::Vector2d> sample(const Curve2d& c, int count)
 {
     std::vector<Eigen::Vector2d> out;
-    for (int i = 0; i < count; ++i) out.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / (count - 1)));
+    for (int i = 0; i < count; ++i)
+        out.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / (count - 1)));
     return out;
 }
 
@@ -77,12 +78,11 @@ TEST_P(LiftTheoremOne, GivenBezierStroke_WhenLifted_ThenCloseToEquallySpacedDept
 // is close to exact; measured 0.03 and 0.11 of a range of 10. For an asymmetric arc and an S curve
 // the critical points are not the key points (the paper's stated approximation, §3.1); measured
 // 0.20 and 0.89. Bounds leave ~50% margin over those measurements.
-INSTANTIATE_TEST_SUITE_P(
-    Beziers, LiftTheoremOne,
-    ::testing::Values(TheoremOneCase{{{0, 0}, {5, 10}, {10, 0}}, 0.005, true},
-                      TheoremOneCase{{{0, 0}, {2, 8}, {8, 8}, {10, 0}}, 0.02, true},
-                      TheoremOneCase{{{0, 0}, {2, 8}, {9, 9}, {10, 0}}, 0.03, false},
-                      TheoremOneCase{{{0, 0}, {1, 9}, {9, -9}, {10, 0}}, 0.13, false}));
+INSTANTIATE_TEST_SUITE_P(Beziers, LiftTheoremOne,
+                         ::testing::Values(TheoremOneCase{{{0, 0}, {5, 10}, {10, 0}}, 0.005, true},
+                                           TheoremOneCase{{{0, 0}, {2, 8}, {8, 8}, {10, 0}}, 0.02, true},
+                                           TheoremOneCase{{{0, 0}, {2, 8}, {9, 9}, {10, 0}}, 0.03, false},
+                                           TheoremOneCase{{{0, 0}, {1, 9}, {9, -9}, {10, 0}}, 0.13, false}));
 
 TEST(Lift, GivenStraightStroke_WhenLifted_ThenNoCriticalPointsAndLinearDepth)
 {
@@ -110,7 +110,8 @@ TEST(Lift, GivenZigzag_WhenCriticalPointsSought_ThenEachTurnIsFound)
     // Turns at x = 1, 2, ..., 9 (9 of them): each is an extremum of the distance from its chord.
     ASSERT_GE(crit.size(), 9u);
     for (double turn = 1; turn <= 9; turn += 1) {
-        const bool found = std::any_of(crit.begin(), crit.end(), [&](int i) { return std::abs(pts[i].x() - turn) < 0.05; });
+        const bool found =
+            std::any_of(crit.begin(), crit.end(), [&](int i) { return std::abs(pts[i].x() - turn) < 0.05; });
         EXPECT_TRUE(found) << "turn at x = " << turn;
     }
 }

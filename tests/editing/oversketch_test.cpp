@@ -270,7 +270,8 @@ TEST(OversketchBlend, GivenScale_WhenBlended_ThenResultMovesTowardsOriginal)
     half.scale = 0.5;
     none.scale = 0.0;
 
-    const Curve2d a = oversketch(curve, stroke, full), b = oversketch(curve, stroke, half), c = oversketch(curve, stroke, none);
+    const Curve2d a = oversketch(curve, stroke, full), b = oversketch(curve, stroke, half),
+                  c = oversketch(curve, stroke, none);
 
     // Eq. 4-23: the peak of the bump (stroke middle) sits at the stroke for scale 1, about half way
     // for 0.5, and back on the curve for 0 (up to the transitions).
@@ -312,7 +313,8 @@ TEST(OversketchBlend, GivenClosedCurve_WhenBlendedAcrossSeam_ThenClosedSmoothAnd
     EXPECT_LT(maxJump(out, 2), 1e-9);
     const CurveProjector<2> pr(out), old(curve);
     for (double ang = 2.4; ang <= 3.9; ang += 0.1) {
-        EXPECT_LT(pr.project(old.project(Eigen::Vector2d(8 * std::cos(ang), 5 * std::sin(ang))).point).distance, kUnchanged);
+        EXPECT_LT(pr.project(old.project(Eigen::Vector2d(8 * std::cos(ang), 5 * std::sin(ang))).point).distance,
+                  kUnchanged);
     }
     EXPECT_LT(maxDistanceToCurve(out, stroke), 0.1);
 }
