@@ -1,0 +1,77 @@
+#include "solvers/surfaces/revolve.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <string>
+
+namespace sculptline::solvers::surfaces {
+
+namespace {
+
+// An axis direction shorter than this (relative to the profile's size) has no direction.
+constexpr double kMinAxisLength = 1e-12;
+// Control points closer to the axis than this fraction of the profile's size count as on it.
+constexpr double kOnAxisRelative = 1e-12;
+
+}  // namespace
+
+double distanceFromAxis(const Axis& axis, const Eigen::Vector3d& x)
+{
+    const Eigen::Vector3d t = axis.direction.normalized();
+    const Eigen::Vector3d d = x - axis.point;
+    return (d - d.dot(t) * t).norm();
+}
+
+Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
+{
+    const Curve3d profile = input.clamped();
+    const double size = std::max(1.0, profile.controlSize());
+    if (!(axis.direction.norm() > kMinAxisLength * size) || !axis.direction.allFinite())
+        throw GeometryError("axis: zero-length direction");
+    if (!(angleDegrees > 0.0 && angleDegrees <= 360.0))
+        throw GeometryError("angle: must be in (0, 360] degrees, got " + std::to_string(angleDegrees));
+
+    // A8.1: number of arcs, their knots and the middle weight cos(dtheta / 2).
+    const double theta = angleDegrees * M_PI / 180.0;
+    const int narcs = angleDegrees <= 90.0 ? 1 : angleDegrees <= 180.0 ? 2 : angleDegrees <= 270.0 ? 3 : 4;
+    const double dtheta = theta / narcs;
+    const double wm = std::cos(dtheta / 2.0);
+    KnotVector knotsV{0.0, 0.0, 0.0};
+    for (int k = 1; k < narcs; ++k) knotsV.insert(knotsV.end(), 2, static_cast<double>(k) / narcs);
+    knotsV.insert(knotsV.end(), 3, 1.0);
+    const int countV = 2 * narcs + 1;
+
+    const Eigen::Vector3d T = axis.direction.normalized();
+    const int countU = profile.pointCount();
+    std::vector<Eigen::Vector3d> pts(static_cast<size_t>(countU) * countV);
+    std::vector<double> w(pts.size());
+    double maxRadius = 0.0;
+    for (int i = 0; i < countU; ++i) {
+        const Eigen::Vector3d& P = profile.points()[i];
+        const Eigen::Vector3d O = axis.point + (P - axis.point).dot(T) * T;
+        Eigen::Vector3d X = P - O;
+        const double r = X.norm();
+        maxRadius = std::max(maxRadius, r);
+        // A point on the axis revolves into itself (a pole); any X serves.
+        X = r > kOnAxisRelative * size ? Eigen::Vector3d(X / r) : T.unitOrthogonal();
+        const Eigen::Vector3d Y = T.cross(X);
+        const double wi = profile.weight(i);
+        for (int j = 0; j < countV; ++j) {
+            // Even j: on the circle at angle (j/2)·dtheta; odd j: the tangent lines' intersection
+            // at the arc's middle angle, radius r / cos(dtheta/2), weight wm (The NURBS Book §7.5).
+            const double angle = 0.5 * j * dtheta;
+            const bool middle = j % 2 == 1;
+            const double radius = middle ? r / wm : r;
+            const size_t idx = static_cast<size_t>(i) * countV + j;
+            pts[idx] = j == 0 ? P : Eigen::Vector3d(O + radius * (std::cos(angle) * X + std::sin(angle) * Y));
+            w[idx] = wi * (middle ? wm : 1.0);
+        }
+    }
+    if (!(maxRadius > kOnAxisRelative * size))
+        throw GeometryError("curves: the profile lies on the axis, revolving it gives no surface");
+    return Surface3d(profile.degree(), 2, profile.knots(), knotsV, countU, countV, std::move(pts), std::move(w));
+}
+
+}  // namespace sculptline::solvers::surfaces

@@ -1,0 +1,76 @@
+#pragma once
+// Shared checks for the surface-interpreter tests: distances between a surface's iso-curves and
+// the curves that define them, and normal consistency over a grid.
+#include "solvers/bspline/bspline_surface.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace sculptline::surfaces_test {
+
+using solvers::Curve3d;
+using solvers::Surface3d;
+using Vec3 = Eigen::Vector3d;
+
+/// Cubic clamped uniform curve through (not interpolating) the given control points.
+inline Curve3d cubic(const std::vector<Vec3>& pts) { return solvers::makeClampedUniform<3>(3, pts); }
+
+/// Largest |S(u(t), v(t)) - C(t)| over `samples` parameters t in [0, 1], where (u, v) runs along the
+/// iso-line `fixed` (0: u = value varies v; 1: v = value, varies u) mapped from the domains.
+inline double isoDeviation(const Surface3d& s, bool vFixed, double value, const Curve3d& c, bool reversed = false,
+                           int samples = 101)
+{
+    double worst = 0.0;
+    for (int k = 0; k < samples; ++k) {
+        const double t = static_cast<double>(k) / (samples - 1);
+        const double tc = c.domainStart() + (reversed ? 1.0 - t : t) * (c.domainEnd() - c.domainStart());
+        const solvers::Direction free = vFixed ? solvers::Direction::U : solvers::Direction::V;
+        const double ts = s.domainStart(free) + t * (s.domainEnd(free) - s.domainStart(free));
+        const Vec3 p = vFixed ? s.evaluate(ts, value) : s.evaluate(value, ts);
+        worst = std::max(worst, (p - c.evaluate(tc)).norm());
+    }
+    return worst;
+}
+
+/// Unit normal with the limit at collapsed edges (poles). Surface3d::normal tests degeneracy by
+/// |Su x Sv| relative to |Su||Sv|, which does not catch a derivative that is round-off noise
+/// (~1e-15) rather than exactly zero at a pole; reported to the kernel owner. Here a derivative
+/// below kCollapsed times the other counts as vanished and the limit Su x Suv (or Suv x Sv) is used.
+inline Vec3 limitNormal(const Surface3d& s, double u, double v)
+{
+    constexpr double kCollapsed = 1e-10;
+    const auto d = s.derivatives(u, v, 2);
+    const Vec3 &su = d[1][0], &sv = d[0][1], &suv = d[1][1];
+    Vec3 n = su.cross(sv);
+    if (sv.norm() <= kCollapsed * su.norm()) n = su.cross(suv);
+    else if (su.norm() <= kCollapsed * sv.norm()) n = suv.cross(sv);
+    return n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+}
+
+/// The smallest dot product between unit normals at neighbouring points of an n x n grid (points
+/// where the normal is undefined, such as poles, are skipped). Negative means a flip.
+inline double minNeighbourNormalDot(const Surface3d& s, int n = 40)
+{
+    std::vector<Vec3> normals;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const double u = s.domainStart(solvers::Direction::U) +
+                             (s.domainEnd(solvers::Direction::U) - s.domainStart(solvers::Direction::U)) * i / (n - 1);
+            const double v = s.domainStart(solvers::Direction::V) +
+                             (s.domainEnd(solvers::Direction::V) - s.domainStart(solvers::Direction::V)) * j / (n - 1);
+            normals.push_back(limitNormal(s, u, v));
+        }
+    double worst = 1.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+            const Vec3& a = normals[i * n + j];
+            if (a.norm() < 0.5) continue;
+            if (i + 1 < n && normals[(i + 1) * n + j].norm() > 0.5) worst = std::min(worst, a.dot(normals[(i + 1) * n + j]));
+            if (j + 1 < n && normals[i * n + j + 1].norm() > 0.5) worst = std::min(worst, a.dot(normals[i * n + j + 1]));
+        }
+    return worst;
+}
+
+}  // namespace sculptline::surfaces_test
