@@ -40,7 +40,9 @@ struct OversketchOptions {
 /// A stroke drawn against the curve's direction is reversed first. Open curves: a stroke running
 /// past an end extends the curve (local-c2) or replaces the end (blend).
 /// @param span receives the new curve's parameter interval that was replaced.
-/// @param maxError receives the max distance from the fitted target (model units).
+/// @param maxError receives the fit's max deviation in model units, measured at the fit parameters
+///        (an upper bound of the distance): over the whole target h̄ for local-c2, over the stroke
+///        for blend (before the scale of eq. 4-23 is applied).
 /// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite, or covering a
 ///         whole closed curve), "curve" (rational), "scale" or "tolerance" (out of range).
 /// @note Any degree works; local-c2 then pins `degree` points per side and is C^{degree-1}.
@@ -49,8 +51,9 @@ BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<E
                              const OversketchOptions& options = {}, std::pair<double, double>* span = nullptr,
                              double* maxError = nullptr);
 
-/// Repeated over-sketching of one curve (the interactive loop): keeps the current curve and its
-/// projector, so each stroke costs one edit plus one projector rebuild.
+/// Repeated over-sketching of one curve (the interactive loop): holds the current curve and the
+/// options between strokes. Each stroke re-projects onto the current curve (the curve changes with
+/// every stroke, so there is no factorization to keep).
 template <int Dim>
 class OversketchSolver {
 public:

@@ -383,3 +383,33 @@ TEST(Oversketch, GivenStrokesAroundMostOfALoop_WhenOversketched_ThenClosedResult
         }
     }
 }
+
+TEST(OversketchLocalC2, GivenSpaceCurveAndSpaceStroke_WhenOversketched_ThenLocalAndFollows)
+{
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 24; ++i) pts.emplace_back(5 * std::cos(0.4 * i), 5 * std::sin(0.4 * i), 0.5 * i);
+    const Curve3d helix = makeClampedUniform<3>(3, pts);
+    std::vector<Eigen::Vector3d> stroke;  // lifted by up to 1.5 along z over u in [0.3, 0.6]
+    for (int i = 0; i <= 200; ++i) {
+        const double t = i / 200.0;
+        stroke.push_back(helix.evaluate(0.3 + 0.3 * t) + Eigen::Vector3d(0, 0, 0.3 + 1.2 * std::sin(M_PI * t)));
+    }
+
+    std::pair<double, double> span;
+    double err = 0.0;
+    const Curve3d out = oversketch(helix, stroke, {}, &span, &err);
+
+    for (int i = 0; i <= 400; ++i) {
+        const double u = i / 400.0;
+        if (u <= span.first || u >= span.second) {
+            EXPECT_LT((out.evaluate(u) - helix.evaluate(u)).norm(), kUnchanged) << "u = " << u;
+        }
+    }
+    const CurveProjector<3> pr(out);
+    double worst = 0.0, length = 0.0;
+    for (size_t i = 0; i < stroke.size(); ++i) {
+        worst = std::max(worst, pr.project(stroke[i]).distance);
+        if (i > 0) length += (stroke[i] - stroke[i - 1]).norm();
+    }
+    EXPECT_LE(worst, OversketchOptions{}.tolerance * length);
+}
