@@ -4,6 +4,7 @@
 #include "scene/plane_node.h"
 
 #include <Inventor/draggers/SoJackDragger.h>
+#include <Inventor/SbRotation.h>
 #include <Inventor/nodes/SoScale.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTransform.h>
@@ -11,13 +12,20 @@
 namespace sculptline::manipulators {
 
 ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneSpec& plane)
-    : initial_(plane), draggerScale_(kDraggerScale * plane.size)
+    : ProjectionPlaneManipulator(scene::PlaneFrame::fromNormal(plane.origin, plane.normal, plane.size, plane.xAxis))
+{
+}
+
+ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneFrame& plane)
+    : size_(plane.size), draggerScale_(kDraggerScale * plane.size)
 {
     root_ = new SoSeparator;
     root_->ref();
     root_->setName("ProjectionPlane");
 
-    placement_ = scene::makePlanePlacement(plane);
+    placement_ = new SoTransform;
+    placement_->translation = scene::toSb(plane.origin);
+    placement_->rotation = scene::toSb(plane.rotation);
     root_->addChild(placement_);
     const SbVec3f up = SbVec3f(1, 1, 1) * static_cast<float>(draggerScale_);
 
@@ -54,32 +62,73 @@ ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneSpec& p
 
     sensor_.setFunction(&ProjectionPlaneManipulator::motionChanged);
     sensor_.setData(this);
+    // Immediate: the callback only records the motion; coalescing happens in the model's scheduler.
+    sensor_.setPriority(0);
     sensor_.attach(motion_);
+    dragger_->addStartCallback(&ProjectionPlaneManipulator::dragStarted, this);
+    dragger_->addFinishCallback(&ProjectionPlaneManipulator::dragFinished, this);
 }
 
 ProjectionPlaneManipulator::~ProjectionPlaneManipulator()
 {
     sensor_.detach();
+    dragger_->removeStartCallback(&ProjectionPlaneManipulator::dragStarted, this);
+    dragger_->removeFinishCallback(&ProjectionPlaneManipulator::dragFinished, this);
     root_->unref();
+}
+
+scene::PlaneFrame ProjectionPlaneManipulator::frame() const
+{
+    // Composition of the graph above applied to a local point p: placement (R0, O0), then
+    // S * motion * S^-1 = translate by s * T after the motion rotation Rm (a uniform scale commutes
+    // with rotations): world = O0 + R0 (s T + Rm p).
+    const Eigen::Quaterniond placed = scene::toEigen(placement_->rotation.getValue());
+    const Eigen::Quaterniond moved = scene::toEigen(motion_->rotation.getValue());
+    const Eigen::Vector3d offset = scene::toEigen(motion_->translation.getValue()) * draggerScale_;
+    scene::PlaneFrame now;
+    now.origin = scene::toEigen(placement_->translation.getValue()) + placed * offset;
+    now.rotation = (placed * moved).normalized();
+    now.size = size_;
+    return now;
 }
 
 scene::PlaneSpec ProjectionPlaneManipulator::plane() const
 {
-    // Composition of the graph above applied to the plane's local origin and +Z: SoTransform
-    // scales, then rotates, then translates; the two SoScale nodes cancel except on the translation.
-    const SbRotation placed = placement_->rotation.getValue();
-    const SbRotation moved = motion_->rotation.getValue();
-    SbVec3f offset = motion_->translation.getValue() * static_cast<float>(draggerScale_);
-    placed.multVec(offset, offset);
-    SbVec3f normal(0, 0, 1);
-    moved.multVec(normal, normal);
-    placed.multVec(normal, normal);
+    const scene::PlaneFrame now = frame();
+    scene::PlaneSpec spec;
+    spec.origin = now.origin;
+    spec.normal = now.normal();
+    spec.xAxis = now.xAxis();
+    spec.size = now.size;
+    return spec;
+}
 
-    scene::PlaneSpec now;
-    now.origin = initial_.origin + scene::toEigen(offset);
-    now.normal = scene::toEigen(normal).normalized();
-    now.size = initial_.size;
-    return now;
+void ProjectionPlaneManipulator::setFrame(const scene::PlaneFrame& frame)
+{
+    sensor_.detach();
+    placement_->translation = scene::toSb(frame.origin);
+    placement_->rotation = scene::toSb(frame.rotation);
+    dragger_->translation = SbVec3f(0, 0, 0);
+    dragger_->rotation = SbRotation::identity();
+    sensor_.attach(motion_);
+}
+
+void ProjectionPlaneManipulator::setDragCallbacks(std::function<void()> started, std::function<void()> finished)
+{
+    started_ = std::move(started);
+    finished_ = std::move(finished);
+}
+
+void ProjectionPlaneManipulator::dragStarted(void* self, SoDragger*)
+{
+    auto* manipulator = static_cast<ProjectionPlaneManipulator*>(self);
+    if (manipulator->started_) manipulator->started_();
+}
+
+void ProjectionPlaneManipulator::dragFinished(void* self, SoDragger*)
+{
+    auto* manipulator = static_cast<ProjectionPlaneManipulator*>(self);
+    if (manipulator->finished_) manipulator->finished_();
 }
 
 void ProjectionPlaneManipulator::motionChanged(void* self, SoSensor*)

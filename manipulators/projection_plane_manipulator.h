@@ -2,12 +2,14 @@
 // A projection plane the user can move: the plane's look (scene/plane_node.h) carried by a Coin
 // SoJackDragger (without its scaler: planes keep their size) whose translation and rotation fields
 // drive the plane's transform.
+#include "scene/model/plane_frame.h"
 #include "scene/scene_document.h"
 
 #include <Inventor/sensors/SoNodeSensor.h>
 
 #include <functional>
 
+class SoDragger;
 class SoJackDragger;
 class SoSeparator;
 class SoTransform;
@@ -28,9 +30,11 @@ constexpr double kDraggerScale = 0.12;
 ///       plane geometry }
 ///     SoSeparator { SoScale s, SoJackDragger } }
 /// Dragger fields are the public API: setting them (from code, a replay, or the mouse) moves the
-/// plane through the field connections; a node sensor reports every move to the callback.
+/// plane through the field connections; an immediate node sensor reports every move to the callback,
+/// which should only record it (the model coalesces, scene/model/update_scheduler.h).
 class ProjectionPlaneManipulator {
 public:
+    explicit ProjectionPlaneManipulator(const scene::PlaneFrame& frame);
     explicit ProjectionPlaneManipulator(const scene::PlaneSpec& plane);
     ~ProjectionPlaneManipulator();
     ProjectionPlaneManipulator(const ProjectionPlaneManipulator&) = delete;
@@ -45,13 +49,23 @@ public:
     /// The plane where it is now, in model coordinates (origin, unit normal, edge length).
     scene::PlaneSpec plane() const;
 
-    /// Called (from Coin's delay queue, once per batch of field changes) after the plane moved.
+    /// The full frame where the plane is now (origin, rotation including the turn about its normal).
+    scene::PlaneFrame frame() const;
+    /// Puts the plane at `frame` (undo, redo, a document) without calling the moved callback: the
+    /// placement takes the frame and the dragger returns to its rest position.
+    void setFrame(const scene::PlaneFrame& frame);
+
+    /// Called immediately on every change of the dragger's motion (several times per mouse event).
     void setMovedCallback(std::function<void()> callback) { moved_ = std::move(callback); }
+    /// Called when the user presses on and releases the dragger (one undo step per drag).
+    void setDragCallbacks(std::function<void()> started, std::function<void()> finished);
 
 private:
     static void motionChanged(void* self, SoSensor* sensor);
+    static void dragStarted(void* self, SoDragger* dragger);
+    static void dragFinished(void* self, SoDragger* dragger);
 
-    scene::PlaneSpec initial_;
+    double size_;
     double draggerScale_;
     SoSeparator* root_ = nullptr;
     SoTransform* placement_ = nullptr;
@@ -59,6 +73,8 @@ private:
     SoTransform* motion_ = nullptr;
     SoNodeSensor sensor_;
     std::function<void()> moved_;
+    std::function<void()> started_;
+    std::function<void()> finished_;
 };
 
 }  // namespace sculptline::manipulators

@@ -2,6 +2,8 @@
 
 #include "scene/geometry_nodes.h"
 #include "scene/ground_grid.h"
+#include "scene/model/model.h"
+#include "scene/model/model_document.h"
 #include "scene/plane_node.h"
 
 #include <Inventor/nodes/SoGroup.h>
@@ -26,6 +28,16 @@ SoGroup* namedGroup(const char* name)
 }
 
 std::string indexedName(const char* prefix, size_t i) { return prefix + std::to_string(i); }
+
+/// Curve i in world coordinates (a curve on a plane is stored in the plane's frame).
+solvers::Curve3d worldCurve(const SceneDocument& doc, size_t i)
+{
+    const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
+    for (const PlaneSpec& p : doc.planes) {
+        if (plane != 0 && p.id == plane) return transformCurve(doc.curves[i], planeFrame(p));
+    }
+    return doc.curves[i];
+}
 
 }  // namespace
 
@@ -53,7 +65,7 @@ SoSeparator* buildSceneGraph(const SceneDocument& doc, const PlaneFactory& plane
         for (size_t i = 0; i < doc.curves.size(); ++i) {
             CurveStyle style;
             style.color = kCurveColors[i % kCurveColors.size()];
-            SoSeparator* node = makeCurveNode(doc.curves[i], style);
+            SoSeparator* node = makeCurveNode(worldCurve(doc, i), style);
             node->setName(indexedName("Curve", i).c_str());
             curves->addChild(node);
         }

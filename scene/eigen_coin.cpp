@@ -11,6 +11,18 @@ SbVec3f toSb(const Eigen::Vector3d& p)
 
 Eigen::Vector3d toEigen(const SbVec3f& p) { return Eigen::Vector3d(p[0], p[1], p[2]); }
 
+SbRotation toSb(const Eigen::Quaterniond& q)
+{
+    return SbRotation(static_cast<float>(q.x()), static_cast<float>(q.y()), static_cast<float>(q.z()), static_cast<float>(q.w()));
+}
+
+Eigen::Quaterniond toEigen(const SbRotation& r)
+{
+    float x, y, z, w;
+    r.getValue(x, y, z, w);
+    return Eigen::Quaterniond(w, x, y, z).normalized();
+}
+
 SbRotation rotationFromZ(const Eigen::Vector3d& normal)
 {
     // SbRotation(from, to) handles the antiparallel case (normal = -Z) with a half turn.

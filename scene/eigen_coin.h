@@ -3,6 +3,7 @@
 // the renderer's). Every conversion in the scene, manipulator and ui layers goes through here, so
 // the narrowing to float happens in exactly one spot.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Inventor/SbRotation.h>
 #include <Inventor/SbVec3f.h>
 #include <Inventor/fields/SoMFVec3f.h>
@@ -15,6 +16,9 @@ namespace sculptline::scene {
 SbVec3f toSb(const Eigen::Vector3d& p);
 /// Coin -> Eigen.
 Eigen::Vector3d toEigen(const SbVec3f& p);
+/// Rotations both ways (both store x, y, z, w).
+SbRotation toSb(const Eigen::Quaterniond& q);
+Eigen::Quaterniond toEigen(const SbRotation& r);
 
 /// The rotation taking +Z to `normal` (the shortest arc). A plane node is modelled in its local XY
 /// plane; this places it so that its normal points along `normal`.

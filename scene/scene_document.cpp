@@ -2,8 +2,11 @@
 
 #include "solvers/io/geometry_json.h"
 
+#include <Eigen/Geometry>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 namespace sculptline::scene {
@@ -58,6 +61,12 @@ PlaneSpec planeFromJson(const json& j, const std::string& path)
     if (!(n.norm() > 0.0)) throw io::InputError(path + ".normal: must not be zero");
     p.normal = n.normalized();
     p.size = positive(io::member(j, "size", path), path + ".size");
+    if (const auto it = j.find("xAxis"); it != j.end()) {
+        p.xAxis = io::pointFromJson(*it, path + ".xAxis");
+        if (!(p.xAxis.norm() > 0.0)) throw io::InputError(path + ".xAxis: must not be zero");
+        if (p.xAxis.normalized().cross(p.normal).norm() < 1e-6) throw io::InputError(path + ".xAxis: must not be parallel to the normal");
+    }
+    if (const auto it = j.find("id"); it != j.end()) p.id = io::integerFromJson(*it, path + ".id", 1, 1 << 30);
     return p;
 }
 
@@ -80,14 +89,30 @@ SceneDocument documentFromJson(const json& j)
     SceneDocument doc;
     if (const auto it = j.find("grid"); it != j.end()) doc.grid = gridFromJson(*it);
     const json& planes = optionalArray(j, "planes");
+    std::set<int> planeIds;
     for (size_t i = 0; i < planes.size(); ++i) {
-        doc.planes.push_back(planeFromJson(planes[i], "planes[" + std::to_string(i) + "]"));
+        const std::string path = "planes[" + std::to_string(i) + "]";
+        doc.planes.push_back(planeFromJson(planes[i], path));
+        if (doc.planes.back().id == 0) doc.planes.back().id = static_cast<int>(i) + 1;
+        if (!planeIds.insert(doc.planes.back().id).second) throw io::InputError(path + ".id: used by another plane");
     }
     const json& curves = optionalArray(j, "curves");
     for (size_t i = 0; i < curves.size(); ++i) {
         const std::string path = "curves[" + std::to_string(i) + "]";
         doc.curves.push_back(io::curveFromJson(curves[i], path));
         checkExtent(doc.curves.back().points(), path);
+        int plane = 0;
+        if (const auto it = curves[i].find("plane"); it != curves[i].end()) {
+            plane = io::integerFromJson(*it, path + ".plane", 1, 1 << 30);
+            if (!planeIds.count(plane)) throw io::InputError(path + ".plane: no plane has id " + std::to_string(plane));
+            const auto& points = doc.curves.back().points();
+            for (size_t k = 0; k < points.size(); ++k) {
+                if (points[k].z() != 0.0) {
+                    throw io::InputError(path + ".points[" + std::to_string(k) + "]: a curve on a plane has plane-local 2D points (z must be 0)");
+                }
+            }
+        }
+        doc.curvePlanes.push_back(plane);
     }
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {

@@ -15,6 +15,9 @@ struct PlaneSpec {
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< centre, model units
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< unit after reading
     double size = 200.0;  ///< edge length, model units, > 0
+    /// The plane's local X axis (in-plane rotation); zero = the shortest arc from +Z (PlaneFrame).
+    Eigen::Vector3d xAxis = Eigen::Vector3d::Zero();
+    int id = 0;  ///< referred to by curves' "plane"; the document's position + 1 when absent
 };
 
 /// The ground grid in the plane z = 0, centred on the origin.
@@ -27,12 +30,16 @@ struct SceneDocument {
     GridSpec grid;
     std::vector<PlaneSpec> planes;
     std::vector<solvers::Curve3d> curves;
+    /// Per curve: the id of the plane it lies on (its points are then plane-local, z = 0), or 0 for
+    /// a curve in world coordinates.
+    std::vector<int> curvePlanes;
     std::vector<solvers::Surface3d> surfaces;
 };
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every
 /// member is optional (absent = default grid / none), curves and surfaces use the JSON geometry of
-/// ../shared/interfaces.md. Coordinates and sizes must lie within 1e6 model units (Coin draws in
+/// ../shared/interfaces.md. A plane may carry "id" (positive, unique) and "xAxis"; a curve may carry
+/// "plane": the id of the plane it lies on, its points then 2D (or z = 0) in that plane's frame. Coordinates and sizes must lie within 1e6 model units (Coin draws in
 /// float).
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
 SceneDocument documentFromJson(const nlohmann::json& j);

@@ -1,0 +1,172 @@
+#include "scene/model/model.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace sculptline::scene {
+
+const char* kindName(EntityKind kind)
+{
+    switch (kind) {
+    case EntityKind::Plane: return "plane";
+    case EntityKind::Curve: return "curve";
+    case EntityKind::Surface: return "surface";
+    }
+    return "?";
+}
+
+solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame& frame)
+{
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(curve.points().size());
+    for (const Eigen::Vector3d& p : curve.points()) points.push_back(frame.toWorld(p));
+    return solvers::Curve3d(curve.degree(), curve.knots(), points, curve.weights(), curve.isClosed());
+}
+
+EntityId Model::insert(Entity entity, EntityId id)
+{
+    if (id == 0) id = nextId_;
+    if (entities_.count(id) != 0) throw std::invalid_argument("entity id " + std::to_string(id) + " is taken");
+    nextId_ = std::max(nextId_, id + 1);
+    entity.id = id;
+    for (EntityId input : entity.inputs) dependents_[input].insert(id);
+    recompute(entity);
+    entity.recomputations = 0;  // building is not an update
+    const Entity& stored = entities_.emplace(id, std::move(entity)).first->second;
+    for (ModelObserver* o : observers_) o->entityAdded(stored);
+    return id;
+}
+
+EntityId Model::addPlane(const PlaneFrame& frame, EntityId id)
+{
+    Entity e;
+    e.kind = EntityKind::Plane;
+    e.frame = frame;
+    return insert(std::move(e), id);
+}
+
+EntityId Model::addCurve(EntityId plane, const solvers::Curve3d& local, EntityId id)
+{
+    Entity e;
+    e.kind = EntityKind::Curve;
+    if (plane != 0) {
+        const Entity* p = find(plane);
+        if (!p || p->kind != EntityKind::Plane) throw std::invalid_argument("entity " + std::to_string(plane) + " is not a plane");
+        e.inputs.push_back(plane);
+    }
+    e.local = local;
+    if (plane != 0) {
+        // On a plane the curve is planar by construction; z is exactly 0 so the document's 2D
+        // points restore it bit for bit.
+        std::vector<Eigen::Vector3d> flat = local.points();
+        for (Eigen::Vector3d& p : flat) p.z() = 0.0;
+        e.local = solvers::Curve3d(local.degree(), local.knots(), flat, local.weights(), local.isClosed());
+    }
+    return insert(std::move(e), id);
+}
+
+EntityId Model::addSurface(const solvers::Surface3d& surface, EntityId id)
+{
+    Entity e;
+    e.kind = EntityKind::Surface;
+    e.surface = surface;
+    return insert(std::move(e), id);
+}
+
+void Model::setPlaneFrame(EntityId plane, const PlaneFrame& frame)
+{
+    auto it = entities_.find(plane);
+    if (it == entities_.end() || it->second.kind != EntityKind::Plane) return;
+    if (it->second.frame == frame) return;
+    it->second.frame = frame;
+    markDirty(plane);
+}
+
+void Model::markDirty(EntityId id)
+{
+    const bool first = dirty_.empty();
+    dirty_.insert(id);
+    if (first && dirtyCallback_) dirtyCallback_();
+}
+
+int Model::update()
+{
+    if (dirty_.empty()) return 0;
+    // The closure of the dirty set under "depends on", in a std::set: ascending ids are a
+    // topological order (see model.h), and a set visits each entity once however many paths lead
+    // to it.
+    std::set<EntityId> affected;
+    std::vector<EntityId> stack(dirty_.begin(), dirty_.end());
+    dirty_.clear();
+    while (!stack.empty()) {
+        const EntityId id = stack.back();
+        stack.pop_back();
+        if (!entities_.count(id) || !affected.insert(id).second) continue;
+        if (auto d = dependents_.find(id); d != dependents_.end()) stack.insert(stack.end(), d->second.begin(), d->second.end());
+    }
+    for (EntityId id : affected) {
+        Entity& e = entities_.at(id);
+        recompute(e);
+        ++e.recomputations;
+        for (ModelObserver* o : observers_) o->entityUpdated(e);
+    }
+    return static_cast<int>(affected.size());
+}
+
+void Model::recompute(Entity& e)
+{
+    if (e.kind != EntityKind::Curve) return;  // planes hold their frame; surfaces are static for now
+    const EntityId plane = e.plane();
+    e.world = plane != 0 ? transformCurve(*e.local, entities_.at(plane).frame) : *e.local;
+}
+
+std::vector<Entity> Model::remove(EntityId id)
+{
+    if (!entities_.count(id)) return {};
+    std::set<EntityId> doomed;
+    std::vector<EntityId> stack{id};
+    while (!stack.empty()) {
+        const EntityId next = stack.back();
+        stack.pop_back();
+        if (!doomed.insert(next).second) continue;
+        if (auto d = dependents_.find(next); d != dependents_.end()) stack.insert(stack.end(), d->second.begin(), d->second.end());
+    }
+    std::vector<Entity> removed;
+    // Dependents first (highest ids first), so observers never see a curve outlive its plane.
+    for (auto it = doomed.rbegin(); it != doomed.rend(); ++it) {
+        auto e = entities_.find(*it);
+        for (ModelObserver* o : observers_) o->entityRemoved(e->second);
+        for (EntityId input : e->second.inputs) dependents_[input].erase(*it);
+        dependents_.erase(*it);
+        dirty_.erase(*it);
+        removed.push_back(std::move(e->second));
+        entities_.erase(e);
+    }
+    std::reverse(removed.begin(), removed.end());
+    return removed;
+}
+
+void Model::clear()
+{
+    while (!entities_.empty()) remove(entities_.begin()->first);
+    nextId_ = 1;
+}
+
+const Entity* Model::find(EntityId id) const
+{
+    const auto it = entities_.find(id);
+    return it == entities_.end() ? nullptr : &it->second;
+}
+
+std::vector<EntityId> Model::dependents(EntityId id) const
+{
+    const auto it = dependents_.find(id);
+    return it == dependents_.end() ? std::vector<EntityId>{} : std::vector<EntityId>(it->second.begin(), it->second.end());
+}
+
+void Model::removeObserver(ModelObserver* observer)
+{
+    observers_.erase(std::remove(observers_.begin(), observers_.end(), observer), observers_.end());
+}
+
+}  // namespace sculptline::scene

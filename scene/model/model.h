@@ -1,0 +1,109 @@
+#pragma once
+// The model: projection planes, curves and surfaces with ids, each knowing what it depends on (a
+// curve on its plane). Plain C++ on the kernel's types (no Coin, no Qt), so incremental updates are
+// testable on their own; scene/model/model_view.h shows it with Coin nodes.
+//
+// Updates are explicit and lazy: an edit (a plane moved) marks the entity dirty and calls the dirty
+// callback once (the scheduler, scene/model/update_scheduler.h, turns that into one update per
+// displayed frame); update() then recomputes the dirty entities and everything downstream of them,
+// each exactly once, in dependency order. Ids grow with creation and an entity's inputs always exist
+// before it, so ascending id order is a topological order (restored entities keep their ids).
+#include "scene/model/plane_frame.h"
+#include "solvers/bspline/bspline_surface.h"
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace sculptline::scene {
+
+using EntityId = std::uint32_t;  ///< 0 is "none"
+
+enum class EntityKind { Plane, Curve, Surface };
+const char* kindName(EntityKind kind);
+
+struct Entity {
+    EntityId id = 0;
+    EntityKind kind = EntityKind::Plane;
+    std::vector<EntityId> inputs;  ///< what it depends on (a curve: its plane, if any)
+
+    PlaneFrame frame;  ///< Plane: where it is
+    /// Curve: the curve in its plane's local frame (z = 0), or in world coordinates when the curve
+    /// lies on no plane. The source of truth: a plane drag never touches it.
+    std::optional<solvers::Curve3d> local;
+    /// Curve: derived world-space curve (the frame applied to the control points), kept for
+    /// dependents (surfaces) and export; recomputed by update().
+    std::optional<solvers::Curve3d> world;
+    std::optional<solvers::Surface3d> surface;  ///< Surface: as read (depends on nothing yet)
+
+    int recomputations = 0;  ///< times update() recomputed this entity (tests count them)
+
+    EntityId plane() const { return kind == EntityKind::Curve && !inputs.empty() ? inputs.front() : 0; }
+};
+
+/// Told about every change, after it happened (the Coin view, the ui's manipulators and lists).
+class ModelObserver {
+public:
+    virtual ~ModelObserver() = default;
+    virtual void entityAdded(const Entity& entity) = 0;
+    virtual void entityRemoved(const Entity& entity) = 0;  ///< still readable during the call
+    /// Recomputed by update() (a Plane: its frame changed; a Curve: its world form).
+    virtual void entityUpdated(const Entity& entity) = 0;
+};
+
+class Model {
+public:
+    /// Adds a plane; `id` restores a removed entity under its old id (undo), 0 = a fresh one.
+    EntityId addPlane(const PlaneFrame& frame, EntityId id = 0);
+    /// Adds a curve on `plane` (its points in the plane's local frame, z = 0), or a world-space
+    /// curve when plane = 0. @throws std::invalid_argument when `plane` is not a plane.
+    EntityId addCurve(EntityId plane, const solvers::Curve3d& local, EntityId id = 0);
+    EntityId addSurface(const solvers::Surface3d& surface, EntityId id = 0);
+
+    /// Moves a plane: only marks it dirty (the curves follow in the next update()).
+    void setPlaneFrame(EntityId plane, const PlaneFrame& frame);
+
+    /// Removes `id` and everything that depends on it, dependents first; returns the removed
+    /// entities in creation order (what undo needs to restore them).
+    std::vector<Entity> remove(EntityId id);
+
+    /// Recomputes every dirty entity and its dependents once, in dependency order; returns how
+    /// many entities were recomputed.
+    int update();
+    bool updatePending() const { return !dirty_.empty(); }
+
+    void clear();
+
+    const Entity* find(EntityId id) const;
+    /// All entities in creation (= dependency) order.
+    const std::map<EntityId, Entity>& entities() const { return entities_; }
+    /// Direct dependents of `id`.
+    std::vector<EntityId> dependents(EntityId id) const;
+
+    void addObserver(ModelObserver* observer) { observers_.push_back(observer); }
+    void removeObserver(ModelObserver* observer);
+    /// Called when the first entity becomes dirty after an update (schedule an update then).
+    void setDirtyCallback(std::function<void()> callback) { dirtyCallback_ = std::move(callback); }
+
+private:
+    EntityId insert(Entity entity, EntityId id);
+    void recompute(Entity& entity);
+    void markDirty(EntityId id);
+
+    std::map<EntityId, Entity> entities_;
+    std::map<EntityId, std::set<EntityId>> dependents_;
+    std::set<EntityId> dirty_;
+    EntityId nextId_ = 1;
+    std::vector<ModelObserver*> observers_;
+    std::function<void()> dirtyCallback_;
+};
+
+/// The curve with every control point mapped by the frame (rational weights unchanged: an affine
+/// map of the control points maps the curve, The NURBS Book §4.4 "affine invariance").
+solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame& frame);
+
+}  // namespace sculptline::scene

@@ -1,0 +1,156 @@
+#include "scene/model/model_view.h"
+
+#include "scene/eigen_coin.h"
+
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTransform.h>
+
+#include <array>
+#include <string>
+
+namespace sculptline::scene {
+namespace {
+
+// Curves in warm colours, surfaces in cool ones (as in the default scene), the selection in white.
+const std::array<SbColor, 3> kCurveColors{SbColor(1.0f, 0.5f, 0.1f), SbColor(0.95f, 0.85f, 0.2f),
+                                          SbColor(0.95f, 0.3f, 0.55f)};
+const SbColor kHighlight(1.0f, 1.0f, 1.0f);
+constexpr float kHighlightWidth = 5.0f;
+
+std::string nodeName(const char* prefix, EntityId id, const char* suffix = "")
+{
+    return prefix + std::to_string(id) + suffix;
+}
+
+void setFrame(SoTransform* transform, const PlaneFrame& frame)
+{
+    transform->translation = toSb(frame.origin);
+    transform->rotation = toSb(frame.rotation);
+}
+
+}  // namespace
+
+ModelView::ModelView(Model& model) : model_(model)
+{
+    root_ = new SoSeparator;
+    root_->ref();
+    root_->setName("Model");
+    surfaces_ = new SoGroup;
+    surfaces_->setName("Surfaces");
+    root_->addChild(surfaces_);
+    curves_ = new SoGroup;
+    curves_->setName("Curves");
+    root_->addChild(curves_);
+    planeCurves_ = new SoGroup;
+    planeCurves_->setName("PlaneCurves");
+    root_->addChild(planeCurves_);
+    for (const auto& [id, e] : model_.entities()) entityAdded(e);
+    model_.addObserver(this);
+}
+
+ModelView::~ModelView()
+{
+    model_.removeObserver(this);
+    root_->unref();
+}
+
+SoSeparator* ModelView::nodeOf(EntityId id) const
+{
+    const auto it = nodes_.find(id);
+    return it == nodes_.end() ? nullptr : it->second;
+}
+
+CurveStyle ModelView::curveStyle(EntityId id) const
+{
+    CurveStyle style;
+    style.color = kCurveColors[id % kCurveColors.size()];
+    if (id == highlighted_) {
+        style.color = kHighlight;
+        style.lineWidth = kHighlightWidth;
+    }
+    return style;
+}
+
+SoSeparator* ModelView::planeGroup(EntityId plane) { return nodes_.at(plane); }
+
+void ModelView::addCurveNode(const Entity& e)
+{
+    SoSeparator* node = makeCurveNode(*e.local, curveStyle(e.id));
+    ++nodeBuilds_;
+    node->setName(nodeName("Curve", e.id).c_str());
+    // Kept in creation order inside its group so that the picture does not depend on history.
+    SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
+    parent->addChild(node);
+    nodes_[e.id] = node;
+}
+
+void ModelView::entityAdded(const Entity& e)
+{
+    switch (e.kind) {
+    case EntityKind::Plane: {
+        auto* group = new SoSeparator;
+        group->setName(nodeName("Plane", e.id, "Curves").c_str());
+        auto* frame = new SoTransform;
+        setFrame(frame, e.frame);
+        group->addChild(frame);
+        planeCurves_->addChild(group);
+        nodes_[e.id] = group;
+        frames_[e.id] = frame;
+        break;
+    }
+    case EntityKind::Curve: addCurveNode(e); break;
+    case EntityKind::Surface: {
+        SoSeparator* node = makeSurfaceNode(*e.surface);
+        ++nodeBuilds_;
+        node->setName(nodeName("Surface", e.id).c_str());
+        surfaces_->addChild(node);
+        nodes_[e.id] = node;
+        break;
+    }
+    }
+}
+
+void ModelView::entityRemoved(const Entity& e)
+{
+    const auto it = nodes_.find(e.id);
+    if (it == nodes_.end()) return;
+    SoGroup* parent = e.kind == EntityKind::Plane     ? planeCurves_
+                      : e.kind == EntityKind::Surface ? surfaces_
+                      : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
+                                                      : curves_;
+    parent->removeChild(it->second);
+    nodes_.erase(it);
+    frames_.erase(e.id);
+    if (highlighted_ == e.id) highlighted_ = 0;
+}
+
+void ModelView::entityUpdated(const Entity& e)
+{
+    // A curve's update changes only its world form; its node is in plane-local coordinates and
+    // stays as it is. A plane's update is one transform write.
+    if (e.kind != EntityKind::Plane) return;
+    setFrame(frames_.at(e.id), e.frame);
+    ++transformWrites_;
+}
+
+void ModelView::setHighlighted(EntityId id)
+{
+    if (id == highlighted_) return;
+    const EntityId previous = highlighted_;
+    highlighted_ = id;
+    // Rebuilding the one or two curves involved is cheaper to read than a style node per curve.
+    for (EntityId changed : {previous, id}) {
+        const Entity* e = model_.find(changed);
+        if (!e || e->kind != EntityKind::Curve) continue;
+        SoGroup* parent = e->plane() != 0 ? static_cast<SoGroup*>(planeGroup(e->plane())) : curves_;
+        SoSeparator* old = nodes_.at(changed);
+        const int index = parent->findChild(old);
+        SoSeparator* node = makeCurveNode(*e->local, curveStyle(changed));
+        node->setName(nodeName("Curve", changed).c_str());
+        parent->replaceChild(index, node);
+        nodes_[changed] = node;
+    }
+}
+
+}  // namespace sculptline::scene

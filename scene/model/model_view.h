@@ -1,0 +1,62 @@
+#pragma once
+// The model drawn with Coin nodes, kept in step with it as a ModelObserver:
+//   SoSeparator "Model" {
+//     SoGroup "Surfaces"   { SoSeparator "Surface<id>" .. }
+//     SoGroup "Curves"     { SoSeparator "Curve<id>" .. }              world-space curves
+//     SoGroup "PlaneCurves" {
+//       SoSeparator "Plane<id>Curves" { SoTransform frame, SoSeparator "Curve<id>" .. } .. } }
+// A curve on a plane is tessellated once, in the plane's local frame, and placed by the plane's one
+// SoTransform: a plane drag rewrites two fields, however many curves the plane carries.
+#include "scene/geometry_nodes.h"
+#include "scene/model/model.h"
+
+#include <map>
+
+class SoGroup;
+class SoSeparator;
+class SoTransform;
+
+namespace sculptline::scene {
+
+class ModelView : public ModelObserver {
+public:
+    /// Observes `model` (and shows what it already holds); the model must outlive this view.
+    explicit ModelView(Model& model);
+    ~ModelView() override;
+    ModelView(const ModelView&) = delete;
+    ModelView& operator=(const ModelView&) = delete;
+
+    /// The graph root (ref()ed by this view; add it to a scene).
+    SoSeparator* root() const { return root_; }
+    /// The node of an entity (a curve's or surface's separator, a plane's curve group), or null.
+    SoSeparator* nodeOf(EntityId id) const;
+    /// Curve and surface nodes built (tessellations) since construction: a plane drag adds none.
+    int nodeBuilds() const { return nodeBuilds_; }
+    /// Plane transforms written since construction.
+    int transformWrites() const { return transformWrites_; }
+
+    /// Draws curve `id` highlighted (selection); 0 = none.
+    void setHighlighted(EntityId id);
+
+    void entityAdded(const Entity& entity) override;
+    void entityRemoved(const Entity& entity) override;
+    void entityUpdated(const Entity& entity) override;
+
+private:
+    SoSeparator* planeGroup(EntityId plane);
+    void addCurveNode(const Entity& entity);
+    CurveStyle curveStyle(EntityId id) const;
+
+    Model& model_;
+    SoSeparator* root_ = nullptr;
+    SoGroup* surfaces_ = nullptr;
+    SoGroup* curves_ = nullptr;
+    SoGroup* planeCurves_ = nullptr;
+    std::map<EntityId, SoSeparator*> nodes_;
+    std::map<EntityId, SoTransform*> frames_;
+    EntityId highlighted_ = 0;
+    int nodeBuilds_ = 0;
+    int transformWrites_ = 0;
+};
+
+}  // namespace sculptline::scene
