@@ -263,9 +263,13 @@ std::vector<double> checkParameters(const SplineFitInput& in, const std::vector<
 }
 
 // Inserts one knot into every break interval whose samples deviate by more than the tolerance.
-int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<double>& err, double tol)
+int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<double>& err, double tol, double share,
+                std::vector<double>& inserted)
 {
     const int spans = static_cast<int>(s.closed ? s.breaks.size() : s.breaks.size() - 1);
+    // Only the spans deviating most get a knot this round: a knot changes the fit of its
+    // neighbours too, and splitting every span above the tolerance at once overshoots.
+    tol = std::max(tol, share * *std::max_element(err.begin(), err.end()));
     std::vector<double> wsum(spans, 0.0), wmax(spans, 0.0);
     for (size_t k = 0; k < u.size(); ++k) {
         const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
@@ -288,7 +292,28 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     }
     s.breaks.insert(s.breaks.end(), newKnots.begin(), newKnots.end());
     std::sort(s.breaks.begin(), s.breaks.end());
+    inserted = newKnots;
     return static_cast<int>(newKnots.size());
+}
+
+// Max deviation over every point (foot-point distance) and every chord between neighbours.
+double measureAll(const Spline& s, const SplineFitInput& in, const std::vector<int>& S, const std::vector<double>& u,
+                  double tol)
+{
+    const auto& X = *in.points;
+    const int m = static_cast<int>(X.size());
+    std::vector<double> cu = checkParameters(in, S, u);
+    double worst = 0.0;
+    for (int i = 0; i < m; ++i) {
+        const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
+        worst = std::max(worst, footDistance(s, X[i], cu[i], lo, hi, tol, &cu[i]));
+    }
+    for (int i = 0; i + 1 < m || (in.closed && i < m); ++i) {
+        const int next = (i + 1) % m;
+        const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
+        if (u1 > cu[i]) worst = std::max(worst, chordGap(s, X[i], X[next], 0.5 * (cu[i] + u1)));
+    }
+    return worst;
 }
 
 }  // namespace
@@ -361,6 +386,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
 
     SplineFitResult res;
     std::vector<double> err(S.size());
+    std::vector<double> lastInserted;
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
         solve(s, X, S, u, opt.fairing);
         const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
@@ -374,7 +400,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         const double worst = *std::max_element(err.begin(), err.end());
         if (worst > opt.tolerance && s.unknowns() < maxUnknowns) {
-            if (insertKnots(s, u, err, opt.tolerance) > 0) continue;
+            if (insertKnots(s, u, err, opt.tolerance, opt.insertionShare, lastInserted) > 0) continue;
         }
         // All samples fit (or no more knots help): verify every point, and add the worst offender of
         // each span to the samples so that the next solve sees it.
@@ -427,14 +453,29 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         if (!added) break;
         err.resize(S.size());
     }
-    if (res.iterations > opt.maxIterations) {  // stopped while still refining: measure what we have
-        const std::vector<double> cu = checkParameters(in, S, u);
-        res.maxError = 0.0;
-        for (int i = 0; i < m; ++i) {
-            const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
-            res.maxError = std::max(res.maxError, footDistance(s, X[i], cu[i], lo, hi, opt.tolerance));
+    if (res.iterations > opt.maxIterations) res.maxError = measureAll(s, in, S, u, opt.tolerance);
+    // The last round of insertions may have overshot (a knot fixes its neighbours' spans too): try
+    // removing each of its knots again, keeping the removal when the refit stays within tolerance.
+    if (opt.removalPass && res.maxError <= opt.tolerance) {
+        for (double knot : lastInserted) {
+            Spline trial = s;
+            const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
+            if (it == trial.breaks.end()) continue;
+            trial.breaks.erase(it);
+            solve(trial, X, S, u, opt.fairing);
+            bool ok = true;
+            for (size_t k = 0; ok && k < S.size(); ++k) {
+                const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
+                const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+                ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
+            }
+            if (!ok) continue;
+            const double e = measureAll(trial, in, S, u, opt.tolerance);
+            if (e <= opt.tolerance) {
+                s = std::move(trial);
+                res.maxError = e;
+            }
         }
-        for (int i = 0; i + 1 < m; ++i) res.maxError = std::max(res.maxError, chordGap(s, X[i], X[i + 1], 0.5 * (cu[i] + cu[i + 1])));
     }
     res.converged = res.maxError <= opt.tolerance;
     res.knots = s.knots;

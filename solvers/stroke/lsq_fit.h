@@ -17,6 +17,12 @@ struct SplineFitOptions {
     /// round-off (condition number <= ~1e8 in double precision).
     double fairing = 1e-6;
     int maxIterations = 64;
+    /// Each round inserts knots only into spans whose error is at least this share of the round's
+    /// worst (and above the tolerance); 0 splits every span above the tolerance (fewer rounds,
+    /// more control points).
+    double insertionShare = 0.5;
+    /// After convergence, try removing each knot of the last insertion round again.
+    bool removalPass = true;
     /// Parameter correction (Hoschek 1988, "Intrinsic parametrization for approximation"): one
     /// Newton step per sample and iteration moves its parameter toward the foot point on the curve.
     /// Measured on synthesized strokes it does not pay here: with the error-driven knot insertion

@@ -1,0 +1,79 @@
+#include "solvers/stroke/stroke_json.h"
+
+#include "solvers/io/geometry_json.h"
+
+#include <nlohmann/json.hpp>
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+using nlohmann::json;
+using io::InputError;
+
+std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }
+
+std::vector<double> perPoint(const json& obj, const std::string& key, const std::string& path, size_t count)
+{
+    std::vector<double> out;
+    if (!obj.contains(key)) return out;
+    const json& a = obj[key];
+    const std::string p = path + "." + key;
+    if (!a.is_array()) throw InputError(p + ": must be an array");
+    if (a.size() != count) {
+        throw InputError(p + ": " + std::to_string(a.size()) + " values for " + std::to_string(count) + " points");
+    }
+    for (size_t i = 0; i < a.size(); ++i) out.push_back(io::numberFromJson(a[i], at(p, i)));
+    return out;
+}
+
+}  // namespace
+
+Stroke strokeFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_object()) throw InputError(path + ": must be a JSON object");
+    const json& pts = io::member(j, "points", path);
+    if (!pts.is_array()) throw InputError(path + ".points: must be an array");
+    if (pts.empty()) throw InputError(path + ".points: empty stroke, at least two distinct points are needed");
+    Stroke s;
+    s.points.reserve(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) {
+        const std::string p = path + ".points" + "[" + std::to_string(i) + "]";
+        s.points.push_back(io::pointFromJson(pts[i], p));
+        const int dim = static_cast<int>(pts[i].size());
+        if (i == 0) s.dimension = dim;
+        else if (dim != s.dimension) {
+            throw InputError(p + ": " + std::to_string(dim) + "D point in a " + std::to_string(s.dimension) + "D stroke");
+        }
+    }
+    s.times = perPoint(j, "times", path, pts.size());
+    s.pressure = perPoint(j, "pressure", path, pts.size());
+    for (size_t i = 0; i < s.pressure.size(); ++i) {
+        if (s.pressure[i] < 0.0 || s.pressure[i] > 1.0) throw InputError(at(path + ".pressure", i) + ": must be in [0, 1]");
+    }
+    return s;
+}
+
+json toJson(const Stroke& s)
+{
+    json pts = json::array();
+    for (const auto& p : s.points) {
+        pts.push_back(s.dimension == 2 ? json::array({p.x(), p.y()}) : json::array({p.x(), p.y(), p.z()}));
+    }
+    json out = {{"points", pts}};
+    if (!s.times.empty()) out["times"] = s.times;
+    if (!s.pressure.empty()) out["pressure"] = s.pressure;
+    return out;
+}
+
+json fitResultToJson(const FitResult& r, int dimension)
+{
+    json curve = io::toJson(r.curve);
+    if (dimension == 2) {
+        for (auto& p : curve["points"]) p.erase(2);
+    }
+    return {{"curve", curve},         {"corners", r.corners},     {"samples", r.samples},
+            {"max_error", r.maxError}, {"tolerance", r.tolerance}, {"closed", r.curve.isClosed()},
+            {"converged", r.converged}, {"warnings", r.warnings}};
+}
+
+}  // namespace sculptline::solvers::stroke
