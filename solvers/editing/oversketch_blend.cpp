@@ -274,7 +274,7 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
         double err = 0.0;
         Q = refitInPlace(p, K, std::move(Q), kept, N - 1, st, c, o.scale, err);
-        span = {K[kept], K[N + 1]};
+        span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
         maxError = err;
         return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
     }

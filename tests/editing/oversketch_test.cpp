@@ -307,9 +307,14 @@ TEST(OversketchBlend, GivenClosedCurve_WhenBlendedAcrossSeam_ThenClosedSmoothAnd
         stroke.emplace_back((8.0 + 1.5 * std::cos(M_PI * a)) * std::cos(a), 5.5 * std::sin(a));
     }
 
-    const Curve2d out = oversketch(curve, stroke, method(OversketchMethod::Blend));
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, method(OversketchMethod::Blend), &span);
 
     ASSERT_TRUE(out.isClosed());
+    // The reported span holds every changed point: the stroke's middle projects inside it.
+    const double um = CurveProjector<2>(out).project(stroke[75]).u;
+    const double T = out.domainEnd() - out.domainStart();
+    EXPECT_LT(std::fmod(um - span.first + 2 * T, T), span.second - span.first);
     EXPECT_LT(maxJump(out, 2), 1e-9);
     const CurveProjector<2> pr(out), old(curve);
     for (double ang = 2.4; ang <= 3.9; ang += 0.1) {
