@@ -36,16 +36,20 @@ inline double isoDeviation(const Surface3d& s, bool vFixed, double value, const 
 
 /// Unit normal with the limit at collapsed edges (poles). Surface3d::normal tests degeneracy by
 /// |Su x Sv| relative to |Su||Sv|, which does not catch a derivative that is round-off noise
-/// (~1e-15) rather than exactly zero at a pole; reported to the kernel owner. Here a derivative
-/// below kCollapsed times the other counts as vanished and the limit Su x Suv (or Suv x Sv) is used.
+/// (~1e-15) rather than exactly zero at a pole, and its limit Su x Suv has the wrong sign at an
+/// edge collapsed at the end of the domain (there Sv ~ (u - u_end)·Suv with u - u_end < 0); both
+/// reported to the kernel owner. Here a derivative below kCollapsed times the other counts as
+/// vanished and the one-sided limit is used.
 inline Vec3 limitNormal(const Surface3d& s, double u, double v)
 {
     constexpr double kCollapsed = 1e-10;
     const auto d = s.derivatives(u, v, 2);
     const Vec3 &su = d[1][0], &sv = d[0][1], &suv = d[1][1];
     Vec3 n = su.cross(sv);
-    if (sv.norm() <= kCollapsed * su.norm()) n = su.cross(suv);
-    else if (su.norm() <= kCollapsed * sv.norm()) n = suv.cross(sv);
+    const double uSide = u >= s.domainEnd(solvers::Direction::U) ? -1.0 : 1.0;
+    const double vSide = v >= s.domainEnd(solvers::Direction::V) ? -1.0 : 1.0;
+    if (sv.norm() <= kCollapsed * su.norm()) n = uSide * su.cross(suv);
+    else if (su.norm() <= kCollapsed * sv.norm()) n = vSide * suv.cross(sv);
     return n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
 }
 
@@ -71,6 +75,25 @@ inline double minNeighbourNormalDot(const Surface3d& s, int n = 40)
             if (j + 1 < n && normals[i * n + j + 1].norm() > 0.5) worst = std::min(worst, a.dot(normals[i * n + j + 1]));
         }
     return worst;
+}
+
+}  // namespace sculptline::surfaces_test
+
+namespace sculptline::surfaces_test {
+
+/// The exact full circle (9-point rational, The NURBS Book Ex. 7.2) of radius r about `centre` in
+/// the plane spanned by the unit vectors a (u = 0) and b (u = 1/4).
+inline Curve3d fullCircle(const Vec3& centre, double r, const Vec3& a, const Vec3& b)
+{
+    const double w = std::sqrt(0.5);
+    const double cs[9][2] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    std::vector<Vec3> pts;
+    std::vector<double> ws;
+    for (int j = 0; j < 9; ++j) {
+        pts.push_back(centre + r * (cs[j][0] * a + cs[j][1] * b));
+        ws.push_back(j % 2 == 1 ? w : 1.0);
+    }
+    return Curve3d(2, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, pts, ws);
 }
 
 }  // namespace sculptline::surfaces_test

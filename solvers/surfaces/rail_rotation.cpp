@@ -1,0 +1,192 @@
+#include "solvers/surfaces/rail_rotation.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
+#include "solvers/surfaces/compatible_curves.h"
+#include "solvers/surfaces/interpolation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace sculptline::solvers::surfaces {
+
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// Rail samples bracketing the angle; the bracket is then bisected to round-off.
+constexpr int kRailSamples = 720;
+constexpr int kBisections = 60;
+// The profile's ends and the rails' ends must meet within 1e-3 of the model's size (about a pixel
+// when the model spans the viewport: what a sketched stroke that snapped to a curve achieves).
+constexpr double kMeetRelative = 1e-3;
+// A rail whose total turn about the axis differs from a full turn by more than this is not closed
+// around the axis (radians; a generous margin for round-off of the unwrapped angles).
+constexpr double kFullTurnSlack = 0.1;
+// A decrease of the unwrapped angle beyond this (radians) means a half-plane cuts the rail twice.
+constexpr double kMonotoneSlack = 1e-9;
+constexpr int kInitialSections = 16;
+
+struct AxisFrame {
+    Vec3 origin, dir, e1, e2;
+    double angle(const Vec3& x) const { return std::atan2((x - origin).dot(e2), (x - origin).dot(e1)); }
+};
+
+Vec3 boxCentre(const Curve3d& c)
+{
+    Eigen::AlignedBox3d box;
+    for (int k = 0; k <= kRailSamples; ++k) box.extend(c.evaluate(static_cast<double>(k) / kRailSamples));
+    return box.center();
+}
+
+double wrapNear(double a, double reference)
+{
+    while (a - reference > M_PI) a -= 2 * M_PI;
+    while (a - reference < -M_PI) a += 2 * M_PI;
+    return a;
+}
+
+// A rail opened at the point nearest to the profile's end, with its unwrapped angle about the axis.
+class Rail {
+public:
+    Rail(const Curve3d& c, const Vec3& start, const AxisFrame& axis, double meet, const std::string& name)
+        : curve_(normalizedCurve(c)), axis_(axis), name_(name)
+    {
+        if ((curve_.evaluate(0.0) - curve_.evaluate(1.0)).norm() > meet)
+            throw GeometryError(name + ": the rail is not closed");
+        const CurveProjection<3> p = projectToCurve(curve_, start);
+        if (p.distance > meet)
+            throw GeometryError("curves[2]: the profile does not reach " + name + " (gap " + std::to_string(p.distance) + ")");
+        v0_ = p.u;
+        a0_ = axis.angle(at(0.0));
+        angles_.push_back(0.0);
+        for (int k = 1; k <= kRailSamples; ++k) {
+            const double a = wrapNear(axis.angle(at(static_cast<double>(k) / kRailSamples)) - a0_, angles_.back());
+            angles_.push_back(a);
+        }
+        sign_ = angles_.back() > 0.0 ? 1.0 : -1.0;
+        if (std::abs(std::abs(angles_.back()) - 2 * M_PI) > kFullTurnSlack)
+            throw GeometryError(name + ": the rail does not go once around the axis through the rails' centres");
+        for (int k = 1; k <= kRailSamples; ++k)
+            if (sign_ * (angles_[k] - angles_[k - 1]) < -kMonotoneSlack)
+                throw GeometryError(name + ": the rail is not star-shaped about the axis (a half-plane at the axis "
+                                           "cuts it more than once)");
+    }
+
+    // Point of the rail at angle theta in [0, 2π] about the axis, measured from its start.
+    Vec3 pointAt(double theta) const
+    {
+        const double target = sign_ > 0 ? theta : theta - 2 * M_PI;
+        int k = 0;
+        while (k + 1 < kRailSamples && sign_ * (angles_[k + 1] - target) < 0.0) ++k;
+        double lo = static_cast<double>(k) / kRailSamples;
+        double hi = static_cast<double>(k + 1) / kRailSamples;
+        const double ref = angles_[k];
+        for (int it = 0; it < kBisections; ++it) {
+            const double mid = 0.5 * (lo + hi);
+            const double a = wrapNear(axis_.angle(at(mid)) - a0_, ref);
+            (sign_ * (a - target) < 0.0 ? lo : hi) = mid;
+        }
+        return at(0.5 * (lo + hi));
+    }
+
+private:
+    Vec3 at(double s) const
+    {
+        double t = v0_ + s;
+        if (t > 1.0) t -= 1.0;
+        return curve_.evaluate(t);
+    }
+
+    Curve3d curve_;
+    AxisFrame axis_;
+    std::string name_;
+    double v0_ = 0.0;
+    double a0_ = 0.0;
+    double sign_ = 1.0;
+    std::vector<double> angles_;
+};
+
+// M_θ of eq. 5-9 (see the header for the reading).
+Eigen::Affine3d sectionTransform(const AxisFrame& axis, double theta, const Vec3& p0, const Vec3& q0, const Vec3& p,
+                                 const Vec3& q)
+{
+    const Eigen::Matrix3d rot = Eigen::AngleAxisd(theta, axis.dir).toRotationMatrix();
+    const Vec3 chord = rot * (q0 - p0);
+    const Eigen::Matrix3d align = Eigen::Quaterniond::FromTwoVectors(chord, q - p).toRotationMatrix();
+    const double scale = (q - p).norm() / (q0 - p0).norm();
+    Eigen::Affine3d m = Eigen::Affine3d::Identity();
+    m.linear() = scale * align * rot;
+    m.translation() = p - m.linear() * p0;
+    return m;
+}
+
+}  // namespace
+
+ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, const Curve3d& input,
+                                 const ApproximationOptions& options)
+{
+    Curve3d profile = normalizedCurve(input);
+    const double size = std::max({rail1.controlSize(), rail2.controlSize(), profile.controlSize()});
+    const double meet = kMeetRelative * size;
+    const double tolerance = options.tolerance > 0.0 ? options.tolerance : kDefaultApproximationRelative * size;
+
+    AxisFrame axis;
+    const Vec3 o1 = boxCentre(normalizedCurve(rail1));
+    const Vec3 o2 = boxCentre(normalizedCurve(rail2));
+    axis.origin = o1;
+    axis.dir = (o2 - o1).norm() > 1e-9 * size ? Vec3((o2 - o1).normalized()) : bestFitPlaneNormal({rail1});
+    axis.e1 = axis.dir.unitOrthogonal();
+    axis.e2 = axis.dir.cross(axis.e1);
+
+    // The profile may be drawn from either rail.
+    const auto distanceTo = [](const Curve3d& c, const Vec3& x) { return projectToCurve(normalizedCurve(c), x).distance; };
+    if (distanceTo(rail1, profile.evaluate(0.0)) + distanceTo(rail2, profile.evaluate(1.0)) >
+        distanceTo(rail1, profile.evaluate(1.0)) + distanceTo(rail2, profile.evaluate(0.0)))
+        profile = reversedCurve(profile);
+    const Vec3 p0 = profile.evaluate(0.0);
+    const Vec3 q0 = profile.evaluate(1.0);
+    if (!((q0 - p0).norm() > meet)) throw GeometryError("curves[2]: the profile's ends coincide; it connects nothing");
+    const Rail r1(rail1, p0, axis, meet, "curves[0]");
+    const Rail r2(rail2, q0, axis, meet, "curves[1]");
+
+    const int n = profile.pointCount();
+    const int h = profile.isRational() ? 4 : 3;
+    std::vector<double> us;
+    for (int i = 0; i <= 2 * n; ++i) us.push_back(static_cast<double>(i) / (2 * n));
+    const auto section = [&](double theta) {
+        if (theta == 0.0 || theta == 2 * M_PI) return Eigen::Affine3d(Eigen::Affine3d::Identity());
+        return sectionTransform(axis, theta, p0, q0, r1.pointAt(theta), r2.pointAt(theta));
+    };
+
+    int count = kInitialSections + 1;
+    for (;;) {
+        std::vector<double> v(count);
+        ControlMatrix data(count, static_cast<Eigen::Index>(n) * h);
+        for (int k = 0; k < count; ++k) {
+            v[k] = static_cast<double>(k) / (count - 1);
+            const Eigen::Affine3d m = section(2 * M_PI * v[k]);
+            for (int i = 0; i < n; ++i) {
+                const double w = profile.weight(i);
+                data.block(k, static_cast<Eigen::Index>(i) * h, 1, 3) = w * (m * profile.points()[i]).transpose();
+                if (h == 4) data(k, static_cast<Eigen::Index>(i) * h + 3) = w;
+            }
+        }
+        const CurveInterpolator interp(v, 3);
+        Surface3d s = Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(), interp.knots(),
+                                                 interp.solve(data), profile.isRational());
+        double deviation = 0.0;
+        for (int k = 0; k + 1 < count; ++k) {
+            const double vm = (k + 0.5) / (count - 1);
+            const Eigen::Affine3d m = section(2 * M_PI * vm);
+            for (double u : us) deviation = std::max(deviation, (s.evaluate(u, vm) - m * profile.evaluate(u)).norm());
+        }
+        if (deviation <= tolerance || 2 * count - 1 > options.maxPoints)
+            return ApproximatedSurface{std::move(s), deviation, tolerance};
+        count = 2 * count - 1;
+    }
+}
+
+}  // namespace sculptline::solvers::surfaces
