@@ -1,0 +1,371 @@
+#include "solvers/stroke/shape_recognizer.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kQuarterTurn = kPi / 2;
+
+Eigen::Vector3d lift(const StrokeGeometry& g, const Point2& p) { return g.origin + p.x() * g.axisU + p.y() * g.axisV; }
+
+// Degree-1 B-spline through the vertices (closed: back to the first), uniform knots on [0, 1].
+Curve3d polylineCurve(const StrokeGeometry& g, std::vector<Point2> v, bool closed)
+{
+    if (closed) v.push_back(v.front());
+    std::vector<Eigen::Vector3d> pts;
+    for (const auto& p : v) pts.push_back(lift(g, p));
+    KnotVector knots = {0.0};
+    const int n = static_cast<int>(pts.size());
+    for (int i = 0; i < n; ++i) knots.push_back(double(i) / (n - 1));
+    knots.push_back(1.0);
+    return Curve3d(1, knots, pts);
+}
+
+double angleOf(const Point2& v) { return std::atan2(v.y(), v.x()); }
+
+// Unwrapped polar angles of the points around c: the total signed sweep.
+double sweep(const std::vector<Point2>& pts, const Point2& c)
+{
+    double total = 0, prev = angleOf(pts.front() - c);
+    for (const auto& p : pts) {
+        const double a = angleOf(p - c);
+        double d = a - prev;
+        if (d > kPi) d -= 2 * kPi;
+        if (d < -kPi) d += 2 * kPi;
+        total += d;
+        prev = a;
+    }
+    return total;
+}
+
+double segmentDistance(const Point2& p, const Point2& a, const Point2& b)
+{
+    const Point2 ab = b - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - p).norm();
+}
+
+// Douglas-Peucker-like refinement of the vertex set (see RecognizeOptions::vertexInsertion): each
+// point is measured against the edge between the vertices it lies between, in drawing order.
+void refineVertices(StrokeGeometry& g, double insertAbove, double collinear, double shortEdgeLength)
+{
+    auto& idx = g.vertexIndex;
+    const int n = static_cast<int>(g.points.size());
+    for (int round = 0; round < 12; ++round) {
+        if (g.closed && idx.size() < 2) {
+            idx.push_back(idx.empty() ? 0 : (idx[0] + n / 2) % n);
+            std::sort(idx.begin(), idx.end());
+            continue;
+        }
+        double worst = insertAbove;
+        int at = -1;
+        const size_t edges = g.closed ? idx.size() : idx.size() - 1;
+        for (size_t e = 0; e < edges; ++e) {
+            const int a = idx[e], b = idx[(e + 1) % idx.size()];
+            for (int k = (a + 1) % n; k != b; k = (k + 1) % n) {
+                const double d = segmentDistance(g.points[k], g.points[a], g.points[b]);
+                if (d > worst) {
+                    worst = d;
+                    at = k;
+                }
+            }
+        }
+        if (at < 0) break;
+        idx.insert(std::upper_bound(idx.begin(), idx.end(), at), at);
+    }
+    // Drop the vertex that turns least while it is nearly collinear, or while it ends an edge
+    // shorter than shortEdge (two detections of one corner, e.g. beside a loop's seam).
+    for (bool removed = true; removed && idx.size() > (g.closed ? 3u : 2u);) {
+        removed = false;
+        const size_t m = idx.size();
+        int weakest = -1;
+        double weakestTurn = 1e300;
+        bool mustGo = false;
+        for (size_t v = g.closed ? 0 : 1; v < (g.closed ? m : m - 1); ++v) {
+            const Point2 a = g.points[idx[v]] - g.points[idx[(v + m - 1) % m]];
+            const Point2 b = g.points[idx[(v + 1) % m]] - g.points[idx[v]];
+            const double turn = std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
+            const bool shortEdge = std::min(a.norm(), b.norm()) < shortEdgeLength;
+            if ((turn < collinear || shortEdge) && turn < weakestTurn) {
+                weakest = static_cast<int>(v);
+                weakestTurn = turn;
+                mustGo = true;
+            }
+        }
+        if (mustGo) {
+            idx.erase(idx.begin() + weakest);
+            removed = true;
+        }
+    }
+    g.vertices.clear();
+    for (int k : idx) g.vertices.push_back(g.points[k]);
+}
+
+double score(double residual, double scale) { return std::exp(-(residual / scale) * (residual / scale)); }
+
+// Orientation of a quadrilateral's edges modulo 90 degrees (average of 4 * edge angle, so that
+// opposite and adjacent edges reinforce).
+double quadOrientation(const std::vector<Point2>& v)
+{
+    Point2 acc = Point2::Zero();
+    for (size_t i = 0; i < v.size(); ++i) {
+        const Point2 e = v[(i + 1) % v.size()] - v[i];
+        const double a = 4.0 * angleOf(e);
+        acc += e.norm() * Point2(std::cos(a), std::sin(a));
+    }
+    return angleOf(acc) / 4.0;
+}
+
+struct QuadShape {
+    bool right = false, equal = false, axisAligned = false;
+};
+
+QuadShape classifyQuad(const std::vector<Point2>& v, const RecognizeOptions& o)
+{
+    QuadShape q;
+    double smin = 1e300, smax = 0, ssum = 0, worstAngle = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        const Point2 a = v[(i + 3) % 4] - v[i], b = v[(i + 1) % 4] - v[i];
+        const double s = b.norm();
+        smin = std::min(smin, s);
+        smax = std::max(smax, s);
+        ssum += s;
+        const double ang = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+        worstAngle = std::max(worstAngle, std::abs(ang - kQuarterTurn));
+    }
+    q.right = worstAngle <= o.rightAngle;
+    q.equal = (smax - smin) / (ssum / 4) <= o.equalSides;
+    const double orient = std::abs(quadOrientation(v));  // 0 = axis-aligned, pi/4 = rotated by 45 degrees
+    q.axisAligned = orient < kPi / 8;
+    return q;
+}
+
+// Rectangle (or square) with the quad's orientation, centred on its vertices' centroid.
+std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
+{
+    const double th = quadOrientation(v);
+    const Point2 ux(std::cos(th), std::sin(th)), uy(-ux.y(), ux.x());
+    Point2 c = Point2::Zero();
+    for (const auto& p : v) c += p / 4.0;
+    double hx = 0, hy = 0;
+    for (const auto& p : v) {
+        hx += std::abs((p - c).dot(ux)) / 4.0;
+        hy += std::abs((p - c).dot(uy)) / 4.0;
+    }
+    if (square) hx = hy = 0.5 * (hx + hy);
+    std::vector<Point2> out;
+    for (const auto& p : v) {  // each vertex snaps to the corner in its quadrant: drawing order kept
+        const double sx = (p - c).dot(ux) >= 0 ? 1 : -1, sy = (p - c).dot(uy) >= 0 ? 1 : -1;
+        out.push_back(c + sx * hx * ux + sy * hy * uy);
+    }
+    return out;
+}
+
+// Rhombus: diagonals through the centroid, perpendicular, with the measured half-lengths.
+std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
+{
+    Point2 c = Point2::Zero();
+    for (const auto& p : v) c += p / 4.0;
+    const Point2 d1 = (v[0] - v[2]).normalized(), d2(-d1.y(), d1.x());
+    const double p = 0.5 * (v[0] - v[2]).norm(), q = 0.5 * std::abs((v[1] - v[3]).dot(d2));
+    const double s = (v[1] - c).dot(d2) >= 0 ? 1 : -1;
+    return {c + p * d1, c + s * q * d2, c - p * d1, c - s * q * d2};
+}
+
+}  // namespace
+
+const char* shapeName(ShapeKind k)
+{
+    switch (k) {
+    case ShapeKind::Line: return "line";
+    case ShapeKind::Arc: return "arc";
+    case ShapeKind::Circle: return "circle";
+    case ShapeKind::Ellipse: return "ellipse";
+    case ShapeKind::Triangle: return "triangle";
+    case ShapeKind::Rectangle: return "rectangle";
+    case ShapeKind::Square: return "square";
+    case ShapeKind::Diamond: return "diamond";
+    case ShapeKind::Polyline: return "polyline";
+    case ShapeKind::Freeform: return "freeform";
+    }
+    return "freeform";
+}
+
+StrokeGeometry strokeGeometry(const FitResult& fit)
+{
+    const ConditionedStroke& cs = fit.conditioned;
+    StrokeGeometry g;
+    g.closed = fit.curve.isClosed();
+    g.length = cs.length();
+    g.extent = cs.extent;
+    const double duration = cs.time.back() - cs.time.front();
+    g.speed = duration > 0 ? cs.arc.back() / duration : 0.0;
+    bool planarXY = true;
+    for (const auto& p : cs.points) planarXY = planarXY && std::abs(p.z() - cs.points[0].z()) <= 1e-9 * (1 + g.extent);
+    if (planarXY) {
+        g.origin = Eigen::Vector3d(0, 0, cs.points[0].z());
+    } else {  // best-fit plane: the two principal axes of the points
+        Eigen::Vector3d c = Eigen::Vector3d::Zero();
+        for (const auto& p : cs.points) c += p / static_cast<double>(cs.size());
+        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+        for (const auto& p : cs.points) cov += (p - c) * (p - c).transpose();
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+        g.origin = c;
+        g.axisU = eig.eigenvectors().col(2);
+        g.axisV = eig.eigenvectors().col(1);
+    }
+    for (const auto& p : cs.points) g.points.emplace_back((p - g.origin).dot(g.axisU), (p - g.origin).dot(g.axisV));
+    std::vector<int> corner;
+    for (int raw : fit.corners)
+        for (int k = 0; k < cs.size(); ++k)
+            if (cs.source[k] == raw) corner.push_back(k);
+    std::sort(corner.begin(), corner.end());
+    if (!g.closed) g.vertexIndex.push_back(0);
+    for (int k : corner) g.vertexIndex.push_back(k);
+    if (!g.closed) g.vertexIndex.push_back(static_cast<int>(g.points.size()) - 1);
+    for (int k : g.vertexIndex) g.vertices.push_back(g.points[k]);
+    return g;
+}
+
+Curve3d makeArc(const StrokeGeometry& g, const Point2& c, double r, double a0, double a1)
+{
+    // The NURBS Book A7.1: arcs of at most 90 degrees, middle weights cos(dtheta / 2).
+    const double total = a1 - a0;
+    const int arcs = std::max(1, static_cast<int>(std::ceil(std::abs(total) / kQuarterTurn - 1e-9)));
+    const double d = total / arcs, w1 = std::cos(0.5 * d);
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> weights;
+    KnotVector knots = {0, 0, 0};
+    auto on = [&](double a) { return Point2(c + r * Point2(std::cos(a), std::sin(a))); };
+    pts.push_back(lift(g, on(a0)));
+    weights.push_back(1.0);
+    for (int i = 0; i < arcs; ++i) {
+        const double mid = a0 + (i + 0.5) * d;
+        pts.push_back(lift(g, Point2(c + (r / w1) * Point2(std::cos(mid), std::sin(mid)))));
+        weights.push_back(w1);
+        pts.push_back(lift(g, on(a0 + (i + 1) * d)));
+        weights.push_back(1.0);
+        if (i + 1 < arcs) knots.insert(knots.end(), 2, double(i + 1) / arcs);
+    }
+    knots.insert(knots.end(), 3, 1.0);
+    if (arcs == 4 && std::abs(std::abs(total) - 2 * kPi) < 1e-12) pts.back() = pts.front();  // exact closure
+    return Curve3d(2, knots, pts, weights);
+}
+
+Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
+{
+    Recognition rec;
+    rec.geometry = strokeGeometry(fit);
+    const StrokeGeometry& g = rec.geometry;
+    const double sigma = o.residualScale * g.extent;
+    const int corners = static_cast<int>(fit.corners.size());
+    auto add = [&](ShapeKind k, double s) { rec.candidates.push_back({k, std::clamp(s, 0.0, 1.0)}); };
+
+    rec.line = fitLine(g.points);
+    rec.circle = fitCircle(g.points);
+    if (!g.closed && corners == 0) {
+        const double chord = (g.points.back() - g.points.front()).norm();
+        add(ShapeKind::Line, score(rec.line.maxResidual, sigma) * std::min(1.0, chord / std::max(g.length, 1e-300)));
+        if (rec.circle.valid) {
+            const double turn = std::abs(sweep(g.points, rec.circle.center));
+            // Nearly straight arcs are lines; arcs past 330 degrees are circles not quite closed.
+            const double bend = std::min(1.0, turn / (kPi / 4)) * (turn <= 330.0 / 180.0 * kPi ? 1.0 : 0.5);
+            add(ShapeKind::Arc, score(rec.circle.maxResidual, sigma) * bend);
+        }
+    }
+    if (g.closed) {
+        rec.ellipse = fitEllipse(g.points);
+        const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
+        if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * (corners <= 1 ? 1.0 : 0.5));
+        if (rec.ellipse.valid) {
+            // A circle is an ellipse too; the ellipse is the better answer only when elongated.
+            add(ShapeKind::Ellipse, score(rec.ellipse.maxResidual, sigma) * std::clamp((roundness - 1.0) / 0.2, 0.3, 1.0) *
+                                        (corners <= 1 ? 1.0 : 0.5));
+        }
+    }
+    if (corners > 0 || g.closed) {
+        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.collinearAngle, o.shortEdge * g.extent);
+    }
+    if (g.vertices.size() >= 3u && (corners > 0 || g.closed)) {
+        const double fitScore = score(polylineResidual(g.points, g.vertices, g.closed), sigma);
+        if (g.closed && g.vertices.size() == 3) {
+            add(ShapeKind::Triangle, fitScore);
+        } else if (g.closed && g.vertices.size() == 4) {
+            const QuadShape q = classifyQuad(g.vertices, o);
+            const double sq = q.right && q.equal ? 1.0 : 0.4, rc = q.right ? 1.0 : 0.4;
+            const double dm = q.equal ? (q.right ? (q.axisAligned ? 0.5 : 1.0) : 1.0) : 0.4;
+            add(ShapeKind::Square, fitScore * sq * (q.axisAligned || !q.right ? 1.0 : 0.5));
+            add(ShapeKind::Rectangle, fitScore * rc * (q.equal ? 0.7 : 1.0));
+            add(ShapeKind::Diamond, fitScore * dm);
+            add(ShapeKind::Polyline, fitScore * 0.5);
+        } else {
+            add(ShapeKind::Polyline, fitScore);
+        }
+    }
+    add(ShapeKind::Freeform, o.freeformScore);
+    std::stable_sort(rec.candidates.begin(), rec.candidates.end(),
+                     [](const ShapeCandidate& a, const ShapeCandidate& b) { return a.score > b.score; });
+    rec.kind = rec.candidates.front().kind;
+
+    if (!o.regularize) {
+        rec.regularized = fit.curve;
+        return rec;
+    }
+    switch (rec.kind) {
+    case ShapeKind::Line: {
+        const Point2 p = rec.line.point, d = rec.line.direction;
+        rec.polygon = {p + d * (g.points.front() - p).dot(d), p + d * (g.points.back() - p).dot(d)};
+        rec.regularized = polylineCurve(g, rec.polygon, false);
+        break;
+    }
+    case ShapeKind::Arc: {
+        const double a0 = angleOf(g.points.front() - rec.circle.center);
+        rec.regularized = makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + sweep(g.points, rec.circle.center));
+        break;
+    }
+    case ShapeKind::Circle: {
+        const double a0 = angleOf(g.points.front() - rec.circle.center);
+        const double dir = sweep(g.points, rec.circle.center) >= 0 ? 1.0 : -1.0;
+        rec.regularized = makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + dir * 2 * kPi);
+        break;
+    }
+    case ShapeKind::Ellipse: {
+        // The unit circle mapped by the ellipse's affine frame: rational curves are affinely
+        // invariant, so the result is an exact ellipse (The NURBS Book §7.3).
+        StrokeGeometry unit;
+        const Curve3d circle = makeArc(unit, Point2::Zero(), 1.0, 0.0, 2 * kPi);
+        const Point2 ua(std::cos(rec.ellipse.angle), std::sin(rec.ellipse.angle)), ub(-ua.y(), ua.x());
+        std::vector<Eigen::Vector3d> pts;
+        for (const auto& p : circle.points()) {
+            pts.push_back(lift(g, Point2(rec.ellipse.center + rec.ellipse.a * p.x() * ua + rec.ellipse.b * p.y() * ub)));
+        }
+        rec.regularized = Curve3d(2, circle.knots(), pts, circle.weights());
+        break;
+    }
+    case ShapeKind::Square:
+    case ShapeKind::Rectangle:
+        rec.polygon = regularRectangle(g.vertices, rec.kind == ShapeKind::Square);
+        rec.regularized = polylineCurve(g, rec.polygon, true);
+        break;
+    case ShapeKind::Diamond:
+        rec.polygon = regularDiamond(g.vertices);
+        rec.regularized = polylineCurve(g, rec.polygon, true);
+        break;
+    case ShapeKind::Triangle:
+    case ShapeKind::Polyline:
+        rec.polygon = g.vertices;
+        rec.regularized = polylineCurve(g, rec.polygon, g.closed);
+        break;
+    case ShapeKind::Freeform:
+        rec.regularized = fit.curve;
+        break;
+    }
+    return rec;
+}
+
+}  // namespace sculptline::solvers::stroke

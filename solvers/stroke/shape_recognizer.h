@@ -1,0 +1,80 @@
+#pragma once
+// Single-stroke shape recognition and regularization (thesis §3.1.1, Fig. 3-3, Table 3-1 STEP 2:
+// G(L, S, P, V) -> T_i(C_j)).
+#include "solvers/stroke/primitive_fit.h"
+#include "solvers/stroke/stroke_fitter.h"
+
+#include <string>
+
+namespace sculptline::solvers::stroke {
+
+enum class ShapeKind { Line, Arc, Circle, Ellipse, Triangle, Rectangle, Square, Diamond, Polyline, Freeform };
+
+/// "line", "arc", ... as in ../shared/interfaces.md (`recognize`).
+const char* shapeName(ShapeKind kind);
+
+struct ShapeCandidate {
+    ShapeKind kind = ShapeKind::Freeform;
+    double score = 0;  ///< in [0, 1], higher is better
+};
+
+/// The 4-tuple of thesis Table 3-1: length L, speed S, point set P, vertex set V (in the stroke's
+/// plane), plus the plane and whether the stroke closes.
+struct StrokeGeometry {
+    double length = 0;               ///< L
+    double speed = 0;                ///< S, average (model units per second, or per sample)
+    std::vector<Point2> points;      ///< P, conditioned points in plane coordinates
+    std::vector<Point2> vertices;    ///< V, ends (open) and corners, in order
+    std::vector<int> vertexIndex;    ///< index of each vertex in `points`
+    bool closed = false;
+    double extent = 0;
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< plane frame: x = origin + u * axisU + v * axisV
+    Eigen::Vector3d axisU = Eigen::Vector3d::UnitX(), axisV = Eigen::Vector3d::UnitY();
+};
+
+/// Builds G from a fit: a planar stroke keeps its xy (or its best-fit plane, for 3D strokes).
+StrokeGeometry strokeGeometry(const FitResult& fit);
+
+struct RecognizeOptions {
+    /// Residual scale, relative to the stroke's extent, at which a primitive's score falls to
+    /// 1/e: 4 % (a hand-drawn line bows by a few per cent of its length; seed 003 §4).
+    double residualScale = 0.04;
+    /// Score of the freeform interpretation, the fallback when nothing fits better.
+    double freeformScore = 0.35;
+    /// Sides within this relative difference count as equal (square, diamond).
+    double equalSides = 0.2;
+    /// Angles within this of 90 degrees count as right (radians; 15 degrees).
+    double rightAngle = 0.26;
+    /// Polygon vertices are refined for recognition: the point farthest from the polygon becomes
+    /// a vertex while it lies farther than this share of residualScale (a corner the detector
+    /// missed, often at a loop's seam), and vertices turning less than `collinearAngle` are
+    /// dropped (a corner detected on a straight side).
+    double vertexInsertion = 0.3;
+    double collinearAngle = 0.44;  ///< radians, 25 degrees
+    double shortEdge = 0.08;       ///< edges shorter than this share of the extent are merged
+    /// Replace the stroke by the exact primitive (false: `regularized` is the fitted curve).
+    bool regularize = true;
+};
+
+struct Recognition {
+    ShapeKind kind = ShapeKind::Freeform;
+    std::vector<ShapeCandidate> candidates;  ///< ranked, best first
+    /// The regularized primitive (exact rational circle/arc/ellipse of degree 2, polygons and lines
+    /// of degree 1), or the fitted cubic for freeform shapes / when regularization is declined.
+    Curve3d regularized{1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}};
+    StrokeGeometry geometry;
+    // Primitive parameters of the best candidate (plane coordinates), for composite reasoning.
+    LineFit line;
+    CircleFit circle;
+    EllipseFit ellipse;
+    std::vector<Point2> polygon;  ///< regularized vertices of polygon kinds
+};
+
+/// Classifies one fitted stroke and regularizes it.
+Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& options = {});
+
+/// An exact circular arc as a rational quadratic B-spline (The NURBS Book A7.1): centre, radius
+/// and angles in the plane frame of `g`; a full turn gives the 9-point closed circle.
+Curve3d makeArc(const StrokeGeometry& g, const Point2& center, double radius, double a0, double a1);
+
+}  // namespace sculptline::solvers::stroke
