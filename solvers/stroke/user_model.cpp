@@ -1,0 +1,128 @@
+#include "solvers/stroke/user_model.h"
+
+#include "solvers/bspline/geometry_error.h"
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+// C1..C6 of thesis §3.1.3: circle, triangle, line, square, rectangle, diamond.
+const char* primitiveConstraint(ShapeKind k)
+{
+    switch (k) {
+    case ShapeKind::Circle: return "C1";
+    case ShapeKind::Triangle: return "C2";
+    case ShapeKind::Line: return "C3";
+    case ShapeKind::Square: return "C4";
+    case ShapeKind::Rectangle: return "C5";
+    case ShapeKind::Diamond: return "C6";
+    default: return nullptr;
+    }
+}
+
+}  // namespace
+
+const char* constraintOf(Relation r)
+{
+    switch (r) {
+    case Relation::Overlapping: return "C7";
+    case Relation::Parallel: return "C8";
+    case Relation::Perpendicular: return "C9";
+    case Relation::Touching: return "C10";
+    case Relation::Inside: return "C11";
+    case Relation::Disjoint: return "C12";
+    }
+    return "C12";
+}
+
+UserModel UserModel::predefined(const std::string& user)
+{
+    UserModel m;
+    m.user_ = user;
+    // Table 3-2: Index, Name, Pre-Node, Curr-Node, Constraint.
+    m.nodes_ = {{1, "T1", 0, 0, "C1"},  {2, "T2", 0, 0, "C2"},    {3, "T3", 0, 0, "C3"},  {4, "T4", 0, 0, "C4"},
+                {5, "T5", 0, 0, "C5"},  {6, "T6", 0, 0, "C6"},    {7, "T7", 3, 4, "C8"},  {8, "prism", 2, 3, "C7"},
+                {9, "T9", 2, 1, "C10"}, {10, "T10", 9, 1, "C9"},  {11, "T11", 2, 5, "C8"}, {12, "T12", 6, 6, "C7"},
+                {13, "cylinder", 1, 3, "C10"}, {14, "cone", 1, 3, "C11"}};
+    return m;
+}
+
+void UserModel::setNodes(std::vector<ChainNode> nodes)
+{
+    const int n = static_cast<int>(nodes.size());
+    for (int i = 0; i < n; ++i) {
+        const ChainNode& c = nodes[i];
+        const std::string at = "nodes[" + std::to_string(i) + "]";
+        if (c.index != i + 1) throw GeometryError(at + ".index: must be " + std::to_string(i + 1));
+        if (c.preNode < 0 || c.preNode > n) throw GeometryError(at + ".pre: no such node " + std::to_string(c.preNode));
+        if (c.currNode < 0 || c.currNode > n) throw GeometryError(at + ".curr: no such node " + std::to_string(c.currNode));
+        if (c.constraint.empty()) throw GeometryError(at + ".constraint: empty");
+    }
+    nodes_ = std::move(nodes);
+}
+
+int UserModel::match(int pre, int curr, const std::string& constraint) const
+{
+    for (const ChainNode& c : nodes_)
+        if (c.preNode == pre && c.currNode == curr && c.constraint == constraint) return c.index;
+    return 0;
+}
+
+int UserModel::primitiveNode(ShapeKind kind) const
+{
+    const char* c = primitiveConstraint(kind);
+    const std::string label = c ? c : std::string("C:") + shapeName(kind);
+    return match(0, 0, label);
+}
+
+std::vector<int> UserModel::candidatesAfter(int pre) const
+{
+    std::vector<int> out;
+    for (const ChainNode& c : nodes_)
+        if (pre != 0 && c.preNode == pre) out.push_back(c.index);
+    return out;
+}
+
+int UserModel::insert(ChainNode node)
+{
+    node.index = static_cast<int>(nodes_.size()) + 1;
+    nodes_.push_back(std::move(node));
+    return nodes_.back().index;
+}
+
+std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits, UserModel& model,
+                                             const RecognizeOptions& options, double ambiguity)
+{
+    std::vector<Interpretation> out;
+    for (size_t i = 0; i < fits.size(); ++i) {
+        Interpretation it;
+        it.recognition = recognizeShape(fits[i], options);  // STEP 1-2
+        const ShapeKind kind = it.recognition.kind;
+        it.node = model.primitiveNode(kind);
+        if (it.node == 0) {  // a primitive the table does not know yet: learn it
+            it.node = model.insert({0, shapeName(kind), 0, 0, std::string("C:") + shapeName(kind)});
+            it.learned = true;
+        }
+        if (i > 0) {  // STEP 4-5
+            const Interpretation& prev = out.back();
+            it.relations = relate(prev.recognition, it.recognition);
+            it.composite = composeShapes(prev.recognition, it.recognition, it.relations);
+            // The topological relation (the last one) is the chain's constraint; parallel and
+            // perpendicular take precedence as in Table 3-2 (T7, T11: C8).
+            const Relation key = it.relations.front();
+            const std::string constraint = constraintOf(key);
+            it.compositeNode = model.match(prev.node, it.node, constraint);
+            if (it.compositeNode == 0) {
+                const std::string name = it.composite != CompositeKind::None ? compositeName(it.composite)
+                                                                             : "T" + std::to_string(model.nodes().size() + 1);
+                it.compositeNode = model.insert({0, name, prev.node, it.node, constraint});
+                it.learned = true;
+            }
+            const auto& c = it.recognition.candidates;
+            if (c.size() > 1 && c[0].score - c[1].score < ambiguity) it.offered = model.candidatesAfter(prev.node);
+        }
+        out.push_back(std::move(it));
+    }
+    return out;
+}
+
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,71 @@
+#pragma once
+// The adaptive user model of thesis §3.1.3 (Table 3-2, procedures USER MODELING and INSERT) and the
+// stroke-by-stroke algorithm of Table 3-1.
+#include "solvers/stroke/composite.h"
+
+#include <string>
+
+namespace sculptline::solvers::stroke {
+
+/// One row of the chain table (Table 3-2). Links are row indices (1-based, 0 = NULL).
+struct ChainNode {
+    int index = 0;
+    std::string name;        ///< "T1", .., or a composite's name ("prism", "cylinder", ...)
+    int preNode = 0;         ///< the previous stroke's node
+    int currNode = 0;        ///< the current stroke's node
+    std::string constraint;  ///< "C1".."C6" primitives, "C7" overlap .. "C12" disjoint, or "C:<shape>"
+};
+
+/// The decision table of one user. Matching, candidate lookup and insertion are single scans:
+/// O(n) in the number of nodes, as the thesis states.
+class UserModel {
+public:
+    /// Table 3-2 as printed (T1..T12), T8 named "prism" (Fig. 3-4 a), plus the Fig. 3-4 objects
+    /// cylinder and cone (circle then line, touching / inside).
+    static UserModel predefined(const std::string& user = "default");
+
+    const std::string& user() const { return user_; }
+    void setUser(std::string u) { user_ = std::move(u); }
+    const std::vector<ChainNode>& nodes() const { return nodes_; }
+    /// Replaces the table (loading); indices must be 1..n in order and links must point to rows.
+    /// @throws GeometryError naming the offending node.
+    void setNodes(std::vector<ChainNode> nodes);
+
+    /// The row with pre == pre, curr == curr and the given constraint, or 0.
+    int match(int pre, int curr, const std::string& constraint) const;
+    /// The primitive row of a shape (constraint C1..C6, or a learned "C:<shape>" row), 0 if none.
+    int primitiveNode(ShapeKind kind) const;
+    /// Rows whose pre-node is `pre`: what the table offers after `pre` when the next stroke is
+    /// ambiguous (the thesis's T8, T9, T11 after T2).
+    std::vector<int> candidatesAfter(int pre) const;
+    /// INSERT (P): appends a row and returns its index.
+    int insert(ChainNode node);
+
+private:
+    std::string user_;
+    std::vector<ChainNode> nodes_;
+};
+
+/// Table 3-2's constraint label of a relation (C7 overlap, C8 parallel, C9 vertical, C10 touch,
+/// C11 inside; C12 disjoint is ours).
+const char* constraintOf(Relation r);
+
+/// One stroke as interpreted in sequence (Table 3-1).
+struct Interpretation {
+    Recognition recognition;        ///< STEP 2
+    std::vector<Relation> relations;  ///< STEP 4, to the previous stroke (empty for the first)
+    CompositeKind composite = CompositeKind::None;
+    int node = 0;                   ///< the user-model row of this stroke's primitive
+    int compositeNode = 0;          ///< the row matched or learned for (previous, this, relation)
+    bool learned = false;           ///< STEP 5 inserted a new row
+    std::vector<int> offered;       ///< rows offered because the recognition was ambiguous
+};
+
+/// Runs Table 3-1 over strokes drawn one after another: each is recognized (STEP 2); from the
+/// second on, its relation to the previous one is reasoned (STEP 4), the pair is matched in the
+/// user model and inserted when new (STEP 5). A stroke is ambiguous when its two best candidates
+/// score within `ambiguity`; the model's rows following the previous node are then offered.
+std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits, UserModel& model,
+                                             const RecognizeOptions& options = {}, double ambiguity = 0.1);
+
+}  // namespace sculptline::solvers::stroke
