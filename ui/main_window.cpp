@@ -1,38 +1,49 @@
 #include "ui/main_window.h"
 
-#include "manipulators/projection_plane_manipulator.h"
-#include "scene/default_scene.h"
+#include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
+#include "ui/entity_list_dock.h"
+#include "ui/inspector_dock.h"
+#include "ui/modes_dock.h"
+#include "ui/sketch_document.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/actions/SoRayPickAction.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
+#include <QCloseEvent>
+#include <QFileDialog>
+#include <QFileInfo>
 #include <QGLWidget>
 #include <QMenuBar>
+#include <QMessageBox>
+#include <QMouseEvent>
 #include <QStatusBar>
+
+#include <algorithm>
 
 namespace sculptline::ui {
 namespace {
 
-/// A dark neutral background: the grid's grey lines, the warm curve and the cool surface all keep
-/// their contrast against it.
+/// A dark neutral background: grid, warm curves and cool surfaces all keep their contrast on it.
 const SbColor kBackground(0.16f, 0.17f, 0.2f);
-
 /// From the front right (-Y, +X) and above: the three-quarter view of a draughtsman.
 const Eigen::Vector3d kViewDirection(-1.0, 1.6, -0.9);
-
 /// Share of viewAll's camera distance kept after framing (closer = larger scene on screen).
 constexpr float kFramingZoom = 0.9f;
+/// Edge of a plane added from the menu: the default plane's, a sheet of paper at arm's length.
+constexpr double kNewPlaneSize = 120.0;
 
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
-    setWindowTitle(QStringLiteral("Sculptline"));
     auto* central = new QWidget(this);
     setCentralWidget(central);
     viewer_ = new SoQtExaminerViewer(central);
@@ -40,79 +51,307 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
     viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     viewer_->setFeedbackVisibility(FALSE);
-    createMenus();
-    statusBar()->showMessage(tr("Ready"));
+    viewer_->setEventCallback(&MainWindow::viewerEvent, this);
+    document_ = new SketchDocument(this);
+    document_->setCamera([this]() { return viewer_->getCamera(); });
+    createActions();
+    createDocks();
+    connect(document_, &SketchDocument::entitiesChanged, this, [this]() {
+        entities_->refresh(document_->model(), document_->selection());
+        inspector_->show(document_->model(), document_->selection());
+    });
+    connect(document_, &SketchDocument::selectionChanged, this, [this](scene::EntityId id) {
+        entities_->setSelection(id);
+        inspector_->show(document_->model(), id);
+        updateStatus();
+    });
+    connect(document_, &SketchDocument::strokeFinished, this, [this]() {
+        statusBar()->showMessage(document_->lastStroke().message);
+    });
+    connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this]() { updateTitle(); });
+    setMode(Mode::View);
 }
 
 MainWindow::~MainWindow()
 {
-    // Detach the graph from the viewer (it holds a ref of its own), drop ours, then let the
-    // manipulators release their subgraphs; the viewer goes last.
+    // The viewer holds a ref on the graph: detach it before the document frees its nodes.
     viewer_->setSceneGraph(nullptr);
-    clearScene();
+    delete document_;
+    document_ = nullptr;
     delete viewer_;
 }
 
 QWidget* MainWindow::viewport() const { return viewer_->getGLWidget(); }
+SoSeparator* MainWindow::sceneRoot() const { return document_->root(); }
 
-void MainWindow::createMenus()
+QAction* MainWindow::action(const QString& name) const { return findChild<QAction*>(name); }
+
+QList<QAction*> MainWindow::namedActions() const
 {
+    QList<QAction*> all;
+    for (QAction* a : findChildren<QAction*>()) {
+        if (a->objectName().contains('.')) all << a;
+    }
+    std::sort(all.begin(), all.end(), [](QAction* a, QAction* b) { return a->objectName() < b->objectName(); });
+    return all;
+}
+
+void MainWindow::createActions()
+{
+    auto make = [this](QMenu* menu, const char* name, const QString& text, const QKeySequence& key, auto slot) {
+        auto* a = new QAction(text, this);
+        a->setObjectName(QString::fromLatin1(name));
+        if (!key.isEmpty()) a->setShortcut(key);
+        connect(a, &QAction::triggered, this, slot);
+        menu->addAction(a);
+        return a;
+    };
     QMenu* file = menuBar()->addMenu(tr("&File"));
-    QAction* quit = file->addAction(tr("&Quit"));
-    quit->setShortcut(QKeySequence::Quit);
-    connect(quit, &QAction::triggered, qApp, &QApplication::quit);
+    make(file, "file.new", tr("&New"), QKeySequence::New, [this]() { newDocument(); });
+    make(file, "file.open", tr("&Open..."), QKeySequence::Open, [this]() { openDocument(); });
+    make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
+    make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
+    make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
+    file->addSeparator();
+    make(file, "file.quit", tr("&Quit"), QKeySequence::Quit, [this]() { close(); });
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = document_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName(QStringLiteral("edit.undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    edit->addAction(undo);
+    QAction* redo = document_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName(QStringLiteral("edit.redo"));
+    redo->setShortcuts({QKeySequence::Redo, QKeySequence(QStringLiteral("Ctrl+Y"))});
+    edit->addAction(redo);
+    make(edit, "edit.delete", tr("&Delete selection"), QKeySequence::Delete, [this]() { document_->deleteSelection(); });
+
+    QMenu* plane = menuBar()->addMenu(tr("&Plane"));
+    make(plane, "plane.add", tr("&Add plane facing the view"), QKeySequence(QStringLiteral("Ctrl+P")), [this]() { addPlaneFacingViewer(); });
+
+    QMenu* modeMenu = menuBar()->addMenu(tr("&Mode"));
+    modes_ = new QActionGroup(this);
+    auto modeAction = [&](const char* name, const QString& text, const QString& key, Mode m) {
+        QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, m]() { setMode(m); });
+        a->setCheckable(true);
+        modes_->addAction(a);
+    };
+    modeAction("mode.view", tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
+    modeAction("mode.sketch", tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
+    modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
 }
 
-void MainWindow::clearScene()
+void MainWindow::createDocks()
 {
-    if (root_) root_->unref();
-    root_ = nullptr;
-    planes_.clear();
+    auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
+                                 action(QStringLiteral("mode.select")), action(QStringLiteral("plane.add"))},
+                                this);
+    addDockWidget(Qt::LeftDockWidgetArea, modes);
+    entities_ = new EntityListDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, entities_);
+    inspector_ = new InspectorDock(this);
+    addDockWidget(Qt::RightDockWidgetArea, inspector_);
+    connect(entities_, &EntityListDock::entityPicked, this, [this](scene::EntityId id) { document_->select(id); });
 }
 
-void MainWindow::showDocument(const scene::SceneDocument& doc, const QString& title)
+void MainWindow::setMode(Mode mode)
+{
+    mode_ = mode;
+    // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
+    // to the examiner's camera.
+    viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
+    document_->strokeInput().setEnabled(mode == Mode::Sketch);
+    const char* name = mode == Mode::View ? "mode.view" : mode == Mode::Sketch ? "mode.sketch" : "mode.select";
+    action(QString::fromLatin1(name))->setChecked(true);
+    updateStatus();
+}
+
+void MainWindow::updateStatus()
+{
+    const scene::EntityId plane = document_->activePlane();
+    QString text;
+    switch (mode_) {
+    case Mode::View: text = tr("View: drag to turn, middle-drag to pan, wheel to zoom. S: sketch, E: select."); break;
+    case Mode::Sketch:
+        text = plane ? tr("Sketch: draw with the left button on plane %1; drag the plane's jack to move or turn it. Ctrl+P: new plane.").arg(plane)
+                     : tr("Sketch: there is no plane to draw on; Ctrl+P adds one facing the view.");
+        break;
+    case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
+    }
+    statusBar()->showMessage(text);
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = document_->path().isEmpty() ? tr("untitled") : QFileInfo(document_->path()).fileName();
+    setWindowTitle(QStringLiteral("Sculptline — %1[*]").arg(name));
+    setWindowModified(!document_->undoStack()->isClean());
+}
+
+void MainWindow::showDocument(const scene::SceneDocument& doc, const QString& path)
 {
     viewer_->setSceneGraph(nullptr);
-    clearScene();
-    std::vector<std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes;
-    auto factory = [&planes](const scene::PlaneSpec& plane, size_t) -> SoNode* {
-        planes.push_back(std::make_unique<manipulators::ProjectionPlaneManipulator>(plane));
-        return planes.back()->root();
-    };
-    root_ = scene::buildSceneGraph(doc, factory);
-    root_->ref();
-    planes_ = std::move(planes);
-    viewer_->setSceneGraph(root_);
+    document_->load(doc, path);
+    viewer_->setSceneGraph(document_->root());
+    frameScene();
+    updateTitle();
+    updateStatus();
+}
 
-    // Z is up in the model; look from the front right and above, like a draughtsman's isometric view.
-    if (SoCamera* camera = viewer_->getCamera()) {
-        camera->orientation = scene::rotationLookingAlong(kViewDirection, Eigen::Vector3d::UnitZ());
-        viewer_->viewAll();
-        // viewAll frames the bounding sphere, which leaves a wide margin around a flat-ish scene.
-        SbVec3f forward;
-        camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), forward);
-        const float distance = camera->focalDistance.getValue();
-        camera->position = camera->position.getValue() + forward * (distance * (1.0f - kFramingZoom));
-        camera->focalDistance = distance * kFramingZoom;
+void MainWindow::frameScene()
+{
+    SoCamera* camera = viewer_->getCamera();
+    if (!camera) return;
+    // Z is up in the model; look from the front right and above.
+    camera->orientation = scene::rotationLookingAlong(kViewDirection, Eigen::Vector3d::UnitZ());
+    viewer_->viewAll();
+    // viewAll frames the bounding sphere, which leaves a wide margin around a flat-ish scene.
+    SbVec3f forward;
+    camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), forward);
+    const float distance = camera->focalDistance.getValue();
+    camera->position = camera->position.getValue() + forward * (distance * (1.0f - kFramingZoom));
+    camera->focalDistance = distance * kFramingZoom;
+}
+
+void MainWindow::addPlaneFacingViewer()
+{
+    SoCamera* camera = viewer_->getCamera();
+    if (!camera) return;
+    // Through the point the view turns about, facing the viewer, its X along the screen's right:
+    // a fresh sheet where the designer is looking.
+    SbVec3f forward, right;
+    camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), forward);
+    camera->orientation.getValue().multVec(SbVec3f(1, 0, 0), right);
+    const SbVec3f centre = camera->position.getValue() + forward * camera->focalDistance.getValue();
+    document_->addPlane(scene::PlaneFrame::fromNormal(scene::toEigen(centre), -scene::toEigen(forward), kNewPlaneSize,
+                                                      scene::toEigen(right)));
+}
+
+SbBool MainWindow::viewerEvent(void* self, QEvent* event)
+{
+    auto* window = static_cast<MainWindow*>(self);
+    if (window->mode_ != Mode::Select || event->type() != QEvent::MouseButtonPress) return FALSE;
+    auto* mouse = static_cast<QMouseEvent*>(event);
+    if (mouse->button() != Qt::LeftButton) return FALSE;
+    // Let the press go on to the scene graph as well, so a press on a dragger selects and drags.
+    window->pickAt(mouse->pos());
+    return FALSE;
+}
+
+bool MainWindow::pickAt(const QPoint& position)
+{
+    const SbViewportRegion& viewport = viewer_->getViewportRegion();
+    const SbVec2s size = viewport.getViewportSizePixels();
+    SoRayPickAction pick(viewport);
+    // Qt counts pixels from the top, Coin from the bottom.
+    pick.setPoint(SbVec2s(static_cast<short>(position.x()), static_cast<short>(size[1] - 1 - position.y())));
+    pick.setRadius(4);
+    pick.apply(viewer_->getSceneManager()->getSceneGraph());
+    scene::EntityId picked = 0;
+    if (const SoPickedPoint* point = pick.getPickedPoint()) {
+        const SoPath* path = point->getPath();
+        for (int i = path->getLength() - 1; i >= 0 && picked == 0; --i) {
+            const QString name = QString::fromLatin1(path->getNode(i)->getName().getString());
+            for (const char* prefix : {"Curve", "Plane", "Surface"}) {
+                if (name.startsWith(QLatin1String(prefix)) && !name.endsWith(QLatin1String("Curves"))) {
+                    picked = name.mid(static_cast<int>(strlen(prefix))).toUInt();
+                }
+            }
+        }
     }
-    setWindowTitle(QStringLiteral("Sculptline — %1").arg(title));
-    // The examiner viewer starts in viewing mode, where the mouse turns the camera and draggers get
-    // no events; Esc toggles to interaction mode (SoQt's convention), so say so.
-    statusBar()->showMessage(tr("%1: %2 curve(s), %3 surface(s), %4 plane(s). Esc: switch between "
-                                "turning the view and dragging the plane.")
-                                 .arg(title)
-                                 .arg(doc.curves.size())
-                                 .arg(doc.surfaces.size())
-                                 .arg(doc.planes.size()));
+    document_->select(picked);
+    return picked != 0;
+}
+
+bool MainWindow::maybeSave()
+{
+    if (document_->undoStack()->isClean()) return true;
+    const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("The document has unsaved changes. Save them?"),
+                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return saveDocument();
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (maybeSave()) event->accept();
+    else event->ignore();
+}
+
+void MainWindow::newDocument()
+{
+    if (!maybeSave()) return;
+    // A fresh sheet: the ground grid and one vertical plane facing the default view.
+    scene::SceneDocument doc;
+    scene::PlaneSpec plane;
+    plane.origin = Eigen::Vector3d(0, 0, 60);
+    plane.normal = Eigen::Vector3d(0, -1, 0);
+    plane.size = kNewPlaneSize;
+    plane.id = 1;
+    doc.planes.push_back(plane);
+    showDocument(doc, QString());
+}
+
+void MainWindow::openDocument()
+{
+    if (!maybeSave()) return;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open document"), QString(), tr("Sculptline documents (*.json)"));
+    if (path.isEmpty()) return;
+    try {
+        showDocument(scene::loadDocument(path.toStdString()), path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(e.what()));
+    }
+}
+
+bool MainWindow::saveTo(const QString& path)
+{
+    try {
+        document_->save(path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Cannot save"), QString::fromStdString(e.what()));
+        return false;
+    }
+    updateTitle();
+    statusBar()->showMessage(tr("Saved %1").arg(path));
+    return true;
+}
+
+bool MainWindow::saveDocument()
+{
+    return document_->path().isEmpty() ? saveDocumentAs() : saveTo(document_->path());
+}
+
+bool MainWindow::saveDocumentAs()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save document"), document_->path(), tr("Sculptline documents (*.json)"));
+    return !path.isEmpty() && saveTo(path);
+}
+
+void MainWindow::exportDocument()
+{
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export Open Inventor"), QString(), tr("Open Inventor (*.iv)"));
+    if (path.isEmpty()) return;
+    try {
+        document_->exportIv(path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
+    }
 }
 
 void MainWindow::setViewportSize(int width, int height)
 {
-    // The difference between the window and its GL area is decorations, menu and status bar;
-    // they do not change with the window's size, so one correction step is exact.
+    // The GL area's share of the window is known only once the layout has run (docks, menu and
+    // status bar settle after show()); correct until it matches, a few rounds at most.
     QWidget* gl = viewport();
-    const QSize extra = size() - gl->size();
-    resize(width + extra.width(), height + extra.height());
+    const QSize target(width, height);
+    for (int round = 0; round < 5 && gl->size() != target; ++round) {
+        const QSize extra = size() - gl->size();
+        resize(width + extra.width(), height + extra.height());
+        QApplication::processEvents();
+    }
 }
 
 void MainWindow::renderViewport() { viewer_->render(); }

@@ -1,24 +1,29 @@
 #pragma once
-// The main window: a SoQt examiner viewer as the central widget, a File menu and a status bar.
+// The main window: a SoQt examiner viewer in the centre, docks for modes, entities and the
+// inspector, File/Edit/Plane/Mode menus whose actions all carry an object name (`file.save`,
+// `mode.sketch`, ...: the names replays and --list-actions use), and a status bar that tells the
+// user what the current mode does with the mouse.
 #include "scene/scene_document.h"
 
-#include <QMainWindow>
 #include <QImage>
+#include <QMainWindow>
 
-#include <memory>
-#include <vector>
+#include <Inventor/SbBasic.h>
 
+class QAction;
+class QActionGroup;
+class QEvent;
 class SoQtExaminerViewer;
 class SoSeparator;
-class QWidget;
-
-namespace sculptline::manipulators {
-class ProjectionPlaneManipulator;
-}
 
 namespace sculptline::ui {
 
-/// Owns the scene graph it shows and the plane manipulators inside it.
+class EntityListDock;
+class InspectorDock;
+class SketchDocument;
+
+enum class Mode { View, Sketch, Select };
+
 /// @note SoQt::init() must have been called before construction.
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -27,32 +32,52 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Replaces the scene by the one of `doc` (planes become dragger-carried manipulators) and
-    /// frames it: a three-quarter view from the front right, above the ground, then viewAll.
-    void showDocument(const scene::SceneDocument& doc, const QString& title);
+    /// Replaces the document by `doc` and frames it (a three-quarter view from the front right).
+    void showDocument(const scene::SceneDocument& doc, const QString& path);
 
     /// Resizes the window so that the 3D viewport (the GL area) is width x height pixels.
     void setViewportSize(int width, int height);
-
-    /// Renders the viewport now. Under Xvfb no expose event may come to trigger the first frame
-    /// (../shared/NOTES.md), so the program asks for one once the window is shown.
+    /// Renders now (under Xvfb no expose may come to trigger the first frame, ../shared/NOTES.md).
     void renderViewport();
-
-    /// Renders the viewport now and returns its pixels. Reads the GL framebuffer: QWidget::grab()
-    /// returns black for a GL area (../shared/NOTES.md).
+    /// Renders and reads the GL framebuffer (QWidget::grab() is black for a GL area).
     QImage grabViewport();
 
     SoQtExaminerViewer* viewer() const { return viewer_; }
     QWidget* viewport() const;
-    SoSeparator* sceneRoot() const { return root_; }
+    SoSeparator* sceneRoot() const;
+    SketchDocument& document() { return *document_; }
+    /// Every named action, sorted by name.
+    QList<QAction*> namedActions() const;
+    QAction* action(const QString& name) const;
+    Mode mode() const { return mode_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    void createMenus();
-    void clearScene();
+    void createActions();
+    void createDocks();
+    void setMode(Mode mode);
+    void updateStatus();
+    void updateTitle();
+    void frameScene();
+    bool maybeSave();
+    bool saveTo(const QString& path);
+    void newDocument();
+    void openDocument();
+    bool saveDocument();
+    bool saveDocumentAs();
+    void exportDocument();
+    void addPlaneFacingViewer();
+    static SbBool viewerEvent(void* self, QEvent* event);
+    bool pickAt(const QPoint& position);
 
     SoQtExaminerViewer* viewer_ = nullptr;
-    SoSeparator* root_ = nullptr;  ///< ref()ed while shown
-    std::vector<std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
+    SketchDocument* document_ = nullptr;
+    EntityListDock* entities_ = nullptr;
+    InspectorDock* inspector_ = nullptr;
+    QActionGroup* modes_ = nullptr;
+    Mode mode_ = Mode::View;
 };
 
 }  // namespace sculptline::ui

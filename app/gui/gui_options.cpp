@@ -39,14 +39,11 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--size", size, "Size of the 3D viewport in pixels, WxH");
     cli.add_option("--screenshot", options.screenshot, "Write the rendered viewport to this PNG file");
     cli.add_flag("--quit", options.quit, "Quit after the other flags have acted");
-    // Accepted by the interface of later issues; refused here rather than misread as a document.
-    std::string replay, save, exportIv, stats;
-    bool listActions = false;
-    cli.add_option("--replay", replay, "Replay a recorded session (not implemented yet)");
-    cli.add_option("--save", save, "Save the document (not implemented yet)");
-    cli.add_option("--export-iv", exportIv, "Export the scene as Open Inventor (not implemented yet)");
-    cli.add_option("--stats", stats, "Write replay latency statistics (not implemented yet)");
-    cli.add_flag("--list-actions", listActions, "List the action names (not implemented yet)");
+    cli.add_option("--replay", options.replay, "Play a recorded session (JSON) through the viewer");
+    cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
+    cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
+    cli.add_option("--stats", options.stats, "Write the replay's update latencies (JSON: count, p50, p99, max)");
+    cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
 
     ParseResult result;
     try {
@@ -59,13 +56,6 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
         result.exitStatus = 2;
         return result;
     }
-    for (const char* flag : {"--replay", "--save", "--export-iv", "--stats", "--list-actions"}) {
-        if (cli.count(flag) > 0) {
-            std::cerr << "sculptline: " << flag << " is not implemented yet\n";
-            result.exitStatus = 2;
-            return result;
-        }
-    }
     if (!size.empty()) {
         if (const std::string error = parseSize(size, options.width, options.height); !error.empty()) {
             std::cerr << "sculptline: " << error << "\n";
@@ -73,6 +63,7 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
             return result;
         }
     }
+    options.documentGiven = !options.document.empty();
     if (options.document.empty()) options.document = defaultDocumentPath();
     result.options = options;
     return result;

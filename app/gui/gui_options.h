@@ -12,6 +12,12 @@ struct GuiOptions {
     int height = 0;
     std::string screenshot;  ///< PNG of the viewport, written once the scene is shown and rendered
     bool quit = false;  ///< leave after the other flags have acted
+    std::string replay;  ///< session JSON to play through the viewer's Qt event path
+    std::string save;  ///< document JSON written after the replay
+    std::string exportIv;  ///< Open Inventor file written after the replay
+    std::string stats;  ///< latency statistics of the replay (JSON)
+    bool listActions = false;  ///< print every action name and leave
+    bool documentGiven = false;  ///< DOCUMENT was on the command line (else the default scene)
 };
 
 /// The outcome of parsing: options to run with, or an exit status (0 after --help, 2 after an
@@ -21,8 +27,7 @@ struct ParseResult {
     int exitStatus = 0;
 };
 
-/// Parses argv with CLI11. Flags of later issues (--replay, --save, --export-iv, --stats,
-/// --list-actions) are recognised and refused with "not implemented yet" (status 2).
+/// Parses argv with CLI11; status 2 and a message for a bad flag or value.
 ParseResult parseGuiOptions(int argc, const char* const* argv);
 
 /// The default document: $SCULPTLINE_DATA_DIR/default_scene.json when that variable is set, else the

@@ -1,20 +1,27 @@
-// sculptline: the GUI. Flags act in the order of ../shared/interfaces.md: open the document,
-// screenshot, quit. Everything that can fail on input (arguments, the document) is checked before
-// Qt starts, so errors exit with status 2 and a message even without a display.
+// sculptline: the GUI. Flags act in the order of ../shared/interfaces.md: open the document, replay,
+// save/export, screenshot, stats, quit. Everything that can fail on input (arguments, the document,
+// the session) is checked before Qt starts, so errors exit with status 2 and a message even without
+// a display.
 #include "app/gui/gui_options.h"
 #include "scene/scene_document.h"
 #include "ui/main_window.h"
+#include "ui/replay_session.h"
+#include "ui/replayer.h"
+#include "ui/sketch_document.h"
 
 #include <Inventor/Qt/SoQt.h>
 
+#include <QAction>
 #include <QApplication>
-#include <QFileInfo>
 #include <QElapsedTimer>
 #include <QTimer>
 #include <QWindow>
 
 #include <cstdlib>
 #include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 namespace {
@@ -22,17 +29,6 @@ namespace {
 /// How often, and for how long at most, to wait for the window to be exposed before rendering.
 constexpr int kExposePollMs = 20;
 constexpr qint64 kExposeDeadlineMs = 10000;
-
-/// Writes the viewport to `path`; false (with a message) when the image cannot be written.
-bool writeScreenshot(sculptline::ui::MainWindow& window, const std::string& path)
-{
-    const QImage image = window.grabViewport();
-    if (image.isNull() || !image.save(QString::fromStdString(path), "PNG")) {
-        std::cerr << "sculptline: cannot write screenshot " << path << "\n";
-        return false;
-    }
-    return true;
-}
 
 /// Qt aborts (SIGABRT) when its default X11 platform finds no display; say why and exit instead.
 bool haveDisplay()
@@ -52,6 +48,45 @@ void onSoQtFatalError(const SbString message, SoQt::FatalErrors, void*)
     std::exit(1);
 }
 
+/// The flags that act after the replay; returns the exit status (0, or 1 when a file could not
+/// be written).
+int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions& options, const sculptline::ui::Replayer* replayer)
+{
+    using sculptline::ui::SketchDocument;
+    int status = 0;
+    SketchDocument& doc = window.document();
+    auto attempt = [&status](const std::string& what, auto&& action) {
+        try {
+            action();
+        } catch (const std::exception& e) {
+            std::cerr << "sculptline: " << what << ": " << e.what() << "\n";
+            status = 1;
+        }
+    };
+    if (!options.save.empty()) attempt("--save", [&]() { doc.save(QString::fromStdString(options.save)); });
+    if (!options.exportIv.empty()) attempt("--export-iv", [&]() { doc.exportIv(QString::fromStdString(options.exportIv)); });
+    if (!options.screenshot.empty()) {
+        const QImage image = window.grabViewport();
+        if (image.isNull() || !image.save(QString::fromStdString(options.screenshot), "PNG")) {
+            std::cerr << "sculptline: cannot write screenshot " << options.screenshot << "\n";
+            status = 1;
+        }
+    }
+    if (!options.stats.empty()) {
+        sculptline::ui::LatencyStats empty;
+        const sculptline::ui::LatencyStats& stats = replayer ? replayer->stats() : empty;
+        const nlohmann::json extra = {
+            {"definition", "event: ms from dispatching a replayed input event until the model update it caused "
+                           "has run and the viewport has been rendered; model_update: ms per coalesced model update"},
+            {"model_updates", doc.scheduler().updates()}};
+        if (!stats.write(options.stats, extra)) {
+            std::cerr << "sculptline: cannot write statistics " << options.stats << "\n";
+            status = 1;
+        }
+    }
+    return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -62,8 +97,10 @@ int main(int argc, char** argv)
     const app::GuiOptions& options = *parsed.options;
 
     scene::SceneDocument document;
+    std::optional<ui::ReplaySession> session;
     try {
         document = scene::loadDocument(options.document);
+        if (!options.replay.empty()) session = ui::loadReplaySession(options.replay);
     } catch (const std::exception& e) {
         std::cerr << "sculptline: " << e.what() << "\n";
         return 2;
@@ -82,11 +119,33 @@ int main(int argc, char** argv)
     SoQt::setFatalErrorHandler(&onSoQtFatalError, nullptr);
 
     ui::MainWindow window;
-    window.showDocument(document, QFileInfo(QString::fromStdString(options.document)).fileName());
+    if (options.listActions) {
+        for (QAction* action : window.namedActions()) {
+            std::cout << action->objectName().toStdString();
+            if (!action->shortcut().isEmpty()) std::cout << "\t" << action->shortcut().toString().toStdString();
+            std::cout << "\t" << action->text().remove('&').toStdString() << "\n";
+        }
+        return 0;
+    }
+    // The default scene opens untitled, so that File > Save asks where instead of overwriting it.
+    window.showDocument(document, options.documentGiven ? QString::fromStdString(options.document) : QString());
+    std::unique_ptr<ui::Replayer> replayer;
+    if (session) {
+        replayer = std::make_unique<ui::Replayer>(window, *session);
+        if (const QString error = replayer->check(); !error.isEmpty()) {
+            std::cerr << "sculptline: " << options.replay << ": " << error.toStdString() << "\n";
+            return 2;
+        }
+    }
     window.show();
-    if (options.width > 0) window.setViewportSize(options.width, options.height);
+    const int width = options.width > 0 ? options.width : session ? session->width : 0;
+    const int height = options.width > 0 ? options.height : session ? session->height : 0;
 
     int status = 0;
+    auto afterReplay = [&]() {
+        status = finish(window, options, replayer.get());
+        if (options.quit) QApplication::exit(status);
+    };
     // Act once the window is exposed (mapped, with a drawable for the GL context): rendering earlier
     // draws into nothing and the grab reads black. Under Xvfb no expose-driven paint may follow
     // either, hence the explicit render (../shared/NOTES.md). Polling, because Qt has no signal for
@@ -100,13 +159,10 @@ int main(int argc, char** argv)
         if (!exposed && waited.elapsed() < kExposeDeadlineMs) return;
         poll.stop();
         if (!exposed) std::cerr << "sculptline: the window was never exposed; rendering anyway\n";
+        if (width > 0) window.setViewportSize(width, height);
         window.renderViewport();
-        if (!options.screenshot.empty() && !writeScreenshot(window, options.screenshot)) {
-            status = 1;
-            QApplication::exit(status);
-            return;
-        }
-        if (options.quit) QApplication::exit(status);
+        if (replayer) replayer->play(afterReplay);
+        else afterReplay();
     });
     poll.start(kExposePollMs);
     const int loopStatus = QApplication::exec();

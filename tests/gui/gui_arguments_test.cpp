@@ -42,7 +42,7 @@ TEST(GuiArguments, HelpListsTheFlags)
 {
     const ProgramRun run = runSculptline("--help");
     EXPECT_EQ(run.status, 0);
-    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT"}) {
+    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions"}) {
         EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
     }
 }
@@ -58,13 +58,26 @@ TEST(GuiArguments, BadSizesAreRefused)
 
 TEST(GuiArguments, UnknownFlagsAreRefused) { expectError("--no-such-flag", "no-such-flag"); }
 
-TEST(GuiArguments, FlagsOfLaterIssuesSayNotImplemented)
+TEST(GuiArguments, BadSessionsAreRefusedBeforeAnyWindow)
 {
-    expectError("--replay session.json", "--replay is not implemented yet");
-    expectError("--save out.json", "--save is not implemented yet");
-    expectError("--export-iv out.iv", "--export-iv is not implemented yet");
-    expectError("--stats stats.json", "--stats is not implemented yet");
-    expectError("--list-actions", "--list-actions is not implemented yet");
+    expectError("--replay /nonexistent/session.json", "/nonexistent/session.json: cannot open file");
+    const std::string dir = testing::TempDir();
+    const std::pair<const char*, const char*> cases[] = {
+        {R"({"events": [{"type": "jump"}]})", "events[0].type: must be press, move, release, key, action or wait"},
+        {R"({"events": [{"type": "press", "x": 10}]})", "events[0]"},
+        {R"({"events": [{"type": "press", "x": 1, "y": 2, "button": "thumb"}]})", "events[0].button"},
+        {R"({"events": [{"type": "key", "key": "Ctrl+Nonsense"}]})", "events[0].key"},
+        {R"({"events": [{"type": "wait", "ms": -5}]})", "events[0].ms"},
+        {R"({"size": [1, 2], "events": []})", "size[0]"},
+        {R"({"events": )", "malformed JSON"},
+        {R"([1, 2])", "session: must be a JSON object"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const std::string path = dir + "sculptline_bad_session.json";
+        std::ofstream(path) << text;
+        expectError("--replay '" + path + "'", expected);
+        std::remove(path.c_str());
+    }
 }
 
 TEST(GuiArguments, UnreadableDocumentsAreRefused)

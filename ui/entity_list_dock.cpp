@@ -1,0 +1,53 @@
+#include "ui/entity_list_dock.h"
+
+#include <QListWidget>
+
+namespace sculptline::ui {
+
+EntityListDock::EntityListDock(QWidget* parent) : QDockWidget(tr("Entities"), parent)
+{
+    setObjectName(QStringLiteral("dock.entities"));
+    list_ = new QListWidget(this);
+    setWidget(list_);
+    connect(list_, &QListWidget::currentItemChanged, this, [this](QListWidgetItem* item) {
+        if (updating_ || !item) return;
+        Q_EMIT entityPicked(item->data(Qt::UserRole).toUInt());
+    });
+}
+
+void EntityListDock::refresh(const scene::Model& model, scene::EntityId selection)
+{
+    updating_ = true;
+    list_->clear();
+    auto add = [this](const scene::Entity& e, const QString& text) {
+        auto* item = new QListWidgetItem(text, list_);
+        item->setData(Qt::UserRole, e.id);
+    };
+    // Planes with their curves under them, then curves on no plane, then surfaces.
+    for (const auto& [id, e] : model.entities()) {
+        if (e.kind != scene::EntityKind::Plane) continue;
+        add(e, tr("Plane %1").arg(id));
+        for (scene::EntityId c : model.dependents(id)) {
+            const scene::Entity* curve = model.find(c);
+            add(*curve, tr("    Curve %1 (degree %2, %3 points)").arg(c).arg(curve->local->degree()).arg(curve->local->pointCount()));
+        }
+    }
+    for (const auto& [id, e] : model.entities()) {
+        if (e.kind == scene::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
+        if (e.kind == scene::EntityKind::Surface) add(e, tr("Surface %1").arg(id));
+    }
+    updating_ = false;
+    setSelection(selection);
+}
+
+void EntityListDock::setSelection(scene::EntityId id)
+{
+    updating_ = true;
+    list_->setCurrentItem(nullptr);
+    for (int row = 0; row < list_->count(); ++row) {
+        if (list_->item(row)->data(Qt::UserRole).toUInt() == id) list_->setCurrentRow(row);
+    }
+    updating_ = false;
+}
+
+}  // namespace sculptline::ui

@@ -1,0 +1,63 @@
+#include "ui/inspector_dock.h"
+
+#include <QPlainTextEdit>
+#include <QTextStream>
+
+namespace sculptline::ui {
+namespace {
+
+QString point(const Eigen::Vector3d& p) { return QStringLiteral("(%1, %2, %3)").arg(p.x(), 0, 'f', 2).arg(p.y(), 0, 'f', 2).arg(p.z(), 0, 'f', 2); }
+
+QString knots(const std::vector<double>& k)
+{
+    QStringList parts;
+    for (double t : k) parts << QString::number(t, 'g', 6);
+    return parts.join(QStringLiteral(", "));
+}
+
+}  // namespace
+
+InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), parent)
+{
+    setObjectName(QStringLiteral("dock.inspector"));
+    text_ = new QPlainTextEdit(this);
+    text_->setReadOnly(true);
+    setWidget(text_);
+}
+
+QString InspectorDock::text() const { return text_->toPlainText(); }
+
+void InspectorDock::show(const scene::Model& model, scene::EntityId id)
+{
+    const scene::Entity* e = model.find(id);
+    if (!e) {
+        text_->setPlainText(tr("Nothing selected.\nPick an entity in the list, or click a curve in select mode."));
+        return;
+    }
+    QString out;
+    QTextStream s(&out);
+    s << tr("Type: %1 %2").arg(scene::kindName(e->kind)).arg(id) << "\n";
+    if (e->kind == scene::EntityKind::Plane) {
+        s << tr("Origin: %1").arg(point(e->frame.origin)) << "\n";
+        s << tr("Normal: %1").arg(point(e->frame.normal())) << "\n";
+        s << tr("X axis: %1").arg(point(e->frame.xAxis())) << "\n";
+        s << tr("Size: %1 mm").arg(e->frame.size) << "\n";
+        s << tr("Curves on it: %1").arg(model.dependents(id).size()) << "\n";
+    } else if (e->kind == scene::EntityKind::Curve) {
+        const solvers::Curve3d& c = *e->local;
+        s << (e->plane() != 0 ? tr("On plane %1 (control points in its frame)").arg(e->plane()) : tr("In space")) << "\n";
+        s << tr("Degree: %1%2%3").arg(c.degree()).arg(c.isRational() ? tr(", rational") : QString()).arg(c.isClosed() ? tr(", closed") : QString()) << "\n";
+        s << tr("Knots (%1): %2").arg(c.knots().size()).arg(knots(c.knots())) << "\n";
+        s << tr("Control points (%1):").arg(c.pointCount()) << "\n";
+        for (int i = 0; i < c.pointCount(); ++i) s << "  " << i << ": " << point(c.points()[i]) << "\n";
+    } else {
+        const solvers::Surface3d& f = *e->surface;
+        s << tr("Degree: %1 x %2").arg(f.degreeU()).arg(f.degreeV()) << "\n";
+        s << tr("Control points: %1 x %2").arg(f.countU()).arg(f.countV()) << "\n";
+        s << tr("Knots U: %1").arg(knots(f.knotsU())) << "\n";
+        s << tr("Knots V: %1").arg(knots(f.knotsV())) << "\n";
+    }
+    text_->setPlainText(out);
+}
+
+}  // namespace sculptline::ui

@@ -1,0 +1,39 @@
+#pragma once
+// A recorded session (../shared/interfaces.md, "sculptline (GUI) automation flags"): viewport size
+// and a list of press/move/release/key/action/wait events. Parsed and checked before Qt starts, so a
+// bad session is a message and exit status 2, never a crash.
+#include <QKeySequence>
+#include <QString>
+#include <Qt>
+
+#include <string>
+#include <vector>
+
+namespace sculptline::ui {
+
+struct ReplayEvent {
+    enum class Type { Press, Move, Release, Key, Action, Wait };
+    Type type = Type::Wait;
+    int x = 0, y = 0;  ///< viewport pixels, origin top-left
+    Qt::MouseButton button = Qt::LeftButton;
+    Qt::KeyboardModifiers modifiers;
+    double t = -1.0;  ///< ms since the replay started; < 0 = as soon as the previous event is done
+    QKeySequence key;
+    QString name;  ///< action name
+    int waitMs = 0;
+};
+
+struct ReplaySession {
+    int width = 0, height = 0;  ///< viewport size; 0 = keep
+    std::vector<ReplayEvent> events;
+};
+
+/// Most events a session may hold: a minute of 1 kHz pointer input, far beyond any recording.
+constexpr size_t kMaxReplayEvents = 200000;
+/// Longest wait or timestamp accepted, ms: a session is a test, not a screensaver.
+constexpr double kMaxReplayMs = 600000.0;
+
+/// @throws solvers::io::InputError naming the path and field ("s.json: events[3].button: ...").
+ReplaySession loadReplaySession(const std::string& path);
+
+}  // namespace sculptline::ui

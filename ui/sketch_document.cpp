@@ -1,0 +1,209 @@
+#include "ui/sketch_document.h"
+
+#include "manipulators/projection_plane_manipulator.h"
+#include "manipulators/stroke_input.h"
+#include "scene/ground_grid.h"
+#include "scene/iv_export.h"
+#include "scene/model/model_document.h"
+#include "solvers/stroke/stroke_fitter.h"
+#include "ui/undo_commands.h"
+
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+namespace sculptline::ui {
+
+SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
+{
+    root_ = new SoSeparator;
+    root_->ref();
+    root_->setName("SculptlineScene");
+    strokeInput_ = std::make_unique<manipulators::StrokeInput>();
+    // First, so that a press on empty space starts a stroke before anything else sees it.
+    root_->addChild(strokeInput_->root());
+    strokeInput_->setActivePlane([this]() -> std::optional<scene::PlaneFrame> {
+        const scene::Entity* plane = model_.find(activePlane());
+        if (!plane) return std::nullopt;
+        return plane->frame;
+    });
+    strokeInput_->setFinishedCallback([this](const manipulators::FinishedStroke& s) { addStroke(s); });
+    gridNode_ = scene::makeGroundGrid(grid_);
+    root_->addChild(gridNode_);
+    view_ = std::make_unique<scene::ModelView>(model_);
+    root_->addChild(view_->root());
+    // Last: the planes are translucent and drawn over what lies behind them.
+    planeGroup_ = new SoGroup;
+    planeGroup_->setName("Planes");
+    root_->addChild(planeGroup_);
+    scheduler_ = std::make_unique<scene::UpdateScheduler>(model_);
+    model_.addObserver(this);
+}
+
+SketchDocument::~SketchDocument()
+{
+    undo_.clear();
+    model_.removeObserver(this);
+    planes_.clear();
+    scheduler_.reset();
+    view_.reset();
+    root_->unref();
+}
+
+void SketchDocument::setCamera(std::function<SoCamera*()> camera) { strokeInput_->setCamera(std::move(camera)); }
+
+void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
+{
+    undo_.clear();
+    selection_ = 0;
+    lastPlane_ = 0;
+    grid_ = doc.grid;
+    SoSeparator* grid = scene::makeGroundGrid(grid_);
+    root_->replaceChild(gridNode_, grid);
+    gridNode_ = grid;
+    scene::populateModel(doc, model_);
+    path_ = path;
+    Q_EMIT entitiesChanged();
+    Q_EMIT selectionChanged(0);
+}
+
+void SketchDocument::save(const QString& path)
+{
+    scheduler_->flush();
+    scene::saveModel(model_, grid_, path.toStdString());
+    path_ = path;
+    undo_.setClean();
+}
+
+void SketchDocument::exportIv(const QString& path)
+{
+    scheduler_->flush();
+    scene::exportIv(model_, grid_, path.toStdString());
+}
+
+scene::EntityId SketchDocument::activePlane() const
+{
+    if (const scene::Entity* e = model_.find(selection_)) {
+        if (e->kind == scene::EntityKind::Plane) return e->id;
+        if (e->plane() != 0) return e->plane();
+    }
+    if (model_.find(lastPlane_)) return lastPlane_;
+    for (const auto& [id, e] : model_.entities()) {
+        if (e.kind == scene::EntityKind::Plane) return id;
+    }
+    return 0;
+}
+
+void SketchDocument::select(scene::EntityId id)
+{
+    if (id != 0 && !model_.find(id)) id = 0;
+    const scene::Entity* e = model_.find(id);
+    if (e && e->kind == scene::EntityKind::Plane) lastPlane_ = id;
+    if (e && e->plane() != 0) lastPlane_ = e->plane();
+    if (id == selection_) return;
+    selection_ = id;
+    view_->setHighlighted(e && e->kind == scene::EntityKind::Curve ? id : 0);
+    Q_EMIT selectionChanged(id);
+}
+
+void SketchDocument::addPlane(const scene::PlaneFrame& frame)
+{
+    scene::Entity plane;
+    plane.kind = scene::EntityKind::Plane;
+    plane.frame = frame;
+    undo_.push(new AddEntitiesCommand(*this, {plane}, tr("Add plane")));
+}
+
+void SketchDocument::deleteSelection()
+{
+    if (selection_ == 0) return;
+    undo_.push(new DeleteEntityCommand(*this, selection_));
+}
+
+void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
+{
+    const scene::EntityId plane = activePlane();
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.points.size());
+    if (plane == 0) return;
+    solvers::stroke::Stroke input;
+    input.points = stroke.points;
+    input.times = stroke.times;
+    input.dimension = 2;
+    try {
+        // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and
+        // least squares, in the plane's local frame and model units.
+        const solvers::stroke::FitResult fit = solvers::stroke::fitStroke(input);
+        scene::Entity curve;
+        curve.kind = scene::EntityKind::Curve;
+        curve.inputs = {plane};
+        curve.local = fit.curve;
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = fit.curve.pointCount();
+        lastStroke_.maxError = fit.maxError;
+        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm")
+                                  .arg(lastStroke_.samples)
+                                  .arg(fit.curve.degree())
+                                  .arg(lastStroke_.controlPoints)
+                                  .arg(fit.maxError, 0, 'f', 3);
+        undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Sketch curve on plane %1").arg(plane)));
+    } catch (const std::exception& e) {
+        // A click or a stroke too short to have a shape: nothing to add, say why.
+        lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::entityAdded(const scene::Entity& e)
+{
+    if (e.kind == scene::EntityKind::Plane) {
+        auto manipulator = std::make_unique<manipulators::ProjectionPlaneManipulator>(e.frame);
+        manipulators::ProjectionPlaneManipulator* m = manipulator.get();
+        const scene::EntityId id = e.id;
+        m->root()->setName(SbName(("Plane" + std::to_string(id)).c_str()));
+        // Each dragger event only records the frame; the scheduler solves once per frame.
+        m->setMovedCallback([this, m, id]() { model_.setPlaneFrame(id, m->frame()); });
+        m->setDragCallbacks([this, id]() { dragStarted(id); }, [this, id]() { dragFinished(id); });
+        planeGroup_->addChild(m->root());
+        planes_[id] = std::move(manipulator);
+        lastPlane_ = id;
+    }
+    Q_EMIT entitiesChanged();
+}
+
+void SketchDocument::entityRemoved(const scene::Entity& e)
+{
+    if (const auto it = planes_.find(e.id); it != planes_.end()) {
+        planeGroup_->removeChild(it->second->root());
+        planes_.erase(it);
+    }
+    if (selection_ == e.id) selection_ = 0;
+    Q_EMIT entitiesChanged();
+}
+
+void SketchDocument::entityUpdated(const scene::Entity& e)
+{
+    // During a drag the manipulator is the source of the frame; any other change (undo, redo)
+    // puts the manipulator where the model says.
+    if (e.kind != scene::EntityKind::Plane || e.id == dragging_) return;
+    const auto it = planes_.find(e.id);
+    if (it != planes_.end() && it->second->frame() != e.frame) it->second->setFrame(e.frame);
+}
+
+void SketchDocument::dragStarted(scene::EntityId plane)
+{
+    scheduler_->flush();
+    dragging_ = plane;
+    dragStart_ = model_.find(plane)->frame;
+    select(plane);
+}
+
+void SketchDocument::dragFinished(scene::EntityId plane)
+{
+    scheduler_->flush();
+    dragging_ = 0;
+    const scene::Entity* e = model_.find(plane);
+    if (e && e->frame != dragStart_) undo_.push(new MovePlaneCommand(*this, plane, dragStart_, e->frame));
+    Q_EMIT entitiesChanged();
+}
+
+}  // namespace sculptline::ui

@@ -1,0 +1,110 @@
+#pragma once
+// The open document: the model, its Coin view, one dragger-carried manipulator per plane, the stroke
+// input, the selection and the undo stack. Every edit goes through a QUndoCommand
+// (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
+#include "scene/model/model.h"
+#include "scene/model/model_view.h"
+#include "scene/model/update_scheduler.h"
+#include "scene/scene_document.h"
+
+#include <QObject>
+#include <QString>
+#include <QUndoStack>
+
+#include <map>
+#include <memory>
+
+class SoCamera;
+class SoGroup;
+class SoSeparator;
+
+namespace sculptline::manipulators {
+class ProjectionPlaneManipulator;
+class StrokeInput;
+struct FinishedStroke;
+}  // namespace sculptline::manipulators
+
+namespace sculptline::ui {
+
+/// What the last finished stroke became (status bar, inspector).
+struct StrokeReport {
+    int samples = 0;
+    int controlPoints = 0;
+    double maxError = 0.0;  ///< model units
+    bool fitted = false;  ///< false: the stroke was rejected (too short, degenerate)
+    QString message;
+};
+
+class SketchDocument : public QObject, public scene::ModelObserver {
+    Q_OBJECT
+
+public:
+    explicit SketchDocument(QObject* parent = nullptr);
+    ~SketchDocument() override;
+
+    /// Replaces everything by `doc` (the undo history is cleared); `path` empty = untitled.
+    void load(const scene::SceneDocument& doc, const QString& path);
+    /// Writes the document; the undo stack becomes clean. @throws solvers::io::InputError.
+    void save(const QString& path);
+    void exportIv(const QString& path);
+
+    scene::Model& model() { return model_; }
+    const scene::Model& model() const { return model_; }
+    scene::UpdateScheduler& scheduler() { return *scheduler_; }
+    scene::ModelView& view() { return *view_; }
+    QUndoStack* undoStack() { return &undo_; }
+    manipulators::StrokeInput& strokeInput() { return *strokeInput_; }
+    SoSeparator* root() const { return root_; }
+    const QString& path() const { return path_; }
+    const scene::GridSpec& grid() const { return grid_; }
+    const StrokeReport& lastStroke() const { return lastStroke_; }
+    /// True between a press on a dragger and its release.
+    bool dragging() const { return dragging_ != 0; }
+
+    /// The plane strokes go onto: the selected plane, the selected curve's plane, else the plane
+    /// added or used last; 0 when there is none.
+    scene::EntityId activePlane() const;
+    scene::EntityId selection() const { return selection_; }
+    void select(scene::EntityId id);
+
+    /// Undoable edits.
+    void addPlane(const scene::PlaneFrame& frame);
+    void deleteSelection();
+    void addStroke(const manipulators::FinishedStroke& stroke);
+
+    /// Where the viewer's camera is (for strokes, and for new planes facing the viewer).
+    void setCamera(std::function<SoCamera*()> camera);
+
+    void entityAdded(const scene::Entity& entity) override;
+    void entityRemoved(const scene::Entity& entity) override;
+    void entityUpdated(const scene::Entity& entity) override;
+
+Q_SIGNALS:
+    /// The set of entities or their data changed (lists, inspector).
+    void entitiesChanged();
+    void selectionChanged(scene::EntityId id);
+    void strokeFinished();
+
+private:
+    void dragStarted(scene::EntityId plane);
+    void dragFinished(scene::EntityId plane);
+
+    scene::Model model_;
+    scene::GridSpec grid_;
+    std::unique_ptr<scene::ModelView> view_;
+    std::unique_ptr<scene::UpdateScheduler> scheduler_;
+    std::unique_ptr<manipulators::StrokeInput> strokeInput_;
+    std::map<scene::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
+    SoSeparator* root_ = nullptr;  ///< ref()ed
+    SoSeparator* gridNode_ = nullptr;
+    SoGroup* planeGroup_ = nullptr;
+    QUndoStack undo_;
+    QString path_;
+    scene::EntityId selection_ = 0;
+    scene::EntityId lastPlane_ = 0;
+    scene::EntityId dragging_ = 0;
+    scene::PlaneFrame dragStart_;
+    StrokeReport lastStroke_;
+};
+
+}  // namespace sculptline::ui

@@ -1,0 +1,82 @@
+#include "ui/undo_commands.h"
+
+#include "ui/sketch_document.h"
+
+namespace sculptline::ui {
+
+scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
+{
+    switch (e.kind) {
+    case scene::EntityKind::Plane: return model.addPlane(e.frame, e.id);
+    case scene::EntityKind::Curve: return model.addCurve(e.plane(), *e.local, e.id);
+    case scene::EntityKind::Surface: return model.addSurface(*e.surface, e.id);
+    }
+    return 0;
+}
+
+AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<scene::Entity> entities, const QString& text)
+    : doc_(doc), entities_(std::move(entities))
+{
+    setText(text);
+}
+
+void AddEntitiesCommand::redo()
+{
+    for (scene::Entity& e : entities_) {
+        // First run: the model assigns the id (0 asks for a fresh one); later runs reuse it.
+        e.id = restoreEntity(doc_.model(), e);
+    }
+    doc_.scheduler().flush();
+    if (!entities_.empty()) doc_.select(entities_.back().id);
+}
+
+void AddEntitiesCommand::undo()
+{
+    for (auto it = entities_.rbegin(); it != entities_.rend(); ++it) doc_.model().remove(it->id);
+    doc_.select(0);
+}
+
+DeleteEntityCommand::DeleteEntityCommand(SketchDocument& doc, scene::EntityId id) : doc_(doc), id_(id)
+{
+    const scene::Entity* e = doc.model().find(id);
+    setText(QStringLiteral("Delete %1 %2").arg(e ? scene::kindName(e->kind) : "entity").arg(id));
+}
+
+void DeleteEntityCommand::redo()
+{
+    doc_.select(0);
+    removed_ = doc_.model().remove(id_);
+}
+
+void DeleteEntityCommand::undo()
+{
+    for (const scene::Entity& e : removed_) restoreEntity(doc_.model(), e);
+    doc_.scheduler().flush();
+    doc_.select(id_);
+}
+
+MovePlaneCommand::MovePlaneCommand(SketchDocument& doc, scene::EntityId plane, const scene::PlaneFrame& before,
+                                   const scene::PlaneFrame& after)
+    : doc_(doc), plane_(plane), before_(before), after_(after)
+{
+    setText(QStringLiteral("Move plane %1").arg(plane));
+}
+
+void MovePlaneCommand::redo()
+{
+    if (applied_) {
+        applied_ = false;
+        return;
+    }
+    apply(after_);
+}
+
+void MovePlaneCommand::undo() { apply(before_); }
+
+void MovePlaneCommand::apply(const scene::PlaneFrame& frame)
+{
+    doc_.model().setPlaneFrame(plane_, frame);
+    doc_.scheduler().flush();
+}
+
+}  // namespace sculptline::ui

@@ -1,0 +1,62 @@
+#pragma once
+// The undoable edits. Each command changes only the model (and the selection); the Coin view, the
+// manipulators and the docks follow the model as observers, so undo and redo redraw exactly what
+// the original edit did.
+#include "scene/model/model.h"
+
+#include <QUndoCommand>
+
+#include <vector>
+
+namespace sculptline::ui {
+
+class SketchDocument;
+
+/// Adds entities (a plane; a curve from a stroke). Redo re-adds them under their first ids, so
+/// later commands that name them stay valid.
+class AddEntitiesCommand : public QUndoCommand {
+public:
+    AddEntitiesCommand(SketchDocument& doc, std::vector<scene::Entity> entities, const QString& text);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    std::vector<scene::Entity> entities_;  ///< in creation (dependency) order, ids assigned
+};
+
+/// Removes an entity and its dependents (a plane takes its curves along); undo restores them.
+class DeleteEntityCommand : public QUndoCommand {
+public:
+    DeleteEntityCommand(SketchDocument& doc, scene::EntityId id);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    scene::EntityId id_;
+    std::vector<scene::Entity> removed_;
+};
+
+/// One plane drag, from press to release. The drag has already moved the model when the command
+/// is pushed, so the first redo does nothing.
+class MovePlaneCommand : public QUndoCommand {
+public:
+    MovePlaneCommand(SketchDocument& doc, scene::EntityId plane, const scene::PlaneFrame& before,
+                     const scene::PlaneFrame& after);
+    void redo() override;
+    void undo() override;
+
+private:
+    void apply(const scene::PlaneFrame& frame);
+
+    SketchDocument& doc_;
+    scene::EntityId plane_;
+    scene::PlaneFrame before_, after_;
+    bool applied_ = true;
+};
+
+/// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.
+scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e);
+
+}  // namespace sculptline::ui
