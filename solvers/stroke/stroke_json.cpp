@@ -1,5 +1,6 @@
 #include "solvers/stroke/stroke_json.h"
 
+#include "solvers/bspline/geometry_error.h"
 #include "solvers/io/geometry_json.h"
 
 #include <nlohmann/json.hpp>
@@ -65,12 +66,79 @@ json toJson(const Stroke& s)
     return out;
 }
 
-json fitResultToJson(const FitResult& r, int dimension)
+namespace {
+
+json curveJson(const Curve3d& c, int dimension)
 {
-    json curve = io::toJson(r.curve);
+    json curve = io::toJson(c);
     if (dimension == 2) {
         for (auto& p : curve["points"]) p.erase(2);
     }
+    return curve;
+}
+
+}  // namespace
+
+json recognitionToJson(const Recognition& r, int dimension)
+{
+    json candidates = json::array();
+    for (const auto& c : r.candidates) candidates.push_back({{"kind", shapeName(c.kind)}, {"score", c.score}});
+    return {{"shape", shapeName(r.kind)}, {"candidates", candidates}, {"regularized", curveJson(r.regularized, dimension)}};
+}
+
+json toJson(const UserModel& m)
+{
+    json nodes = json::array();
+    auto link = [](int i) { return i == 0 ? json(nullptr) : json(i); };
+    for (const auto& n : m.nodes()) {
+        nodes.push_back({{"index", n.index}, {"name", n.name}, {"pre", link(n.preNode)}, {"curr", link(n.currNode)},
+                         {"constraint", n.constraint}});
+    }
+    return {{"user", m.user()}, {"nodes", nodes}};
+}
+
+UserModel userModelFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_object()) throw InputError(path + ": must be a JSON object");
+    UserModel m;
+    if (j.contains("user")) {
+        if (!j["user"].is_string()) throw InputError(path + ".user: must be a string");
+        m.setUser(j["user"].get<std::string>());
+    }
+    const json& nodes = io::member(j, "nodes", path);
+    if (!nodes.is_array()) throw InputError(path + ".nodes: must be an array");
+    std::vector<ChainNode> rows;
+    const int n = static_cast<int>(nodes.size());
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        const std::string p = at(path + ".nodes", i);
+        const json& o = nodes[i];
+        ChainNode c;
+        c.index = io::integerFromJson(io::member(o, "index", p), p + ".index", 1, n);
+        auto link = [&](const char* key) {
+            const json& v = io::member(o, key, p);
+            return v.is_null() ? 0 : io::integerFromJson(v, p + "." + key, 1, n);
+        };
+        c.preNode = link("pre");
+        c.currNode = link("curr");
+        const json& name = io::member(o, "name", p);
+        const json& con = io::member(o, "constraint", p);
+        if (!name.is_string()) throw InputError(p + ".name: must be a string");
+        if (!con.is_string()) throw InputError(p + ".constraint: must be a string");
+        c.name = name.get<std::string>();
+        c.constraint = con.get<std::string>();
+        rows.push_back(c);
+    }
+    try {
+        m.setNodes(std::move(rows));
+    } catch (const GeometryError& e) {
+        throw InputError(path + "." + e.what());
+    }
+    return m;
+}
+
+json fitResultToJson(const FitResult& r, int dimension)
+{
+    const json curve = curveJson(r.curve, dimension);
     return {{"curve", curve},         {"corners", r.corners},     {"samples", r.samples},
             {"max_error", r.maxError}, {"tolerance", r.tolerance}, {"closed", r.curve.isClosed()},
             {"converged", r.converged}, {"warnings", r.warnings}};
