@@ -1,0 +1,124 @@
+// Given JSON input, when sculptline-cli fit / recognize run as a process, then the output follows
+// ../shared/interfaces.md and invalid input exits with status 2 and one line naming the field.
+#include "solvers/stroke/stroke_json.h"
+#include "solvers/stroke/stroke_synthesis.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace sculptline::stroketest {
+namespace {
+
+using nlohmann::json;
+using namespace solvers::stroke;
+
+struct CliRun {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& path)
+{
+    std::ifstream f(path);
+    std::stringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+CliRun cli(const std::string& sub, const std::string& input)
+{
+    const std::string dir = ::testing::TempDir();
+    const std::string in = dir + "stroke_cli_in.json", out = dir + "stroke_cli_out.txt", err = dir + "stroke_cli_err.txt";
+    std::ofstream(in) << input;
+    const std::string cmd = std::string(SCULPTLINE_CLI) + " " + sub + " " + in + " > " + out + " 2> " + err;
+    const int raw = std::system(cmd.c_str());
+    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+}
+
+std::string strokeJson(const Shape& s)
+{
+    DrawOptions d;
+    d.noise = 0.25;
+    return toJson(draw(s, d)).dump();
+}
+
+void expectInvalid(const std::string& sub, const std::string& input, const std::string& field)
+{
+    const CliRun r = cli(sub, input);
+    EXPECT_EQ(r.status, 2) << input.substr(0, 80);
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_NE(r.err.find(field), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+TEST(StrokeCli, GivenStroke_WhenFit_ThenCurveCornersSamplesAndErrorWithinTolerance)
+{
+    const CliRun r = cli("fit", "{\"stroke\": " + strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 80, 0}}, false)) +
+                                 ", \"tolerance\": 0.8}");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json o = json::parse(r.out);
+    EXPECT_EQ(o["curve"]["degree"], 3);
+    EXPECT_EQ(o["corners"].size(), 1u);
+    EXPECT_GE(o["samples"].size(), 4u);
+    EXPECT_EQ(o["tolerance"], 0.8);
+    EXPECT_LE(o["max_error"].get<double>(), 0.8);
+    EXPECT_TRUE(o.contains("elapsed_ms"));
+    EXPECT_EQ(o["curve"]["points"][0].size(), 2u);  // a 2D stroke gives 2D points
+}
+
+TEST(StrokeCli, GivenInvalidStrokes_ThenExit2NamingTheField)
+{
+    expectInvalid("fit", "{\"stroke\": {\"points\": []}}", "stroke.points");
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1e999, 1]]}}", "stroke.points[1][0]");
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[2, 2], [2, 2], [2, 2]]}}", "stroke.points");
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1]], \"times\": [0]}}", "stroke.times");
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"tolerance\": -1}", "tolerance");
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1, 2]]}}", "stroke.points[1]");
+    expectInvalid("fit", "{\"points\": [[0, 0], [1, 1]]}", "stroke");
+    expectInvalid("recognize", "{\"strokes\": []}", "strokes");
+    expectInvalid("recognize", "{\"strokes\": [{\"points\": [[0, 0], [1, 0]]}, {\"points\": [[0, 0]]}]}", "strokes[1].points");
+    expectInvalid("recognize", "{\"stroke\": {\"points\": [[0, 0], [5, 1]]}, \"user_model\": {\"nodes\": [{\"index\": 1}]}}",
+                  "user_model.nodes[0]");
+}
+
+TEST(StrokeCli, GivenCircleStroke_WhenRecognized_ThenCircleRankedFirstAndExactRationalCurve)
+{
+    const CliRun r = cli("recognize", "{\"stroke\": " + strokeJson(circleShape({0, 0, 0}, 60)) + "}");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json o = json::parse(r.out);
+    EXPECT_EQ(o["shape"], "circle");
+    ASSERT_GE(o["candidates"].size(), 2u);
+    EXPECT_EQ(o["candidates"][0]["kind"], "circle");
+    EXPECT_GE(o["candidates"][0]["score"].get<double>(), o["candidates"][1]["score"].get<double>());
+    EXPECT_EQ(o["regularized"]["degree"], 2);
+    EXPECT_TRUE(o["regularized"].contains("weights"));
+}
+
+TEST(StrokeCli, GivenStrokeSequenceAndModelFile_ThenNewPairLearnedOnceAndSaved)
+{
+    const std::string path = ::testing::TempDir() + "stroke_cli_user.json";
+    std::remove(path.c_str());
+    const std::string input = "{\"strokes\": [" +
+                              strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)) + ", " +
+                              strokeJson(circleShape({50, 50, 0}, 20)) + "], \"user_model\": \"" + path + "\"}";
+
+    const CliRun first = cli("recognize", input);
+    const CliRun second = cli("recognize", input);
+
+    ASSERT_EQ(first.status, 0) << first.err;
+    const json a = json::parse(first.out), b = json::parse(second.out);
+    EXPECT_EQ(a["strokes"][1]["relations"], json::array({"inside"}));
+    EXPECT_TRUE(a["strokes"][1]["learned"].get<bool>());
+    EXPECT_FALSE(b["strokes"][1]["learned"].get<bool>());
+    EXPECT_EQ(a["strokes"][1]["composite_node"], b["strokes"][1]["composite_node"]);
+    const UserModel saved = userModelFromJson(json::parse(slurp(path)), "file");
+    EXPECT_EQ(saved.nodes().size(), UserModel::predefined().nodes().size() + 1);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest
