@@ -86,8 +86,24 @@ void CurveInterpolator::factor()
             throw GeometryError("params: not strictly increasing at " + std::to_string(k) +
                                 " (two coincident sections or samples)");
     const int n = static_cast<int>(params_.size());
-    Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
     double basis[kMaxDegree + 1];
+    if (n > kDenseInterpolationLimit) {
+        std::vector<Eigen::Triplet<double>> entries;
+        for (int k = 0; k < n; ++k) {
+            const int span = findSpan(degree_, knots_, params_[k]);
+            basisFunctions(span, params_[k], degree_, knots_, basis);
+            for (int i = 0; i <= degree_; ++i)
+                if (basis[i] != 0.0) entries.emplace_back(k, span - degree_ + i, basis[i]);
+        }
+        Eigen::SparseMatrix<double> N(n, n);
+        N.setFromTriplets(entries.begin(), entries.end());
+        sparse_ = std::make_shared<Eigen::SparseLU<Eigen::SparseMatrix<double>>>();
+        sparse_->compute(N);
+        if (sparse_->info() != Eigen::Success)
+            throw GeometryError("params: interpolation system is singular (sections or samples too close together)");
+        return;
+    }
+    Eigen::MatrixXd N = Eigen::MatrixXd::Zero(n, n);
     for (int k = 0; k < n; ++k) {
         const int span = findSpan(degree_, knots_, params_[k]);
         basisFunctions(span, params_[k], degree_, knots_, basis);
@@ -102,6 +118,10 @@ void CurveInterpolator::factor()
 
 ControlMatrix CurveInterpolator::solve(const ControlMatrix& data) const
 {
+    if (sparse_) {
+        const Eigen::MatrixXd x = sparse_->solve(Eigen::MatrixXd(data));
+        return x;
+    }
     const Eigen::MatrixXd x = lu_.solve(Eigen::MatrixXd(data));
     return x;
 }

@@ -5,6 +5,8 @@
 #include "solvers/bspline/basis.h"
 
 #include <Eigen/LU>
+#include <Eigen/SparseLU>
+#include <memory>
 #include <vector>
 
 namespace sculptline::solvers::surfaces {
@@ -22,7 +24,11 @@ KnotVector averagedKnots(const std::vector<double>& params, int degree);
 std::vector<double> grevilleAbscissae(int degree, const KnotVector& knots);
 
 /// Interpolation at fixed parameters: the collocation matrix N(k, i) = N_i(t_k) (A9.1) is factored
-/// once (partial-pivot LU; it is banded and totally positive, so pivoting is only a safeguard).
+/// once: dense partial-pivot LU up to kDenseInterpolationLimit unknowns (fastest for the sizes a
+/// drag re-solves), sparse LU above (the matrix is banded, degree + 1 entries per row, so memory
+/// and time stay linear for long inputs).
+constexpr int kDenseInterpolationLimit = 128;
+
 class CurveInterpolator {
 public:
     /// @param params strictly increasing, params.front() = 0, params.back() = 1.
@@ -46,6 +52,7 @@ private:
     int degree_;
     KnotVector knots_;
     Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+    std::shared_ptr<Eigen::SparseLU<Eigen::SparseMatrix<double>>> sparse_;
 };
 
 }  // namespace sculptline::solvers::surfaces

@@ -44,7 +44,7 @@ SweepResult sweep(const Curve3d& input, const Curve3d& inputPath, const SweepOpt
     for (double u : uSamples) profilePts.push_back(profile.evaluate(u) - x0);
 
     const int spans = static_cast<int>(interiorBreakpoints(path.degree(), path.knots()).size()) + 1;
-    int count = std::max(kCrossDegree + 1, 2 * spans + 1);
+    int count = std::min(std::max(kCrossDegree + 1, 2 * spans + 1), std::max(kCrossDegree + 1, options.maxSections));
     std::unique_ptr<SweepResult> best;
     for (;;) {
         // Sections at 2·count - 1 parameters: the even ones are interpolated, the odd ones (half-way)
