@@ -1,0 +1,129 @@
+// sculptline-cli surface, run as the real binary (../shared/interfaces.md): every mode returns a
+// surface that meets its curves; impossible input exits with status 2 and names the problem.
+#include "solvers/io/geometry_json.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <sys/wait.h>
+
+using nlohmann::json;
+using namespace sculptline::solvers;
+
+namespace {
+
+constexpr double kExact = 1e-9;
+
+struct CliRun {
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+CliRun runCli(const std::string& sub, const json& input)
+{
+    const std::string in = ::testing::TempDir() + "surface_cli_input.json";
+    const std::string err = ::testing::TempDir() + "surface_cli_stderr.txt";
+    std::ofstream(in) << input.dump();
+    const std::string cmd = std::string(SCULPTLINE_CLI_PATH) + " " + sub + " " + in + " 2>" + err;
+    CliRun r;
+    FILE* pipe = popen(cmd.c_str(), "r");
+    std::array<char, 4096> buf{};
+    size_t n;
+    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
+    const int st = pclose(pipe);
+    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    std::ifstream e(err);
+    std::getline(e, r.err);
+    return r;
+}
+
+json curve(const std::vector<std::array<double, 3>>& pts)
+{
+    const int p = std::min(3, static_cast<int>(pts.size()) - 1);
+    json knots = json::array();
+    for (int i = 0; i <= p; ++i) knots.push_back(0.0);
+    const int inner = static_cast<int>(pts.size()) - p - 1;
+    for (int i = 1; i <= inner; ++i) knots.push_back(static_cast<double>(i) / (inner + 1));
+    for (int i = 0; i <= p; ++i) knots.push_back(1.0);
+    json points = json::array();
+    for (const auto& q : pts) points.push_back({q[0], q[1], q[2]});
+    return {{"degree", p}, {"knots", knots}, {"points", points}};
+}
+
+Surface3d surfaceOf(const CliRun& r)
+{
+    const json out = json::parse(r.out);
+    EXPECT_TRUE(out.contains("elapsed_ms"));
+    return io::surfaceFromJson(out.at("surface"), "surface");
+}
+
+}  // namespace
+
+TEST(SurfaceCli, GivenEachMode_WhenRun_ThenSurfaceMeetsItsFirstCurve)
+{
+    const json profile = curve({{1, 0, 0}, {1.5, 0, 1}, {0.8, 0, 2}, {1, 0, 3}});
+    const json section2 = curve({{0, 1, 0}, {0.5, 1, 1}, {0, 1.5, 2}, {0.2, 1, 3}});
+    const json path = curve({{1, 0, 0}, {1, 1, 0.5}, {2, 2, 0}, {3, 2, 1}});
+    const std::vector<json> inputs{
+        {{"mode", "revolve"}, {"curves", {profile}}, {"axis", {{"point", {0, 0, 0}}, {"direction", {0, 0, 1}}}}},
+        {{"mode", "extrude"}, {"curves", {profile}}, {"direction", {0, 2, 0}}},
+        {{"mode", "extrude"}, {"curves", {profile}}, {"path", path}},
+        {{"mode", "loft"}, {"curves", {profile, section2}}},
+        {{"mode", "sweep"}, {"curves", {curve({{1, 0.2, 0}, {1, 0, 0.2}, {1, -0.2, 0}}), path}}, {"tolerance", 1e-3}},
+        {{"mode", "boundary-rotation"}, {"curves", {profile, curve({{-1, 0, 0}, {-1.2, 0, 1}, {-1, 0, 3}})}}},
+    };
+    for (const json& in : inputs) {
+        const CliRun r = runCli("surface", in);
+        ASSERT_EQ(r.status, 0) << in["mode"] << ": " << r.err;
+        const Surface3d s = surfaceOf(r);
+        const Curve3d first = io::curveFromJson(in["curves"][0], "c");
+        for (int k = 0; k <= 20; ++k) {
+            const double t = k / 20.0;
+            EXPECT_LT((s.evaluate(t, 0.0) - first.evaluate(t)).norm(), kExact) << in["mode"] << " " << t;
+        }
+        const json out = json::parse(r.out);
+        if (in["mode"] == "sweep" || in["mode"] == "boundary-rotation") {
+            EXPECT_LE(out.at("max_deviation").get<double>(), out.at("tolerance").get<double>());
+        }
+    }
+}
+
+TEST(SurfaceCli, GivenFourBoundaries_WhenFilled_ThenCornersOnTheSurface)
+{
+    const json in{{"mode", "fill"},
+                  {"curves",
+                   {curve({{0, 0, 0}, {1, 0, 0.5}, {2, 0, 0}}), curve({{2, 2, 0}, {2.2, 1, 0.3}, {2, 0, 0}}),
+                    curve({{2, 2, 0}, {1, 2, -0.5}, {0, 2, 0}}), curve({{0, 2, 0}, {0, 1, 0.2}, {0, 0, 0}})}}};
+    const CliRun r = runCli("surface", in);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Surface3d s = surfaceOf(r);
+    EXPECT_LT((s.evaluate(0.5, 0.0) - Eigen::Vector3d(1, 0, 0.25)).norm(), kExact);  // mid of the first boundary
+}
+
+TEST(SurfaceCli, GivenImpossibleInput_WhenRun_ThenExitTwoWithMessage)
+{
+    const json line = curve({{1, 0, 0}, {1, 0, 2}});
+    const std::vector<std::pair<json, std::string>> cases{
+        {{{"mode", "loft"}, {"curves", {line}}}, "curves"},
+        {{{"mode", "fill"}, {"curves", {line, curve({{5, 0, 0}, {6, 0, 0}})}}}, "curves"},
+        {{{"mode", "sweep"}, {"curves", {line, curve({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 0, 0}})}}}, "curves[1]"},
+        {{{"mode", "revolve"}, {"curves", {line}}, {"axis", {{"point", {0, 0, 0}}, {"direction", {0, 0, 0}}}}}, "axis"},
+        {{{"mode", "revolve"}, {"curves", {line}}}, "axis"},
+        {{{"mode", "extrude"}, {"curves", {line}}}, "direction"},
+        {{{"mode", "fill"}, {"curves", {line, line}}, {"tangents", json::array()}}, "tangents"},
+        {{{"mode", "spin"}, {"curves", {line}}}, "mode"},
+        {{{"mode", "loft"}}, "curves"},
+        {{{"mode", "loft"}, {"curves", {line, line}}, {"degree", 0}}, "degree"},
+    };
+    for (const auto& [in, fieldName] : cases) {
+        const CliRun r = runCli("surface", in);
+        EXPECT_EQ(r.status, 2) << in.dump();
+        EXPECT_NE(r.err.find(fieldName), std::string::npos) << r.err;
+    }
+}
