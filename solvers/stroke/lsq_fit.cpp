@@ -385,6 +385,45 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     const int maxUnknowns = std::max(in.closed ? 5 : 4, static_cast<int>(m) + 2);
 
     SplineFitResult res;
+    if (opt.knotPlacement == KnotPlacement::Averaged && !in.closed) {
+        // The NURBS Book eqs. 9.68-9.69 (de Boor's averaging): n+1 control points get knots that
+        // follow the density of the sample parameters; the smallest n within tolerance is found by
+        // bisection (the error falls, not strictly, as n grows).
+        auto averaged = [&](int nCtrl) {
+            Spline t;
+            t.breaks = {0.0};
+            const int nS = static_cast<int>(u.size());
+            const double d = double(nS) / (nCtrl - kDegree);
+            for (int j = 1; j < nCtrl - kDegree; ++j) {
+                const int i = static_cast<int>(j * d);
+                const double a = j * d - i;
+                const double knot = (1 - a) * u[std::max(0, i - 1)] + a * u[std::min(nS - 1, i)];
+                if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
+            }
+            t.breaks.push_back(1.0);
+            solve(t, X, S, u, opt.fairing);
+            return std::make_pair(t, measureAll(t, in, S, u, opt.tolerance));
+        };
+        int lo = 4, hi = std::max(4, static_cast<int>(S.size()));
+        auto best = averaged(hi);
+        while (lo < hi) {
+            const int mid = (lo + hi) / 2;
+            auto trial = averaged(mid);
+            if (trial.second <= opt.tolerance) {
+                hi = mid;
+                best = std::move(trial);
+            } else {
+                lo = mid + 1;
+            }
+        }
+        if (best.first.unknowns() != hi) best = averaged(hi);
+        res.maxError = best.second;
+        res.converged = res.maxError <= opt.tolerance;
+        res.knots = best.first.knots;
+        res.points = best.first.ctrl;
+        res.samples = S;
+        return res;
+    }
     std::vector<double> err(S.size());
     std::vector<double> lastInserted;
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {

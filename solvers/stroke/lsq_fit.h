@@ -8,7 +8,13 @@
 
 namespace sculptline::solvers::stroke {
 
+/// Where knots go: inserted where the error is (default), or averaged over the sample parameters
+/// with the fewest control points that reach the tolerance (The NURBS Book §9.4.1; the thesis's
+/// de Boor approximation, where the sampling alone decides the knot density: thesis Fig. 4-3).
+enum class KnotPlacement { ErrorDriven, Averaged };
+
 struct SplineFitOptions {
+    KnotPlacement knotPlacement = KnotPlacement::ErrorDriven;
     double tolerance = 0.0;  ///< maximum allowed deviation, model units (> 0)
     /// Weight of the control-polygon second-difference term sum |P_{i-1} - 2 P_i + P_{i+1}|^2,
     /// relative to the average number of samples per control point. It only has to make the normal
