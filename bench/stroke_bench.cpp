@@ -3,6 +3,7 @@
 // comparison of speed-only sampling with dynamic-threshold sampling (thesis §4.1.1).
 //
 //   build-stroke/sculptline-bench --benchmark_filter=Stroke
+#include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "solvers/stroke/stroke_synthesis.h"
 
@@ -82,5 +83,25 @@ void BM_StrokeFig43(benchmark::State& state)
     report(state, s, r);
 }
 BENCHMARK(BM_StrokeFig43)->Args({0, 0})->Args({1, 0})->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMicrosecond);
+
+// Recognition of one fitted stroke (primitive fits, candidates, regularization); the fit itself is
+// outside the timed loop. Arg: 0 circle, 1 square, 2 freeform flourish.
+void BM_StrokeRecognize(benchmark::State& state)
+{
+    DrawOptions d;
+    d.noise = kNoise;
+    const Shape shapes[] = {circleShape({0, 0, 0}, 80), polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true),
+                            flourishShape(300)};
+    const FitResult fit = fitStroke(draw(shapes[state.range(0)], d));
+    Recognition r = recognizeShape(fit);
+    for (auto _ : state) {
+        r = recognizeShape(fit);
+        benchmark::DoNotOptimize(r.candidates.data());
+    }
+    state.SetLabel(shapeName(r.kind));
+    state.counters["samples"] = fit.conditioned.size();
+    state.counters["top_score"] = r.candidates.front().score;
+}
+BENCHMARK(BM_StrokeRecognize)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
