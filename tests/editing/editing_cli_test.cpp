@@ -1,39 +1,26 @@
 // sculptline-cli oversketch / lift / constrain-curve, run as the real binary (../shared/interfaces.md).
 #include "solvers/io/geometry_json.h"
 
+#include "tests/cli/cli_runner.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 using nlohmann::json;
 using namespace sculptline::solvers;
 
 namespace {
 
-struct CliRun {
-    int status = -1;
-    std::string out;
-};
+using sculptline::cli_test::CliResult;
 
-CliRun runCli(const std::string& sub, const std::string& input)
+// The shared runner: no shell, a private scratch directory, so parallel ctest processes never
+// share an input file.
+CliResult runCli(const std::string& sub, const std::string& input)
 {
-    const std::string path = ::testing::TempDir() + "editing_cli_input.json";
-    std::ofstream(path) << input;
-    const std::string cmd = std::string(SCULPTLINE_CLI_PATH) + " " + sub + " " + path + " 2>/dev/null";
-    CliRun r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int st = pclose(pipe);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
+    return sculptline::cli_test::runCli({sub}, input);
 }
 
 json wave()
@@ -61,7 +48,7 @@ json stroke()
 TEST(EditingCli, GivenOversketchInput_WhenRun_ThenCurveSpanAndElapsed)
 {
     for (const char* method : {"local-c2", "blend"}) {
-        const CliRun r = runCli("oversketch", json{{"curve", wave()}, {"stroke", stroke()}, {"method", method}}.dump());
+        const CliResult r = runCli("oversketch", json{{"curve", wave()}, {"stroke", stroke()}, {"method", method}}.dump());
         ASSERT_EQ(r.status, 0) << method;
         const json out = json::parse(r.out);
         const Curve3d c = io::curveFromJson(out["curve"], "curve");
@@ -80,7 +67,7 @@ TEST(EditingCli, GivenLiftInput_WhenRun_ThenSpaceCurveWithEndDepths)
 {
     json pts = json::array();
     for (int t = 0; t < 100; ++t) pts.push_back({10.0 * t / 99.0, 6.0 * std::sin(2.5 * t / 99.0)});
-    const CliRun r = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}}.dump());
+    const CliResult r = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}}.dump());
     ASSERT_EQ(r.status, 0);
     const Curve3d c = io::curveFromJson(json::parse(r.out)["curve"], "curve");
     EXPECT_NEAR(c.evaluate(c.domainStart()).z(), 1.0, 1e-9);
@@ -88,7 +75,7 @@ TEST(EditingCli, GivenLiftInput_WhenRun_ThenSpaceCurveWithEndDepths)
 
     // A view looking along -x: depth maps to -x, the stroke's x to y and its y to z.
     const json view = {{"origin", {0, 0, 0}}, {"right", {0, 1, 0}}, {"up", {0, 0, 1}}, {"depth", {-1, 0, 0}}};
-    const CliRun v = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}, {"view", view}}.dump());
+    const CliResult v = runCli("lift", json{{"stroke", {{"points", pts}}}, {"depth", {1.0, 6.0}}, {"view", view}}.dump());
     ASSERT_EQ(v.status, 0);
     const Curve3d cv = io::curveFromJson(json::parse(v.out)["curve"], "curve");
     EXPECT_LT((cv.evaluate(cv.domainEnd()) - Eigen::Vector3d(-6.0, 10.0, 6.0 * std::sin(2.5))).norm(), 1e-9);
@@ -101,7 +88,7 @@ TEST(EditingCli, GivenConstraints_WhenRun_ThenMetAndReported)
                       {{{"type", "position"}, {"u", 0.4}, {"value", {4, 3}}},
                        {{"type", "distance"}, {"u", 0.6}, {"u2", 0.7}, {"value", 1.5}}}},
                      {"blocked", {0, 11}}};
-    const CliRun r = runCli("constrain-curve", in.dump());
+    const CliResult r = runCli("constrain-curve", in.dump());
     ASSERT_EQ(r.status, 0);
     const json out = json::parse(r.out);
     const Curve3d c = io::curveFromJson(out["curve"], "curve");
