@@ -116,7 +116,7 @@ void StrokeInput::onEvent(SoEventCallback* node)
 {
     if (!enabled_) return;
     const SoEvent* event = node->getEvent();
-    const double now = event->getTime().getValue();
+    const double now = clock_ ? clock_() : event->getTime().getValue();
     if (SO_MOUSE_PRESS_EVENT(event, BUTTON1)) {
         // A press on a dragger moves the plane instead of starting a stroke.
         if (pathHasDragger(node->getPickedPoint())) return;

@@ -48,6 +48,9 @@ public:
     void setCamera(std::function<SoCamera*()> camera) { camera_ = std::move(camera); }
     void setActivePlane(ActivePlane plane) { plane_ = std::move(plane); }
     void setFinishedCallback(std::function<void(const FinishedStroke&)> f) { finished_ = std::move(f); }
+    /// Where sample times come from, seconds; default: the Coin event's time stamp. A replay sets
+    /// the recorded times, so a replayed stroke is sampled, and fitted, exactly as recorded.
+    void setClock(std::function<double()> clock) { clock_ = std::move(clock); }
     /// Called after each accepted pointer sample (stroke latency statistics).
     void setSampleCallback(std::function<void()> f) { sampled_ = std::move(f); }
 
@@ -71,6 +74,7 @@ private:
     ActivePlane plane_;
     std::function<void(const FinishedStroke&)> finished_;
     std::function<void()> sampled_;
+    std::function<double()> clock_;
 };
 
 }  // namespace sculptline::manipulators

@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -65,6 +66,15 @@ PlaneSpec planeFromJson(const json& j, const std::string& path)
         p.xAxis = io::pointFromJson(*it, path + ".xAxis");
         if (!(p.xAxis.norm() > 0.0)) throw io::InputError(path + ".xAxis: must not be zero");
         if (p.xAxis.normalized().cross(p.normal).norm() < 1e-6) throw io::InputError(path + ".xAxis: must not be parallel to the normal");
+    }
+    if (const auto it = j.find("rotation"); it != j.end()) {
+        if (!it->is_array() || it->size() != 4) throw io::InputError(path + ".rotation: must be a quaternion [x, y, z, w]");
+        double q[4];
+        for (int k = 0; k < 4; ++k) q[k] = io::numberFromJson((*it)[k], path + ".rotation[" + std::to_string(k) + "]");
+        const Eigen::Quaterniond rotation(q[3], q[0], q[1], q[2]);
+        if (std::abs(rotation.norm() - 1.0) > 1e-6) throw io::InputError(path + ".rotation: must be a unit quaternion");
+        if ((rotation * Eigen::Vector3d::UnitZ() - p.normal).norm() > 1e-6) throw io::InputError(path + ".rotation: does not match normal");
+        p.rotation = rotation;
     }
     if (const auto it = j.find("id"); it != j.end()) p.id = io::integerFromJson(*it, path + ".id", 1, 1 << 30);
     return p;

@@ -4,7 +4,9 @@
 // its error messages are testable on their own.
 #include "solvers/bspline/bspline_surface.h"
 
+#include <Eigen/Geometry>
 #include <nlohmann/json_fwd.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,9 @@ struct PlaneSpec {
     /// The plane's local X axis (in-plane rotation); zero = the shortest arc from +Z (PlaneFrame).
     Eigen::Vector3d xAxis = Eigen::Vector3d::Zero();
     int id = 0;  ///< referred to by curves' "plane"; the document's position + 1 when absent
+    /// The exact local -> world rotation as saved ("rotation": [x, y, z, w]); it wins over normal
+    /// and xAxis, which are then checked against it. Saving it makes a reopened plane bit-identical.
+    std::optional<Eigen::Quaterniond> rotation;
 };
 
 /// The ground grid in the plane z = 0, centred on the origin.

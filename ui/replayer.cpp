@@ -36,6 +36,7 @@ Replayer::Replayer(MainWindow& window, ReplaySession session, QObject* parent)
     : QObject(parent), window_(window), session_(std::move(session))
 {
     window_.document().scheduler().setUpdateListener([this](double ms) { stats_.add("model_update", ms); });
+    window_.document().strokeInput().setClock([this]() { return eventTime_; });
 }
 
 QString Replayer::check() const
@@ -83,6 +84,8 @@ void Replayer::dispatch(const ReplayEvent& e)
 {
     SketchDocument& doc = window_.document();
     const bool dragging = doc.dragging();
+    // The recorded time when there is one, so that a replayed stroke carries its recorded timing.
+    eventTime_ = (e.t >= 0.0 ? e.t : static_cast<double>(clock_.elapsed())) / 1000.0;
     const auto start = std::chrono::steady_clock::now();
     switch (e.type) {
     case ReplayEvent::Type::Press:
@@ -94,8 +97,12 @@ void Replayer::dispatch(const ReplayEvent& e)
     }
     // What the person would see next: the model solved (once) and the frame drawn.
     doc.scheduler().flush();
+    const auto updated = std::chrono::steady_clock::now();
     window_.renderViewport();
     const std::chrono::duration<double, std::milli> elapsed = std::chrono::steady_clock::now() - start;
+    const std::chrono::duration<double, std::milli> update = updated - start;
+    stats_.add("event_update", update.count());
+    stats_.add("event_render", elapsed.count() - update.count());
     stats_.add("event", elapsed.count());
     stats_.add(seriesName(e.type), elapsed.count());
     if (e.type == ReplayEvent::Type::Move && (dragging || doc.dragging())) stats_.add("drag_move", elapsed.count());

@@ -40,6 +40,7 @@ private:
     size_t index_ = 0;
     Qt::MouseButtons held_;
     QElapsedTimer clock_;
+    double eventTime_ = 0.0;  ///< seconds, the time stroke samples of the current event get
     LatencyStats stats_;
     std::function<void()> done_;
 };

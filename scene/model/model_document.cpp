@@ -12,7 +12,9 @@ using nlohmann::json;
 
 PlaneFrame planeFrame(const PlaneSpec& plane)
 {
-    return PlaneFrame::fromNormal(plane.origin, plane.normal, plane.size, plane.xAxis);
+    PlaneFrame frame = PlaneFrame::fromNormal(plane.origin, plane.normal, plane.size, plane.xAxis);
+    if (plane.rotation) frame.rotation = *plane.rotation;
+    return frame;
 }
 
 void populateModel(const SceneDocument& doc, Model& model)
@@ -40,6 +42,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
                               {"origin", io::toJson(e.frame.origin)},
                               {"normal", io::toJson(e.frame.normal())},
                               {"xAxis", io::toJson(e.frame.xAxis())},
+                              {"rotation", {e.frame.rotation.x(), e.frame.rotation.y(), e.frame.rotation.z(), e.frame.rotation.w()}},
                               {"size", e.frame.size}});
             break;
         case EntityKind::Curve: {

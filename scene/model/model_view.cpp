@@ -64,7 +64,8 @@ SoSeparator* ModelView::nodeOf(EntityId id) const
 CurveStyle ModelView::curveStyle(EntityId id) const
 {
     CurveStyle style;
-    style.color = kCurveColors[id % kCurveColors.size()];
+    // Offset so that the default scene's curve (id 2, after its plane) keeps the first colour.
+    style.color = kCurveColors[(id + 1) % kCurveColors.size()];
     if (id == highlighted_) {
         style.color = kHighlight;
         style.lineWidth = kHighlightWidth;

@@ -1,0 +1,79 @@
+#!/usr/bin/env python3
+"""Writes the replay sessions of the GUI tests (tests/gui/CMakeLists.txt). Pixel positions are for
+the default scene (data/default_scene.json) in an 800x600 viewport, where the default plane covers
+about x 392..596, y 127..360 and its jack dragger sits at about (481, 243)."""
+import json
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def stroke(points, t0, dt=8):
+    """press, moves, release along points (pixels), dt ms apart."""
+    events = [{"type": "press", "x": points[0][0], "y": points[0][1], "button": "left", "t": t0}]
+    t = t0
+    for x, y in points[1:]:
+        t += dt
+        events.append({"type": "move", "x": x, "y": y, "t": t})
+    events.append({"type": "release", "x": points[-1][0], "y": points[-1][1], "button": "left", "t": t + dt})
+    return events, t + dt
+
+
+def wave(x0, x1, y, amplitude, n=40):
+    return [(round(x0 + (x1 - x0) * i / (n - 1)), round(y + amplitude * math.sin(2 * math.pi * i / (n - 1))))
+            for i in range(n)]
+
+
+def arc(cx, cy, r, n=40):
+    return [(round(cx + r * math.cos(math.pi * i / (n - 1))), round(cy - 0.6 * r * math.sin(math.pi * i / (n - 1))))
+            for i in range(n)]
+
+
+def drag(start, end, t0, steps=30, dt=10):
+    path = [(round(start[0] + (end[0] - start[0]) * i / steps), round(start[1] + (end[1] - start[1]) * i / steps))
+            for i in range(steps + 1)]
+    return stroke(path, t0, dt)
+
+
+def write(name, events):
+    with open(os.path.join(HERE, name), "w") as f:
+        json.dump({"size": [800, 600], "events": events}, f, indent=1)
+        f.write("\n")
+
+
+def two_strokes():
+    events = [{"type": "action", "name": "mode.sketch", "t": 0}]
+    s1, t = stroke(wave(410, 575, 170, 15), 50)
+    s2, t = stroke(arc(490, 330, 70), t + 50)
+    return events + s1 + s2, t
+
+
+def main():
+    events, t = two_strokes()
+    write("sketch_two_strokes.json", events + [{"type": "wait", "ms": 50}])
+
+    # Two strokes, then the plane dragged by the jack's translator plate (one undo step).
+    d, t2 = drag((463, 246), (380, 290), t + 100)
+    write("sketch_and_drag.json", events + d + [{"type": "wait", "ms": 50}])
+
+    # Undo and redo: two strokes, undo both, redo one; the drag undone.
+    u = [{"type": "key", "key": "Ctrl+Z", "t": t2 + 50}, {"type": "action", "name": "edit.undo", "t": t2 + 60},
+         {"type": "key", "key": "Ctrl+Z", "t": t2 + 70}, {"type": "key", "key": "Ctrl+Shift+Z", "t": t2 + 80}]
+    write("undo_redo.json", events + d + u + [{"type": "wait", "ms": 50}])
+
+    # A new plane facing the view, and a stroke on it.
+    p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
+    s, t = stroke(wave(250, 550, 300, 40), 60)
+    write("add_plane_and_sketch.json", p + s + [{"type": "wait", "ms": 50}])
+
+    # The --stats goal: drag the default plane of ../bench_20_curves_5_planes.json (20 curves on 5
+    # planes) for 120 pointer events at 125 Hz, to and fro.
+    d1, t = drag((463, 246), (380, 300), 100, steps=60, dt=8)
+    d2, t = drag((380, 300), (470, 230), t + 8, steps=60, dt=8)
+    # One press-move-release: drop the inner release/press pair of the two halves.
+    write("drag_bench.json", [{"type": "action", "name": "mode.select", "t": 0}] + d1[:-1] + d2[1:])
+
+
+if __name__ == "__main__":
+    main()
