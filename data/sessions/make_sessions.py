@@ -62,6 +62,15 @@ def main():
          {"type": "key", "key": "Ctrl+Z", "t": t2 + 70}, {"type": "key", "key": "Ctrl+Shift+Z", "t": t2 + 80}]
     write("undo_redo.json", events + d + u + [{"type": "wait", "ms": 50}])
 
+    # Delete and undo: the last stroke (selected when made) deleted with the Delete key; then, in
+    # select mode, a click on the plane's jack selects the plane, Delete removes it with its curve,
+    # and Ctrl+Z brings both back.
+    x = [{"type": "key", "key": "Del", "t": t + 50}, {"type": "action", "name": "mode.select", "t": t + 60},
+         {"type": "press", "x": 463, "y": 246, "button": "left", "t": t + 70},
+         {"type": "release", "x": 463, "y": 246, "button": "left", "t": t + 80},
+         {"type": "key", "key": "Del", "t": t + 90}, {"type": "key", "key": "Ctrl+Z", "t": t + 100}]
+    write("delete_undo.json", events + x + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

@@ -132,6 +132,21 @@ TEST(ReplayResults, UndoAndRedoRestoreThePlaneAndTheCurves)
     EXPECT_EQ(curves[0]->local->points(), curvesOn(sketched, 1)[0]->local->points());
 }
 
+TEST(ReplayResults, DeletesAreUndoable)
+{
+    // Session: two strokes; Delete (the second curve); select the plane by its jack; Delete (the
+    // plane and the first curve); Ctrl+Z (both back)
+    const scene::Model sketched = readModel("sketch.json");
+    const scene::Model model = readModel("delete.json");
+    ASSERT_NE(model.find(1), nullptr);
+    EXPECT_EQ(model.find(1)->kind, scene::EntityKind::Plane);
+    const auto curves = curvesOn(model, 1);
+    ASSERT_EQ(curves.size(), 1u);
+    EXPECT_EQ(curves[0]->id, curvesOn(sketched, 1)[0]->id);
+    EXPECT_EQ(curves[0]->local->points(), curvesOn(sketched, 1)[0]->local->points());
+    EXPECT_EQ(model.entities().size(), 4u);  // plane, default curve, surface, first stroke
+}
+
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
 {
     const nlohmann::json saved = readJson("drag.json");
