@@ -87,12 +87,38 @@ struct Spline {
         const auto& c = coef[j];
         return ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
     }
-    int spanOf(double u) const  // index into breaks of the span holding u (u already wrapped)
+    // Index into breaks of the span holding u (u already wrapped). Evaluations mostly come in
+    // increasing u, so the last span found, or the next one, is tried before a binary search.
+    mutable int hint = 0;
+    int spanOf(double u) const
     {
+        const int count = spanCount();
+        for (int j = hint; j < std::min(hint + 2, count); ++j) {
+            if (u >= breaks[j] && (u < spanEnd(j) || j == count - 1) && (j > 0 || u >= 0.0)) return hint = j;
+        }
         const auto it = std::upper_bound(breaks.begin(), breaks.end(), u);
-        return std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, spanCount() - 1);
+        return hint = std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, count - 1);
     }
 };
+
+// The four non-zero cubic B-splines on `span` at u: The NURBS Book A2.2 unrolled for p = 3.
+void cubicBasis(const KnotVector& U, int span, double u, double N[4])
+{
+    double left[4], right[4];
+    N[0] = 1.0;
+    for (int j = 1; j <= kDegree; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double den = right[r + 1] + left[j - r];
+            const double temp = den != 0.0 ? N[r] / den : 0.0;
+            N[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        N[j] = saved;
+    }
+}
 
 // One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi)
@@ -151,9 +177,11 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
     BandMatrix a(nFree, kDegree);
     Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nFree, 3);
     double basis[kDegree + 1];
+    int span = kDegree;
     for (size_t k = 1; k + 1 < S.size(); ++k) {
-        const int span = findSpan(kDegree, s.knots, u[k]);
-        basisFunctions(span, u[k], kDegree, s.knots, basis);
+        // Samples come in increasing parameter: walk the span instead of searching for it.
+        while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
+        cubicBasis(s.knots, span, u[k], basis);
         Vec3 rhs = X[S[k]];
         for (int q = 0; q <= kDegree; ++q) {
             const int i = span - kDegree + q;
@@ -210,7 +238,7 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
     for (size_t k = 0; k < S.size(); ++k) {
         const double uk = s.wrap(u[k]);
         const int span = findSpan(kDegree, s.knots, uk);
-        basisFunctions(span, uk, kDegree, s.knots, basis);
+        cubicBasis(s.knots, span, uk, basis);
         for (int q = 0; q <= kDegree; ++q) {
             const int i = (span - kDegree + q) % n;
             b.row(i) += basis[q] * X[S[k]].transpose();
