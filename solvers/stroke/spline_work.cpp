@@ -1,0 +1,235 @@
+#include "solvers/stroke/spline_work.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/stroke/banded_cholesky.h"
+
+#include <Eigen/Sparse>
+
+namespace sculptline::solvers::stroke {
+namespace {
+
+double safeDiv(double a, double b) { return b == 0.0 ? 0.0 : a / b; }  // 0/0 := 0 for repeated knots
+
+}  // namespace
+
+void cubicBasisDerivatives(const KnotVector& U, int span, double u, double ders[3][4])
+{
+    constexpr int p = detail::kDegree;
+    double ndu[p + 1][p + 1], left[p + 1], right[p + 1], a[2][p + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = safeDiv(ndu[r][j - 1], ndu[j][r]);
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a[0][0] = 1.0;
+        for (int k = 1; k <= 2; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a[s2][0] = safeDiv(a[s1][0], ndu[pk + 1][rk]);
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            const int j1 = rk >= -1 ? 1 : -rk;
+            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a[s2][j] = safeDiv(a[s1][j] - a[s1][j - 1], ndu[pk + 1][rk + j]);
+                d += a[s2][j] * ndu[rk + j][pk];
+            }
+            if (r <= pk) {
+                a[s2][k] = safeDiv(-a[s1][k - 1], ndu[pk + 1][r]);
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[k][r] = d;
+            std::swap(s1, s2);
+        }
+    }
+    for (int j = 0; j <= p; ++j) {
+        ders[1][j] *= p;
+        ders[2][j] *= p * (p - 1);
+    }
+}
+
+namespace detail {
+
+// The four non-zero cubic B-splines on `span` at u: The NURBS Book A2.2 unrolled for p = 3.
+void cubicBasis(const KnotVector& U, int span, double u, double N[4])
+{
+    double left[4], right[4];
+    N[0] = 1.0;
+    for (int j = 1; j <= kDegree; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double den = right[r + 1] + left[j - r];
+            const double temp = den != 0.0 ? N[r] / den : 0.0;
+            N[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        N[j] = saved;
+    }
+}
+
+// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
+double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi)
+{
+    Vec3 c[3];
+    s.eval(u, c);
+    const Vec3 r = c[0] - x;
+    const double f = c[1].dot(r);
+    const double df = c[2].dot(r) + c[1].squaredNorm();
+    if (!(df > 0.0)) return u;
+    return std::clamp(u - f / df, lo, hi);
+}
+
+double distanceAt(const Spline& s, const Vec3& x, double u) { return (s.point(u) - x).norm(); }
+
+// Distance from x to the curve near parameter u: |C(u) - x| when that is within `tol`, else the
+// best of up to two Newton steps toward the foot point (inside [lo, hi]). Either way the distance
+// to an actual curve point, so an upper bound on the true distance; the Newton steps (costly
+// derivatives) are spent only where the cheap bound does not already settle the question.
+double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot)
+{
+    double best = distanceAt(s, x, u), bestU = u;
+    for (int it = 0; it < 2 && best > tol; ++it) {
+        u = newtonStep(s, x, u, lo, hi);
+        const double d = distanceAt(s, x, u);
+        if (d < best) {
+            best = d;
+            bestU = u;
+        }
+    }
+    if (foot) *foot = bestU;
+    return best;
+}
+
+// Distance from C(u) to the segment [a, b] when the curve leaves it by more than a quarter of the
+// segment's length (an excursion where no data holds the curve), else 0: a smooth curve through
+// a and b bulges from their chord by its sagitta, which is geometry, not error.
+double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
+{
+    const Vec3 c = s.point(u);
+    const Vec3 ab = b - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0.0 ? std::clamp((c - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    const double gap = (a + t * ab - c).norm();
+    return gap > 0.25 * std::sqrt(l2) ? gap : 0.0;
+}
+
+// Least squares with the fairing term; open curves keep P_0 = X_first and P_n = X_last fixed
+// (The NURBS Book eqs. 9.63-9.67: the fixed points move to the right-hand side).
+void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+               double fairing)
+{
+    const int nCtrl = s.unknowns();
+    const int nFree = nCtrl - 2;
+    const Vec3 first = X[S.front()], last = X[S.back()];
+    BandMatrix a(nFree, kDegree);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nFree, 3);
+    double basis[kDegree + 1];
+    int span = kDegree;
+    for (size_t k = 1; k + 1 < S.size(); ++k) {
+        // Samples come in increasing parameter: walk the span instead of searching for it.
+        while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
+        cubicBasis(s.knots, span, u[k], basis);
+        Vec3 rhs = X[S[k]];
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = span - kDegree + q;
+            if (i == 0) rhs -= basis[q] * first;
+            if (i == nCtrl - 1) rhs -= basis[q] * last;
+        }
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = span - kDegree + q - 1;  // unknown index
+            if (i < 0 || i >= nFree) continue;
+            b.row(i) += basis[q] * rhs.transpose();
+            for (int r = 0; r <= q; ++r) {
+                const int j = span - kDegree + r - 1;
+                if (j >= 0) a.add(i, j, basis[q] * basis[r]);
+            }
+        }
+    }
+    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / nCtrl);
+    for (int c = 1; c + 1 < nCtrl; ++c) {  // rows (1, -2, 1) on control points c-1, c, c+1
+        const int idx[3] = {c - 1, c, c + 1};
+        const double w[3] = {1.0, -2.0, 1.0};
+        Vec3 fixedPart = Vec3::Zero();
+        for (int t = 0; t < 3; ++t) {
+            if (idx[t] == 0) fixedPart += w[t] * first;
+            if (idx[t] == nCtrl - 1) fixedPart += w[t] * last;
+        }
+        for (int t = 0; t < 3; ++t) {
+            const int i = idx[t] - 1;
+            if (i < 0 || i >= nFree) continue;
+            b.row(i) -= lambda * w[t] * fixedPart.transpose();
+            for (int r = 0; r <= t; ++r) {
+                const int j = idx[r] - 1;
+                if (j >= 0) a.add(i, j, lambda * w[t] * w[r]);
+            }
+        }
+    }
+    if (!a.factor()) throw GeometryError("stroke: least-squares system is not positive definite");
+    a.solveInPlace(b);
+    s.ctrl.assign(nCtrl, Vec3::Zero());
+    s.ctrl.front() = first;
+    s.ctrl.back() = last;
+    for (int i = 0; i < nFree; ++i) s.ctrl[i + 1] = b.row(i).transpose();
+}
+
+// Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal
+// matrix is cyclic-banded, factored by a sparse LDL^T (fill-in stays O(N) for a cyclic band).
+void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                 double fairing)
+{
+    const int n = s.unknowns();
+    std::vector<Eigen::Triplet<double>> trip;
+    trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
+    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 3);
+    double basis[kDegree + 1];
+    for (size_t k = 0; k < S.size(); ++k) {
+        const double uk = s.wrap(u[k]);
+        const int span = findSpan(kDegree, s.knots, uk);
+        cubicBasis(s.knots, span, uk, basis);
+        for (int q = 0; q <= kDegree; ++q) {
+            const int i = (span - kDegree + q) % n;
+            b.row(i) += basis[q] * X[S[k]].transpose();
+            for (int r = 0; r <= kDegree; ++r) trip.emplace_back(i, (span - kDegree + r) % n, basis[q] * basis[r]);
+        }
+    }
+    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
+    for (int c = 0; c < n; ++c) {
+        const int idx[3] = {(c + n - 1) % n, c, (c + 1) % n};
+        const double w[3] = {1.0, -2.0, 1.0};
+        for (int t = 0; t < 3; ++t)
+            for (int r = 0; r < 3; ++r) trip.emplace_back(idx[t], idx[r], lambda * w[t] * w[r]);
+    }
+    Eigen::SparseMatrix<double> a(n, n);
+    a.setFromTriplets(trip.begin(), trip.end());
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+    if (ldlt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
+    const Eigen::MatrixXd x = ldlt.solve(b);
+    s.ctrl.resize(n + kDegree);
+    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = x.row(i % n).transpose();
+}
+
+void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+           double fairing)
+{
+    s.makeKnots();
+    if (s.closed) solveClosed(s, X, S, u, fairing);
+    else solveOpen(s, X, S, u, fairing);
+    s.buildPowerForm();
+}
+
+}  // namespace detail
+}  // namespace sculptline::solvers::stroke

@@ -1,0 +1,115 @@
+#pragma once
+// Internals of the least-squares fit (lsq_fit.cpp): the spline being fitted, its evaluation in
+// power form, foot-point distances and the band / cyclic-band least-squares solves. Not part of
+// the stroke library's interface.
+#include "solvers/stroke/lsq_fit.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace sculptline::solvers::stroke::detail {
+
+constexpr int kDegree = 3;
+using Vec3 = Eigen::Vector3d;
+
+// The spline being fitted: distinct breakpoints (open: 0 = b_0 < .. < b_s = 1; closed: 0 = b_0 < .. <
+// b_{N-1} < 1, period 1), the full knot vector and the (unwrapped) control points.
+struct Spline {
+    bool closed = false;
+    std::vector<double> breaks;
+    KnotVector knots;
+    std::vector<Vec3> ctrl;
+
+    int unknowns() const { return closed ? static_cast<int>(breaks.size()) : static_cast<int>(breaks.size()) + 2; }
+    void makeKnots()
+    {
+        knots.clear();
+        if (!closed) {
+            knots.assign(kDegree, 0.0);
+            knots.insert(knots.end(), breaks.begin(), breaks.end());
+            knots.insert(knots.end(), kDegree, 1.0);
+            return;
+        }
+        // Periodic: U_i = b_{(i-3) mod N} + floor((i-3)/N), i = 0..N+6, so that U_3 = b_0 = 0 and U_{N+3} = 1.
+        const int n = static_cast<int>(breaks.size());
+        for (int i = 0; i <= n + 2 * kDegree; ++i) {
+            const int j = i - kDegree;
+            const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
+            knots.push_back(breaks[j - q * n] + q);
+        }
+    }
+    double wrap(double u) const { return closed ? u - std::floor(u) : std::clamp(u, 0.0, 1.0); }
+    // The spline in power form per span (Taylor coefficients at the span start): evaluation is a
+    // Horner step, an order of magnitude cheaper than the basis recursion, and the fit evaluates
+    // every point a few times per iteration.
+    std::vector<std::array<Vec3, 4>> coef;
+    int spanCount() const { return static_cast<int>(closed ? breaks.size() : breaks.size() - 1); }
+    double spanEnd(int j) const { return j + 1 < static_cast<int>(breaks.size()) ? breaks[j + 1] : 1.0; }
+    void buildPowerForm()
+    {
+        coef.resize(spanCount());
+        for (int j = 0; j < spanCount(); ++j) {
+            const double a = breaks[j], h = spanEnd(j) - a;
+            const int span = findSpan(kDegree, knots, a);
+            double d0[3][4], d1[3][4];
+            cubicBasisDerivatives(knots, span, a, d0);
+            cubicBasisDerivatives(knots, span, a + h, d1);
+            Vec3 c[3], e2 = Vec3::Zero();
+            for (int k = 0; k < 3; ++k) c[k].setZero();
+            for (int q = 0; q < 4; ++q) {
+                const Vec3& p = ctrl[span - kDegree + q];
+                for (int k = 0; k < 3; ++k) c[k] += d0[k][q] * p;
+                e2 += d1[2][q] * p;
+            }
+            coef[j] = {c[0], c[1], 0.5 * c[2], h > 0.0 ? (e2 - c[2]) / (6.0 * h) : Vec3::Zero().eval()};
+        }
+    }
+    // Point and first two derivatives at u.
+    void eval(double u, Vec3 out[3]) const
+    {
+        u = wrap(u);
+        const int j = spanOf(u);
+        const double t = u - breaks[j];
+        const auto& c = coef[j];
+        out[0] = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+        out[1] = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+        out[2] = 6.0 * c[3] * t + 2.0 * c[2];
+    }
+    Vec3 point(double u) const
+    {
+        u = wrap(u);
+        const int j = spanOf(u);
+        const double t = u - breaks[j];
+        const auto& c = coef[j];
+        return ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+    }
+    // Index into breaks of the span holding u (u already wrapped). Evaluations mostly come in
+    // increasing u, so the last span found, or the next one, is tried before a binary search.
+    mutable int hint = 0;
+    int spanOf(double u) const
+    {
+        const int count = spanCount();
+        for (int j = hint; j < std::min(hint + 2, count); ++j) {
+            if (u >= breaks[j] && (u < spanEnd(j) || j == count - 1) && (j > 0 || u >= 0.0)) return hint = j;
+        }
+        const auto it = std::upper_bound(breaks.begin(), breaks.end(), u);
+        return hint = std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, count - 1);
+    }
+};
+
+/// The four non-zero cubic B-splines on `span` at u (The NURBS Book A2.2 unrolled for p = 3).
+void cubicBasis(const KnotVector& U, int span, double u, double N[4]);
+/// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
+double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi);
+double distanceAt(const Spline& s, const Vec3& x, double u);
+/// |C(u) - x| when within tol, else the best of up to two Newton steps (an upper bound on the
+/// true distance either way); *foot receives the parameter used.
+double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot = nullptr);
+/// Distance of C(u) to the segment [a, b] when it exceeds a quarter of the segment, else 0.
+double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u);
+/// Least squares with the fairing term for the spline's breaks (makes knots, solves, builds the
+/// power form). Open: P_0 and P_n fixed to the first and last sample.
+void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u, double fairing);
+
+}  // namespace sculptline::solvers::stroke::detail
