@@ -46,6 +46,21 @@ void BM_StrokeFit(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFit)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
+// The same with every knot tried for removal after the fit (KnotRemoval::AllKnots).
+void BM_StrokeFitFewest(benchmark::State& state)
+{
+    const Stroke s = benchStroke(static_cast<int>(state.range(0)));
+    FitOptions o;
+    o.spline.removal = KnotRemoval::AllKnots;
+    FitResult r = fitStroke(s, o);
+    for (auto _ : state) {
+        r = fitStroke(s, o);
+        benchmark::DoNotOptimize(r.curve.points().data());
+    }
+    report(state, s, r);
+}
+BENCHMARK(BM_StrokeFitFewest)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
 // A polygon with corners (pen slows at each vertex): the piecewise fit joined with triple knots.
 void BM_StrokeFitPolygon(benchmark::State& state)
 {

@@ -79,17 +79,20 @@ def main():
     warnings.simplefilter("ignore")  # FITPACK's iteration-limit warnings; the deviation is measured anyway
     build = sys.argv[1] if len(sys.argv) > 1 else "build-stroke"
     strokes = json.loads(subprocess.run([f"{build}/stroke-export"], check=True, capture_output=True, text=True).stdout)
-    print(f"{'stroke':<15}{'samples':>8}{'max dev':>9}{'ours ctrl':>10}{'splprep ctrl':>13}{'splprep dev':>12}{'s':>10}")
-    for item in strokes:
-        stroke = item["stroke"]
-        fit = json.loads(subprocess.run([f"{build}/sculptline-cli", "fit"], input=json.dumps({"stroke": stroke}),
-                                        check=True, capture_output=True, text=True).stdout)
-        raw = np.array(stroke["points"], dtype=float)
-        curve = fit["curve"]
-        ours = len(curve["points"]) - (3 if fit["closed"] else 0)
-        dev = deviation(ours_dense(curve), raw)
-        s, n, sdev = tune_splprep(raw, dev, fit["closed"])
-        print(f"{item['name']:<15}{len(raw):>8}{dev:>9.3f}{ours:>10}{n:>13}{sdev:>12.3f}{s:>10.3g}")
+    for minimize in (False, True):
+        print(f"sculptline-cli fit, minimize_control_points = {str(minimize).lower()}")
+        print(f"{'stroke':<15}{'samples':>8}{'max dev':>9}{'ours ctrl':>10}{'splprep ctrl':>13}{'splprep dev':>12}{'s':>10}")
+        for item in strokes:
+            stroke = item["stroke"]
+            request = {"stroke": stroke, "minimize_control_points": minimize}
+            fit = json.loads(subprocess.run([f"{build}/sculptline-cli", "fit"], input=json.dumps(request),
+                                            check=True, capture_output=True, text=True).stdout)
+            raw = np.array(stroke["points"], dtype=float)
+            curve = fit["curve"]
+            ours = len(curve["points"]) - (3 if fit["closed"] else 0)
+            dev = deviation(ours_dense(curve), raw)
+            s, n, sdev = tune_splprep(raw, dev, fit["closed"])
+            print(f"{item['name']:<15}{len(raw):>8}{dev:>9.3f}{ours:>10}{n:>13}{sdev:>12.3f}{s:>10.3g}")
 
 
 if __name__ == "__main__":

@@ -1,11 +1,13 @@
 // sculptline-cli fit: a pen stroke to a cubic B-spline (issue 3; thesis ch. 4 §4.1).
 //
-//   {"stroke": K, "tolerance": e, "closed": "auto"|"open"|"closed", "sampling": "dynamic"|"all"}
+//   {"stroke": K, "tolerance": e, "closed": "auto"|"open"|"closed", "sampling": "dynamic"|"all",
+//    "minimize_control_points": b}
 //   -> {"curve": C, "corners": [i..], "samples": [i..], "max_error": e, "tolerance": e, "closed": b,
 //       "converged": b, "warnings": [..], "elapsed_ms": t}
 //
 // tolerance is optional (default 0.5 % of the stroke's extent); corners and samples are indices
-// into the input stroke's points.
+// into the input stroke's points. minimize_control_points (default false) tries to remove every
+// knot after the fit, not only the last round's: fewer control points, ~1.7x the time.
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 #include "solvers/stroke/stroke_json.h"
@@ -28,6 +30,11 @@ stroke::FitOptions fitOptions(const json& input)
         else if (c == "open") o.conditioning.closure = stroke::Closure::Open;
         else if (c == "closed") o.conditioning.closure = stroke::Closure::Closed;
         else throw InputError("closed: must be \"auto\", \"open\" or \"closed\"");
+    }
+    if (input.contains("minimize_control_points")) {
+        const json& m = input["minimize_control_points"];
+        if (!m.is_boolean()) throw InputError("minimize_control_points: must be true or false");
+        o.spline.removal = m.get<bool>() ? stroke::KnotRemoval::AllKnots : stroke::KnotRemoval::LastRound;
     }
     if (input.contains("sampling")) {
         const json& s = input["sampling"];

@@ -214,14 +214,20 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         err.resize(S.size());
     }
     if (res.iterations > opt.maxIterations) res.maxError = measureAll(s, in, S, u, opt.tolerance);
-    // The last round of insertions may have overshot (a knot fixes its neighbours' spans too): try
-    // removing each of its knots again, keeping the removal when the refit stays within tolerance.
-    if (opt.removalPass && res.maxError <= opt.tolerance) {
-        for (double knot : lastInserted) {
+    // The last round of insertions may have overshot (a knot fixes its neighbours' spans too), and
+    // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal),
+    // keeping a removal when the refit stays within tolerance at the samples and everywhere.
+    if (opt.removal != KnotRemoval::None && res.maxError <= opt.tolerance) {
+        const std::vector<double> tryRemove =
+            opt.removal == KnotRemoval::AllKnots  // every break but the domain ends (closed: b_0)
+                ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end() - (in.closed ? 0 : 1))
+                : lastInserted;
+        for (double knot : tryRemove) {
             Spline trial = s;
             const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
             if (it == trial.breaks.end()) continue;
             trial.breaks.erase(it);
+            if (in.closed && trial.breaks.size() < 5) continue;  // the smallest periodic start
             solve(trial, X, S, u, opt.fairing);
             bool ok = true;
             for (size_t k = 0; ok && k < S.size(); ++k) {

@@ -132,5 +132,23 @@ TEST(StrokeFit, GivenExplicitTolerance_WhenFitted_ThenItIsUsedAndTighterMeansMor
     EXPECT_GT(b.curve.pointCount(), a.curve.pointCount());
 }
 
+TEST(StrokeFit, GivenAllKnotsRemovalPass_WhenFitted_ThenNoMoreControlPointsAndStillWithinTolerance)
+{
+    for (const auto& [name, shape] : testShapes()) {
+        DrawOptions d;
+        d.noise = kNoiseSigma;
+        const Stroke s = draw(shape, d);
+        FitOptions fewest;
+        fewest.spline.removal = KnotRemoval::AllKnots;
+
+        const FitResult a = fitStroke(s);
+        const FitResult b = fitStroke(s, fewest);
+
+        EXPECT_LE(b.curve.pointCount(), a.curve.pointCount()) << name;
+        EXPECT_TRUE(b.converged) << name;
+        EXPECT_LE(maxDeviation(b.curve, b.conditioned.points), b.tolerance * (1 + 1e-9)) << name;
+    }
+}
+
 }  // namespace
 }  // namespace sculptline::stroketest
