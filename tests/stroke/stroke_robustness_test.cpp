@@ -114,6 +114,27 @@ TEST(StrokeRobustness, GivenStrokeDoublingBack_ThenTurnaroundIsACornerAndFitHold
     EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
 }
 
+TEST(StrokeRobustness, GivenTeardropLoopWithOneCorner_ThenClosedCurveWithThatCorner)
+{
+    // A loop that starts and ends at its only corner (the tip of a drop).
+    Shape drop;
+    drop.closed = true;
+    drop.corners = {0};
+    for (int i = 0; i < 4000; ++i) {
+        const double t = 2 * 3.14159265358979 * i / 4000;
+        drop.reference.emplace_back(100 * std::sin(t) * std::pow(std::sin(t / 2), 1.0), 100 * std::cos(t) - 100, 0.0);
+    }
+    DrawOptions d;
+    d.noise = 0.2;
+
+    const FitResult r = fitStroke(draw(drop, d));
+
+    EXPECT_TRUE(r.curve.isClosed());
+    EXPECT_EQ(r.corners.size(), 1u);
+    EXPECT_TRUE(r.converged);
+    EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+}
+
 TEST(StrokeRobustness, Given3DStroke_ThenFitIn3D)
 {
     Stroke s;
