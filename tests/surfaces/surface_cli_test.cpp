@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -125,5 +126,32 @@ TEST(SurfaceCli, GivenImpossibleInput_WhenRun_ThenExitTwoWithMessage)
         const CliRun r = runCli("surface", in);
         EXPECT_EQ(r.status, 2) << in.dump();
         EXPECT_NE(r.err.find(fieldName), std::string::npos) << r.err;
+    }
+}
+
+TEST(NetworkCli, GivenSquareLoop_WhenMeshed_ThenTrianglesOverTheSquareAndBadLoopsExitTwo)
+{
+    const json in{{"curves",
+                   {curve({{0, 0, 0}, {2, 0, 0}}), curve({{2, 0, 0}, {2, 2, 0}}), curve({{2, 2, 0}, {0, 2, 0}}),
+                    curve({{0, 2, 0}, {0, 0, 0}})}},
+                  {"loops", {{0, 1, 2, 3}}},
+                  {"edge_length", 0.25}};
+    const CliRun r = runCli("network", in);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json out = json::parse(r.out);
+    const json& mesh = out.at("mesh");
+    double area = 0.0;
+    for (const json& t : mesh.at("triangles")) {
+        Eigen::Vector3d p[3];
+        for (int k = 0; k < 3; ++k) p[k] = io::pointFromJson(mesh["vertices"][t[k].get<int>()], "v");
+        area += 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).z();  // signed: flipped triangles subtract
+    }
+    EXPECT_NEAR(area, 4.0, 1e-9);  // the triangles tile the square exactly once
+    EXPECT_EQ(out.at("boundary_vertices").get<int>(), 32);
+    for (const json& bad : {json{{"curves", in["curves"]}, {"loops", {{0, 2}}}},
+                            json{{"curves", in["curves"]}, {"loops", {{0, 9}}}}, json{{"curves", in["curves"]}}}) {
+        const CliRun e = runCli("network", bad);
+        EXPECT_EQ(e.status, 2) << bad.dump();
+        EXPECT_NE(e.err.find("loops"), std::string::npos) << e.err;
     }
 }
