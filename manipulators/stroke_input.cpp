@@ -6,6 +6,8 @@
 #include <Inventor/SbLine.h>
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/actions/SoHandleEventAction.h>
+#include <Inventor/actions/SoRayPickAction.h>
+#include <Inventor/lists/SoPickedPointList.h>
 #include <Inventor/draggers/SoDragger.h>
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
@@ -20,6 +22,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <cmath>
+#include <string>
 
 namespace sculptline::manipulators {
 namespace {
@@ -30,6 +33,8 @@ constexpr float kPreviewWidth = 2.0f;
 /// Rays closer to parallel with the plane than this (cosine) miss it: the point would fly off to
 /// where the plane is seen edge-on.
 constexpr double kMinRayCosine = 1e-3;
+/// Pixels around the pointer within which a stroke's end counts as on a curve.
+constexpr float kCurvePickRadius = 5.0f;
 
 bool pathHasDragger(const SoPickedPoint* picked)
 {
@@ -91,25 +96,82 @@ void StrokeInput::setEnabled(bool enabled)
 
 void StrokeInput::handleEvent(void* self, SoEventCallback* node) { static_cast<StrokeInput*>(self)->onEvent(node); }
 
-std::optional<Eigen::Vector3d> StrokeInput::planePoint(SoEventCallback* node) const
+bool StrokeInput::ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vector3d& direction) const
 {
     SoCamera* camera = camera_ ? camera_() : nullptr;
-    if (!camera) return std::nullopt;
+    if (!camera) return false;
+    // The volume the camera renders with: the viewer keeps the camera's aspectRatio field at 1
+    // and adapts at render time (ADJUST_CAMERA), widening a tall view's volume by 1/aspect, as
+    // SoCamera::GLRender does; the camera's field alone would squeeze x by the aspect ratio.
     const SbViewportRegion& viewport = node->getAction()->getViewportRegion();
-    SbViewportRegion used;
-    const SbViewVolume volume = camera->getViewVolume(viewport, used);
+    const float aspect = viewport.getViewportAspectRatio();
+    SbViewVolume volume = camera->getViewVolume(aspect);
+    if (aspect < 1.0f) volume.scale(1.0f / aspect);
     SbLine line;
-    volume.projectPointToLine(node->getEvent()->getNormalizedPosition(used), line);
-    const Eigen::Vector3d from = scene::toEigen(line.getPosition());
-    const Eigen::Vector3d direction = scene::toEigen(line.getDirection()).normalized();
-    const Eigen::Vector3d normal = frame_.normal();
+    volume.projectPointToLine(node->getEvent()->getNormalizedPosition(viewport), line);
+    from = scene::toEigen(line.getPosition());
+    direction = scene::toEigen(line.getDirection()).normalized();
+    return true;
+}
+
+StrokeHit StrokeInput::hit(SoEventCallback* node, const Eigen::Vector3d& view) const
+{
+    StrokeHit result;
+    result.view = view;
+    // Every point under the pointer, nearest first: a curve counts even where a surface or another
+    // shape lies in front of it (the designer aims at the curve, the surface is translucent to
+    // intent).
+    SoHandleEventAction* action = node->getAction();
+    SoRayPickAction pick(action->getViewportRegion());
+    pick.setPoint(node->getEvent()->getPosition());
+    pick.setRadius(kCurvePickRadius);
+    pick.setPickAll(TRUE);
+    pick.apply(action->getPickRoot());
+    const SoPickedPointList& points = pick.getPickedPointList();
+    for (int k = 0; k < points.getLength(); ++k) {
+        const SoPath* path = points[k]->getPath();
+        for (int i = path->getLength() - 1; i >= 0; --i) {
+            const std::string name = path->getNode(i)->getName().getString();
+            if (name.rfind("Curve", 0) == 0 && name.size() > 5 && name.find_first_not_of("0123456789", 5) == std::string::npos) {
+                result.curve = static_cast<std::uint32_t>(std::stoul(name.substr(5)));
+                result.point = scene::toEigen(points[k]->getPoint());
+                return result;
+            }
+        }
+    }
+    return result;
+}
+
+namespace {
+
+/// Where the ray meets the plane, local (z = 0); empty when it runs parallel or the plane is
+/// behind the eye.
+std::optional<Eigen::Vector3d> intersect(const scene::PlaneFrame& frame, const Eigen::Vector3d& from, const Eigen::Vector3d& direction)
+{
+    const Eigen::Vector3d normal = frame.normal();
     const double facing = direction.dot(normal);
     if (std::abs(facing) < kMinRayCosine) return std::nullopt;
-    const double t = (frame_.origin - from).dot(normal) / facing;
+    const double t = (frame.origin - from).dot(normal) / facing;
     if (t <= 0.0) return std::nullopt;  // the plane is behind the eye
-    Eigen::Vector3d local = frame_.toLocal(from + t * direction);
+    Eigen::Vector3d local = frame.toLocal(from + t * direction);
     local.z() = 0.0;
     return local;
+}
+
+}  // namespace
+
+void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame)
+{
+    stroke.frame = frame;
+    stroke.points.clear();
+    std::vector<double> times;
+    for (size_t i = 0; i < stroke.rayOrigins.size(); ++i) {
+        if (const auto p = intersect(frame, stroke.rayOrigins[i], stroke.rayDirections[i])) {
+            stroke.points.push_back(*p);
+            times.push_back(stroke.times[i]);
+        }
+    }
+    stroke.times = std::move(times);
 }
 
 void StrokeInput::onEvent(SoEventCallback* node)
@@ -120,35 +182,46 @@ void StrokeInput::onEvent(SoEventCallback* node)
     if (SO_MOUSE_PRESS_EVENT(event, BUTTON1)) {
         // A press on a dragger moves the plane instead of starting a stroke.
         if (pathHasDragger(node->getPickedPoint())) return;
-        const std::optional<scene::PlaneFrame> plane = plane_ ? plane_() : std::nullopt;
+        Eigen::Vector3d from, direction;
+        if (!ray(node, from, direction)) return;
+        const StrokeHit start = hit(node, direction);
+        const std::optional<scene::PlaneFrame> plane = plane_ ? plane_(start) : std::nullopt;
         if (!plane) return;
-        frame_ = *plane;
-        const std::optional<Eigen::Vector3d> p = planePoint(node);
-        if (!p) return;
         drawing_ = true;
         startTime_ = now;
         stroke_ = {};
-        addSample(*p, 0.0);
+        stroke_.frame = *plane;
+        stroke_.start = start;
+        addSample(node, 0.0);
         node->setHandled();
     } else if (drawing_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
-        if (const std::optional<Eigen::Vector3d> p = planePoint(node)) addSample(*p, now - startTime_);
+        addSample(node, now - startTime_);
         node->setHandled();
     } else if (drawing_ && SO_MOUSE_RELEASE_EVENT(event, BUTTON1)) {
-        if (const std::optional<Eigen::Vector3d> p = planePoint(node)) addSample(*p, now - startTime_);
+        addSample(node, now - startTime_);
+        Eigen::Vector3d from, direction;
+        if (ray(node, from, direction)) stroke_.end = hit(node, direction);
         node->setHandled();
         endStroke(true);
     }
 }
 
-void StrokeInput::addSample(const Eigen::Vector3d& local, double time)
+void StrokeInput::addSample(SoEventCallback* node, double time)
 {
+    Eigen::Vector3d from, direction;
+    if (!ray(node, from, direction)) return;
     // Times must not decrease (replayed events may carry equal stamps).
     if (!stroke_.times.empty()) time = std::max(time, stroke_.times.back());
-    stroke_.points.push_back(local);
+    stroke_.rayOrigins.push_back(from);
+    stroke_.rayDirections.push_back(direction);
     stroke_.times.push_back(time);
-    const int n = static_cast<int>(stroke_.points.size());
-    previewPoints_->point.set1Value(n - 1, scene::toSb(frame_.toWorld(local)));
-    previewLine_->numVertices.setValue(n);
+    // The preview shows the points on the plane chosen at the press; a ray that misses it adds none.
+    if (const auto local = intersect(stroke_.frame, from, direction)) {
+        stroke_.points.push_back(*local);
+        const int n = static_cast<int>(stroke_.points.size());
+        previewPoints_->point.set1Value(n - 1, scene::toSb(stroke_.frame.toWorld(*local)));
+        previewLine_->numVertices.setValue(n);
+    }
     if (sampled_) sampled_();
 }
 
@@ -159,7 +232,7 @@ void StrokeInput::endStroke(bool keep)
     stroke_ = {};
     previewPoints_->point.setNum(0);
     previewLine_->numVertices.setNum(0);
-    if (keep && finished_ && stroke.points.size() >= 2) finished_(stroke);
+    if (keep && finished_ && stroke.rayOrigins.size() >= 2) finished_(stroke);
 }
 
 }  // namespace sculptline::manipulators

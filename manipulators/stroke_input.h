@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -21,13 +22,30 @@ class SoSeparator;
 
 namespace sculptline::manipulators {
 
-/// The plane a stroke goes onto, read when the pen goes down.
-using ActivePlane = std::function<std::optional<scene::PlaneFrame>()>;
+/// Where a stroke's end met an existing curve (a pick on a node named "Curve<id>").
+struct StrokeHit {
+    std::uint32_t curve = 0;  ///< entity id; 0 = the stroke end is in the air
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< picked point, world
+    Eigen::Vector3d view = -Eigen::Vector3d::UnitZ();  ///< eye -> point direction, unit
+};
+
+/// The plane a stroke is previewed on, chosen when the pen goes down (knowing whether it went
+/// down on a curve); empty = no stroke.
+using ActivePlane = std::function<std::optional<scene::PlaneFrame>(const StrokeHit& start)>;
 
 struct FinishedStroke {
-    std::vector<Eigen::Vector3d> points;  ///< plane-local, z = 0, model units
+    scene::PlaneFrame frame;  ///< the plane the points are in
+    std::vector<Eigen::Vector3d> points;  ///< in `frame`, z = 0, model units
     std::vector<double> times;  ///< seconds since the pen went down, one per point
+    /// The pointer's ray per point (world): a stroke that ends on a curve goes onto another plane
+    /// (seed 000 §3.1), so its points are intersected again.
+    std::vector<Eigen::Vector3d> rayOrigins, rayDirections;
+    StrokeHit start, end;
 };
+
+/// The points where the rays meet `frame`'s plane, in its local frame (z = 0); rays that miss
+/// it (parallel, or the plane behind the eye) are skipped, with their times.
+void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame);
 
 class StrokeInput {
 public:
@@ -57,8 +75,10 @@ public:
 private:
     static void handleEvent(void* self, SoEventCallback* node);
     void onEvent(SoEventCallback* node);
-    std::optional<Eigen::Vector3d> planePoint(SoEventCallback* node) const;
-    void addSample(const Eigen::Vector3d& local, double time);
+    /// The pointer's ray in world coordinates.
+    bool ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vector3d& direction) const;
+    StrokeHit hit(SoEventCallback* node, const Eigen::Vector3d& view) const;
+    void addSample(SoEventCallback* node, double time);
     void endStroke(bool keep);
 
     SoSeparator* root_ = nullptr;
@@ -67,7 +87,6 @@ private:
     SoLineSet* previewLine_ = nullptr;
     bool enabled_ = false;
     bool drawing_ = false;
-    scene::PlaneFrame frame_;
     double startTime_ = 0.0;
     FinishedStroke stroke_;
     std::function<SoCamera*()> camera_;

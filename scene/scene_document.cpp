@@ -91,6 +91,16 @@ GridSpec gridFromJson(const json& j)
     return g;
 }
 
+/// The optional "id" of a curve or surface (0 when absent), unique among all ids in `used`.
+int entityId(const json& j, const std::string& path, std::set<int>& used)
+{
+    const auto it = j.find("id");
+    if (it == j.end()) return 0;
+    const int id = io::integerFromJson(*it, path + ".id", 1, 1 << 30);
+    if (!used.insert(id).second) throw io::InputError(path + ".id: used by another entity");
+    return id;
+}
+
 }  // namespace
 
 SceneDocument documentFromJson(const json& j)
@@ -123,12 +133,17 @@ SceneDocument documentFromJson(const json& j)
             }
         }
         doc.curvePlanes.push_back(plane);
+        doc.curveIds.push_back(entityId(curves[i], path, planeIds));
+        if (doc.curveIds.back() != 0 && plane != 0 && doc.curveIds.back() < plane) {
+            throw io::InputError(path + ".id: must be greater than its plane's id");
+        }
     }
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {
         const std::string path = "surfaces[" + std::to_string(i) + "]";
         doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
         checkExtent(doc.surfaces.back().points(), path);
+        doc.surfaceIds.push_back(entityId(surfaces[i], path, planeIds));
     }
     return doc;
 }

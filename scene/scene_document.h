@@ -38,13 +38,18 @@ struct SceneDocument {
     /// Per curve: the id of the plane it lies on (its points are then plane-local, z = 0), or 0 for
     /// a curve in world coordinates.
     std::vector<int> curvePlanes;
+    /// Per curve and per surface: the entity id saved with it ("id"), or 0 (numbered on opening).
+    std::vector<int> curveIds;
+    std::vector<int> surfaceIds;
     std::vector<solvers::Surface3d> surfaces;
 };
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every
 /// member is optional (absent = default grid / none), curves and surfaces use the JSON geometry of
 /// ../shared/interfaces.md. A plane may carry "id" (positive, unique) and "xAxis"; a curve may carry
-/// "plane": the id of the plane it lies on, its points then 2D (or z = 0) in that plane's frame. Coordinates and sizes must lie within 1e6 model units (Coin draws in
+/// "plane": the id of the plane it lies on, its points then 2D (or z = 0) in that plane's frame.
+/// Curves and surfaces may carry "id" too; ids are unique across the document, and a curve's id is
+/// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes must lie within 1e6 model units (Coin draws in
 /// float).
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
 SceneDocument documentFromJson(const nlohmann::json& j);

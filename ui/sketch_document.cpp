@@ -4,6 +4,7 @@
 #include "manipulators/stroke_input.h"
 #include "scene/ground_grid.h"
 #include "scene/iv_export.h"
+#include "scene/model/auxiliary_plane.h"
 #include "scene/model/model_document.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
@@ -11,7 +12,16 @@
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <algorithm>
+
 namespace sculptline::ui {
+namespace {
+
+/// Edge limits of an auxiliary plane, model units: big enough to grab, never a sky-sized sheet.
+constexpr double kMinAuxiliarySize = 40.0;
+constexpr double kMaxAuxiliarySize = 1000.0;
+
+}  // namespace
 
 SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
 {
@@ -21,11 +31,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     strokeInput_ = std::make_unique<manipulators::StrokeInput>();
     // First, so that a press on empty space starts a stroke before anything else sees it.
     root_->addChild(strokeInput_->root());
-    strokeInput_->setActivePlane([this]() -> std::optional<scene::PlaneFrame> {
-        const scene::Entity* plane = model_.find(activePlane());
-        if (!plane) return std::nullopt;
-        return plane->frame;
-    });
+    strokeInput_->setActivePlane([this](const manipulators::StrokeHit& start) { return strokePlane(start); });
     strokeInput_->setFinishedCallback([this](const manipulators::FinishedStroke& s) { addStroke(s); });
     gridNode_ = scene::makeGroundGrid(grid_);
     root_->addChild(gridNode_);
@@ -119,12 +125,66 @@ void SketchDocument::deleteSelection()
     undo_.push(new DeleteEntityCommand(*this, selection_));
 }
 
-void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
+std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
 {
-    const scene::EntityId plane = activePlane();
+    strokeOnPlane_ = 0;
+    // Seed 000 §3.1, case 1: from a curve into the air, on the plane along its tangent there.
+    if (const std::optional<scene::CurveFrameAt> at = curveFrame(start)) {
+        if (auto plane = scene::planeAlongTangent(at->point, at->tangent, start.view, kMinAuxiliarySize)) return plane;
+    }
+    const scene::Entity* plane = model_.find(activePlane());
+    if (!plane) return std::nullopt;
+    strokeOnPlane_ = plane->id;
+    return plane->frame;
+}
+
+std::optional<scene::CurveFrameAt> SketchDocument::curveFrame(const manipulators::StrokeHit& hit) const
+{
+    const scene::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != scene::EntityKind::Curve || !curve->world) return std::nullopt;
+    // A planar curve's binormal is its plane's normal; a straight one has none of its own.
+    const scene::Entity* plane = model_.find(curve->plane());
+    const Eigen::Vector3d fallback = plane ? plane->frame.normal() : -hit.view;
+    return scene::curveFrameNear(*curve->world, hit.point, fallback);
+}
+
+void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
+{
+    manipulators::FinishedStroke stroke = finished;
     lastStroke_ = {};
-    lastStroke_.samples = static_cast<int>(stroke.points.size());
-    if (plane == 0) return;
+    lastStroke_.samples = static_cast<int>(stroke.rayOrigins.size());
+    // Case 2: a stroke connecting two curves lies on the plane through both points that contains
+    // the first curve's binormal.
+    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    if (from && to && stroke.end.curve != stroke.start.curve) {
+        if (auto plane = scene::planeThroughPoints(from->point, to->point, from->binormal, stroke.start.view, kMinAuxiliarySize)) {
+            manipulators::reproject(stroke, *plane);
+            strokeOnPlane_ = 0;
+        }
+    }
+    if (stroke.points.size() < 2) return;
+    std::vector<scene::Entity> added;
+    scene::EntityId plane = strokeOnPlane_;
+    if (plane == 0) {
+        // An auxiliary plane made for this stroke, centred on it and large enough to show it
+        // whole. Centred, not at the curve point: its dragger would sit on the curve's end and take
+        // the press of the next stroke started there.
+        Eigen::Vector3d lo = stroke.points.front(), hi = lo;
+        for (const Eigen::Vector3d& p : stroke.points) {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        const Eigen::Vector3d centre = 0.5 * (lo + hi);
+        for (Eigen::Vector3d& p : stroke.points) p -= centre;
+        scene::Entity aux;
+        aux.kind = scene::EntityKind::Plane;
+        aux.frame = stroke.frame;
+        aux.frame.origin = stroke.frame.toWorld(centre);
+        aux.frame.size = std::clamp(1.2 * (hi - lo).head<2>().maxCoeff(), kMinAuxiliarySize, kMaxAuxiliarySize);
+        added.push_back(aux);
+        plane = kPreviousEntity;
+    }
     solvers::stroke::Stroke input;
     input.points = stroke.points;
     input.times = stroke.times;
@@ -137,15 +197,18 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
         curve.kind = scene::EntityKind::Curve;
         curve.inputs = {plane};
         curve.local = fit.curve;
+        added.push_back(curve);
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = fit.curve.pointCount();
         lastStroke_.maxError = fit.maxError;
-        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm")
+        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm%5")
                                   .arg(lastStroke_.samples)
                                   .arg(fit.curve.degree())
                                   .arg(lastStroke_.controlPoints)
-                                  .arg(fit.maxError, 0, 'f', 3);
-        undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Sketch curve on plane %1").arg(plane)));
+                                  .arg(fit.maxError, 0, 'f', 3)
+                                  .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
+        const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
+        undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.
         lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));

@@ -2,6 +2,7 @@
 // The open document: the model, its Coin view, one dragger-carried manipulator per plane, the stroke
 // input, the selection and the undo stack. Every edit goes through a QUndoCommand
 // (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
+#include "scene/model/auxiliary_plane.h"
 #include "scene/model/model.h"
 #include "scene/model/model_view.h"
 #include "scene/model/update_scheduler.h"
@@ -12,6 +13,7 @@
 #include <QUndoStack>
 
 #include <map>
+#include <optional>
 #include <memory>
 
 class SoCamera;
@@ -22,6 +24,7 @@ namespace sculptline::manipulators {
 class ProjectionPlaneManipulator;
 class StrokeInput;
 struct FinishedStroke;
+struct StrokeHit;
 }  // namespace sculptline::manipulators
 
 namespace sculptline::ui {
@@ -86,6 +89,10 @@ Q_SIGNALS:
     void strokeFinished();
 
 private:
+    /// The plane a stroke starting at `start` is drawn on (records strokeOnPlane_).
+    std::optional<scene::PlaneFrame> strokePlane(const manipulators::StrokeHit& start);
+    /// The frame of the curve `hit` landed on, if it landed on one.
+    std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void dragStarted(scene::EntityId plane);
     void dragFinished(scene::EntityId plane);
 
@@ -103,6 +110,8 @@ private:
     scene::EntityId selection_ = 0;
     scene::EntityId lastPlane_ = 0;
     scene::EntityId dragging_ = 0;
+    /// The existing plane the current stroke is on; 0 = an auxiliary plane made for it.
+    scene::EntityId strokeOnPlane_ = 0;
     scene::PlaneFrame dragStart_;
     StrokeReport lastStroke_;
 };

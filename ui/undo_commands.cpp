@@ -22,7 +22,11 @@ AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<scene::E
 
 void AddEntitiesCommand::redo()
 {
-    for (scene::Entity& e : entities_) {
+    for (size_t i = 0; i < entities_.size(); ++i) {
+        scene::Entity& e = entities_[i];
+        for (scene::EntityId& input : e.inputs) {
+            if (input == kPreviousEntity && i > 0) input = entities_[i - 1].id;
+        }
         // First run: the model assigns the id (0 asks for a fresh one); later runs reuse it.
         e.id = restoreEntity(doc_.model(), e);
     }

@@ -12,8 +12,12 @@ namespace sculptline::ui {
 
 class SketchDocument;
 
-/// Adds entities (a plane; a curve from a stroke). Redo re-adds them under their first ids, so
-/// later commands that name them stay valid.
+/// In an AddEntitiesCommand, an input naming the entity added just before (a curve on the
+/// auxiliary plane made for it, whose id is known only once the plane is added).
+constexpr scene::EntityId kPreviousEntity = 0xffffffffu;
+
+/// Adds entities (a plane; a curve from a stroke; an auxiliary plane and its curve). Redo re-adds
+/// them under their first ids, so later commands that name them stay valid.
 class AddEntitiesCommand : public QUndoCommand {
 public:
     AddEntitiesCommand(SketchDocument& doc, std::vector<scene::Entity> entities, const QString& text);

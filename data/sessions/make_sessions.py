@@ -71,6 +71,14 @@ def main():
          {"type": "key", "key": "Del", "t": t + 90}, {"type": "key", "key": "Ctrl+Z", "t": t + 100}]
     write("delete_undo.json", events + x + [{"type": "wait", "ms": 50}])
 
+    # Auxiliary planes (seed 000 §3.1). The fitted curves interpolate their strokes' ends, so the
+    # first stroke's start pixel (410, 170) lies on curve 4 and the second's (560, 330) on curve 5.
+    # Case 1: from curve 4 into the air; case 2: from curve 4 to curve 5.
+    a1, ta = stroke([(410 - 3 * i, 170 - 2 * i) for i in range(30)], t + 50)
+    a2, ta = stroke([(round(410 + 150 * i / 29), round(170 + 160 * i / 29 + 25 * math.sin(math.pi * i / 29)))
+                     for i in range(30)], ta + 50)
+    write("auxiliary_planes.json", events + a1 + a2 + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

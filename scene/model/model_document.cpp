@@ -20,15 +20,35 @@ PlaneFrame planeFrame(const PlaneSpec& plane)
 void populateModel(const SceneDocument& doc, Model& model)
 {
     model.clear();
-    // Entity ids: planes keep their document ids; everything else is numbered after them, so ids
-    // still grow in dependency order.
-    std::map<int, EntityId> planeIds;
-    for (const PlaneSpec& p : doc.planes) planeIds[p.id] = model.addPlane(planeFrame(p), static_cast<EntityId>(p.id));
+    // Entities with ids are created in id order (inputs before dependents, as when they were made:
+    // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
+    enum class Kind { Plane, Curve, Surface };
+    std::map<int, std::pair<Kind, size_t>> byId;
+    std::vector<std::pair<Kind, size_t>> unnumbered;
+    for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
     for (size_t i = 0; i < doc.curves.size(); ++i) {
-        const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
-        model.addCurve(plane != 0 ? planeIds.at(plane) : 0, doc.curves[i]);
+        const int id = i < doc.curveIds.size() ? doc.curveIds[i] : 0;
+        if (id != 0) byId[id] = {Kind::Curve, i};
+        else unnumbered.push_back({Kind::Curve, i});
     }
-    for (const solvers::Surface3d& s : doc.surfaces) model.addSurface(s);
+    for (size_t i = 0; i < doc.surfaces.size(); ++i) {
+        const int id = i < doc.surfaceIds.size() ? doc.surfaceIds[i] : 0;
+        if (id != 0) byId[id] = {Kind::Surface, i};
+        else unnumbered.push_back({Kind::Surface, i});
+    }
+    auto create = [&](Kind kind, size_t i, EntityId id) {
+        switch (kind) {
+        case Kind::Plane: model.addPlane(planeFrame(doc.planes[i]), id); break;
+        case Kind::Curve: {
+            const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
+            model.addCurve(static_cast<EntityId>(plane), doc.curves[i], id);
+            break;
+        }
+        case Kind::Surface: model.addSurface(doc.surfaces[i], id); break;
+        }
+    };
+    for (const auto& [id, entry] : byId) create(entry.first, entry.second, static_cast<EntityId>(id));
+    for (const auto& [kind, i] : unnumbered) create(kind, i, 0);
     model.update();
 }
 
@@ -47,6 +67,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
             break;
         case EntityKind::Curve: {
             json c = io::toJson(*e.local);
+            c["id"] = id;
             if (e.plane() != 0) {
                 c["plane"] = e.plane();
                 // Plane-local points are 2D: [x, y].
@@ -55,7 +76,12 @@ json modelToJson(const Model& model, const GridSpec& grid)
             curves.push_back(std::move(c));
             break;
         }
-        case EntityKind::Surface: surfaces.push_back(io::toJson(*e.surface)); break;
+        case EntityKind::Surface: {
+            json s = io::toJson(*e.surface);
+            s["id"] = id;
+            surfaces.push_back(std::move(s));
+            break;
+        }
         }
     }
     return json{{"units", "mm"},

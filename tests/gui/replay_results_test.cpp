@@ -147,6 +147,43 @@ TEST(ReplayResults, DeletesAreUndoable)
     EXPECT_EQ(model.entities().size(), 4u);  // plane, default curve, surface, first stroke
 }
 
+TEST(ReplayResults, StrokesFromCurvesGoOntoAuxiliaryPlanes)
+{
+    // Session: the two strokes of sketch.json (curves 4 and 5 on plane 1), then a stroke from curve
+    // 4's start into the air (case 1) and one from curve 4's start to curve 5's start (case 2)
+    const scene::Model model = readModel("auxiliary.json");
+    const scene::Entity* curve4 = model.find(4);
+    const scene::Entity* curve5 = model.find(5);
+    ASSERT_TRUE(curve4 && curve5);
+    const Eigen::Vector3d a = curve4->world->evaluate(curve4->world->domainStart());
+    const Eigen::Vector3d b = curve5->world->evaluate(curve5->world->domainStart());
+    const Eigen::Vector3d tangent = curve4->world->derivatives(curve4->world->domainStart(), 1)[1].normalized();
+    const Eigen::Vector3d planeNormal = model.find(1)->frame.normal();
+    std::vector<const scene::Entity*> auxiliary;
+    for (const auto& [id, e] : model.entities()) {
+        if (e.kind == scene::EntityKind::Plane && id != 1) auxiliary.push_back(&e);
+    }
+    ASSERT_EQ(auxiliary.size(), 2u);
+    /// The hand starts within a few pixels of the curve's end: a millimetre or two here.
+    constexpr double kOnPlane = 3.0;
+    // Case 1: through the curve point, containing the tangent there, one curve on it
+    const scene::PlaneFrame& p1 = auxiliary[0]->frame;
+    EXPECT_LT(std::abs((a - p1.origin).dot(p1.normal())), kOnPlane);
+    EXPECT_LT(std::abs(tangent.dot(p1.normal())), 0.05);
+    EXPECT_EQ(curvesOn(model, auxiliary[0]->id).size(), 1u);
+    // Case 2: through both points, containing the first curve's binormal (its plane's normal)
+    const scene::PlaneFrame& p2 = auxiliary[1]->frame;
+    EXPECT_LT(std::abs((a - p2.origin).dot(p2.normal())), kOnPlane);
+    EXPECT_LT(std::abs((b - p2.origin).dot(p2.normal())), kOnPlane);
+    EXPECT_LT(std::abs(planeNormal.dot(p2.normal())), 1e-6);
+    const auto onP2 = curvesOn(model, auxiliary[1]->id);
+    ASSERT_EQ(onP2.size(), 1u);
+    // The curve runs from one curve to the other
+    const solvers::Curve3d& c = *onP2[0]->world;
+    EXPECT_LT((c.evaluate(c.domainStart()) - a).norm(), 2 * kOnPlane);
+    EXPECT_LT((c.evaluate(c.domainEnd()) - b).norm(), 2 * kOnPlane);
+}
+
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
 {
     const nlohmann::json saved = readJson("drag.json");
