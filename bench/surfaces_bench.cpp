@@ -4,6 +4,8 @@
 #include "solvers/surfaces/boundary_rotation.h"
 #include "solvers/surfaces/coons_fill.h"
 #include "solvers/surfaces/extrude.h"
+#include "solvers/surfaces/gordon.h"
+#include "solvers/surfaces/network_mesh.h"
 #include "solvers/surfaces/loft.h"
 #include "solvers/surfaces/rail_rotation.h"
 #include "solvers/surfaces/revolve.h"
@@ -150,6 +152,36 @@ void BM_SurfaceRailRotation(benchmark::State& state)
     state.counters["max_deviation"] = s.maxDeviation;
 }
 
+// A Gordon network of 4 x 4 curves with n control points each, on z = 0.3 sin(x) cos(y).
+void BM_SurfaceGordon(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    const auto h = [](double x, double y) { return 0.3 * std::sin(x) * std::cos(y); };
+    std::vector<Curve3d> us, vs;
+    for (int k = 0; k < 4; ++k) {
+        std::vector<Vec3> a, b;
+        for (int i = 0; i < n; ++i) {
+            const double t = 3.0 * i / (n - 1);
+            a.push_back(Vec3(t, k, h(t, k)));
+            b.push_back(Vec3(k, t, h(k, t)));
+        }
+        us.push_back(makeClampedUniform<3>(1, a));
+        vs.push_back(makeClampedUniform<3>(1, b));
+    }
+    // The polylines cross between their vertices, so they meet only to their chord error.
+    const GordonOptions meet{0.01};
+    for (auto _ : state) benchmark::DoNotOptimize(gordon(us, vs, meet));
+}
+
+// A four-sided loop with n control points per curve meshed at 16 segments per curve.
+void BM_SurfaceNetworkMesh(benchmark::State& state)
+{
+    const std::vector<Curve3d> b = boundaries(static_cast<int>(state.range(0)));
+    NetworkMesh m;
+    for (auto _ : state) benchmark::DoNotOptimize(m = meshNetwork(b, {{0, 1, 2, 3}}));
+    state.counters["triangles"] = static_cast<double>(m.triangles.size());
+}
+
 }  // namespace
 
 BENCHMARK(BM_SurfaceLoft)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
@@ -161,3 +193,5 @@ BENCHMARK(BM_SurfaceExtrudePath)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMi
 BENCHMARK(BM_SurfaceSweep)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceBoundaryRotation)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceRailRotation)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceGordon)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceNetworkMesh)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);

@@ -5,7 +5,9 @@
 // Modes and options (../shared/interfaces.md): fill [2-4 boundaries] ("tolerance": meet tolerance);
 // revolve [profile] {"axis": {"point", "direction"}, "angle": degrees = 360}; extrude [profile]
 // {"direction": [..]} or {"path": C}; sweep [profile, path]; loft [sections..] ("degree": cross
-// degree = 3); boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]. The
+// degree = 3); boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]; gordon
+// [u-curves..] with {"v_curves": [v-curves..]} (a grid-like network; "tolerance": meet tolerance,
+// reports "max_gap" and the iso-parameters "u_params"/"v_params" of the curves). The
 // approximating modes (sweep, boundary-rotation, rail-rotation) take "tolerance" (model units) and
 // report "max_deviation". G1 "tangents" for fill are not implemented and are refused.
 #include "app/cli/cli_support.h"
@@ -13,6 +15,7 @@
 #include "solvers/surfaces/boundary_rotation.h"
 #include "solvers/surfaces/coons_fill.h"
 #include "solvers/surfaces/extrude.h"
+#include "solvers/surfaces/gordon.h"
 #include "solvers/surfaces/loft.h"
 #include "solvers/surfaces/rail_rotation.h"
 #include "solvers/surfaces/revolve.h"
@@ -56,6 +59,7 @@ struct Outcome {
     Surface3d surface;
     double deviation = -1.0;
     double tolerance = 0.0;
+    json extra = json::object();
 };
 
 // Input is read and checked before the clock starts; `build` runs timed.
@@ -94,6 +98,18 @@ std::function<Outcome()> prepare(const std::string& mode, const json& input, con
         return [c, o] { return Outcome{surf::loft(c, o)}; };
     }
     const double tol = positiveOption(input, "tolerance", 0.0);
+    if (mode == "gordon") {
+        const json& vj = field(input, "v_curves");
+        if (!vj.is_array()) throw InputError("v_curves: expected an array of curves");
+        std::vector<Curve3d> v;
+        for (size_t k = 0; k < vj.size(); ++k)
+            v.push_back(solvers::io::curveFromJson(vj[k], "v_curves[" + std::to_string(k) + "]"));
+        return [c, v, tol] {
+            const surf::GordonResult g = surf::gordon(c, v, surf::GordonOptions{tol});
+            return Outcome{g.surface, -1.0, 0.0,
+                           json{{"max_gap", g.maxGap}, {"u_params", g.uParams}, {"v_params", g.vParams}}};
+        };
+    }
     if (mode == "sweep") {
         requireCount(c, 2, 2, "[profile, path]");
         return [c, tol] {
@@ -122,7 +138,7 @@ std::function<Outcome()> prepare(const std::string& mode, const json& input, con
         };
     }
     throw InputError("mode: unknown mode \"" + mode +
-                     "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation)");
+                     "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation, gordon)");
 }
 
 json run(const json& input, const Options&)
@@ -146,6 +162,7 @@ json run(const json& input, const Options&)
         out["max_deviation"] = r.deviation;
         out["tolerance"] = r.tolerance;
     }
+    for (const auto& [key, value] : r.extra.items()) out[key] = value;
     out["elapsed_ms"] = ms;
     requireFiniteOutput(out);
     return out;
@@ -153,7 +170,7 @@ json run(const json& input, const Options&)
 
 const SubcommandRegistrar registrar{
     {"surface", "surface from curves: {mode, curves, ..} -> {surface} (fill, revolve, extrude, sweep, loft, "
-                "boundary-rotation, rail-rotation)",
+                "boundary-rotation, rail-rotation, gordon)",
      &run}};
 
 }  // namespace

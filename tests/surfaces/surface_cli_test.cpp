@@ -78,6 +78,9 @@ TEST(SurfaceCli, GivenEachMode_WhenRun_ThenSurfaceMeetsItsFirstCurve)
         {{"mode", "loft"}, {"curves", {profile, section2}}},
         {{"mode", "sweep"}, {"curves", {curve({{1, 0.2, 0}, {1, 0, 0.2}, {1, -0.2, 0}}), path}}, {"tolerance", 1e-3}},
         {{"mode", "boundary-rotation"}, {"curves", {profile, curve({{-1, 0, 0}, {-1.2, 0, 1}, {-1, 0, 3}})}}},
+        {{"mode", "gordon"},
+         {"curves", {curve({{0, 0, 0}, {1, 0, 0.5}, {2, 0, 0}}), curve({{0, 2, 0}, {1, 2, -0.5}, {2, 2, 0}})}},
+         {"v_curves", {curve({{0, 0, 0}, {0, 1, 0.3}, {0, 2, 0}}), curve({{2, 0, 0}, {2, 1, 0.2}, {2, 2, 0}})}}},
     };
     for (const json& in : inputs) {
         const CliRun r = runCli("surface", in);
