@@ -68,6 +68,45 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
     return best;
 }
 
+// Consecutive samples within minDist of a cluster's first sample become their centroid (mean
+// time, middle source index); the first and last samples are kept exactly.
+void clusterSamples(const std::vector<Eigen::Vector3d>& pts, const std::vector<double>& times,
+                    const std::vector<int>& sources, double minDist, ConditionedStroke& cs)
+{
+    cs.points.clear();
+    cs.time.clear();
+    cs.source.clear();
+    const double minDist2 = minDist * minDist;
+    const int last = static_cast<int>(pts.size()) - 1;
+    auto keep = [&](int i) {
+        cs.points.push_back(pts[i]);
+        cs.source.push_back(sources[i]);
+        cs.time.push_back(times[i]);
+    };
+    for (int i = 0; i <= last;) {
+        int j = i + 1;
+        while (j <= last && (pts[j] - pts[i]).squaredNorm() < minDist2) ++j;
+        if (i == 0) {
+            keep(0);
+        } else if (j > last) {
+            keep(last);
+        } else {
+            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            double t = 0.0;
+            for (int k = i; k < j; ++k) {
+                sum += pts[k];
+                t += times[k];
+            }
+            cs.points.push_back(sum / (j - i));
+            cs.source.push_back(sources[i + (j - 1 - i) / 2]);
+            cs.time.push_back(t / (j - i));
+        }
+        i = j;
+    }
+    // The start cluster held every sample: keep the last one too when it is a distinct point.
+    if (last > 0 && cs.source.back() != sources[last] && (pts[last] - pts[0]).squaredNorm() > 0.0) keep(last);
+}
+
 template <typename T>
 void keepRange(std::vector<T>& v, int first, int last)
 {
@@ -128,45 +167,32 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     // sampled pen instead of keeping one noisy sample of it. The stroke's first and last samples
     // are kept exactly (the fit interpolates them). minDist is at least length / maxSamples, so the
     // conditioned count is bounded by ~maxSamples for any input size, in one linear pass.
+    // The path length is taken over every stride-th sample: summed over every sample of a very
+    // dense stroke, jitter would inflate it many times over (1e6 samples with 0.1 noise: 150x),
+    // and the merge distance with it.
+    const size_t stride = std::max<size_t>(1, stroke.points.size() / std::max(1, options.maxSamples));
     double rawLength = 0.0;
-    for (size_t i = 1; i < stroke.points.size(); ++i) rawLength += (stroke.points[i] - stroke.points[i - 1]).norm();
-    const double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
-    const double minDist2 = minDist * minDist;
+    for (size_t i = stride; i < stroke.points.size(); i += stride) {
+        rawLength += (stroke.points[i] - stroke.points[i - stride]).norm();
+    }
+    double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
     const int last = static_cast<int>(stroke.points.size()) - 1;
-    auto timeOf = [&](int i) { return timed ? stroke.times[i] : static_cast<double>(i); };
-    for (int i = 0; i <= last;) {
-        int j = i + 1;
-        while (j <= last && (stroke.points[j] - stroke.points[i]).squaredNorm() < minDist2) ++j;
-        if (i == 0) {
-            cs.points.push_back(stroke.points[0]);
-            cs.source.push_back(0);
-            cs.time.push_back(timeOf(0));
-        } else if (j > last) {
-            cs.points.push_back(stroke.points[last]);
-            cs.source.push_back(last);
-            cs.time.push_back(timeOf(last));
-        } else {
-            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-            double t = 0.0;
-            for (int k = i; k < j; ++k) {
-                sum += stroke.points[k];
-                t += timeOf(k);
-            }
-            cs.points.push_back(sum / (j - i));
-            cs.source.push_back(i + (j - 1 - i) / 2);
-            cs.time.push_back(t / (j - i));
-        }
-        i = j;
+    std::vector<double> times(stroke.points.size());
+    std::vector<int> sources(stroke.points.size());
+    for (int i = 0; i <= last; ++i) {
+        times[i] = timed ? stroke.times[i] : static_cast<double>(i);
+        sources[i] = i;
     }
-    if (cs.points.size() >= 2 && last > 0 && cs.source.back() != last) {  // the start cluster held every sample
-        cs.points.push_back(stroke.points[last]);
-        cs.source.push_back(last);
-        cs.time.push_back(timeOf(last));
-    }
-    if (cs.points.size() == 1 && (stroke.points[last] - stroke.points[0]).norm() > 0.0) {
-        cs.points.push_back(stroke.points[last]);
-        cs.source.push_back(last);
-        cs.time.push_back(timeOf(last));
+    clusterSamples(stroke.points, times, sources, minDist, cs);
+    // The strided length can still be inflated by jitter; the clusters are averaged and nearly
+    // noise-free, so a second pass over them with their own length honours the bound.
+    for (int pass = 0; pass < 2 && cs.size() > options.maxSamples; ++pass) {
+        updateArcLength(cs);
+        minDist = std::max(minDist, cs.arc.back() / options.maxSamples);
+        const std::vector<Eigen::Vector3d> pts = cs.points;
+        const std::vector<double> ts = cs.time;
+        const std::vector<int> src = cs.source;
+        clusterSamples(pts, ts, src, minDist, cs);
     }
     if (cs.points.size() < 2) {
         throw GeometryError("stroke.points: fewer than two distinct points after removing duplicates");
@@ -185,8 +211,12 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
         for (int i = c.head; i < c.tail; ++i) area += cs.points[i].cross(cs.points[i + 1]);
         area += cs.points[c.tail].cross(cs.points[c.head]);
         const bool encloses = 0.5 * area.norm() >= options.minLoopArea * total * total;
+        // The gap is measured against the perimeter of the stroke's extent (pi * extent, a circle's)
+        // when that is shorter than the stroke: a long stroke (a spiral, a scribble) passing near
+        // its start is not a loop because its length dwarfs the miss.
+        const double perimeter = std::min(total, 3.14159265358979 * cs.extent);
         const bool meets =
-            encloses && c.gap <= options.closeGap * total && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
+            encloses && c.gap <= options.closeGap * perimeter && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
         if (meets || options.closure == Closure::Closed) {
             cs.closed = true;
             const EndPair cut = meets ? c : EndPair{0, cs.size() - 1, 0.0};

@@ -88,7 +88,8 @@ TEST(StrokeRobustness, GivenMillionSamples_ThenFittedInBoundedTime)
     d.rate = 1e6 / 3.0;  // ~1e6 samples over the ~3 s a slow spiral takes
     d.peakSpeed = 300;
     d.noise = 0.1;
-    const Stroke s = draw(spiralShape(100, 3.0), d);
+    const Shape spiral = spiralShape(100, 3.0);
+    const Stroke s = draw(spiral, d);
     ASSERT_GT(s.points.size(), 500000u);
 
     const auto t0 = std::chrono::steady_clock::now();
@@ -98,6 +99,14 @@ TEST(StrokeRobustness, GivenMillionSamples_ThenFittedInBoundedTime)
     EXPECT_TRUE(r.converged);
     EXPECT_LT(seconds, 5.0) << "bounded time (a generous bound for a loaded machine; benchmarks hold the real numbers)";
     EXPECT_LT(r.conditioned.size(), 25000);
+    // Thinning must not lose the shape: the curve stays within tolerance (plus what is left of the
+    // averaged-out noise) of the true spiral.
+    double toTruth = 0;
+    for (int i = 0; i <= 2000; ++i) {
+        const double u = r.curve.domainStart() + (r.curve.domainEnd() - r.curve.domainStart()) * i / 2000;
+        toTruth = std::max(toTruth, distanceToPolyline(r.curve.evaluate(u), spiral.reference, false));
+    }
+    EXPECT_LE(toTruth, r.tolerance + 4 * d.noise);
 }
 
 TEST(StrokeRobustness, GivenStrokeDoublingBack_ThenTurnaroundIsACornerAndFitHolds)
@@ -133,6 +142,16 @@ TEST(StrokeRobustness, GivenTeardropLoopWithOneCorner_ThenClosedCurveWithThatCor
     EXPECT_EQ(r.corners.size(), 1u);
     EXPECT_TRUE(r.converged);
     EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+}
+
+TEST(StrokeRobustness, GivenLongSpiralPassingNearItsStart_ThenNotTakenForALoop)
+{
+    // Its ends lie ~5 % of its length apart (the turns are close), yet it encloses no loop.
+    DrawOptions d;
+    d.noise = 0.2;
+    const FitResult r = fitStroke(draw(spiralShape(100, 3.0), d));
+    EXPECT_FALSE(r.curve.isClosed());
+    EXPECT_TRUE(r.warnings.empty());
 }
 
 TEST(StrokeRobustness, Given3DStroke_ThenFitIn3D)
