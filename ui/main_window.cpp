@@ -138,6 +138,7 @@ void MainWindow::createActions()
     };
     modeAction("mode.view", tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
     modeAction("mode.sketch", tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
+    modeAction("mode.oversketch", tr("&Over-sketch a curve"), QStringLiteral("O"), Mode::Oversketch);
     modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
@@ -146,7 +147,8 @@ void MainWindow::createActions()
 void MainWindow::createDocks()
 {
     auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
-                                 action(QStringLiteral("mode.select")), action(QStringLiteral("plane.add"))},
+                                 action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.select")),
+                                 action(QStringLiteral("plane.add"))},
                                 this);
     addDockWidget(Qt::LeftDockWidgetArea, modes);
     entities_ = new EntityListDock(this);
@@ -162,8 +164,12 @@ void MainWindow::setMode(Mode mode)
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
-    document_->strokeInput().setEnabled(mode == Mode::Sketch);
-    const char* name = mode == Mode::View ? "mode.view" : mode == Mode::Sketch ? "mode.sketch" : "mode.select";
+    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch);
+    document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch : SketchDocument::StrokeMode::Sketch);
+    const char* name = mode == Mode::View         ? "mode.view"
+                       : mode == Mode::Sketch     ? "mode.sketch"
+                       : mode == Mode::Oversketch ? "mode.oversketch"
+                                                  : "mode.select";
     action(QString::fromLatin1(name))->setChecked(true);
     updateStatus();
 }
@@ -177,6 +183,9 @@ void MainWindow::updateStatus()
     case Mode::Sketch:
         text = plane ? tr("Sketch: draw with the left button on plane %1; drag the plane's jack to move or turn it. Ctrl+P: new plane.").arg(plane)
                      : tr("Sketch: there is no plane to draw on; Ctrl+P adds one facing the view.");
+        break;
+    case Mode::Oversketch:
+        text = tr("Over-sketch: draw over a curve (start on it, or near a curve of plane %1) to redraw that part of it.").arg(plane);
         break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
     }

@@ -22,7 +22,7 @@ class EntityListDock;
 class InspectorDock;
 class SketchDocument;
 
-enum class Mode { View, Sketch, Select };
+enum class Mode { View, Sketch, Oversketch, Select };
 
 /// @note SoQt::init() must have been called before construction.
 class MainWindow : public QMainWindow {

@@ -6,6 +6,8 @@
 #include "scene/iv_export.h"
 #include "scene/model/auxiliary_plane.h"
 #include "scene/model/model_document.h"
+#include "solvers/bspline/projection.h"
+#include "solvers/editing/oversketch.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
 
@@ -13,6 +15,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <algorithm>
+#include <limits>
 
 namespace sculptline::ui {
 namespace {
@@ -128,6 +131,16 @@ void SketchDocument::deleteSelection()
 std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
 {
     strokeOnPlane_ = 0;
+    oversketchTarget_ = 0;
+    if (strokeMode_ == StrokeMode::Oversketch) {
+        // Over the curve the pen went down on, in its plane; else over the active plane's curves.
+        const scene::Entity* curve = model_.find(start.curve);
+        const scene::Entity* plane = model_.find(curve && curve->plane() != 0 ? curve->plane() : activePlane());
+        if (!plane) return std::nullopt;
+        if (curve && curve->plane() == plane->id) oversketchTarget_ = curve->id;
+        strokeOnPlane_ = plane->id;
+        return plane->frame;
+    }
     // Seed 000 §3.1, case 1: from a curve into the air, on the plane along its tangent there.
     if (const std::optional<scene::CurveFrameAt> at = curveFrame(start)) {
         if (auto plane = scene::planeAlongTangent(at->point, at->tangent, start.view, kMinAuxiliarySize)) return plane;
@@ -150,6 +163,10 @@ std::optional<scene::CurveFrameAt> SketchDocument::curveFrame(const manipulators
 
 void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
 {
+    if (strokeMode_ == StrokeMode::Oversketch) {
+        oversketchStroke(finished);
+        return;
+    }
     manipulators::FinishedStroke stroke = finished;
     lastStroke_ = {};
     lastStroke_.samples = static_cast<int>(stroke.rayOrigins.size());
@@ -212,6 +229,45 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.
         lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke)
+{
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.points.size());
+    // The target: the curve the stroke started on, else the plane's curve nearest to the stroke
+    // (mean distance of its samples, plane-local).
+    scene::EntityId target = oversketchTarget_;
+    if (target == 0) {
+        double best = std::numeric_limits<double>::infinity();
+        for (scene::EntityId id : model_.dependents(strokeOnPlane_)) {
+            const solvers::CurveProjector<3> projector(*model_.find(id)->local);
+            double sum = 0.0;
+            for (const Eigen::Vector3d& p : stroke.points) sum += projector.project(p).distance;
+            if (sum < best) {
+                best = sum;
+                target = id;
+            }
+        }
+    }
+    const scene::Entity* curve = model_.find(target);
+    if (!curve || stroke.points.size() < 2) {
+        lastStroke_.message = tr("Over-sketch: no curve on plane %1 to change").arg(strokeOnPlane_);
+        Q_EMIT strokeFinished();
+        return;
+    }
+    try {
+        double maxError = 0.0;
+        solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke.points, {}, nullptr, &maxError);
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = changed.pointCount();
+        lastStroke_.maxError = maxError;
+        lastStroke_.message = tr("Curve %1 over-sketched: %2 control points, max error %3 mm").arg(target).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
+        undo_.push(new ReplaceCurveCommand(*this, target, *curve->local, std::move(changed)));
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
     }
     Q_EMIT strokeFinished();
 }

@@ -70,6 +70,12 @@ public:
     scene::EntityId selection() const { return selection_; }
     void select(scene::EntityId id);
 
+    /// What a finished stroke does: becomes a new curve, or over-sketches the curve it was drawn
+    /// over (solvers/editing, local-c2 by default).
+    enum class StrokeMode { Sketch, Oversketch };
+    void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
+    StrokeMode strokeMode() const { return strokeMode_; }
+
     /// Undoable edits.
     void addPlane(const scene::PlaneFrame& frame);
     void deleteSelection();
@@ -93,6 +99,7 @@ private:
     std::optional<scene::PlaneFrame> strokePlane(const manipulators::StrokeHit& start);
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
+    void oversketchStroke(const manipulators::FinishedStroke& stroke);
     void dragStarted(scene::EntityId plane);
     void dragFinished(scene::EntityId plane);
 
@@ -114,6 +121,8 @@ private:
     scene::EntityId strokeOnPlane_ = 0;
     scene::PlaneFrame dragStart_;
     StrokeReport lastStroke_;
+    StrokeMode strokeMode_ = StrokeMode::Sketch;
+    scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
 };
 
 }  // namespace sculptline::ui

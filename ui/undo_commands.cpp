@@ -84,3 +84,27 @@ void MovePlaneCommand::apply(const scene::PlaneFrame& frame)
 }
 
 }  // namespace sculptline::ui
+
+namespace sculptline::ui {
+
+ReplaceCurveCommand::ReplaceCurveCommand(SketchDocument& doc, scene::EntityId curve, solvers::Curve3d before, solvers::Curve3d after)
+    : doc_(doc), curve_(curve), before_(std::move(before)), after_(std::move(after))
+{
+    setText(QStringLiteral("Over-sketch curve %1").arg(curve));
+}
+
+void ReplaceCurveCommand::redo()
+{
+    doc_.model().setCurveShape(curve_, after_);
+    doc_.scheduler().flush();
+    doc_.select(curve_);
+}
+
+void ReplaceCurveCommand::undo()
+{
+    doc_.model().setCurveShape(curve_, before_);
+    doc_.scheduler().flush();
+    doc_.select(curve_);
+}
+
+}  // namespace sculptline::ui

@@ -60,6 +60,19 @@ private:
     bool applied_ = true;
 };
 
+/// A curve's new shape (an over-sketch); the first redo applies it.
+class ReplaceCurveCommand : public QUndoCommand {
+public:
+    ReplaceCurveCommand(SketchDocument& doc, scene::EntityId curve, solvers::Curve3d before, solvers::Curve3d after);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    scene::EntityId curve_;
+    solvers::Curve3d before_, after_;
+};
+
 /// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.
 scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e);
 

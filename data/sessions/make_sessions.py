@@ -79,6 +79,13 @@ def main():
                      for i in range(30)], ta + 50)
     write("auxiliary_planes.json", events + a1 + a2 + [{"type": "wait", "ms": 50}])
 
+    # Over-sketch: a straight stroke from curve 4 at x 450 (y 185) to x 540 (y 155) replaces the
+    # wave's middle; then undo and redo it.
+    o = [{"type": "action", "name": "mode.oversketch", "t": t + 40}]
+    s, to = stroke([(round(450 + 90 * i / 29), round(185 - 30 * i / 29)) for i in range(30)], t + 50)
+    o += s + [{"type": "key", "key": "Ctrl+Z", "t": to + 20}, {"type": "key", "key": "Ctrl+Shift+Z", "t": to + 30}]
+    write("oversketch.json", events + o + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

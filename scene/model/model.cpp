@@ -23,6 +23,28 @@ solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame&
     return solvers::Curve3d(curve.degree(), curve.knots(), points, curve.weights(), curve.isClosed());
 }
 
+namespace {
+
+/// On a plane a curve is planar by construction; z is exactly 0 so the document's 2D points
+/// restore it bit for bit.
+solvers::Curve3d flatten(const solvers::Curve3d& local)
+{
+    std::vector<Eigen::Vector3d> flat = local.points();
+    for (Eigen::Vector3d& p : flat) p.z() = 0.0;
+    return solvers::Curve3d(local.degree(), local.knots(), flat, local.weights(), local.isClosed());
+}
+
+}  // namespace
+
+void Model::setCurveShape(EntityId curve, const solvers::Curve3d& local)
+{
+    auto it = entities_.find(curve);
+    if (it == entities_.end() || it->second.kind != EntityKind::Curve) return;
+    it->second.local = it->second.plane() != 0 ? flatten(local) : local;
+    ++it->second.shapeVersion;
+    markDirty(curve);
+}
+
 EntityId Model::insert(Entity entity, EntityId id)
 {
     if (id == 0) id = nextId_;
@@ -54,14 +76,7 @@ EntityId Model::addCurve(EntityId plane, const solvers::Curve3d& local, EntityId
         if (!p || p->kind != EntityKind::Plane) throw std::invalid_argument("entity " + std::to_string(plane) + " is not a plane");
         e.inputs.push_back(plane);
     }
-    e.local = local;
-    if (plane != 0) {
-        // On a plane the curve is planar by construction; z is exactly 0 so the document's 2D
-        // points restore it bit for bit.
-        std::vector<Eigen::Vector3d> flat = local.points();
-        for (Eigen::Vector3d& p : flat) p.z() = 0.0;
-        e.local = solvers::Curve3d(local.degree(), local.knots(), flat, local.weights(), local.isClosed());
-    }
+    e.local = plane != 0 ? flatten(local) : local;
     return insert(std::move(e), id);
 }
 

@@ -41,6 +41,9 @@ struct Entity {
     std::optional<solvers::Surface3d> surface;  ///< Surface: as read (depends on nothing yet)
 
     int recomputations = 0;  ///< times update() recomputed this entity (tests count them)
+    /// Curve: bumped whenever `local` is replaced (an over-sketch), so views know to re-tessellate;
+    /// a plane drag leaves it alone.
+    int shapeVersion = 0;
 
     EntityId plane() const { return kind == EntityKind::Curve && !inputs.empty() ? inputs.front() : 0; }
 };
@@ -66,6 +69,10 @@ public:
 
     /// Moves a plane: only marks it dirty (the curves follow in the next update()).
     void setPlaneFrame(EntityId plane, const PlaneFrame& frame);
+
+    /// Replaces a curve's shape (in its plane's frame; z is set to 0 on a plane): marks it dirty,
+    /// its world form and dependents follow in the next update().
+    void setCurveShape(EntityId curve, const solvers::Curve3d& local);
 
     /// Removes `id` and everything that depends on it, dependents first; returns the removed
     /// entities in creation order (what undo needs to restore them).

@@ -84,6 +84,18 @@ void ModelView::addCurveNode(const Entity& e)
     SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
     parent->addChild(node);
     nodes_[e.id] = node;
+    builtShape_[e.id] = e.shapeVersion;
+}
+
+void ModelView::rebuildCurveNode(const Entity& e)
+{
+    SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
+    SoSeparator* node = makeCurveNode(*e.local, curveStyle(e.id));
+    ++nodeBuilds_;
+    node->setName(nodeName("Curve", e.id).c_str());
+    parent->replaceChild(parent->findChild(nodes_.at(e.id)), node);
+    nodes_[e.id] = node;
+    builtShape_[e.id] = e.shapeVersion;
 }
 
 void ModelView::entityAdded(const Entity& e)
@@ -123,13 +135,16 @@ void ModelView::entityRemoved(const Entity& e)
     parent->removeChild(it->second);
     nodes_.erase(it);
     frames_.erase(e.id);
+    builtShape_.erase(e.id);
     if (highlighted_ == e.id) highlighted_ = 0;
 }
 
 void ModelView::entityUpdated(const Entity& e)
 {
-    // A curve's update changes only its world form; its node is in plane-local coordinates and
-    // stays as it is. A plane's update is one transform write.
+    // A curve moved with its plane changes only its world form; its node is in plane-local
+    // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
+    // update is one transform write.
+    if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
     if (e.kind != EntityKind::Plane) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
@@ -144,13 +159,7 @@ void ModelView::setHighlighted(EntityId id)
     for (EntityId changed : {previous, id}) {
         const Entity* e = model_.find(changed);
         if (!e || e->kind != EntityKind::Curve) continue;
-        SoGroup* parent = e->plane() != 0 ? static_cast<SoGroup*>(planeGroup(e->plane())) : curves_;
-        SoSeparator* old = nodes_.at(changed);
-        const int index = parent->findChild(old);
-        SoSeparator* node = makeCurveNode(*e->local, curveStyle(changed));
-        node->setName(nodeName("Curve", changed).c_str());
-        parent->replaceChild(index, node);
-        nodes_[changed] = node;
+        rebuildCurveNode(*e);
     }
 }
 

@@ -45,6 +45,7 @@ public:
 private:
     SoSeparator* planeGroup(EntityId plane);
     void addCurveNode(const Entity& entity);
+    void rebuildCurveNode(const Entity& entity);
     CurveStyle curveStyle(EntityId id) const;
 
     Model& model_;
@@ -54,6 +55,7 @@ private:
     SoGroup* planeCurves_ = nullptr;
     std::map<EntityId, SoSeparator*> nodes_;
     std::map<EntityId, SoTransform*> frames_;
+    std::map<EntityId, int> builtShape_;  ///< a curve's shapeVersion its node was built from
     EntityId highlighted_ = 0;
     int nodeBuilds_ = 0;
     int transformWrites_ = 0;

@@ -184,6 +184,24 @@ TEST(ReplayResults, StrokesFromCurvesGoOntoAuxiliaryPlanes)
     EXPECT_LT((c.evaluate(c.domainEnd()) - b).norm(), 2 * kOnPlane);
 }
 
+TEST(ReplayResults, OversketchRedrawsTheMiddleOfACurveAndKeepsItsEnds)
+{
+    // Session: the two strokes, then in over-sketch mode a straight stroke across curve 4's middle,
+    // undone and redone
+    const scene::Model sketched = readModel("sketch.json");
+    const scene::Model model = readModel("oversketch.json");
+    const solvers::Curve3d& before = *sketched.find(4)->local;
+    const solvers::Curve3d& after = *model.find(4)->local;
+    EXPECT_EQ(model.find(4)->plane(), 1u);
+    EXPECT_NE(after.points(), before.points());
+    // Outside the over-drawn part the curve is unchanged: same ends
+    constexpr double kKept = 1e-6;
+    EXPECT_LT((after.evaluate(after.domainStart()) - before.evaluate(before.domainStart())).norm(), kKept);
+    EXPECT_LT((after.evaluate(after.domainEnd()) - before.evaluate(before.domainEnd())).norm(), kKept);
+    // And no curve was added
+    EXPECT_EQ(curvesOn(model, 1).size(), 2u);
+}
+
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
 {
     const nlohmann::json saved = readJson("drag.json");
