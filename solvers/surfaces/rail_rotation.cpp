@@ -3,9 +3,9 @@
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/surfaces/compatible_curves.h"
-#include "solvers/surfaces/interpolation.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -28,6 +28,9 @@ constexpr double kFullTurnSlack = 0.1;
 // A decrease of the unwrapped angle beyond this (radians) means a half-plane cuts the rail twice.
 constexpr double kMonotoneSlack = 1e-9;
 constexpr int kInitialSections = 16;
+// Probes between neighbouring sections: the interpolation error peaks inside each interval, not
+// necessarily at its middle; quarter points bound it to within a few percent.
+constexpr int kProbesPerInterval = 4;
 
 struct AxisFrame {
     Vec3 origin, dir, e1, e2;
@@ -161,32 +164,59 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
         return sectionTransform(axis, theta, p0, q0, r1.pointAt(theta), r2.pointAt(theta));
     };
 
-    int count = kInitialSections + 1;
+    int count = kInitialSections;  // distinct sections, at θ_k = 2πk / count
     for (;;) {
-        std::vector<double> v(count);
         ControlMatrix data(count, static_cast<Eigen::Index>(n) * h);
         for (int k = 0; k < count; ++k) {
-            v[k] = static_cast<double>(k) / (count - 1);
-            const Eigen::Affine3d m = section(2 * M_PI * v[k]);
+            const Eigen::Affine3d m = section(2 * M_PI * k / count);
             for (int i = 0; i < n; ++i) {
                 const double w = profile.weight(i);
                 data.block(k, static_cast<Eigen::Index>(i) * h, 1, 3) = w * (m * profile.points()[i]).transpose();
                 if (h == 4) data(k, static_cast<Eigen::Index>(i) * h + 3) = w;
             }
         }
-        const CurveInterpolator interp(v, 3);
-        Surface3d s = Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(), interp.knots(),
-                                                 interp.solve(data), profile.isRational());
+        Surface3d s = Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(),
+                                                 periodicCubicKnots(count), periodicCubicInterpolation(data),
+                                                 profile.isRational());
         double deviation = 0.0;
-        for (int k = 0; k + 1 < count; ++k) {
-            const double vm = (k + 0.5) / (count - 1);
-            const Eigen::Affine3d m = section(2 * M_PI * vm);
-            for (double u : us) deviation = std::max(deviation, (s.evaluate(u, vm) - m * profile.evaluate(u)).norm());
-        }
-        if (deviation <= tolerance || 2 * count - 1 > options.maxPoints)
+        for (int k = 0; k < count; ++k)
+            for (int q = 1; q < kProbesPerInterval; ++q) {
+                const double vm = (k + static_cast<double>(q) / kProbesPerInterval) / count;
+                const Eigen::Affine3d m = section(2 * M_PI * vm);
+                for (double u : us) deviation = std::max(deviation, (s.evaluate(u, vm) - m * profile.evaluate(u)).norm());
+            }
+        if (deviation <= tolerance || 2 * count > options.maxPoints)
             return ApproximatedSurface{std::move(s), deviation, tolerance};
-        count = 2 * count - 1;
+        count *= 2;
     }
+}
+
+KnotVector periodicCubicKnots(int count)
+{
+    KnotVector knots;
+    for (int j = 0; j < count + 7; ++j) knots.push_back(static_cast<double>(j - 3) / count);
+    return knots;
+}
+
+ControlMatrix periodicCubicInterpolation(const ControlMatrix& data)
+{
+    // Uniform cubic B-spline at its knots: S(t_{k+3}) = (P_k + 4 P_{k+1} + P_{k+2}) / 6, indices
+    // mod K: a cyclic tridiagonal system (strictly diagonally dominant, so well conditioned).
+    const int K = static_cast<int>(data.rows());
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int k = 0; k < K; ++k) {
+        entries.emplace_back(k, k, 1.0 / 6.0);
+        entries.emplace_back(k, (k + 1) % K, 4.0 / 6.0);
+        entries.emplace_back(k, (k + 2) % K, 1.0 / 6.0);
+    }
+    Eigen::SparseMatrix<double> A(K, K);
+    A.setFromTriplets(entries.begin(), entries.end());  // duplicates (K < 3) are summed
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
+    const Eigen::MatrixXd p = lu.solve(Eigen::MatrixXd(data));
+    ControlMatrix out(K + 3, data.cols());
+    out.topRows(K) = p;
+    out.bottomRows(3) = p.topRows(3);  // the wrapped points of a closed curve
+    return out;
 }
 
 }  // namespace sculptline::solvers::surfaces

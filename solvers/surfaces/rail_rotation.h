@@ -11,9 +11,10 @@ namespace sculptline::solvers::surfaces {
 /// the axis, then turns the rotated chord P0P'0 onto PP' by the smallest rotation and scales it to
 /// |PP'|, and translates P0 to P: so M P0 = P and M P'0 = P' (the "transformation from line P0P'0
 /// to line PP'"), and with circular coaxial rails it is the plain surface of revolution.
-/// Sections C_θ = M_θ C3 are exact (control points mapped); the surface interpolates them cubically
-/// at θ_k = 2πk/K (v = θ / 2π; the seam v = 0 = 1 is closed in position), doubling K until the
-/// distance from the exact construction, measured half-way between sections, is within tolerance.
+/// Sections C_θ = M_θ C3 are exact (control points mapped); the surface interpolates them by a
+/// periodic uniform cubic at θ_k = 2πk/K (v = θ / 2π on [0, 1]; knots unclamped in v, so the seam
+/// is C2 like the rest), doubling K until the distance from the exact construction, measured at the
+/// quarter points between sections (profile samples 1/(2n) apart), is within tolerance.
 /// u runs along the profile (its degree and knots, clamped), v around the axis.
 /// @param rail1, rail2 closed curves (periodic, or open with coinciding ends), each going once
 ///        around the axis and star-shaped about it (every half-plane at the axis cuts it once).
@@ -21,5 +22,13 @@ namespace sculptline::solvers::surfaces {
 ///         not going once around the axis, rational profile... (see the message).
 ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, const Curve3d& profile,
                                  const ApproximationOptions& options = {});
+
+/// Knots -3/K, ..., (K+3)/K of a closed uniform cubic with K distinct control points (domain [0, 1]).
+KnotVector periodicCubicKnots(int count);
+
+/// Control rows (K distinct ones, then the first three repeated) of the closed uniform cubic that
+/// passes through data row k at v = k/K.
+/// @pre data.rows() >= 3.
+ControlMatrix periodicCubicInterpolation(const ControlMatrix& data);
 
 }  // namespace sculptline::solvers::surfaces

@@ -29,8 +29,8 @@ struct SweepResult {
 /// and moved rigidly with the path's rotation-minimizing frame: section v is
 /// x(v) + F(v) F(0)^T (profile - x(0)), F = (t, r, s). Sections at path parameters are exact
 /// (control points transformed rigidly); between them the surface interpolates cubically across;
-/// the number of sections doubles until the deviation, measured half-way between sections, is
-/// within tolerance.
+/// the number of sections doubles until the deviation, measured at the quarter points between
+/// sections (profile samples 1/(2n) apart), is within tolerance.
 /// @throws GeometryError "path: ..." for a path with a cusp or no length.
 SweepResult sweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options = {});
 
