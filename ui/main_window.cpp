@@ -27,6 +27,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <iostream>
 
 namespace sculptline::ui {
 namespace {
@@ -274,9 +275,19 @@ bool MainWindow::pickAt(const QPoint& position)
     return picked != 0;
 }
 
+bool MainWindow::refuseDialog(const char* action) const
+{
+    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv\n";
+    return automated_;
+}
+
 bool MainWindow::maybeSave()
 {
     if (document_->undoStack()->isClean()) return true;
+    if (automated_) {
+        std::cerr << "sculptline: automated run: unsaved changes discarded\n";
+        return true;
+    }
     const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("The document has unsaved changes. Save them?"),
                                               QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return saveDocument();
@@ -305,7 +316,7 @@ void MainWindow::newDocument()
 
 void MainWindow::openDocument()
 {
-    if (!maybeSave()) return;
+    if (!maybeSave() || refuseDialog("file.open")) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open document"), QString(), tr("Sculptline documents (*.json)"));
     if (path.isEmpty()) return;
     try {
@@ -335,12 +346,14 @@ bool MainWindow::saveDocument()
 
 bool MainWindow::saveDocumentAs()
 {
+    if (refuseDialog("file.saveAs")) return false;
     const QString path = QFileDialog::getSaveFileName(this, tr("Save document"), document_->path(), tr("Sculptline documents (*.json)"));
     return !path.isEmpty() && saveTo(path);
 }
 
 void MainWindow::exportDocument()
 {
+    if (refuseDialog("file.exportIv")) return;
     const QString path = QFileDialog::getSaveFileName(this, tr("Export Open Inventor"), QString(), tr("Open Inventor (*.iv)"));
     if (path.isEmpty()) return;
     try {

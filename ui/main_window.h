@@ -50,6 +50,9 @@ public:
     QList<QAction*> namedActions() const;
     QAction* action(const QString& name) const;
     Mode mode() const { return mode_; }
+    /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
+    /// action says so on stderr) and unsaved changes are discarded without asking.
+    void setAutomated(bool automated) { automated_ = automated; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -62,6 +65,8 @@ private:
     void updateTitle();
     void frameScene();
     bool maybeSave();
+    /// True (with a message) when `action` would open a dialog in an automated run.
+    bool refuseDialog(const char* action) const;
     bool saveTo(const QString& path);
     void newDocument();
     void openDocument();
@@ -78,6 +83,7 @@ private:
     InspectorDock* inspector_ = nullptr;
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::View;
+    bool automated_ = false;
 };
 
 }  // namespace sculptline::ui

@@ -121,6 +121,7 @@ int main(int argc, char** argv)
     SoQt::setFatalErrorHandler(&onSoQtFatalError, nullptr);
 
     ui::MainWindow window;
+    window.setAutomated(session.has_value());
     if (options.listActions) {
         for (QAction* action : window.namedActions()) {
             std::cout << action->objectName().toStdString();

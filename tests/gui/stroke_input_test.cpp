@@ -1,0 +1,137 @@
+// The stroke input (manipulators/stroke_input.h) without a window: simulated Coin mouse events go
+// through an SoHandleEventAction, as the viewer would send them, and the pointer rays meet the
+// active plane where the camera's geometry says.
+#include "manipulators/stroke_input.h"
+
+#include "scene/model/auxiliary_plane.h"
+
+#include <Inventor/SoInteraction.h>
+#include <Inventor/actions/SoHandleEventAction.h>
+#include <Inventor/events/SoLocation2Event.h>
+#include <Inventor/events/SoMouseButtonEvent.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <gtest/gtest.h>
+
+#include <memory>
+
+namespace sculptline::manipulators {
+namespace {
+
+/// Coin's view volume is single precision.
+constexpr double kTolerance = 1e-3;
+/// The camera sees 100 units vertically (an orthographic camera of height 100 at z = 100 looking
+/// down -Z onto the plane z = 0).
+constexpr float kViewHeight = 100.0f;
+
+class StrokeInputTest : public testing::Test {
+protected:
+    void SetUp() override
+    {
+        SoInteraction::init();  // before any node: Coin's type system
+        input_ = std::make_unique<StrokeInput>();
+        root_ = new SoSeparator;
+        root_->ref();
+        camera_ = new SoOrthographicCamera;
+        camera_->position.setValue(0, 0, 100);
+        camera_->height = kViewHeight;
+        root_->addChild(camera_);
+        root_->addChild(input_->root());
+        input_->setCamera([this]() { return camera_; });
+        input_->setActivePlane([](const StrokeHit&) { return scene::PlaneFrame{}; });
+        input_->setFinishedCallback([this](const FinishedStroke& s) { strokes_.push_back(s); });
+        input_->setEnabled(true);
+    }
+    void TearDown() override
+    {
+        root_->unref();
+        input_.reset();
+    }
+
+    /// Sends one event at pixel (x, y), Coin's convention (origin bottom-left).
+    void send(SoEvent& event, short x, short y, const SbViewportRegion& viewport)
+    {
+        event.setPosition(SbVec2s(x, y));
+        SoHandleEventAction action(viewport);
+        action.setEvent(&event);
+        action.apply(root_);
+    }
+    void drawLine(const SbViewportRegion& viewport, SbVec2s from, SbVec2s to, int steps)
+    {
+        SoMouseButtonEvent press;
+        press.setButton(SoMouseButtonEvent::BUTTON1);
+        press.setState(SoButtonEvent::DOWN);
+        send(press, from[0], from[1], viewport);
+        for (int i = 1; i <= steps; ++i) {
+            SoLocation2Event move;
+            send(move, static_cast<short>(from[0] + (to[0] - from[0]) * i / steps),
+                 static_cast<short>(from[1] + (to[1] - from[1]) * i / steps), viewport);
+        }
+        SoMouseButtonEvent release;
+        release.setButton(SoMouseButtonEvent::BUTTON1);
+        release.setState(SoButtonEvent::UP);
+        send(release, to[0], to[1], viewport);
+    }
+
+    SoSeparator* root_ = nullptr;
+    SoOrthographicCamera* camera_ = nullptr;
+    std::unique_ptr<StrokeInput> input_;
+    std::vector<FinishedStroke> strokes_;
+};
+
+TEST_F(StrokeInputTest, PointerRaysMeetThePlaneWhereTheCameraLooks)
+{
+    // Given a wide 800 x 600 viewport (6 pixels per unit) / When a line is drawn from the centre
+    // 200 pixels right and 60 up
+    drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(600, 360), 10);
+    // Then one stroke of 12 samples arrives, from (0, 0) to (33.3, 10) in the plane's frame
+    ASSERT_EQ(strokes_.size(), 1u);
+    const FinishedStroke& s = strokes_[0];
+    ASSERT_EQ(s.points.size(), 12u);
+    EXPECT_LT((s.points.front() - Eigen::Vector3d(0, 0, 0)).norm(), kTolerance);
+    EXPECT_LT((s.points.back() - Eigen::Vector3d(200.0 / 6, 10, 0)).norm(), kTolerance);
+    EXPECT_EQ(s.times.size(), s.points.size());
+    EXPECT_EQ(s.start.curve, 0u);  // started in the air
+}
+
+TEST_F(StrokeInputTest, TallViewportsAreNotSqueezed)
+{
+    // A 600 x 800 viewport shows 100 units across and 133 up (Coin widens a tall view's volume):
+    // still 6 pixels per unit in both directions
+    drawLine(SbViewportRegion(600, 800), SbVec2s(300, 400), SbVec2s(400, 340), 4);
+    ASSERT_EQ(strokes_.size(), 1u);
+    EXPECT_LT((strokes_[0].points.back() - Eigen::Vector3d(100.0 / 6, -10, 0)).norm(), kTolerance);
+}
+
+TEST_F(StrokeInputTest, DisabledInputDrawsNothing)
+{
+    input_->setEnabled(false);
+    drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(500, 300), 3);
+    EXPECT_TRUE(strokes_.empty());
+}
+
+TEST(AuxiliaryPlane, AlongATangentItContainsTheTangentAndFacesTheEye)
+{
+    const Eigen::Vector3d point(1, 2, 3), tangent(1, 0, 0), view(0.3, 0.2, -1);
+    const auto plane = scene::planeAlongTangent(point, tangent, view, 50);
+    ASSERT_TRUE(plane);
+    EXPECT_LT((plane->origin - point).norm(), 1e-12);
+    EXPECT_LT(std::abs(plane->normal().dot(tangent)), 1e-12);
+    EXPECT_GT(plane->normal().dot(-view.normalized()), 0.9);  // as much facing as a plane holding X can
+    EXPECT_FALSE(scene::planeAlongTangent(point, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1), 50));  // edge-on
+}
+
+TEST(AuxiliaryPlane, ThroughTwoPointsItContainsTheBinormal)
+{
+    const Eigen::Vector3d a(0, 0, 0), b(10, 0, 5), binormal(0, 1, 0), view(0, 0, -1);
+    const auto plane = scene::planeThroughPoints(a, b, binormal, view, 50);
+    ASSERT_TRUE(plane);
+    EXPECT_LT(std::abs((a - plane->origin).dot(plane->normal())), 1e-12);
+    EXPECT_LT(std::abs((b - plane->origin).dot(plane->normal())), 1e-12);
+    EXPECT_LT(std::abs(plane->normal().dot(binormal)), 1e-12);
+    EXPECT_GT(plane->normal().dot(-view), 0.0);  // turned towards the eye
+    EXPECT_FALSE(scene::planeThroughPoints(a, Eigen::Vector3d(0, 3, 0), binormal, view, 50));  // chord along the binormal
+}
+
+}  // namespace
+}  // namespace sculptline::manipulators
