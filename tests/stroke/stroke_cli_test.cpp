@@ -2,14 +2,13 @@
 // ../shared/interfaces.md and invalid input exits with status 2 and one line naming the field.
 #include "solvers/stroke/stroke_json.h"
 #include "solvers/stroke/stroke_synthesis.h"
+#include "tests/cli/cli_runner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <fstream>
-#include <sstream>
-#include <sys/wait.h>
 
 namespace sculptline::stroketest {
 namespace {
@@ -17,27 +16,13 @@ namespace {
 using nlohmann::json;
 using namespace solvers::stroke;
 
-struct CliRun {
-    int status = -1;
-    std::string out, err;
-};
+using CliRun = cli_test::CliResult;
 
-std::string slurp(const std::string& path)
-{
-    std::ifstream f(path);
-    std::stringstream s;
-    s << f.rdbuf();
-    return s.str();
-}
-
+// The shared runner (tests/cli): no shell, a private scratch directory per process, so parallel
+// ctest processes never share input or output files.
 CliRun cli(const std::string& sub, const std::string& input)
 {
-    const std::string dir = ::testing::TempDir();
-    const std::string in = dir + "stroke_cli_in.json", out = dir + "stroke_cli_out.txt", err = dir + "stroke_cli_err.txt";
-    std::ofstream(in) << input;
-    const std::string cmd = std::string(SCULPTLINE_CLI) + " " + sub + " " + in + " > " + out + " 2> " + err;
-    const int raw = std::system(cmd.c_str());
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
+    return cli_test::runCli({sub}, input);
 }
 
 std::string strokeJson(const Shape& s)
@@ -101,7 +86,7 @@ TEST(StrokeCli, GivenCircleStroke_WhenRecognized_ThenCircleRankedFirstAndExactRa
 
 TEST(StrokeCli, GivenStrokeSequenceAndModelFile_ThenNewPairLearnedOnceAndSaved)
 {
-    const std::string path = ::testing::TempDir() + "stroke_cli_user.json";
+    const std::string path = cli_test::scratchPath("stroke_cli_user.json");
     std::remove(path.c_str());
     const std::string input = "{\"strokes\": [" +
                               strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)) + ", " +
@@ -116,7 +101,7 @@ TEST(StrokeCli, GivenStrokeSequenceAndModelFile_ThenNewPairLearnedOnceAndSaved)
     EXPECT_TRUE(a["strokes"][1]["learned"].get<bool>());
     EXPECT_FALSE(b["strokes"][1]["learned"].get<bool>());
     EXPECT_EQ(a["strokes"][1]["composite_node"], b["strokes"][1]["composite_node"]);
-    const UserModel saved = userModelFromJson(json::parse(slurp(path)), "file");
+    const UserModel saved = userModelFromJson(json::parse(std::ifstream(path)), "file");
     EXPECT_EQ(saved.nodes().size(), UserModel::predefined().nodes().size() + 1);
 }
 
