@@ -143,6 +143,9 @@ void MainWindow::createActions()
     modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
+    QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
+                             [this](bool on) { document_->view().setControlPolygonsVisible(on); });
+    polygons->setCheckable(true);
 }
 
 void MainWindow::createDocks()

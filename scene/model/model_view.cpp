@@ -2,7 +2,15 @@
 
 #include "scene/eigen_coin.h"
 
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoPointSet.h>
+#include <Inventor/nodes/SoSwitch.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTransform.h>
 
@@ -16,6 +24,9 @@ namespace {
 const std::array<SbColor, 3> kCurveColors{SbColor(1.0f, 0.5f, 0.1f), SbColor(0.95f, 0.85f, 0.2f),
                                           SbColor(0.95f, 0.3f, 0.55f)};
 const SbColor kHighlight(1.0f, 1.0f, 1.0f);
+/// Control polygons in a muted light grey: readable over planes and surfaces, never taken for a curve.
+const SbColor kPolygonColor(0.75f, 0.78f, 0.85f);
+constexpr float kPolygonPointSize = 5.0f;
 constexpr float kHighlightWidth = 5.0f;
 
 std::string nodeName(const char* prefix, EntityId id, const char* suffix = "")
@@ -75,9 +86,46 @@ CurveStyle ModelView::curveStyle(EntityId id) const
 
 SoSeparator* ModelView::planeGroup(EntityId plane) { return nodes_.at(plane); }
 
-void ModelView::addCurveNode(const Entity& e)
+SoSeparator* ModelView::makeCurveWithPolygon(const Entity& e)
 {
     SoSeparator* node = makeCurveNode(*e.local, curveStyle(e.id));
+    // The control polygon under a switch, so that showing it is a field change, not a rebuild.
+    auto* polygon = new SoSwitch;
+    polygon->setName("ControlPolygon");
+    polygon->whichChild = polygonsVisible_ ? SO_SWITCH_ALL : SO_SWITCH_NONE;
+    auto* color = new SoBaseColor;
+    color->rgb = kPolygonColor;
+    polygon->addChild(color);
+    auto* style = new SoDrawStyle;
+    style->lineWidth = 1.0f;
+    style->pointSize = kPolygonPointSize;
+    polygon->addChild(style);
+    auto* coords = new SoCoordinate3;
+    setPoints(coords->point, e.local->points());
+    polygon->addChild(coords);
+    auto* legs = new SoLineSet;
+    legs->numVertices = e.local->pointCount();
+    polygon->addChild(legs);
+    polygon->addChild(new SoPointSet);
+    node->addChild(polygon);
+    return node;
+}
+
+void ModelView::setControlPolygonsVisible(bool visible)
+{
+    polygonsVisible_ = visible;
+    SoSearchAction search;
+    search.setName("ControlPolygon");
+    search.setInterest(SoSearchAction::ALL);
+    search.apply(root_);
+    for (int i = 0; i < search.getPaths().getLength(); ++i) {
+        static_cast<SoSwitch*>(search.getPaths()[i]->getTail())->whichChild = visible ? SO_SWITCH_ALL : SO_SWITCH_NONE;
+    }
+}
+
+void ModelView::addCurveNode(const Entity& e)
+{
+    SoSeparator* node = makeCurveWithPolygon(e);
     ++nodeBuilds_;
     node->setName(nodeName("Curve", e.id).c_str());
     // Kept in creation order inside its group so that the picture does not depend on history.
@@ -90,7 +138,7 @@ void ModelView::addCurveNode(const Entity& e)
 void ModelView::rebuildCurveNode(const Entity& e)
 {
     SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
-    SoSeparator* node = makeCurveNode(*e.local, curveStyle(e.id));
+    SoSeparator* node = makeCurveWithPolygon(e);
     ++nodeBuilds_;
     node->setName(nodeName("Curve", e.id).c_str());
     parent->replaceChild(parent->findChild(nodes_.at(e.id)), node);

@@ -35,6 +35,11 @@ public:
     /// Plane transforms written since construction.
     int transformWrites() const { return transformWrites_; }
 
+    /// Shows or hides every curve's control polygon (points and legs), drawn with the curve in
+    /// its plane's frame, so it follows drags for free.
+    void setControlPolygonsVisible(bool visible);
+    bool controlPolygonsVisible() const { return polygonsVisible_; }
+
     /// Draws curve `id` highlighted (selection); 0 = none.
     void setHighlighted(EntityId id);
 
@@ -46,6 +51,7 @@ private:
     SoSeparator* planeGroup(EntityId plane);
     void addCurveNode(const Entity& entity);
     void rebuildCurveNode(const Entity& entity);
+    SoSeparator* makeCurveWithPolygon(const Entity& entity);
     CurveStyle curveStyle(EntityId id) const;
 
     Model& model_;
@@ -57,6 +63,7 @@ private:
     std::map<EntityId, SoTransform*> frames_;
     std::map<EntityId, int> builtShape_;  ///< a curve's shapeVersion its node was built from
     EntityId highlighted_ = 0;
+    bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;
     int transformWrites_ = 0;
 };
