@@ -1,6 +1,9 @@
 #include "ui/inspector_dock.h"
 
+#include "ui/curvature_plot.h"
+
 #include <QPlainTextEdit>
+#include <QVBoxLayout>
 #include <QTextStream>
 
 namespace sculptline::ui {
@@ -20,9 +23,15 @@ QString knots(const std::vector<double>& k)
 InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), parent)
 {
     setObjectName(QStringLiteral("dock.inspector"));
-    text_ = new QPlainTextEdit(this);
+    auto* box = new QWidget(this);
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    text_ = new QPlainTextEdit(box);
     text_->setReadOnly(true);
-    setWidget(text_);
+    layout->addWidget(text_, 1);
+    plot_ = new CurvaturePlot(box);
+    layout->addWidget(plot_);
+    setWidget(box);
 }
 
 QString InspectorDock::text() const { return text_->toPlainText(); }
@@ -30,6 +39,7 @@ QString InspectorDock::text() const { return text_->toPlainText(); }
 void InspectorDock::show(const scene::Model& model, scene::EntityId id)
 {
     const scene::Entity* e = model.find(id);
+    plot_->setCurve(e && e->kind == scene::EntityKind::Curve ? e->world : std::nullopt);
     if (!e) {
         text_->setPlainText(tr("Nothing selected.\nPick an entity in the list, or click a curve in select mode."));
         return;

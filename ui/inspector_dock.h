@@ -1,11 +1,15 @@
 #pragma once
 // The selected entity in detail: type, plane, degree, control points, knots (curves and surfaces),
-// origin and axes (planes).
+// origin and axes (planes); below, a selected curve's curvature plot.
 #include "scene/model/model.h"
 
 #include <QDockWidget>
 
 class QPlainTextEdit;
+
+namespace sculptline::ui {
+class CurvaturePlot;
+}
 
 namespace sculptline::ui {
 
@@ -20,6 +24,7 @@ public:
 
 private:
     QPlainTextEdit* text_ = nullptr;
+    CurvaturePlot* plot_ = nullptr;
 };
 
 }  // namespace sculptline::ui
