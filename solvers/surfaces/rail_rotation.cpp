@@ -16,9 +16,10 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-// Rail samples bracketing the angle; the bracket is then bisected to round-off.
+// Rail samples bracketing the angle; the bracket is then refined to round-off.
 constexpr int kRailSamples = 720;
-constexpr int kBisections = 60;
+constexpr int kRootSteps = 100;
+constexpr double kParameterResolution = 1e-15;  // below the round-off of parameters in [0, 1]
 // The profile's ends and the rails' ends must meet within 1e-3 of the model's size (about a pixel
 // when the model spans the viewport: what a sketched stroke that snapped to a curve achieves).
 constexpr double kMeetRelative = 1e-3;
@@ -87,12 +88,30 @@ public:
         double lo = static_cast<double>(k) / kRailSamples;
         double hi = static_cast<double>(k + 1) / kRailSamples;
         const double ref = angles_[k];
-        for (int it = 0; it < kBisections; ++it) {
-            const double mid = 0.5 * (lo + hi);
-            const double a = wrapNear(axis_.angle(at(mid)) - a0_, ref);
-            (sign_ * (a - target) < 0.0 ? lo : hi) = mid;
+        // Regula falsi with the Illinois modification (Dowell & Jarratt 1971) on the monotone
+        // angle: superlinear, and never leaves the bracket.
+        double flo = sign_ * (angles_[k] - target);
+        double fhi = sign_ * (angles_[k + 1] - target);
+        double x = lo;
+        int side = 0;
+        for (int it = 0; it < kRootSteps && hi - lo > kParameterResolution; ++it) {
+            x = fhi != flo ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
+            if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+            const double fx = sign_ * (wrapNear(axis_.angle(at(x)) - a0_, ref) - target);
+            if (fx == 0.0) break;
+            if (fx < 0.0) {
+                lo = x;
+                flo = fx;
+                if (side == -1) fhi *= 0.5;
+                side = -1;
+            } else {
+                hi = x;
+                fhi = fx;
+                if (side == 1) flo *= 0.5;
+                side = 1;
+            }
         }
-        return at(0.5 * (lo + hi));
+        return at(x);
     }
 
 private:
@@ -159,6 +178,17 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
     const int h = profile.isRational() ? 4 : 3;
     std::vector<double> us;
     for (int i = 0; i <= 2 * n; ++i) us.push_back(static_cast<double>(i) / (2 * n));
+    // Profile samples and their u bases, fixed for every probe (The NURBS Book A2.1, A2.2).
+    const int pu = profile.degree();
+    std::vector<Vec3> profilePts;
+    std::vector<int> uSpan;
+    std::vector<std::vector<double>> uBasis;
+    for (double u : us) {
+        profilePts.push_back(profile.evaluate(u));
+        uSpan.push_back(findSpan(pu, profile.knots(), u));
+        uBasis.emplace_back(pu + 1);
+        basisFunctions(uSpan.back(), u, pu, profile.knots(), uBasis.back().data());
+    }
     const auto section = [&](double theta) {
         if (theta == 0.0 || theta == 2 * M_PI) return Eigen::Affine3d(Eigen::Affine3d::Identity());
         return sectionTransform(axis, theta, p0, q0, r1.pointAt(theta), r2.pointAt(theta));
@@ -175,18 +205,33 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
                 if (h == 4) data(k, static_cast<Eigen::Index>(i) * h + 3) = w;
             }
         }
-        Surface3d s = Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(),
-                                                 periodicCubicKnots(count), periodicCubicInterpolation(data),
-                                                 profile.isRational());
+        const KnotVector knotsV = periodicCubicKnots(count);
+        const ControlMatrix net = periodicCubicInterpolation(data);
         double deviation = 0.0;
         for (int k = 0; k < count; ++k)
             for (int q = 1; q < kProbesPerInterval; ++q) {
                 const double vm = (k + static_cast<double>(q) / kProbesPerInterval) / count;
                 const Eigen::Affine3d m = section(2 * M_PI * vm);
-                for (double u : us) deviation = std::max(deviation, (s.evaluate(u, vm) - m * profile.evaluate(u)).norm());
+                // The probe's iso-curve rows (v basis applied to the net), then the fixed u bases.
+                const int vSpan = findSpan(3, knotsV, vm);
+                double nv[4];
+                basisFunctions(vSpan, vm, 3, knotsV, nv);
+                Eigen::RowVectorXd iso = Eigen::RowVectorXd::Zero(net.cols());
+                for (int r = 0; r < 4; ++r) iso += nv[r] * net.row(vSpan - 3 + r);
+                for (size_t i = 0; i < us.size(); ++i) {
+                    Eigen::Vector4d hp = Eigen::Vector4d::Zero();
+                    for (int c = 0; c <= pu; ++c) {
+                        const Eigen::Index col = static_cast<Eigen::Index>(uSpan[i] - pu + c) * h;
+                        hp.head<3>() += uBasis[i][c] * iso.segment(col, 3).transpose();
+                        hp(3) += uBasis[i][c] * (h == 4 ? iso(col + 3) : 1.0);
+                    }
+                    deviation = std::max(deviation, (hp.head<3>() / hp(3) - m * profilePts[i]).norm());
+                }
             }
         if (deviation <= tolerance || 2 * count > options.maxPoints)
-            return ApproximatedSurface{std::move(s), deviation, tolerance};
+            return ApproximatedSurface{Surface3d::fromGroupedRows(Direction::V, pu, 3, profile.knots(), knotsV, net,
+                                                                  profile.isRational()),
+                                       deviation, tolerance};
         count *= 2;
     }
 }
