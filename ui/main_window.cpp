@@ -17,12 +17,9 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
-#include <QCloseEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGLWidget>
 #include <QMenuBar>
-#include <QMessageBox>
 #include <QMouseEvent>
 #include <QStatusBar>
 
@@ -110,6 +107,8 @@ void MainWindow::createActions()
     QMenu* file = menuBar()->addMenu(tr("&File"));
     make(file, "file.new", tr("&New"), QKeySequence::New, [this]() { newDocument(); });
     make(file, "file.open", tr("&Open..."), QKeySequence::Open, [this]() { openDocument(); });
+    recentMenu_ = file->addMenu(tr("Open &Recent"));
+    updateRecentMenu();
     make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
@@ -282,88 +281,6 @@ bool MainWindow::refuseDialog(const char* action) const
 {
     if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv\n";
     return automated_;
-}
-
-bool MainWindow::maybeSave()
-{
-    if (document_->undoStack()->isClean()) return true;
-    if (automated_) {
-        std::cerr << "sculptline: automated run: unsaved changes discarded\n";
-        return true;
-    }
-    const auto answer = QMessageBox::question(this, tr("Unsaved changes"), tr("The document has unsaved changes. Save them?"),
-                                              QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    if (answer == QMessageBox::Save) return saveDocument();
-    return answer == QMessageBox::Discard;
-}
-
-void MainWindow::closeEvent(QCloseEvent* event)
-{
-    if (maybeSave()) event->accept();
-    else event->ignore();
-}
-
-void MainWindow::newDocument()
-{
-    if (!maybeSave()) return;
-    // A fresh sheet: the ground grid and one vertical plane facing the default view.
-    scene::SceneDocument doc;
-    scene::PlaneSpec plane;
-    plane.origin = Eigen::Vector3d(0, 0, 60);
-    plane.normal = Eigen::Vector3d(0, -1, 0);
-    plane.size = kNewPlaneSize;
-    plane.id = 1;
-    doc.planes.push_back(plane);
-    showDocument(doc, QString());
-}
-
-void MainWindow::openDocument()
-{
-    if (!maybeSave() || refuseDialog("file.open")) return;
-    const QString path = QFileDialog::getOpenFileName(this, tr("Open document"), QString(), tr("Sculptline documents (*.json)"));
-    if (path.isEmpty()) return;
-    try {
-        showDocument(scene::loadDocument(path.toStdString()), path);
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(e.what()));
-    }
-}
-
-bool MainWindow::saveTo(const QString& path)
-{
-    try {
-        document_->save(path);
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot save"), QString::fromStdString(e.what()));
-        return false;
-    }
-    updateTitle();
-    statusBar()->showMessage(tr("Saved %1").arg(path));
-    return true;
-}
-
-bool MainWindow::saveDocument()
-{
-    return document_->path().isEmpty() ? saveDocumentAs() : saveTo(document_->path());
-}
-
-bool MainWindow::saveDocumentAs()
-{
-    if (refuseDialog("file.saveAs")) return false;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Save document"), document_->path(), tr("Sculptline documents (*.json)"));
-    return !path.isEmpty() && saveTo(path);
-}
-
-void MainWindow::exportDocument()
-{
-    if (refuseDialog("file.exportIv")) return;
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export Open Inventor"), QString(), tr("Open Inventor (*.iv)"));
-    if (path.isEmpty()) return;
-    try {
-        document_->exportIv(path);
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot export"), QString::fromStdString(e.what()));
-    }
 }
 
 void MainWindow::setViewportSize(int width, int height)

@@ -12,6 +12,7 @@
 
 class QAction;
 class QActionGroup;
+class QMenu;
 class QEvent;
 class SoQtExaminerViewer;
 class SoSeparator;
@@ -65,6 +66,9 @@ private:
     void updateTitle();
     void frameScene();
     bool maybeSave();
+    /// File > Open Recent: the last kMaxRecentFiles documents opened or saved (QSettings).
+    void rememberFile(const QString& path);
+    void updateRecentMenu();
     /// True (with a message) when `action` would open a dialog in an automated run.
     bool refuseDialog(const char* action) const;
     bool saveTo(const QString& path);
@@ -84,6 +88,7 @@ private:
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::View;
     bool automated_ = false;
+    QMenu* recentMenu_ = nullptr;
 };
 
 }  // namespace sculptline::ui

@@ -116,6 +116,8 @@ int main(int argc, char** argv)
     // CLI11 has consumed the arguments; Qt gets only the program name.
     int qtArgc = 1;
     QApplication application(qtArgc, argv);
+    QApplication::setOrganizationName(QStringLiteral("Sculptline"));
+    QApplication::setApplicationName(QStringLiteral("Sculptline"));
     // SoQt only records the top-level widget (used by SoQt::mainLoop, which we do not use).
     SoQt::init(static_cast<QWidget*>(nullptr));
     SoQt::setFatalErrorHandler(&onSoQtFatalError, nullptr);
