@@ -98,7 +98,11 @@ void StrokeInput::handleEvent(void* self, SoEventCallback* node) { static_cast<S
 
 bool StrokeInput::ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vector3d& direction) const
 {
-    SoCamera* camera = camera_ ? camera_() : nullptr;
+    return pointerRay(node, camera_ ? camera_() : nullptr, from, direction);
+}
+
+bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction)
+{
     if (!camera) return false;
     // The volume the camera renders with: the viewer keeps the camera's aspectRatio field at 1
     // and adapts at render time (ADJUST_CAMERA), widening a tall view's volume by 1/aspect, as
@@ -114,7 +118,9 @@ bool StrokeInput::ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vecto
     return true;
 }
 
-StrokeHit StrokeInput::hit(SoEventCallback* node, const Eigen::Vector3d& view) const
+StrokeHit StrokeInput::hit(SoEventCallback* node, const Eigen::Vector3d& view) const { return pickCurve(node, view); }
+
+StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view)
 {
     StrokeHit result;
     result.view = view;
@@ -142,11 +148,8 @@ StrokeHit StrokeInput::hit(SoEventCallback* node, const Eigen::Vector3d& view) c
     return result;
 }
 
-namespace {
-
-/// Where the ray meets the plane, local (z = 0); empty when it runs parallel or the plane is
-/// behind the eye.
-std::optional<Eigen::Vector3d> intersect(const scene::PlaneFrame& frame, const Eigen::Vector3d& from, const Eigen::Vector3d& direction)
+std::optional<Eigen::Vector3d> intersectPlane(const scene::PlaneFrame& frame, const Eigen::Vector3d& from,
+                                              const Eigen::Vector3d& direction)
 {
     const Eigen::Vector3d normal = frame.normal();
     const double facing = direction.dot(normal);
@@ -158,15 +161,13 @@ std::optional<Eigen::Vector3d> intersect(const scene::PlaneFrame& frame, const E
     return local;
 }
 
-}  // namespace
-
 void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame)
 {
     stroke.frame = frame;
     stroke.points.clear();
     std::vector<double> times;
     for (size_t i = 0; i < stroke.rayOrigins.size(); ++i) {
-        if (const auto p = intersect(frame, stroke.rayOrigins[i], stroke.rayDirections[i])) {
+        if (const auto p = intersectPlane(frame, stroke.rayOrigins[i], stroke.rayDirections[i])) {
             stroke.points.push_back(*p);
             times.push_back(stroke.times[i]);
         }
@@ -216,7 +217,7 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     stroke_.rayDirections.push_back(direction);
     stroke_.times.push_back(time);
     // The preview shows the points on the plane chosen at the press; a ray that misses it adds none.
-    if (const auto local = intersect(stroke_.frame, from, direction)) {
+    if (const auto local = intersectPlane(stroke_.frame, from, direction)) {
         stroke_.points.push_back(*local);
         const int n = static_cast<int>(stroke_.points.size());
         previewPoints_->point.set1Value(n - 1, scene::toSb(stroke_.frame.toWorld(*local)));

@@ -43,6 +43,16 @@ struct FinishedStroke {
     StrokeHit start, end;
 };
 
+/// The pointer's world ray for the event `node` handles, seen through `camera` (the viewer's
+/// aspect-adjusted volume); false without a camera.
+bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction);
+/// The nearest curve (a node named "Curve<id>") under the pointer, within a few pixels, looking
+/// through other shapes.
+StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view);
+/// Where the ray meets the frame's plane, local (z = 0); empty when parallel or behind the eye.
+std::optional<Eigen::Vector3d> intersectPlane(const scene::PlaneFrame& frame, const Eigen::Vector3d& from,
+                                              const Eigen::Vector3d& direction);
+
 /// The points where the rays meet `frame`'s plane, in its local frame (z = 0); rays that miss
 /// it (parallel, or the plane behind the eye) are skipped, with their times.
 void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame);

@@ -1,5 +1,6 @@
 #include "ui/main_window.h"
 
+#include "manipulators/curve_pull.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
 #include "ui/entity_list_dock.h"
@@ -139,6 +140,7 @@ void MainWindow::createActions()
     modeAction("mode.view", tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
     modeAction("mode.sketch", tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
     modeAction("mode.oversketch", tr("&Over-sketch a curve"), QStringLiteral("O"), Mode::Oversketch);
+    modeAction("mode.pull", tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
     modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
@@ -150,7 +152,8 @@ void MainWindow::createActions()
 void MainWindow::createDocks()
 {
     auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
-                                 action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.select")),
+                                 action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.pull")),
+                                 action(QStringLiteral("mode.select")),
                                  action(QStringLiteral("plane.add"))},
                                 this);
     addDockWidget(Qt::LeftDockWidgetArea, modes);
@@ -168,10 +171,12 @@ void MainWindow::setMode(Mode mode)
     // to the examiner's camera.
     viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
     document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch);
+    document_->curvePull().setEnabled(mode == Mode::Pull);
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch : SketchDocument::StrokeMode::Sketch);
     const char* name = mode == Mode::View         ? "mode.view"
                        : mode == Mode::Sketch     ? "mode.sketch"
                        : mode == Mode::Oversketch ? "mode.oversketch"
+                       : mode == Mode::Pull       ? "mode.pull"
                                                   : "mode.select";
     action(QString::fromLatin1(name))->setChecked(true);
     updateStatus();
@@ -190,6 +195,7 @@ void MainWindow::updateStatus()
     case Mode::Oversketch:
         text = tr("Over-sketch: draw over a curve (start on it, or near a curve of plane %1) to redraw that part of it.").arg(plane);
         break;
+    case Mode::Pull: text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point."); break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
     }
     statusBar()->showMessage(text);

@@ -1,5 +1,6 @@
 #include "ui/sketch_document.h"
 
+#include "manipulators/curve_pull.h"
 #include "manipulators/projection_plane_manipulator.h"
 #include "manipulators/stroke_input.h"
 #include "scene/ground_grid.h"
@@ -36,6 +37,10 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(strokeInput_->root());
     strokeInput_->setActivePlane([this](const manipulators::StrokeHit& start) { return strokePlane(start); });
     strokeInput_->setFinishedCallback([this](const manipulators::FinishedStroke& s) { addStroke(s); });
+    curvePull_ = std::make_unique<manipulators::CurvePull>();
+    root_->addChild(curvePull_->root());
+    curvePull_->setCallbacks([this](const manipulators::StrokeHit& hit) { return grabCurve(hit); },
+                             [this](const Eigen::Vector3d& local) { pullTo(local); }, [this]() { releaseCurve(); });
     gridNode_ = scene::makeGroundGrid(grid_);
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
@@ -51,6 +56,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
 SketchDocument::~SketchDocument()
 {
     undo_.clear();
+    pullSolver_.reset();
     model_.removeObserver(this);
     planes_.clear();
     scheduler_.reset();
@@ -58,7 +64,54 @@ SketchDocument::~SketchDocument()
     root_->unref();
 }
 
-void SketchDocument::setCamera(std::function<SoCamera*()> camera) { strokeInput_->setCamera(std::move(camera)); }
+void SketchDocument::setCamera(std::function<SoCamera*()> camera)
+{
+    strokeInput_->setCamera(camera);
+    curvePull_->setCamera(std::move(camera));
+}
+
+std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::StrokeHit& hit)
+{
+    const scene::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != scene::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
+    const scene::PlaneFrame& frame = model_.find(curve->plane())->frame;
+    try {
+        // One position constraint at the grabbed parameter; the factorization is done here, once
+        // per pull, and each pointer event is one product (curve_manipulation.h).
+        solvers::editing::CurveConstraint<3> grip;
+        grip.u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
+        pullSolver_ = std::make_unique<solvers::editing::CurveManipulationSolver<3>>(*curve->local, std::vector{grip});
+    } catch (const std::exception& e) {
+        lastStroke_ = {};
+        lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(curve->id).arg(QString::fromStdString(e.what()));
+        Q_EMIT strokeFinished();
+        return std::nullopt;
+    }
+    pulled_ = curve->id;
+    pullStart_ = curve->local;
+    select(curve->id);
+    return frame;
+}
+
+void SketchDocument::pullTo(const Eigen::Vector3d& local)
+{
+    if (!pullSolver_) return;
+    // Marks the curve dirty only: the scheduler re-tessellates it once per frame.
+    model_.setCurveShape(pulled_, pullSolver_->solve({local}));
+}
+
+void SketchDocument::releaseCurve()
+{
+    scheduler_->flush();
+    const scene::Entity* curve = model_.find(pulled_);
+    if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
+        undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));
+    }
+    pullSolver_.reset();
+    pullStart_.reset();
+    pulled_ = 0;
+    Q_EMIT entitiesChanged();
+}
 
 void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
 {

@@ -7,6 +7,7 @@
 #include "scene/model/model_view.h"
 #include "scene/model/update_scheduler.h"
 #include "scene/scene_document.h"
+#include "solvers/editing/curve_manipulation.h"
 
 #include <QObject>
 #include <QString>
@@ -23,6 +24,7 @@ class SoSeparator;
 namespace sculptline::manipulators {
 class ProjectionPlaneManipulator;
 class StrokeInput;
+class CurvePull;
 struct FinishedStroke;
 struct StrokeHit;
 }  // namespace sculptline::manipulators
@@ -57,6 +59,7 @@ public:
     scene::ModelView& view() { return *view_; }
     QUndoStack* undoStack() { return &undo_; }
     manipulators::StrokeInput& strokeInput() { return *strokeInput_; }
+    manipulators::CurvePull& curvePull() { return *curvePull_; }
     SoSeparator* root() const { return root_; }
     const QString& path() const { return path_; }
     const scene::GridSpec& grid() const { return grid_; }
@@ -100,6 +103,10 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
+    std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
+    void pullTo(const Eigen::Vector3d& local);
+    void releaseCurve();
     void dragStarted(scene::EntityId plane);
     void dragFinished(scene::EntityId plane);
 
@@ -108,6 +115,10 @@ private:
     std::unique_ptr<scene::ModelView> view_;
     std::unique_ptr<scene::UpdateScheduler> scheduler_;
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
+    std::unique_ptr<manipulators::CurvePull> curvePull_;
+    std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> pullSolver_;
+    scene::EntityId pulled_ = 0;
+    std::optional<solvers::Curve3d> pullStart_;
     std::map<scene::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;

@@ -86,6 +86,11 @@ def main():
     o += s + [{"type": "key", "key": "Ctrl+Z", "t": to + 20}, {"type": "key", "key": "Ctrl+Shift+Z", "t": to + 30}]
     write("oversketch.json", events + o + [{"type": "wait", "ms": 50}])
 
+    # Pull: curve 4 grabbed at (450, 185) and pulled 45 pixels down; undone and redone.
+    g, tg = drag((450, 185), (450, 230), t + 60, steps=20, dt=10)
+    u = [{"type": "key", "key": "Ctrl+Z", "t": tg + 20}, {"type": "key", "key": "Ctrl+Shift+Z", "t": tg + 30}]
+    write("pull.json", events + [{"type": "action", "name": "mode.pull", "t": t + 50}] + g + u + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

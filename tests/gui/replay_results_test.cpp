@@ -18,6 +18,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -200,6 +201,28 @@ TEST(ReplayResults, OversketchRedrawsTheMiddleOfACurveAndKeepsItsEnds)
     EXPECT_LT((after.evaluate(after.domainEnd()) - before.evaluate(before.domainEnd())).norm(), kKept);
     // And no curve was added
     EXPECT_EQ(curvesOn(model, 1).size(), 2u);
+}
+
+TEST(ReplayResults, PullingACurvePointDrawsTheCurveAfterTheHandle)
+{
+    // Session: the two strokes, then in pull mode curve 4 grabbed at its trough and pulled 45
+    // pixels down (about 15 mm on the plane), undone and redone
+    const scene::Model sketched = readModel("sketch.json");
+    const scene::Model model = readModel("pull.json");
+    const solvers::Curve3d& before = *sketched.find(4)->local;
+    const solvers::Curve3d& after = *model.find(4)->local;
+    EXPECT_EQ(model.find(4)->plane(), 1u);
+    EXPECT_EQ(curvesOn(model, 1).size(), 2u);
+    auto lowest = [](const solvers::Curve3d& c) {
+        double y = std::numeric_limits<double>::infinity();
+        for (int i = 0; i <= 200; ++i) y = std::min(y, c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / 200).y());
+        return y;
+    };
+    /// Well past hand jitter, well short of the 15 mm pulled.
+    constexpr double kPulled = 8.0;
+    EXPECT_LT(lowest(after), lowest(before) - kPulled);
+    // The minimum change: the far end barely moves
+    EXPECT_LT((after.points().back() - before.points().back()).norm(), 1.0);
 }
 
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)

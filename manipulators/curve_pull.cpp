@@ -1,0 +1,111 @@
+#include "manipulators/curve_pull.h"
+
+#include "scene/eigen_coin.h"
+
+#include <Inventor/events/SoLocation2Event.h>
+#include <Inventor/events/SoMouseButtonEvent.h>
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoEventCallback.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoPickStyle.h>
+#include <Inventor/nodes/SoPointSet.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+namespace sculptline::manipulators {
+namespace {
+
+/// The handle: a large green dot, the colour of "grabbed" in most modellers, never a curve colour.
+const SbColor kHandleColor(0.3f, 0.95f, 0.4f);
+constexpr float kHandleSize = 10.0f;
+
+}  // namespace
+
+CurvePull::CurvePull()
+{
+    root_ = new SoSeparator;
+    root_->ref();
+    root_->setName("CurvePull");
+    callback_ = new SoEventCallback;
+    callback_->addEventCallback(SoMouseButtonEvent::getClassTypeId(), &CurvePull::handleEvent, this);
+    callback_->addEventCallback(SoLocation2Event::getClassTypeId(), &CurvePull::handleEvent, this);
+    root_->addChild(callback_);
+    auto* marker = new SoSeparator;
+    auto* pick = new SoPickStyle;
+    pick->style = SoPickStyle::UNPICKABLE;
+    marker->addChild(pick);
+    auto* light = new SoLightModel;
+    light->model = SoLightModel::BASE_COLOR;
+    marker->addChild(light);
+    auto* color = new SoBaseColor;
+    color->rgb = kHandleColor;
+    marker->addChild(color);
+    auto* style = new SoDrawStyle;
+    style->pointSize = kHandleSize;
+    marker->addChild(style);
+    handle_ = new SoCoordinate3;
+    handle_->point.setNum(0);
+    marker->addChild(handle_);
+    marker->addChild(new SoPointSet);
+    root_->addChild(marker);
+}
+
+CurvePull::~CurvePull()
+{
+    callback_->removeEventCallback(SoMouseButtonEvent::getClassTypeId(), &CurvePull::handleEvent, this);
+    callback_->removeEventCallback(SoLocation2Event::getClassTypeId(), &CurvePull::handleEvent, this);
+    root_->unref();
+}
+
+void CurvePull::setEnabled(bool enabled)
+{
+    if (!enabled && pulling_) {
+        pulling_ = false;
+        handle_->point.setNum(0);
+        if (release_) release_();
+    }
+    enabled_ = enabled;
+}
+
+void CurvePull::setCallbacks(Grab grab, Move move, std::function<void()> release)
+{
+    grab_ = std::move(grab);
+    move_ = std::move(move);
+    release_ = std::move(release);
+}
+
+void CurvePull::handleEvent(void* self, SoEventCallback* node) { static_cast<CurvePull*>(self)->onEvent(node); }
+
+void CurvePull::showHandle(const Eigen::Vector3d& world) { handle_->point.setValue(scene::toSb(world)); }
+
+void CurvePull::onEvent(SoEventCallback* node)
+{
+    if (!enabled_) return;
+    const SoEvent* event = node->getEvent();
+    Eigen::Vector3d from, direction;
+    if (!pointerRay(node, camera_ ? camera_() : nullptr, from, direction)) return;
+    if (SO_MOUSE_PRESS_EVENT(event, BUTTON1)) {
+        const StrokeHit hit = pickCurve(node, direction);
+        if (hit.curve == 0 || !grab_) return;
+        const std::optional<scene::PlaneFrame> frame = grab_(hit);
+        if (!frame) return;
+        frame_ = *frame;
+        pulling_ = true;
+        showHandle(hit.point);
+        node->setHandled();
+    } else if (pulling_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
+        if (const auto local = intersectPlane(frame_, from, direction)) {
+            showHandle(frame_.toWorld(*local));
+            if (move_) move_(*local);
+        }
+        node->setHandled();
+    } else if (pulling_ && SO_MOUSE_RELEASE_EVENT(event, BUTTON1)) {
+        pulling_ = false;
+        handle_->point.setNum(0);
+        node->setHandled();
+        if (release_) release_();
+    }
+}
+
+}  // namespace sculptline::manipulators
