@@ -5,6 +5,9 @@
 
 #include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoCoordinate4.h>
+#include <Inventor/nodes/SoNurbsCurve.h>
+#include <Inventor/nodes/SoNurbsSurface.h>
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoIndexedFaceSet.h>
 #include <Inventor/nodes/SoIndexedLineSet.h>
@@ -126,6 +129,85 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     faces->coordIndex.finishEditing();
     root->addChild(faces);
     root->addChild(makeIsoLines(surface, mesh, style.color));
+    return root;
+}
+
+namespace {
+
+/// Control points as SoCoordinate4 (homogeneous, w = weight), which SoNurbs* read when rational.
+SoCoordinate4* homogeneous(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& weights)
+{
+    auto* coords = new SoCoordinate4;
+    coords->point.setNum(static_cast<int>(points.size()));
+    SbVec4f* out = coords->point.startEditing();
+    for (size_t i = 0; i < points.size(); ++i) {
+        const float w = weights.empty() ? 1.0f : static_cast<float>(weights[i]);
+        const SbVec3f p = toSb(points[i]);
+        out[i] = SbVec4f(p[0] * w, p[1] * w, p[2] * w, w);
+    }
+    coords->point.finishEditing();
+    return coords;
+}
+
+void setKnots(SoMFFloat& field, const std::vector<double>& knots)
+{
+    field.setNum(static_cast<int>(knots.size()));
+    float* out = field.startEditing();
+    for (size_t i = 0; i < knots.size(); ++i) out[i] = static_cast<float>(knots[i]);
+    field.finishEditing();
+}
+
+}  // namespace
+
+SoSeparator* makeNurbsCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
+{
+    auto* root = new SoSeparator;
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    root->addChild(lightModel);
+    auto* color = new SoBaseColor;
+    color->rgb = style.color;
+    root->addChild(color);
+    auto* drawStyle = new SoDrawStyle;
+    drawStyle->lineWidth = style.lineWidth;
+    root->addChild(drawStyle);
+    root->addChild(homogeneous(curve.points(), curve.weights()));
+    auto* nurbs = new SoNurbsCurve;
+    nurbs->numControlPoints = curve.pointCount();
+    setKnots(nurbs->knotVector, curve.knots());
+    root->addChild(nurbs);
+    return root;
+}
+
+SoSeparator* makeNurbsSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
+{
+    auto* root = new SoSeparator;
+    auto* material = new SoMaterial;
+    material->diffuseColor = style.color;
+    material->ambientColor = style.color * 0.3f;
+    material->specularColor = SbColor(0.35f, 0.35f, 0.35f);
+    material->shininess = style.shininess;
+    root->addChild(material);
+    auto* hints = new SoShapeHints;
+    hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
+    hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
+    root->addChild(hints);
+    // SoNurbsSurface: point (u, v) at index v * numUControlPoints + u; the model's is i * countV + j.
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double> weights;
+    for (int j = 0; j < surface.countV(); ++j) {
+        for (int i = 0; i < surface.countU(); ++i) {
+            points.push_back(surface.points()[i * surface.countV() + j]);
+            if (surface.isRational()) weights.push_back(surface.weights()[i * surface.countV() + j]);
+        }
+    }
+    root->addChild(homogeneous(points, weights));
+    auto* nurbs = new SoNurbsSurface;
+    nurbs->numUControlPoints = surface.countU();
+    nurbs->numVControlPoints = surface.countV();
+    setKnots(nurbs->uKnotVector, surface.knotsU());
+    setKnots(nurbs->vKnotVector, surface.knotsV());
+    root->addChild(nurbs);
     return root;
 }
 

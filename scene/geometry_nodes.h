@@ -29,4 +29,10 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
 /// with the kernel's per-vertex normals; both sides lit. Reference count 0, as above.
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style = {});
 
+/// The same looks drawn by Coin's own NURBS nodes (SoNurbsCurve / SoNurbsSurface, tessellated by
+/// GLU at render time), for measuring the kernel-tessellation path against them (issue 5 §4).
+/// Reference count 0.
+SoSeparator* makeNurbsCurveNode(const solvers::Curve3d& curve, const CurveStyle& style = {});
+SoSeparator* makeNurbsSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style = {});
+
 }  // namespace sculptline::scene

@@ -70,6 +70,13 @@ void SketchDocument::setCamera(std::function<SoCamera*()> camera)
     curvePull_->setCamera(std::move(camera));
 }
 
+void SketchDocument::setNurbsNodes(bool nurbs)
+{
+    const int index = root_->findChild(view_->root());
+    view_ = std::make_unique<scene::ModelView>(model_, nurbs);
+    root_->replaceChild(index, view_->root());
+}
+
 std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::StrokeHit& hit)
 {
     const scene::Entity* curve = model_.find(hit.curve);

@@ -84,6 +84,10 @@ public:
     void deleteSelection();
     void addStroke(const manipulators::FinishedStroke& stroke);
 
+    /// Draws curves and surfaces with SoNurbsCurve / SoNurbsSurface (the frame-time comparison of
+    /// issue 5 §4); call before load().
+    void setNurbsNodes(bool nurbs);
+
     /// Where the viewer's camera is (for strokes, and for new planes facing the viewer).
     void setCamera(std::function<SoCamera*()> camera);
 

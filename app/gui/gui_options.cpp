@@ -44,6 +44,9 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
     cli.add_option("--stats", options.stats, "Write the replay's update latencies (JSON: count, p50, p99, max)");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
+    cli.add_flag("--nurbs-nodes", options.nurbsNodes,
+                 "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "
+                 "(to compare frame times with --stats)");
 
     ParseResult result;
     try {

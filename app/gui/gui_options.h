@@ -17,6 +17,7 @@ struct GuiOptions {
     std::string exportIv;  ///< Open Inventor file written after the replay
     std::string stats;  ///< latency statistics of the replay (JSON)
     bool listActions = false;  ///< print every action name and leave
+    bool nurbsNodes = false;  ///< draw with SoNurbsCurve/SoNurbsSurface (frame-time comparison only)
     bool documentGiven = false;  ///< DOCUMENT was on the command line (else the default scene)
 };
 

@@ -124,6 +124,7 @@ int main(int argc, char** argv)
 
     ui::MainWindow window;
     window.setAutomated(session.has_value());
+    if (options.nurbsNodes) window.document().setNurbsNodes(true);
     if (options.listActions) {
         for (QAction* action : window.namedActions()) {
             std::cout << action->objectName().toStdString();

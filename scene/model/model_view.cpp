@@ -42,7 +42,7 @@ void setFrame(SoTransform* transform, const PlaneFrame& frame)
 
 }  // namespace
 
-ModelView::ModelView(Model& model) : model_(model)
+ModelView::ModelView(Model& model, bool nurbsNodes) : model_(model), nurbsNodes_(nurbsNodes)
 {
     root_ = new SoSeparator;
     root_->ref();
@@ -88,7 +88,7 @@ SoSeparator* ModelView::planeGroup(EntityId plane) { return nodes_.at(plane); }
 
 SoSeparator* ModelView::makeCurveWithPolygon(const Entity& e)
 {
-    SoSeparator* node = makeCurveNode(*e.local, curveStyle(e.id));
+    SoSeparator* node = nurbsNodes_ ? makeNurbsCurveNode(*e.local, curveStyle(e.id)) : makeCurveNode(*e.local, curveStyle(e.id));
     // The control polygon under a switch, so that showing it is a field change, not a rebuild.
     auto* polygon = new SoSwitch;
     polygon->setName("ControlPolygon");
@@ -162,7 +162,7 @@ void ModelView::entityAdded(const Entity& e)
     }
     case EntityKind::Curve: addCurveNode(e); break;
     case EntityKind::Surface: {
-        SoSeparator* node = makeSurfaceNode(*e.surface);
+        SoSeparator* node = nurbsNodes_ ? makeNurbsSurfaceNode(*e.surface) : makeSurfaceNode(*e.surface);
         ++nodeBuilds_;
         node->setName(nodeName("Surface", e.id).c_str());
         surfaces_->addChild(node);

@@ -21,7 +21,9 @@ namespace sculptline::scene {
 class ModelView : public ModelObserver {
 public:
     /// Observes `model` (and shows what it already holds); the model must outlive this view.
-    explicit ModelView(Model& model);
+    /// @param nurbsNodes draw with SoNurbsCurve / SoNurbsSurface instead of the kernel's
+    ///        tessellation: only to measure the two against each other (issue 5 §4).
+    explicit ModelView(Model& model, bool nurbsNodes = false);
     ~ModelView() override;
     ModelView(const ModelView&) = delete;
     ModelView& operator=(const ModelView&) = delete;
@@ -63,6 +65,7 @@ private:
     std::map<EntityId, SoTransform*> frames_;
     std::map<EntityId, int> builtShape_;  ///< a curve's shapeVersion its node was built from
     EntityId highlighted_ = 0;
+    bool nurbsNodes_ = false;
     bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;
     int transformWrites_ = 0;
