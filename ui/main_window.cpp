@@ -140,6 +140,7 @@ void MainWindow::createActions()
     modeAction("mode.view", tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
     modeAction("mode.sketch", tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
     modeAction("mode.oversketch", tr("&Over-sketch a curve"), QStringLiteral("O"), Mode::Oversketch);
+    modeAction("mode.lift", tr("&Lift a stroke between two curves into space"), QStringLiteral("L"), Mode::Lift);
     modeAction("mode.pull", tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
     modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
@@ -152,7 +153,8 @@ void MainWindow::createActions()
 void MainWindow::createDocks()
 {
     auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
-                                 action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.pull")),
+                                 action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.lift")),
+                                 action(QStringLiteral("mode.pull")),
                                  action(QStringLiteral("mode.select")),
                                  action(QStringLiteral("plane.add"))},
                                 this);
@@ -170,13 +172,16 @@ void MainWindow::setMode(Mode mode)
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
-    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch);
+    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift);
     document_->curvePull().setEnabled(mode == Mode::Pull);
-    document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch : SketchDocument::StrokeMode::Sketch);
+    document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch
+                             : mode == Mode::Lift     ? SketchDocument::StrokeMode::Lift
+                                                      : SketchDocument::StrokeMode::Sketch);
     const char* name = mode == Mode::View         ? "mode.view"
                        : mode == Mode::Sketch     ? "mode.sketch"
                        : mode == Mode::Oversketch ? "mode.oversketch"
                        : mode == Mode::Pull       ? "mode.pull"
+                       : mode == Mode::Lift       ? "mode.lift"
                                                   : "mode.select";
     action(QString::fromLatin1(name))->setChecked(true);
     updateStatus();
@@ -195,6 +200,7 @@ void MainWindow::updateStatus()
     case Mode::Oversketch:
         text = tr("Over-sketch: draw over a curve (start on it, or near a curve of plane %1) to redraw that part of it.").arg(plane);
         break;
+    case Mode::Lift: text = tr("Lift: draw from a point of one curve to a point of another; the stroke becomes a space curve of least curvature between them."); break;
     case Mode::Pull: text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point."); break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
     }

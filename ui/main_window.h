@@ -23,7 +23,7 @@ class EntityListDock;
 class InspectorDock;
 class SketchDocument;
 
-enum class Mode { View, Sketch, Oversketch, Pull, Select };
+enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select };
 
 /// @note SoQt::init() must have been called before construction.
 class MainWindow : public QMainWindow {

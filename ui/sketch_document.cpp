@@ -8,6 +8,7 @@
 #include "scene/model/auxiliary_plane.h"
 #include "scene/model/model_document.h"
 #include "solvers/bspline/projection.h"
+#include "solvers/editing/lift.h"
 #include "solvers/editing/oversketch.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
@@ -192,6 +193,12 @@ std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators:
 {
     strokeOnPlane_ = 0;
     oversketchTarget_ = 0;
+    if (strokeMode_ == StrokeMode::Lift) {
+        // Drawn in the view plane through the starting curve point (seed 004 lifts an image-plane
+        // stroke); the depths come from the curve points at its ends.
+        if (!model_.find(start.curve)) return std::nullopt;
+        return scene::PlaneFrame::fromNormal(start.point, -start.view, kMinAuxiliarySize);
+    }
     if (strokeMode_ == StrokeMode::Oversketch) {
         // Over the curve the pen went down on, in its plane; else over the active plane's curves.
         const scene::Entity* curve = model_.find(start.curve);
@@ -225,6 +232,10 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
 {
     if (strokeMode_ == StrokeMode::Oversketch) {
         oversketchStroke(finished);
+        return;
+    }
+    if (strokeMode_ == StrokeMode::Lift) {
+        liftStroke(finished);
         return;
     }
     manipulators::FinishedStroke stroke = finished;
@@ -328,6 +339,46 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
         undo_.push(new ReplaceCurveCommand(*this, target, *curve->local, std::move(changed)));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
+{
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.points.size());
+    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    if (!from || !to || stroke.points.size() < 2) {
+        lastStroke_.message = tr("Lift: start and end the stroke on curves");
+        Q_EMIT strokeFinished();
+        return;
+    }
+    // The stroke in the view plane's frame; its ends pinned to the curve points' footprints, whose
+    // heights above the view plane are the depth range of the lift.
+    const scene::PlaneFrame& frame = stroke.frame;
+    std::vector<Eigen::Vector2d> flat;
+    for (const Eigen::Vector3d& p : stroke.points) flat.push_back(p.head<2>());
+    const Eigen::Vector3d a = frame.toLocal(from->point), b = frame.toLocal(to->point);
+    flat.front() = a.head<2>();
+    flat.back() = b.head<2>();
+    solvers::editing::ViewFrame view;
+    view.origin = frame.origin;
+    view.right = frame.xAxis();
+    view.up = frame.rotation * Eigen::Vector3d::UnitY();
+    view.depth = frame.normal();
+    try {
+        const solvers::editing::LiftResult lifted = solvers::editing::liftStroke(flat, a.z(), b.z(), {}, view);
+        scene::Entity curve;
+        curve.kind = scene::EntityKind::Curve;
+        curve.local = lifted.curve;
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = lifted.curve.pointCount();
+        lastStroke_.maxError = lifted.fitError;
+        lastStroke_.message = tr("Lifted to a space curve: %1 control points, fit error %2 mm").arg(lifted.curve.pointCount()).arg(lifted.fitError, 0, 'f', 3);
+        undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Lift a space curve")));
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Lift not possible: %1").arg(QString::fromStdString(e.what()));
     }
     Q_EMIT strokeFinished();
 }

@@ -75,7 +75,8 @@ public:
 
     /// What a finished stroke does: becomes a new curve, or over-sketches the curve it was drawn
     /// over (solvers/editing, local-c2 by default).
-    enum class StrokeMode { Sketch, Oversketch };
+    /// Lift: a stroke between two curve points becomes a minimum-curvature space curve (seed 004).
+    enum class StrokeMode { Sketch, Oversketch, Lift };
     void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
     StrokeMode strokeMode() const { return strokeMode_; }
 
@@ -107,6 +108,7 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    void liftStroke(const manipulators::FinishedStroke& stroke);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     void pullTo(const Eigen::Vector3d& local);

@@ -91,6 +91,10 @@ def main():
     u = [{"type": "key", "key": "Ctrl+Z", "t": tg + 20}, {"type": "key", "key": "Ctrl+Shift+Z", "t": tg + 30}]
     write("pull.json", events + [{"type": "action", "name": "mode.pull", "t": t + 50}] + g + u + [{"type": "wait", "ms": 50}])
 
+    # Lift: in lift mode the stroke of the auxiliary case 2 (curve 4's start to curve 5's start)
+    # becomes a space curve.
+    write("lift.json", events + [{"type": "action", "name": "mode.lift", "t": t + 40}] + a2 + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

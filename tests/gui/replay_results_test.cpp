@@ -225,6 +225,23 @@ TEST(ReplayResults, PullingACurvePointDrawsTheCurveAfterTheHandle)
     EXPECT_LT((after.points().back() - before.points().back()).norm(), 1.0);
 }
 
+TEST(ReplayResults, LiftingAStrokeBetweenTwoCurvesMakesASpaceCurveJoiningThem)
+{
+    // Session: the two strokes, then in lift mode a stroke from curve 4's start to curve 5's start
+    const scene::Model model = readModel("lift.json");
+    const scene::Entity* lifted = model.find(6);
+    ASSERT_NE(lifted, nullptr);
+    ASSERT_EQ(lifted->kind, scene::EntityKind::Curve);
+    EXPECT_EQ(lifted->plane(), 0u);  // a space curve, on no plane
+    const solvers::Curve3d& c4 = *model.find(4)->world;
+    const solvers::Curve3d& c5 = *model.find(5)->world;
+    const solvers::Curve3d& c = *lifted->world;
+    /// The pen lands within a few pixels of the curve ends.
+    constexpr double kJoin = 3.0;
+    EXPECT_LT((c.evaluate(c.domainStart()) - c4.evaluate(c4.domainStart())).norm(), kJoin);
+    EXPECT_LT((c.evaluate(c.domainEnd()) - c5.evaluate(c5.domainStart())).norm(), kJoin);
+}
+
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
 {
     const nlohmann::json saved = readJson("drag.json");
