@@ -31,7 +31,24 @@ const Surface3d& LoftBuilder::reset(const std::vector<Curve3d>& sections)
 {
     requireSections(sections);
     if (options_.crossDegree < 1) throw GeometryError("crossDegree: must be >= 1");
-    const std::vector<Curve3d> compatible = makeCompatible(sections);
+    // Sections sketched in opposite directions would twist the surface: each is turned to run like
+    // its predecessor (its ends nearer the predecessor's same ends).
+    std::vector<Curve3d> oriented;
+    reversed_.assign(sections.size(), false);
+    for (size_t k = 0; k < sections.size(); ++k) {
+        Curve3d c = normalizedCurve(sections[k]);
+        if (k > 0) {
+            const Curve3d& prev = oriented.back();
+            const Eigen::Vector3d p0 = prev.evaluate(0.0), p1 = prev.evaluate(1.0);
+            const Eigen::Vector3d c0 = c.evaluate(0.0), c1 = c.evaluate(1.0);
+            if ((p0 - c1).norm() + (p1 - c0).norm() < (p0 - c0).norm() + (p1 - c1).norm()) {
+                c = reversedCurve(c);
+                reversed_[k] = true;
+            }
+        }
+        oriented.push_back(std::move(c));
+    }
+    const std::vector<Curve3d> compatible = makeCompatible(oriented);
     layout_ = CurveLayout{compatible.front().degree(), compatible.front().knots()};
     rational_ = compatible.front().isRational();
     columns_ = rational_ ? 4 : 3;
@@ -60,7 +77,8 @@ const Surface3d& LoftBuilder::reset(const std::vector<Curve3d>& sections)
 
 bool LoftBuilder::setSection(int index, const Curve3d& section)
 {
-    const std::optional<Curve3d> c = conformToLayout(normalizedCurve(section), layout_);
+    const Curve3d normalized = normalizedCurve(section);
+    const std::optional<Curve3d> c = conformToLayout(reversed_[index] ? reversedCurve(normalized) : normalized, layout_);
     if (!c || c->isRational() != rational_) return false;
     const ControlMatrix rows = c->homogeneous();
     for (int i = 0; i < layout_.pointCount(); ++i) data_.block(index, i * columns_, 1, columns_) = rows.row(i);
@@ -76,7 +94,9 @@ const Surface3d& LoftBuilder::update(int index, const Curve3d& section)
         for (Eigen::Index k = 0; k < data_.rows(); ++k) {
             ControlMatrix rows(layout_.pointCount(), columns_);
             for (int i = 0; i < layout_.pointCount(); ++i) rows.row(i) = data_.block(k, i * columns_, 1, columns_);
-            all.push_back(k == index ? section : Curve3d::fromHomogeneous(layout_.degree, layout_.knots, rows, rational_));
+            const Curve3d normalized = normalizedCurve(section);
+            all.push_back(k == index ? (reversed_[index] ? reversedCurve(normalized) : normalized)
+                                     : Curve3d::fromHomogeneous(layout_.degree, layout_.knots, rows, rational_));
         }
         return reset(all);
     }

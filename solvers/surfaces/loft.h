@@ -15,8 +15,8 @@ struct LoftOptions {
     int crossDegree = 3;
 };
 
-/// S(u, v): u runs along the sections (made compatible: common degree and knots on [0, 1]),
-/// v across them; S(u, v_k) = section k exactly (homogeneous control rows are interpolated, so
+/// S(u, v): u runs along the sections (made compatible: common degree and knots on [0, 1]; a
+/// section drawn the other way round than its predecessor is reversed first), v across them; S(u, v_k) = section k exactly (homogeneous control rows are interpolated, so
 /// rational sections are met exactly too). v_k are averaged chord lengths between the sections'
 /// control points (The NURBS Book eq. 10.8); knots V by averaging (eq. 9.8).
 /// @throws GeometryError ("curves: ...") for fewer than two sections, coincident consecutive
@@ -49,6 +49,7 @@ private:
     LoftOptions options_;
     CurveLayout layout_;
     bool rational_ = false;
+    std::vector<bool> reversed_;  // section k was turned to run like section k - 1
     int columns_ = 0;  // homogeneous coordinates per control point (3 or 4)
     std::unique_ptr<CurveInterpolator> interpolator_;
     ControlMatrix data_;  // row k: section k's control rows side by side

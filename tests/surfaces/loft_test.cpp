@@ -91,6 +91,23 @@ TEST(Loft, GivenBuilder_WhenSectionGetsNewKnots_ThenFullRebuildStillExact)
     EXPECT_LT(isoDeviation(again, true, builder.crossParameters()[1], sections[1]), kExact);
 }
 
+TEST(Loft, GivenSectionDrawnBackwards_WhenLofted_ThenSameSurfaceAndBuilderKeepsTheTurn)
+{
+    std::vector<Curve3d> sections = hullSections();
+    const LoftBuilder forward(sections);
+    sections[2] = reversedCurve(normalizedCurve(sections[2]));
+    LoftBuilder builder(sections);
+    for (int i = 0; i <= 10; ++i)
+        for (int j = 0; j <= 10; ++j)
+            EXPECT_LT((builder.surface().evaluate(i / 10.0, j / 10.0) - forward.surface().evaluate(i / 10.0, j / 10.0)).norm(),
+                      kExact);
+    // A drag of the reversed section arrives in its own (reversed) direction and stays met.
+    std::vector<Vec3> pts = sections[2].points();
+    pts[1] += Vec3(0.2, 0.1, -0.3);
+    const Curve3d moved(sections[2].degree(), sections[2].knots(), pts);
+    EXPECT_LT(isoDeviation(builder.update(2, moved), true, builder.crossParameters()[2], moved, true), kExact);
+}
+
 TEST(Loft, GivenOneSection_WhenLofted_ThenClearError)
 {
     try {
