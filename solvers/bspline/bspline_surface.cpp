@@ -129,16 +129,26 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::normal(double u, double
         (void)v;
         return Point::Zero();
     } else {
-        // Scale-free threshold for a vanishing cross product relative to |Su||Sv|.
+        // Scale-free thresholds: a first derivative below kCollapsed times the other is rounding
+        // noise of a collapsed edge (its direction is meaningless), and a cross product below
+        // kDegenerate times |Su||Sv| means parallel derivatives.
+        constexpr double kCollapsed = 1e-12;
         constexpr double kDegenerate = 1e-12;
         const auto d = derivatives(u, v, 2);
+        const double su = d[1][0].norm(), sv = d[0][1].norm();
+        const bool suCollapsed = su <= kCollapsed * sv, svCollapsed = sv <= kCollapsed * su;
         Point n = d[1][0].cross(d[0][1]);
-        const double scale = d[1][0].norm() * d[0][1].norm();
-        if (n.norm() > kDegenerate * std::max(scale, 1e-300)) return n.normalized();
-        // At a collapsed edge one first derivative vanishes: the normal is the limit along it,
-        // given by the mixed/second derivative (a first-order Taylor step of the cross product).
-        if (d[1][0].norm() <= kDegenerate * d[0][1].norm()) n = d[1][1].cross(d[0][1]);
-        else n = d[1][0].cross(d[1][1]);
+        if (!suCollapsed && !svCollapsed && n.norm() > kDegenerate * su * sv) return n.normalized();
+        // At a collapsed edge the normal is the limit from the inside of the domain: with Sv = 0
+        // along u = u0, Sv(u0 + h) ~ h Suv, so N ~ h (Su x Suv), whose sign depends on the side h of
+        // the interior: negative when the edge is the end of the domain (likewise for Su = 0).
+        if (suCollapsed || (!svCollapsed && su <= sv)) {
+            const double side = std::min(v, domainEnd(Direction::V)) >= domainEnd(Direction::V) ? -1.0 : 1.0;
+            n = side * d[1][1].cross(d[0][1]);
+        } else {
+            const double side = std::min(u, domainEnd(Direction::U)) >= domainEnd(Direction::U) ? -1.0 : 1.0;
+            n = side * d[1][0].cross(d[1][1]);
+        }
         return n.norm() > 0 ? Point(n.normalized()) : Point::Zero();
     }
 }

@@ -152,3 +152,48 @@ TEST(Surface, InvalidNetsAreRejectedWithTheField)
     EXPECT_NE(message([&] { Surface3d(1, 1, {0, 0, 1, 1}, {0, 0, 1, 1}, 2, 2, four, {1, 1, 1, 0}); }).find("weights[3]"),
               std::string::npos);
 }
+
+namespace {
+
+// A cubic profile revolved about z with the rational circle; the profile's last point lies at
+// radius `endRadius` (0: the edge u = 1 collapses to a pole). Reported by the surfaces work.
+Surface3d revolvedWithPole(double endRadius)
+{
+    const Curve3d circle = unitCircle();
+    const std::vector<Eigen::Vector3d> profile = {{1, 0, 0}, {1, 0, 0.5}, {0.5, 0, 1}, {endRadius, 0, 1}};
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> w;
+    for (const auto& q : profile)
+        for (int j = 0; j < circle.pointCount(); ++j) {
+            const Eigen::Vector3d c = circle.points()[j];
+            pts.emplace_back(q.x() * c.x(), q.x() * c.y(), q.z());
+            w.push_back(circle.weights()[j]);
+        }
+    return Surface3d(3, 2, {0, 0, 0, 0, 1, 1, 1, 1}, circle.knots(), 4, 9, pts, w);
+}
+
+}  // namespace
+
+TEST(Surface, NormalAtACollapsedEdgeIsTheLimitFromInside)
+{
+    for (double endRadius : {0.0, 1e-15}) {  // exactly collapsed, and collapsed up to round-off
+        const Surface3d s = revolvedWithPole(endRadius);
+        for (double v : {0.0, 0.3, 0.77}) {
+            const Eigen::Vector3d atPole = s.normal(1.0, v);
+            const Eigen::Vector3d inside = s.normal(1.0 - 1e-6, v);
+            EXPECT_NEAR(atPole.norm(), 1.0, 1e-12);
+            EXPECT_GT(atPole.dot(inside), 0.999) << "r = " << endRadius << " v = " << v;
+        }
+    }
+    // The same at the start of the domain: reverse the profile so the pole is at u = 0.
+    const Surface3d s = revolvedWithPole(0.0);
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> w;
+    for (int i = 3; i >= 0; --i)
+        for (int j = 0; j < 9; ++j) {
+            pts.push_back(s.point(i, j));
+            w.push_back(s.weight(i, j));
+        }
+    const Surface3d r(3, 2, s.knotsU(), s.knotsV(), 4, 9, pts, w);
+    EXPECT_GT(r.normal(0.0, 0.4).dot(r.normal(1e-6, 0.4)), 0.999);
+}
