@@ -6,6 +6,7 @@
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/modes_dock.h"
+#include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
@@ -65,6 +66,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         updateStatus();
     });
     connect(document_, &SketchDocument::strokeFinished, this, [this]() {
+        recognition_->refresh();
         statusBar()->showMessage(document_->lastStroke().message);
     });
     connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this]() { updateTitle(); });
@@ -127,6 +129,11 @@ void MainWindow::createActions()
     edit->addAction(redo);
     make(edit, "edit.delete", tr("&Delete selection"), QKeySequence::Delete, [this]() { document_->deleteSelection(); });
 
+    make(edit, "stroke.useRecognized", tr("Use the recognized shape for the last stroke"), QKeySequence(),
+         [this]() { document_->chooseRecognized(true); });
+    make(edit, "stroke.useFreeform", tr("Use the freeform curve for the last stroke"), QKeySequence(),
+         [this]() { document_->chooseRecognized(false); });
+
     QMenu* plane = menuBar()->addMenu(tr("&Plane"));
     make(plane, "plane.add", tr("&Add plane facing the view"), QKeySequence(QStringLiteral("Ctrl+P")), [this]() { addPlaneFacingViewer(); });
 
@@ -163,6 +170,9 @@ void MainWindow::createDocks()
     addDockWidget(Qt::RightDockWidgetArea, entities_);
     inspector_ = new InspectorDock(this);
     addDockWidget(Qt::RightDockWidgetArea, inspector_);
+    recognition_ = new RecognitionDock(*document_, action(QStringLiteral("stroke.useRecognized")),
+                                       action(QStringLiteral("stroke.useFreeform")), this);
+    addDockWidget(Qt::LeftDockWidgetArea, recognition_);
     connect(entities_, &EntityListDock::entityPicked, this, [this](scene::EntityId id) { document_->select(id); });
 }
 

@@ -21,6 +21,7 @@ namespace sculptline::ui {
 
 class EntityListDock;
 class InspectorDock;
+class RecognitionDock;
 class SketchDocument;
 
 enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select };
@@ -85,6 +86,7 @@ private:
     SketchDocument* document_ = nullptr;
     EntityListDock* entities_ = nullptr;
     InspectorDock* inspector_ = nullptr;
+    RecognitionDock* recognition_ = nullptr;
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::View;
     bool automated_ = false;

@@ -10,6 +10,7 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/editing/lift.h"
 #include "solvers/editing/oversketch.h"
+#include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
 
@@ -295,12 +296,49 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
                                   .arg(lastStroke_.controlPoints)
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
+        recognize(fit);
         const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
         undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+        recognizedCurve_ = selection_;  // the command selects the curve it added
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.
         lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));
     }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::recognize(const solvers::stroke::FitResult& fit)
+{
+    freeformFit_ = fit.curve;
+    regularizedFit_.reset();
+    recognizedCurve_ = 0;
+    try {
+        // The recognizer of the stroke issue; the freeform fit stays the default curve, the
+        // regularized primitive is one click away (RecognitionDock).
+        const solvers::stroke::Recognition r = solvers::stroke::recognizeShape(fit);
+        lastStroke_.recognized = QString::fromLatin1(solvers::stroke::shapeName(r.kind));
+        for (const solvers::stroke::ShapeCandidate& c : r.candidates) {
+            lastStroke_.candidates.emplace_back(QString::fromLatin1(solvers::stroke::shapeName(c.kind)), c.score);
+        }
+        if (r.kind != solvers::stroke::ShapeKind::Freeform) regularizedFit_ = r.regularized;
+    } catch (const std::exception& e) {
+        lastStroke_.recognized.clear();
+        lastStroke_.message += tr(" (not recognized: %1)").arg(QString::fromStdString(e.what()));
+    }
+}
+
+bool SketchDocument::recognitionChoiceAvailable() const
+{
+    return recognizedCurve_ != 0 && model_.find(recognizedCurve_) && freeformFit_ && regularizedFit_;
+}
+
+void SketchDocument::chooseRecognized(bool regularized)
+{
+    if (!recognitionChoiceAvailable()) return;
+    const solvers::Curve3d& target = regularized ? *regularizedFit_ : *freeformFit_;
+    const scene::Entity* curve = model_.find(recognizedCurve_);
+    if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
+    undo_.push(new ReplaceCurveCommand(*this, recognizedCurve_, *curve->local, target));
     Q_EMIT strokeFinished();
 }
 

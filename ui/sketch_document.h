@@ -8,12 +8,15 @@
 #include "scene/model/update_scheduler.h"
 #include "scene/scene_document.h"
 #include "solvers/editing/curve_manipulation.h"
+#include "solvers/stroke/stroke_fitter.h"
 
 #include <QObject>
 #include <QString>
 #include <QUndoStack>
 
 #include <map>
+#include <utility>
+#include <vector>
 #include <optional>
 #include <memory>
 
@@ -38,6 +41,8 @@ struct StrokeReport {
     double maxError = 0.0;  ///< model units
     bool fitted = false;  ///< false: the stroke was rejected (too short, degenerate)
     QString message;
+    QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
+    std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
 };
 
 class SketchDocument : public QObject, public scene::ModelObserver {
@@ -80,6 +85,11 @@ public:
     void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
     StrokeMode strokeMode() const { return strokeMode_; }
 
+    /// The last sketched curve as the recognizer's regularized shape (true) or as the freeform fit
+    /// (false); undoable. Available while that curve exists and the shape is not freeform.
+    void chooseRecognized(bool regularized);
+    bool recognitionChoiceAvailable() const;
+
     /// Undoable edits.
     void addPlane(const scene::PlaneFrame& frame);
     void deleteSelection();
@@ -108,6 +118,8 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
+    void recognize(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
@@ -138,6 +150,8 @@ private:
     scene::EntityId strokeOnPlane_ = 0;
     scene::PlaneFrame dragStart_;
     StrokeReport lastStroke_;
+    scene::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
+    std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
 };

@@ -95,6 +95,11 @@ def main():
     # becomes a space curve.
     write("lift.json", events + [{"type": "action", "name": "mode.lift", "t": t + 40}] + a2 + [{"type": "wait", "ms": 50}])
 
+    # Recognition: the arc stroke (curve 5) replaced by the recognized exact arc; undone, redone.
+    r = [{"type": "action", "name": "stroke.useRecognized", "t": t + 40}, {"type": "key", "key": "Ctrl+Z", "t": t + 50},
+         {"type": "key", "key": "Ctrl+Shift+Z", "t": t + 60}]
+    write("recognize.json", events + r + [{"type": "wait", "ms": 50}])
+
     # A new plane facing the view, and a stroke on it.
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)

@@ -242,6 +242,24 @@ TEST(ReplayResults, LiftingAStrokeBetweenTwoCurvesMakesASpaceCurveJoiningThem)
     EXPECT_LT((c.evaluate(c.domainEnd()) - c5.evaluate(c5.domainStart())).norm(), kJoin);
 }
 
+TEST(ReplayResults, TheRecognizedArcReplacesTheFreeformFitOnRequest)
+{
+    // Session: the two strokes, then stroke.useRecognized (the arc stroke, curve 5), undo, redo
+    const scene::Model sketched = readModel("sketch.json");
+    const scene::Model model = readModel("recognize.json");
+    const solvers::Curve3d& freeform = *sketched.find(5)->local;
+    const solvers::Curve3d& arc = *model.find(5)->local;
+    // The recognizer's exact arc: a rational quadratic, on the same plane, with the stroke's ends
+    EXPECT_EQ(arc.degree(), 2);
+    EXPECT_TRUE(arc.isRational());
+    EXPECT_EQ(model.find(5)->plane(), 1u);
+    // The exact arc lies on the least-squares circle, which need not pass through the stroke's
+    // ends: within a tenth of the arc's chord of them.
+    const double kSameEnds = 0.1 * (freeform.evaluate(freeform.domainEnd()) - freeform.evaluate(freeform.domainStart())).norm();
+    EXPECT_LT((arc.evaluate(arc.domainStart()) - freeform.evaluate(freeform.domainStart())).norm(), kSameEnds);
+    EXPECT_LT((arc.evaluate(arc.domainEnd()) - freeform.evaluate(freeform.domainEnd())).norm(), kSameEnds);
+}
+
 TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
 {
     const nlohmann::json saved = readJson("drag.json");
