@@ -1,0 +1,302 @@
+// SketchDocument's pen input: strokes (sketch, auxiliary planes, over-sketch, lift, recognition
+// choices) and pulling a curve point. Split from sketch_document.cpp, which keeps the document's
+// life cycle, selection and the Coin side's bookkeeping.
+#include "ui/sketch_document.h"
+
+#include "manipulators/curve_pull.h"
+#include "manipulators/stroke_input.h"
+#include "scene/model/auxiliary_plane.h"
+#include "solvers/bspline/projection.h"
+#include "solvers/editing/lift.h"
+#include "solvers/editing/oversketch.h"
+#include "solvers/stroke/shape_recognizer.h"
+#include "solvers/stroke/stroke_fitter.h"
+#include "ui/undo_commands.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace sculptline::ui {
+namespace {
+
+/// Edge limits of an auxiliary plane, model units: big enough to grab, never a sky-sized sheet.
+constexpr double kMinAuxiliarySize = 40.0;
+constexpr double kMaxAuxiliarySize = 1000.0;
+
+}  // namespace
+
+std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
+{
+    strokeOnPlane_ = 0;
+    oversketchTarget_ = 0;
+    if (strokeMode_ == StrokeMode::Lift) {
+        // Drawn in the view plane through the starting curve point (seed 004 lifts an image-plane
+        // stroke); the depths come from the curve points at its ends.
+        if (!model_.find(start.curve)) return std::nullopt;
+        return scene::PlaneFrame::fromNormal(start.point, -start.view, kMinAuxiliarySize);
+    }
+    if (strokeMode_ == StrokeMode::Oversketch) {
+        // Over the curve the pen went down on, in its plane; else over the active plane's curves.
+        const scene::Entity* curve = model_.find(start.curve);
+        const scene::Entity* plane = model_.find(curve && curve->plane() != 0 ? curve->plane() : activePlane());
+        if (!plane) return std::nullopt;
+        if (curve && curve->plane() == plane->id) oversketchTarget_ = curve->id;
+        strokeOnPlane_ = plane->id;
+        return plane->frame;
+    }
+    // Seed 000 §3.1, case 1: from a curve into the air, on the plane along its tangent there.
+    if (const std::optional<scene::CurveFrameAt> at = curveFrame(start)) {
+        if (auto plane = scene::planeAlongTangent(at->point, at->tangent, start.view, kMinAuxiliarySize)) return plane;
+    }
+    const scene::Entity* plane = model_.find(activePlane());
+    if (!plane) return std::nullopt;
+    strokeOnPlane_ = plane->id;
+    return plane->frame;
+}
+
+std::optional<scene::CurveFrameAt> SketchDocument::curveFrame(const manipulators::StrokeHit& hit) const
+{
+    const scene::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != scene::EntityKind::Curve || !curve->world) return std::nullopt;
+    // A planar curve's binormal is its plane's normal; a straight one has none of its own.
+    const scene::Entity* plane = model_.find(curve->plane());
+    const Eigen::Vector3d fallback = plane ? plane->frame.normal() : -hit.view;
+    return scene::curveFrameNear(*curve->world, hit.point, fallback);
+}
+
+void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
+{
+    if (strokeMode_ == StrokeMode::Oversketch) {
+        oversketchStroke(finished);
+        return;
+    }
+    if (strokeMode_ == StrokeMode::Lift) {
+        liftStroke(finished);
+        return;
+    }
+    manipulators::FinishedStroke stroke = finished;
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.rayOrigins.size());
+    // Case 2: a stroke connecting two curves lies on the plane through both points that contains
+    // the first curve's binormal.
+    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    if (from && to && stroke.end.curve != stroke.start.curve) {
+        if (auto plane = scene::planeThroughPoints(from->point, to->point, from->binormal, stroke.start.view, kMinAuxiliarySize)) {
+            manipulators::reproject(stroke, *plane);
+            strokeOnPlane_ = 0;
+        }
+    }
+    if (stroke.points.size() < 2) return;
+    std::vector<scene::Entity> added;
+    scene::EntityId plane = strokeOnPlane_;
+    if (plane == 0) {
+        // An auxiliary plane made for this stroke, centred on it and large enough to show it
+        // whole. Centred, not at the curve point: its dragger would sit on the curve's end and take
+        // the press of the next stroke started there.
+        Eigen::Vector3d lo = stroke.points.front(), hi = lo;
+        for (const Eigen::Vector3d& p : stroke.points) {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        const Eigen::Vector3d centre = 0.5 * (lo + hi);
+        for (Eigen::Vector3d& p : stroke.points) p -= centre;
+        scene::Entity aux;
+        aux.kind = scene::EntityKind::Plane;
+        aux.frame = stroke.frame;
+        aux.frame.origin = stroke.frame.toWorld(centre);
+        aux.frame.size = std::clamp(1.2 * (hi - lo).head<2>().maxCoeff(), kMinAuxiliarySize, kMaxAuxiliarySize);
+        added.push_back(aux);
+        plane = kPreviousEntity;
+    }
+    solvers::stroke::Stroke input;
+    input.points = stroke.points;
+    input.times = stroke.times;
+    input.dimension = 2;
+    try {
+        // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and
+        // least squares, in the plane's local frame and model units.
+        const solvers::stroke::FitResult fit = solvers::stroke::fitStroke(input);
+        scene::Entity curve;
+        curve.kind = scene::EntityKind::Curve;
+        curve.inputs = {plane};
+        curve.local = fit.curve;
+        added.push_back(curve);
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = fit.curve.pointCount();
+        lastStroke_.maxError = fit.maxError;
+        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm%5")
+                                  .arg(lastStroke_.samples)
+                                  .arg(fit.curve.degree())
+                                  .arg(lastStroke_.controlPoints)
+                                  .arg(fit.maxError, 0, 'f', 3)
+                                  .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
+        recognize(fit);
+        const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
+        undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+        recognizedCurve_ = selection_;  // the command selects the curve it added
+    } catch (const std::exception& e) {
+        // A click or a stroke too short to have a shape: nothing to add, say why.
+        lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::recognize(const solvers::stroke::FitResult& fit)
+{
+    freeformFit_ = fit.curve;
+    regularizedFit_.reset();
+    recognizedCurve_ = 0;
+    try {
+        // The recognizer of the stroke issue; the freeform fit stays the default curve, the
+        // regularized primitive is one click away (RecognitionDock).
+        const solvers::stroke::Recognition r = solvers::stroke::recognizeShape(fit);
+        lastStroke_.recognized = QString::fromLatin1(solvers::stroke::shapeName(r.kind));
+        for (const solvers::stroke::ShapeCandidate& c : r.candidates) {
+            lastStroke_.candidates.emplace_back(QString::fromLatin1(solvers::stroke::shapeName(c.kind)), c.score);
+        }
+        if (r.kind != solvers::stroke::ShapeKind::Freeform) regularizedFit_ = r.regularized;
+    } catch (const std::exception& e) {
+        lastStroke_.recognized.clear();
+        lastStroke_.message += tr(" (not recognized: %1)").arg(QString::fromStdString(e.what()));
+    }
+}
+
+bool SketchDocument::recognitionChoiceAvailable() const
+{
+    return recognizedCurve_ != 0 && model_.find(recognizedCurve_) && freeformFit_ && regularizedFit_;
+}
+
+void SketchDocument::chooseRecognized(bool regularized)
+{
+    if (!recognitionChoiceAvailable()) return;
+    const solvers::Curve3d& target = regularized ? *regularizedFit_ : *freeformFit_;
+    const scene::Entity* curve = model_.find(recognizedCurve_);
+    if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
+    undo_.push(new ReplaceCurveCommand(*this, recognizedCurve_, *curve->local, target));
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke)
+{
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.points.size());
+    // The target: the curve the stroke started on, else the plane's curve nearest to the stroke
+    // (mean distance of its samples, plane-local).
+    scene::EntityId target = oversketchTarget_;
+    if (target == 0) {
+        double best = std::numeric_limits<double>::infinity();
+        for (scene::EntityId id : model_.dependents(strokeOnPlane_)) {
+            const solvers::CurveProjector<3> projector(*model_.find(id)->local);
+            double sum = 0.0;
+            for (const Eigen::Vector3d& p : stroke.points) sum += projector.project(p).distance;
+            if (sum < best) {
+                best = sum;
+                target = id;
+            }
+        }
+    }
+    const scene::Entity* curve = model_.find(target);
+    if (!curve || stroke.points.size() < 2) {
+        lastStroke_.message = tr("Over-sketch: no curve on plane %1 to change").arg(strokeOnPlane_);
+        Q_EMIT strokeFinished();
+        return;
+    }
+    try {
+        double maxError = 0.0;
+        solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke.points, {}, nullptr, &maxError);
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = changed.pointCount();
+        lastStroke_.maxError = maxError;
+        lastStroke_.message = tr("Curve %1 over-sketched: %2 control points, max error %3 mm").arg(target).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
+        undo_.push(new ReplaceCurveCommand(*this, target, *curve->local, std::move(changed)));
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
+{
+    lastStroke_ = {};
+    lastStroke_.samples = static_cast<int>(stroke.points.size());
+    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    if (!from || !to || stroke.points.size() < 2) {
+        lastStroke_.message = tr("Lift: start and end the stroke on curves");
+        Q_EMIT strokeFinished();
+        return;
+    }
+    // The stroke in the view plane's frame; its ends pinned to the curve points' footprints, whose
+    // heights above the view plane are the depth range of the lift.
+    const scene::PlaneFrame& frame = stroke.frame;
+    std::vector<Eigen::Vector2d> flat;
+    for (const Eigen::Vector3d& p : stroke.points) flat.push_back(p.head<2>());
+    const Eigen::Vector3d a = frame.toLocal(from->point), b = frame.toLocal(to->point);
+    flat.front() = a.head<2>();
+    flat.back() = b.head<2>();
+    solvers::editing::ViewFrame view;
+    view.origin = frame.origin;
+    view.right = frame.xAxis();
+    view.up = frame.rotation * Eigen::Vector3d::UnitY();
+    view.depth = frame.normal();
+    try {
+        const solvers::editing::LiftResult lifted = solvers::editing::liftStroke(flat, a.z(), b.z(), {}, view);
+        scene::Entity curve;
+        curve.kind = scene::EntityKind::Curve;
+        curve.local = lifted.curve;
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = lifted.curve.pointCount();
+        lastStroke_.maxError = lifted.fitError;
+        lastStroke_.message = tr("Lifted to a space curve: %1 control points, fit error %2 mm").arg(lifted.curve.pointCount()).arg(lifted.fitError, 0, 'f', 3);
+        undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Lift a space curve")));
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Lift not possible: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
+}
+
+std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::StrokeHit& hit)
+{
+    const scene::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != scene::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
+    const scene::PlaneFrame& frame = model_.find(curve->plane())->frame;
+    try {
+        // One position constraint at the grabbed parameter; the factorization is done here, once
+        // per pull, and each pointer event is one product (curve_manipulation.h).
+        solvers::editing::CurveConstraint<3> grip;
+        grip.u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
+        pullSolver_ = std::make_unique<solvers::editing::CurveManipulationSolver<3>>(*curve->local, std::vector{grip});
+    } catch (const std::exception& e) {
+        lastStroke_ = {};
+        lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(curve->id).arg(QString::fromStdString(e.what()));
+        Q_EMIT strokeFinished();
+        return std::nullopt;
+    }
+    pulled_ = curve->id;
+    pullStart_ = curve->local;
+    select(curve->id);
+    return frame;
+}
+
+void SketchDocument::pullTo(const Eigen::Vector3d& local)
+{
+    if (!pullSolver_) return;
+    // Marks the curve dirty only: the scheduler re-tessellates it once per frame.
+    model_.setCurveShape(pulled_, pullSolver_->solve({local}));
+}
+
+void SketchDocument::releaseCurve()
+{
+    scheduler_->flush();
+    const scene::Entity* curve = model_.find(pulled_);
+    if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
+        undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));
+    }
+    pullSolver_.reset();
+    pullStart_.reset();
+    pulled_ = 0;
+    Q_EMIT entitiesChanged();
+}
+
+}  // namespace sculptline::ui
