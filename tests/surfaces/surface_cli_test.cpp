@@ -1,6 +1,7 @@
 // sculptline-cli surface, run as the real binary (../shared/interfaces.md): every mode returns a
 // surface that meets its curves; impossible input exits with status 2 and names the problem.
 #include "solvers/io/geometry_json.h"
+#include "tests/cli/cli_runner.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -8,10 +9,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 using nlohmann::json;
 using namespace sculptline::solvers;
@@ -26,22 +24,12 @@ struct CliRun {
     std::string err;
 };
 
+// The shared runner (tests/cli): no shell, a private scratch directory per process, so parallel
+// ctest processes never share files. err keeps the first line of stderr.
 CliRun runCli(const std::string& sub, const json& input)
 {
-    const std::string in = ::testing::TempDir() + "surface_cli_input.json";
-    const std::string err = ::testing::TempDir() + "surface_cli_stderr.txt";
-    std::ofstream(in) << input.dump();
-    const std::string cmd = std::string(SCULPTLINE_CLI_PATH) + " " + sub + " " + in + " 2>" + err;
-    CliRun r;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    std::array<char, 4096> buf{};
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) r.out.append(buf.data(), n);
-    const int st = pclose(pipe);
-    r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    std::ifstream e(err);
-    std::getline(e, r.err);
-    return r;
+    const sculptline::cli_test::CliResult r = sculptline::cli_test::runCli({sub}, input.dump());
+    return {r.status, r.out, r.err.substr(0, r.err.find('\n'))};
 }
 
 json curve(const std::vector<std::array<double, 3>>& pts)
