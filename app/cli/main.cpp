@@ -111,7 +111,7 @@ int main(int argc, char** argv)
 
     CLI::App app{"sculptline-cli: Sculptline's geometry kernel from the command line. Reads one JSON object\n"
                  "(INPUT.json, or stdin when INPUT is absent or '-') and writes one JSON object to stdout.\n"
-                 "Formats: docs/cli.md. Invalid input: exit status 2 and one line on stderr."};
+                 "Formats: README.md, section sculptline-cli. Invalid input: exit status 2 and one line on stderr."};
     app.set_version_flag("--version", SCULPTLINE_VERSION);
     app.require_subcommand(1);
     std::string inputPath = "-";
