@@ -140,17 +140,33 @@ Eigen::Vector3d pointFromJson(const json& j, const std::string& path)
     return p;
 }
 
+namespace {
+
+// The "points" member of a curve or surface object.
+std::vector<Eigen::Vector3d> controlPoints(const json& j, const std::string& path)
+{
+    const json& pts = arrayMember(j, "points", path);
+    std::vector<Eigen::Vector3d> points;
+    points.reserve(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) points.push_back(pointFromJson(pts[i], path + ".points[" + std::to_string(i) + "]"));
+    return points;
+}
+
+// The optional "weights" member (absent: non-rational).
+std::vector<double> optionalWeights(const json& j, const std::string& path)
+{
+    return j.contains("weights") ? numbers(arrayMember(j, "weights", path), path + ".weights") : std::vector<double>{};
+}
+
+}  // namespace
+
 Curve3d curveFromJson(const json& j, const std::string& path)
 {
     if (!j.is_object()) throw InputError(path + ": must be a JSON object");
     const int degree = integerFromJson(member(j, "degree", path), path + ".degree", 1, kMaxDegree);
     const std::vector<double> knots = numbers(arrayMember(j, "knots", path), path + ".knots");
-    const json& pts = arrayMember(j, "points", path);
-    std::vector<Eigen::Vector3d> points;
-    points.reserve(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) points.push_back(pointFromJson(pts[i], path + ".points[" + std::to_string(i) + "]"));
-    std::vector<double> weights;
-    if (j.contains("weights")) weights = numbers(arrayMember(j, "weights", path), path + ".weights");
+    const std::vector<Eigen::Vector3d> points = controlPoints(j, path);
+    const std::vector<double> weights = optionalWeights(j, path);
     bool closed = false;
     if (j.contains("closed")) {
         if (!j["closed"].is_boolean()) throw InputError(path + ".closed: must be true or false");
@@ -169,12 +185,8 @@ Surface3d surfaceFromJson(const json& j, const std::string& path)
     const int cv = integerFromJson(member(j, "countV", path), path + ".countV", 1, kMaxCount);
     const std::vector<double> ku = numbers(arrayMember(j, "knotsU", path), path + ".knotsU");
     const std::vector<double> kv = numbers(arrayMember(j, "knotsV", path), path + ".knotsV");
-    const json& pts = arrayMember(j, "points", path);
-    std::vector<Eigen::Vector3d> points;
-    points.reserve(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) points.push_back(pointFromJson(pts[i], path + ".points[" + std::to_string(i) + "]"));
-    std::vector<double> weights;
-    if (j.contains("weights")) weights = numbers(arrayMember(j, "weights", path), path + ".weights");
+    const std::vector<Eigen::Vector3d> points = controlPoints(j, path);
+    const std::vector<double> weights = optionalWeights(j, path);
     return validated(path, [&] { return Surface3d(du, dv, ku, kv, cu, cv, points, weights); });
 }
 
