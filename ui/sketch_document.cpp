@@ -31,6 +31,8 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
     root_->addChild(view_->root());
+    feedback_ = std::make_unique<scene::StrokeFeedback>();
+    root_->addChild(feedback_->root());
     // Last: the planes are translucent and drawn over what lies behind them.
     planeGroup_ = new SoGroup;
     planeGroup_->setName("Planes");

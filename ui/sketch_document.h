@@ -7,6 +7,7 @@
 #include "scene/model/model_view.h"
 #include "scene/model/update_scheduler.h"
 #include "scene/scene_document.h"
+#include "scene/stroke_feedback.h"
 #include "solvers/editing/curve_manipulation.h"
 #include "solvers/stroke/stroke_fitter.h"
 
@@ -65,6 +66,7 @@ public:
     QUndoStack* undoStack() { return &undo_; }
     manipulators::StrokeInput& strokeInput() { return *strokeInput_; }
     manipulators::CurvePull& curvePull() { return *curvePull_; }
+    scene::StrokeFeedback& strokeFeedback() { return *feedback_; }
     SoSeparator* root() const { return root_; }
     const QString& path() const { return path_; }
     const scene::GridSpec& grid() const { return grid_; }
@@ -134,6 +136,7 @@ private:
     std::unique_ptr<scene::UpdateScheduler> scheduler_;
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
+    std::unique_ptr<scene::StrokeFeedback> feedback_;
     std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> pullSolver_;
     scene::EntityId pulled_ = 0;
     std::optional<solvers::Curve3d> pullStart_;

@@ -27,6 +27,7 @@ constexpr double kMaxAuxiliarySize = 1000.0;
 
 std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
 {
+    feedback_->clear();
     strokeOnPlane_ = 0;
     oversketchTarget_ = 0;
     if (strokeMode_ == StrokeMode::Lift) {
@@ -132,6 +133,12 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
         recognize(fit);
+        // Sampling points and corners where the stroke was drawn (indices into the raw samples).
+        const scene::PlaneFrame& drawn = added.size() > 1 ? added.front().frame : stroke.frame;
+        std::vector<Eigen::Vector3d> samples, corners;
+        for (int i : fit.samples) samples.push_back(drawn.toWorld(stroke.points[static_cast<size_t>(i)]));
+        for (int i : fit.corners) corners.push_back(drawn.toWorld(stroke.points[static_cast<size_t>(i)]));
+        feedback_->show(samples, corners);
         const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
         undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         recognizedCurve_ = selection_;  // the command selects the curve it added
