@@ -23,6 +23,7 @@
 #include <QGLWidget>
 #include <QMenuBar>
 #include <QMouseEvent>
+#include <QScreen>
 #include <QStatusBar>
 
 #include <algorithm>
@@ -39,13 +40,24 @@ const Eigen::Vector3d kViewDirection(-1.0, 1.6, -0.9);
 constexpr float kFramingZoom = 0.9f;
 /// Edge of a plane added from the menu: the default plane's, a sheet of paper at arm's length.
 constexpr double kNewPlaneSize = 120.0;
+/// Smallest 3D viewport: the docks may never squeeze the drawing area below a usable sketch pad.
+constexpr int kMinViewportWidth = 480;
+constexpr int kMinViewportHeight = 360;
+/// Share of the screen a window opened without --size takes.
+constexpr double kDefaultScreenShare = 0.85;
 
 }  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 {
     auto* central = new QWidget(this);
+    central->setMinimumSize(kMinViewportWidth, kMinViewportHeight);
     setCentralWidget(central);
+    if (const QScreen* screen = QGuiApplication::primaryScreen()) {
+        const QSize available = screen->availableGeometry().size();
+        resize(static_cast<int>(available.width() * kDefaultScreenShare),
+               static_cast<int>(available.height() * kDefaultScreenShare));
+    }
     viewer_ = new SoQtExaminerViewer(central);
     viewer_->setBackgroundColor(kBackground);
     // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.

@@ -71,6 +71,19 @@ TEST_F(Screenshot, HasTheRequestedViewportSize)
     EXPECT_EQ(image_.height(), 600);
 }
 
+/// A window opened without --size (as ./run.sh does) must leave the 3D viewport a usable size
+/// beside the docks: the window's minimum for its central area less the viewer's wheels.
+TEST(DefaultWindow, ViewportIsUsableWithoutSize)
+{
+    constexpr int kMinWidth = 400, kMinHeight = 340;
+    const char* path = std::getenv("SCULPTLINE_DEFAULT_SCREENSHOT");
+    if (!path) GTEST_SKIP() << "SCULPTLINE_DEFAULT_SCREENSHOT unset (run through ctest)";
+    const QImage image(QString::fromLocal8Bit(path));
+    ASSERT_FALSE(image.isNull()) << path;
+    EXPECT_GE(image.width(), kMinWidth);
+    EXPECT_GE(image.height(), kMinHeight);
+}
+
 TEST_F(Screenshot, IsNotBlank)
 {
     const QRgb background = dominantColour(image_);
