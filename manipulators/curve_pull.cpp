@@ -1,15 +1,12 @@
 #include "manipulators/curve_pull.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/overlay_nodes.h"
 
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
-#include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoEventCallback.h>
-#include <Inventor/nodes/SoLightModel.h>
-#include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -31,22 +28,8 @@ CurvePull::CurvePull()
     callback_->addEventCallback(SoMouseButtonEvent::getClassTypeId(), &CurvePull::handleEvent, this);
     callback_->addEventCallback(SoLocation2Event::getClassTypeId(), &CurvePull::handleEvent, this);
     root_->addChild(callback_);
-    auto* marker = new SoSeparator;
-    auto* pick = new SoPickStyle;
-    pick->style = SoPickStyle::UNPICKABLE;
-    marker->addChild(pick);
-    auto* light = new SoLightModel;
-    light->model = SoLightModel::BASE_COLOR;
-    marker->addChild(light);
-    auto* color = new SoBaseColor;
-    color->rgb = kHandleColor;
-    marker->addChild(color);
-    auto* style = new SoDrawStyle;
-    style->pointSize = kHandleSize;
-    marker->addChild(style);
-    handle_ = new SoCoordinate3;
-    handle_->point.setNum(0);
-    marker->addChild(handle_);
+    auto* marker = scene::makeOverlayRoot();
+    handle_ = scene::addStyledCoordinates(marker, kHandleColor, kHandleSize, 0.0f);
     marker->addChild(new SoPointSet);
     root_->addChild(marker);
 }

@@ -1,6 +1,7 @@
 #include "manipulators/stroke_input.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/overlay_nodes.h"
 
 #include <Inventor/SoPickedPoint.h>
 #include <Inventor/SbLine.h>
@@ -11,14 +12,10 @@
 #include <Inventor/draggers/SoDragger.h>
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
-#include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoEventCallback.h>
-#include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
-#include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <cmath>
@@ -58,23 +55,9 @@ StrokeInput::StrokeInput()
     callback_->addEventCallback(SoLocation2Event::getClassTypeId(), &StrokeInput::handleEvent, this);
     root_->addChild(callback_);
 
-    auto* preview = new SoSeparator;
+    auto* preview = scene::makeOverlayRoot();
     preview->setName("StrokePreview");
-    auto* pick = new SoPickStyle;
-    pick->style = SoPickStyle::UNPICKABLE;
-    preview->addChild(pick);
-    auto* light = new SoLightModel;
-    light->model = SoLightModel::BASE_COLOR;
-    preview->addChild(light);
-    auto* color = new SoBaseColor;
-    color->rgb = kPreviewColor;
-    preview->addChild(color);
-    auto* style = new SoDrawStyle;
-    style->lineWidth = kPreviewWidth;
-    preview->addChild(style);
-    previewPoints_ = new SoCoordinate3;
-    previewPoints_->point.setNum(0);
-    preview->addChild(previewPoints_);
+    previewPoints_ = scene::addStyledCoordinates(preview, kPreviewColor, 0.0f, kPreviewWidth);
     previewLine_ = new SoLineSet;
     previewLine_->numVertices.setNum(0);
     preview->addChild(previewLine_);

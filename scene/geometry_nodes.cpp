@@ -89,10 +89,12 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
     return root;
 }
 
-SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
-{
-    const solvers::GridMesh mesh = solvers::tessellate(surface);
+namespace {
 
+// A separator with the surface material and two-sided lighting: UNKNOWN_SHAPE_TYPE makes Coin light
+// both sides, since an open patch shows its back to the camera.
+SoSeparator* surfaceRoot(const SurfaceStyle& style)
+{
     auto* root = new SoSeparator;
     auto* material = new SoMaterial;
     material->diffuseColor = style.color;
@@ -100,11 +102,20 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     material->specularColor = SbColor(0.35f, 0.35f, 0.35f);
     material->shininess = style.shininess;
     root->addChild(material);
-    // UNKNOWN_SHAPE_TYPE makes Coin light both sides: an open patch shows its back to the camera.
     auto* hints = new SoShapeHints;
     hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
     hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
     root->addChild(hints);
+    return root;
+}
+
+}  // namespace
+
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
+{
+    const solvers::GridMesh mesh = solvers::tessellate(surface);
+
+    SoSeparator* root = surfaceRoot(style);
     auto* coords = new SoCoordinate3;
     setPoints(coords->point, mesh.vertices);
     root->addChild(coords);
@@ -181,17 +192,7 @@ SoSeparator* makeNurbsCurveNode(const solvers::Curve3d& curve, const CurveStyle&
 
 SoSeparator* makeNurbsSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
 {
-    auto* root = new SoSeparator;
-    auto* material = new SoMaterial;
-    material->diffuseColor = style.color;
-    material->ambientColor = style.color * 0.3f;
-    material->specularColor = SbColor(0.35f, 0.35f, 0.35f);
-    material->shininess = style.shininess;
-    root->addChild(material);
-    auto* hints = new SoShapeHints;
-    hints->vertexOrdering = SoShapeHints::COUNTERCLOCKWISE;
-    hints->shapeType = SoShapeHints::UNKNOWN_SHAPE_TYPE;
-    root->addChild(hints);
+    SoSeparator* root = surfaceRoot(style);
     // SoNurbsSurface: point (u, v) at index v * numUControlPoints + u; the model's is i * countV + j.
     std::vector<Eigen::Vector3d> points;
     std::vector<double> weights;

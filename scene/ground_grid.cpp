@@ -1,11 +1,9 @@
 #include "scene/ground_grid.h"
 
-#include <Inventor/nodes/SoBaseColor.h>
+#include "scene/overlay_nodes.h"
+
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoDrawStyle.h>
-#include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
-#include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include <cmath>
@@ -18,13 +16,7 @@ namespace {
 SoSeparator* lineGroup(const std::vector<SbVec3f>& endpoints, const SbColor& color, float width)
 {
     auto* group = new SoSeparator;
-    auto* base = new SoBaseColor;
-    base->rgb = color;
-    group->addChild(base);
-    auto* style = new SoDrawStyle;
-    style->lineWidth = width;
-    group->addChild(style);
-    auto* coords = new SoCoordinate3;
+    SoCoordinate3* coords = addStyledCoordinates(group, color, 0.0f, width);
     coords->point.setValues(0, static_cast<int>(endpoints.size()), endpoints.data());
     group->addChild(coords);
     auto* lines = new SoLineSet;
@@ -49,15 +41,9 @@ SoSeparator* makeGroundGrid(const GridSpec& grid)
         bucket.insert(bucket.end(), {SbVec3f(t, -half, 0), SbVec3f(t, half, 0), SbVec3f(-half, t, 0), SbVec3f(half, t, 0)});
     }
 
-    auto* root = new SoSeparator;
-    root->setName("GroundGrid");
-    auto* lightModel = new SoLightModel;
-    lightModel->model = SoLightModel::BASE_COLOR;
-    root->addChild(lightModel);
     // The grid is a reference, not an object: clicks should reach what lies on it.
-    auto* pick = new SoPickStyle;
-    pick->style = SoPickStyle::UNPICKABLE;
-    root->addChild(pick);
+    auto* root = makeOverlayRoot();
+    root->setName("GroundGrid");
     if (!minor.empty()) root->addChild(lineGroup(minor, SbColor(0.36f, 0.38f, 0.42f), 1.0f));
     if (!major.empty()) root->addChild(lineGroup(major, SbColor(0.52f, 0.55f, 0.6f), 1.0f));
     root->addChild(lineGroup({SbVec3f(-half, 0, 0), SbVec3f(half, 0, 0)}, SbColor(0.85f, 0.3f, 0.3f), 2.0f));

@@ -1,12 +1,9 @@
 #include "scene/stroke_feedback.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/overlay_nodes.h"
 
-#include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoDrawStyle.h>
-#include <Inventor/nodes/SoLightModel.h>
-#include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -23,15 +20,7 @@ constexpr float kCornerSize = 8.0f;
 SoCoordinate3* addDots(SoSeparator* parent, const SbColor& color, float size)
 {
     auto* group = new SoSeparator;
-    auto* base = new SoBaseColor;
-    base->rgb = color;
-    group->addChild(base);
-    auto* style = new SoDrawStyle;
-    style->pointSize = size;
-    group->addChild(style);
-    auto* coords = new SoCoordinate3;
-    coords->point.setNum(0);
-    group->addChild(coords);
+    SoCoordinate3* coords = addStyledCoordinates(group, color, size, 0.0f);
     group->addChild(new SoPointSet);
     parent->addChild(group);
     return coords;
@@ -41,15 +30,9 @@ SoCoordinate3* addDots(SoSeparator* parent, const SbColor& color, float size)
 
 StrokeFeedback::StrokeFeedback()
 {
-    root_ = new SoSeparator;
+    root_ = makeOverlayRoot();
     root_->ref();
     root_->setName("StrokeFeedback");
-    auto* pick = new SoPickStyle;
-    pick->style = SoPickStyle::UNPICKABLE;
-    root_->addChild(pick);
-    auto* light = new SoLightModel;
-    light->model = SoLightModel::BASE_COLOR;
-    root_->addChild(light);
     samples_ = addDots(root_, kSampleColor, kSampleSize);
     corners_ = addDots(root_, kCornerColor, kCornerSize);
 }
