@@ -3,6 +3,8 @@
 #include "solvers/editing/lift.h"
 #include "solvers/editing/oversketch.h"
 
+#include "tests/editing/editing_fixtures.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -12,24 +14,8 @@ using namespace sculptline::solvers::editing;
 
 namespace {
 
-Curve2d wave(int n)
-{
-    std::vector<Eigen::Vector2d> pts;
-    for (int i = 0; i < n; ++i) pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
-    return makeClampedUniform<2>(3, pts);
-}
-
-std::vector<Eigen::Vector2d> bump(const Curve2d& c, double u0, double u1, double h, int count)
-{
-    std::vector<Eigen::Vector2d> s;
-    for (int i = 0; i < count; ++i) {
-        const double t = double(i) / (count - 1);
-        const auto d = c.derivatives(u0 + (u1 - u0) * t, 1);
-        const Eigen::Vector2d normal = Eigen::Vector2d(-d[1].y(), d[1].x()).normalized();
-        s.push_back(d[0] + h * (std::sin(M_PI * t) + 0.2) * normal);
-    }
-    return s;
-}
+using sculptline::editing_fixtures::bump;
+using sculptline::editing_fixtures::wave;
 
 // One over-sketch of a 30-control-point curve with a 300-sample stroke (issue 4 §4).
 void oversketchOnce(benchmark::State& state, OversketchMethod m)

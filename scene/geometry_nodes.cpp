@@ -66,10 +66,11 @@ SoSeparator* makeIsoLines(const solvers::Surface3d& surface, const solvers::Grid
 
 }  // namespace
 
-SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
-{
-    const solvers::Polyline line = solvers::tessellate(curve);
+namespace {
 
+// A separator with the curve's colour and width, unlit: a curve has no normal to shade with.
+SoSeparator* curveRoot(const CurveStyle& style)
+{
     auto* root = new SoSeparator;
     auto* lightModel = new SoLightModel;
     lightModel->model = SoLightModel::BASE_COLOR;
@@ -80,16 +81,8 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
     auto* drawStyle = new SoDrawStyle;
     drawStyle->lineWidth = style.lineWidth;
     root->addChild(drawStyle);
-    auto* coords = new SoCoordinate3;
-    setPoints(coords->point, line.points);
-    root->addChild(coords);
-    auto* lines = new SoLineSet;
-    lines->numVertices.setValue(static_cast<int32_t>(line.points.size()));
-    root->addChild(lines);
     return root;
 }
-
-namespace {
 
 // A separator with the surface material and two-sided lighting: UNKNOWN_SHAPE_TYPE makes Coin light
 // both sides, since an open patch shows its back to the camera.
@@ -110,6 +103,21 @@ SoSeparator* surfaceRoot(const SurfaceStyle& style)
 }
 
 }  // namespace
+
+SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
+{
+    const solvers::Polyline line = solvers::tessellate(curve);
+
+    SoSeparator* root = curveRoot(style);
+    auto* coords = new SoCoordinate3;
+    setPoints(coords->point, line.points);
+    root->addChild(coords);
+    auto* lines = new SoLineSet;
+    lines->numVertices.setValue(static_cast<int32_t>(line.points.size()));
+    root->addChild(lines);
+    return root;
+}
+
 
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
 {
@@ -172,16 +180,7 @@ void setKnots(SoMFFloat& field, const std::vector<double>& knots)
 
 SoSeparator* makeNurbsCurveNode(const solvers::Curve3d& curve, const CurveStyle& style)
 {
-    auto* root = new SoSeparator;
-    auto* lightModel = new SoLightModel;
-    lightModel->model = SoLightModel::BASE_COLOR;
-    root->addChild(lightModel);
-    auto* color = new SoBaseColor;
-    color->rgb = style.color;
-    root->addChild(color);
-    auto* drawStyle = new SoDrawStyle;
-    drawStyle->lineWidth = style.lineWidth;
-    root->addChild(drawStyle);
+    SoSeparator* root = curveRoot(style);
     root->addChild(homogeneous(curve.points(), curve.weights()));
     auto* nurbs = new SoNurbsCurve;
     nurbs->numControlPoints = curve.pointCount();

@@ -4,6 +4,8 @@
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/projection.h"
 
+#include "tests/editing/editing_fixtures.h"
+
 #include <gtest/gtest.h>
 #include <cmath>
 #include <cstdio>
@@ -17,26 +19,8 @@ namespace {
 // lose a few ulps per level, so 1e-12 absolute is ~100 ulps of the coordinates.
 constexpr double kUnchanged = 1e-12;
 
-Curve2d wave(int n)
-{
-    std::vector<Eigen::Vector2d> pts;
-    for (int i = 0; i < n; ++i) pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
-    return makeClampedUniform<2>(3, pts);
-}
-
-// A bump of height h over the curve's parameter range [u0, u1], `count` samples.
-std::vector<Eigen::Vector2d> bump(const Curve2d& c, double u0, double u1, double h, int count)
-{
-    std::vector<Eigen::Vector2d> s;
-    for (int i = 0; i < count; ++i) {
-        const double t = double(i) / (count - 1);
-        const double u = u0 + (u1 - u0) * t;
-        const auto d = c.derivatives(u, 1);
-        const Eigen::Vector2d normal(-d[1].y(), d[1].x());
-        s.push_back(d[0] + h * std::sin(M_PI * t) * normal.normalized() + 0.2 * h * normal.normalized());
-    }
-    return s;
-}
+using sculptline::editing_fixtures::bump;
+using sculptline::editing_fixtures::wave;
 
 double maxDistanceToCurve(const Curve2d& c, const std::vector<Eigen::Vector2d>& pts)
 {
@@ -174,15 +158,9 @@ TEST(OversketchLocalC2, GivenStrokePastTheEnd_WhenOversketched_ThenCurveIsExtend
 
 TEST(OversketchLocalC2, GivenClosedCurve_WhenOversketchedAcrossTheSeam_ThenClosedC2AndLocal)
 {
-    std::vector<Eigen::Vector2d> loop;
-    for (int i = 0; i < 16; ++i) loop.emplace_back(8 * std::cos(i * M_PI / 8), 5 * std::sin(i * M_PI / 8));
-    const Curve2d curve = makeClosedUniform<2>(3, loop);
+    const Curve2d curve = sculptline::editing_fixtures::ellipseLoop();
     // The seam is at u = 0 (point near (8, 0)); the stroke bulges outwards across it.
-    std::vector<Eigen::Vector2d> stroke;
-    for (int i = 0; i <= 150; ++i) {
-        const double a = -0.5 + 1.0 * i / 150.0;
-        stroke.emplace_back((8.0 + 1.5 * std::cos(M_PI * (a))) * std::cos(a), 5.5 * std::sin(a));
-    }
+    const std::vector<Eigen::Vector2d> stroke = sculptline::editing_fixtures::strokeAcrossSeam();
 
     std::pair<double, double> span;
     const Curve2d out = oversketch(curve, stroke, {}, &span);
@@ -298,14 +276,8 @@ TEST(OversketchBlend, GivenRepeatedEdits_WhenBlended_ThenControlPointsBounded)
 
 TEST(OversketchBlend, GivenClosedCurve_WhenBlendedAcrossSeam_ThenClosedSmoothAndFarSideKept)
 {
-    std::vector<Eigen::Vector2d> loop;
-    for (int i = 0; i < 16; ++i) loop.emplace_back(8 * std::cos(i * M_PI / 8), 5 * std::sin(i * M_PI / 8));
-    const Curve2d curve = makeClosedUniform<2>(3, loop);
-    std::vector<Eigen::Vector2d> stroke;
-    for (int i = 0; i <= 150; ++i) {
-        const double a = -0.5 + 1.0 * i / 150.0;
-        stroke.emplace_back((8.0 + 1.5 * std::cos(M_PI * a)) * std::cos(a), 5.5 * std::sin(a));
-    }
+    const Curve2d curve = sculptline::editing_fixtures::ellipseLoop();
+    const std::vector<Eigen::Vector2d> stroke = sculptline::editing_fixtures::strokeAcrossSeam();
 
     std::pair<double, double> span;
     const Curve2d out = oversketch(curve, stroke, method(OversketchMethod::Blend), &span);
