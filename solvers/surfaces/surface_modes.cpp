@@ -1,0 +1,85 @@
+#include "solvers/surfaces/surface_modes.h"
+
+#include "solvers/surfaces/boundary_rotation.h"
+#include "solvers/surfaces/coons_fill.h"
+#include "solvers/surfaces/extrude.h"
+#include "solvers/surfaces/loft.h"
+#include "solvers/surfaces/rail_rotation.h"
+#include "solvers/surfaces/revolve.h"
+#include "solvers/surfaces/sweep.h"
+
+#include <array>
+#include <stdexcept>
+#include <utility>
+
+namespace sculptline::solvers::surfaces {
+namespace {
+
+constexpr std::array<std::pair<SurfaceMode, const char*>, 7> kNames{{{SurfaceMode::Fill, "fill"},
+                                                                     {SurfaceMode::Revolve, "revolve"},
+                                                                     {SurfaceMode::Extrude, "extrude"},
+                                                                     {SurfaceMode::Sweep, "sweep"},
+                                                                     {SurfaceMode::Loft, "loft"},
+                                                                     {SurfaceMode::BoundaryRotation, "boundary-rotation"},
+                                                                     {SurfaceMode::RailRotation, "rail-rotation"}}};
+
+void requireCount(const std::vector<Curve3d>& curves, size_t lo, size_t hi, const char* what)
+{
+    if (curves.size() < lo || curves.size() > hi)
+        throw std::invalid_argument(std::string("curves: mode needs ") + what + ", got " + std::to_string(curves.size()) + " curves");
+}
+
+SurfaceBuild approximated(const ApproximatedSurface& r) { return {r.surface, r.maxDeviation, r.tolerance}; }
+
+}  // namespace
+
+SurfaceMode parseSurfaceMode(const std::string& name)
+{
+    for (const auto& [mode, text] : kNames) {
+        if (name == text) return mode;
+    }
+    throw std::invalid_argument("mode: unknown mode \"" + name +
+                                "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation)");
+}
+
+const char* surfaceModeName(SurfaceMode mode)
+{
+    for (const auto& [m, text] : kNames) {
+        if (m == mode) return text;
+    }
+    return "?";
+}
+
+SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
+{
+    switch (mode) {
+    case SurfaceMode::Fill:
+        requireCount(c, 2, 4, "2, 3 or 4 boundary curves");
+        return {fill(c, FillOptions{o.tolerance})};
+    case SurfaceMode::Revolve:
+        requireCount(c, 1, 1, "one profile curve");
+        return {revolve(c[0], Axis{o.axisPoint, o.axisDirection}, o.angleDegrees)};
+    case SurfaceMode::Extrude:
+        requireCount(c, 1, 1, "one profile curve");
+        return {extrude(c[0], o.direction)};
+    case SurfaceMode::Sweep: {
+        requireCount(c, 2, 2, "[profile, path]");
+        const SweepResult r = sweep(c[0], c[1], SweepOptions{o.tolerance, 513});
+        return {r.surface, r.maxDeviation, r.tolerance};
+    }
+    case SurfaceMode::Loft: {
+        LoftOptions lo;
+        lo.crossDegree = o.loftDegree;
+        return {loft(c, lo)};
+    }
+    case SurfaceMode::BoundaryRotation:
+        requireCount(c, 2, 2, "[left outline, right outline]");
+        return approximated(boundaryRotation(c[0], c[1], {o.tolerance, 2049}));
+    case SurfaceMode::RailRotation:
+        requireCount(c, 3, 3, "[rail 1, rail 2, profile]");
+        return approximated(railRotation(c[0], c[1], c[2], {o.tolerance, 2049}));
+    }
+    throw std::invalid_argument("mode: unknown surface mode");
+}
+
+}  // namespace sculptline::solvers::surfaces

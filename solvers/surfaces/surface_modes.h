@@ -1,0 +1,51 @@
+#pragma once
+// One entry point for every surface mode (issue 6): the CLI's `surface` subcommand and the GUI's
+// surface entities (scene/model) build through it, so a mode behaves the same in both.
+#include "solvers/bspline/bspline_surface.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace sculptline::solvers::surfaces {
+
+enum class SurfaceMode { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation };
+
+/// "fill", "revolve", "extrude", "sweep", "loft", "boundary-rotation", "rail-rotation".
+/// @throws std::invalid_argument for any other name (the message lists the valid ones).
+SurfaceMode parseSurfaceMode(const std::string& name);
+const char* surfaceModeName(SurfaceMode mode);
+
+struct SurfaceOptions {
+    /// revolve: the axis (a point on it and a non-zero direction, model units) and the angle in
+    /// degrees, counter-clockwise about the direction.
+    Eigen::Vector3d axisPoint = Eigen::Vector3d::Zero();
+    Eigen::Vector3d axisDirection = Eigen::Vector3d::UnitZ();
+    double angleDegrees = 360.0;
+    /// extrude: direction and distance (model units).
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    /// fill: the largest gap between ends that still meet; sweep, boundary- and rail-rotation: the
+    /// largest deviation from the exact construction. Model units; <= 0 = the mode's default,
+    /// relative to the curves' size.
+    double tolerance = 0.0;
+    /// loft: the degree across the sections (lowered to sections - 1 when there are fewer).
+    int loftDegree = 3;
+};
+
+struct SurfaceBuild {
+    Surface3d surface;
+    /// Approximating modes: the deviation reached and the tolerance used (model units); exact
+    /// modes: -1 and 0.
+    double maxDeviation = -1.0;
+    double tolerance = 0.0;
+};
+
+/// Builds the surface of `mode` from `curves` (world coordinates, in the mode's order: fill 2-4
+/// boundaries; revolve [profile]; extrude [profile]; sweep [profile, path]; loft [sections..];
+/// boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]).
+/// @throws std::invalid_argument for a wrong number of curves, GeometryError for input the mode
+///         cannot build (the message says why: curves that do not meet, a path with a cusp, ...).
+SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options = {});
+
+}  // namespace sculptline::solvers::surfaces
