@@ -10,7 +10,7 @@
 //   a candidate; the one whose edge CT -> P_s turns least from the polygon edge CT_{-1} -> CT
 //   (Δφ = |d1 - d2|) is CT_s. Symmetric at the end. With no candidate in the band, the first
 //   point at least M away is taken.
-// - The replacement y_i: a least-squares cubic fit of the stroke (ends interpolated), starting
+// - The replacement y_i: a least-squares fit of the stroke in place (see refitInPlace), starting
 //   with as many control points as C1's density M gives over the stroke's length and growing until
 //   the fit meets the tolerance; a region redrawn again is replaced again, so repeated edits keep
 //   the count bounded. Re-parameterisation (§4.2, last bullet): the kept parts keep their knots, the new
@@ -101,28 +101,29 @@ int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>&
     return best != kNone ? best : fallback;
 }
 
-// The spliced polygon with its final knots: the new points `first..last` are fitted once more to
-// the stroke in place (the kept points fixed, stroke parameters spread by chord length between
-// the Greville abscissae of the first and last new point), so that the splice follows the stroke
-// although its knots differ from those of the preliminary fit; then eq. 4-23 scales them towards
-// the original curve.
+// The spliced polygon with its final knots: the new points `first..last` are fitted to the stroke
+// with the kept points fixed. The stroke's samples go only on the spans built from new points alone,
+// [K[first + p], K[last + 1]] (chord-length parameters): the p spans on each side that mix kept and
+// new points carry no sample, so the new points next to the kept ones are set by the fit's fairing
+// term (least second differences, constrained_fit.h) and form the transition, while the stroke
+// itself is approximated by an unconstrained spline and so can meet any tolerance with enough points.
+// (Spreading the samples between the Greville abscissae of the first and last new point, as before,
+// put the stroke's ends on spans pinned by the kept transition points CT_s, CT_e: the fit missed the
+// stroke's ends by 2-3x the tolerance however many points were added.) Eq. 4-23 then scales the new
+// points towards the original curve.
 template <int Dim>
 std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim>> P, int first, int last,
                                   const StrokeOnCurve<Dim>& st, const BSplineCurve<Dim>& original, double scale,
                                   double& fitError)
 {
-    auto greville = [&](int i) {
-        double g = 0.0;
-        for (int j = 1; j <= p; ++j) g += K[i + j];
-        return g / p;
-    };
-    const double g0 = greville(first), g1 = greville(last);
+    const double t0 = K[first + p], t1 = K[last + 1];
     const std::vector<double> chord = chordLengths<Dim>(st.points);
     FixedKnotFit<Dim> fit;
     fit.degree = p;
     fit.knots = K;
     fit.samples = st.points;
-    for (double s : chord) fit.params.push_back(g0 + (g1 - g0) * s / chord.back());
+    for (double s : chord) fit.params.push_back(t0 + (t1 - t0) * s / chord.back());
+    fit.params.back() = t1;
     fit.fixed.resize(P.size());
     for (int i = 0; i < static_cast<int>(P.size()); ++i) {
         if (i < first || i > last) fit.fixed[i] = P[i];
@@ -131,7 +132,7 @@ std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim
     fitError = 0.0;  // at the fit parameters (an upper bound of the distance), before scaling
     double basis[kMaxDegree + 1];
     for (size_t k = 0; k < fit.params.size(); ++k) {
-        const int span = findSpan(p, K, fit.params[k]);
+        const int span = std::min(findSpan(p, K, fit.params[k]), last);
         basisFunctions(span, fit.params[k], p, K, basis);
         Pt<Dim> v = Pt<Dim>::Zero();
         for (int j = 0; j <= p; ++j) v += basis[j] * P[span - p + j];
@@ -162,34 +163,15 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     for (int i = 0; i < edges; ++i) M += (poly.at(i + 1) - poly.at(i)).norm();
     M = std::max(M / edges, 1e-12 * st.length);
 
-    // The number of replacement points: C1's density over the stroke's length to start with (so
-    // that repeated edits keep the count bounded), grown by a quarter until a clamped least-squares
-    // fit of the stroke alone meets the tolerance; at most one per four stroke samples (beyond that
-    // it would fit pen noise). (Growing it until the final in-place fit meets the tolerance was
-    // measured not to converge: the remaining error sits at the stroke's ends, next to the kept
-    // transition points, and more new points only inflate the count, 30 -> 99 on the bump test.)
+    // The number of replacement points: C1's density over the stroke's length plus the p transition
+    // points per side to start with (so that repeated edits keep the count bounded), grown by a
+    // quarter until the in-place fit meets the tolerance; at most one per four stroke samples plus
+    // the transitions (beyond that it would fit pen noise).
     const auto& h = st.points;
-    const int m0 = std::max(p + 1, static_cast<int>(std::lround(st.length / M)) + 1);
-    const int mMax = std::max(m0, static_cast<int>(h.size()) / 4);
+    const int m0 = std::max(p + 1, static_cast<int>(std::lround(st.length / M)) + 1) + p;
+    const int mMax = std::max(m0, static_cast<int>(h.size()) / 4 + 2 * p);
     const double tol = o.tolerance * st.length;
-    int m = m0;
-    {
-        const std::vector<double> chord = chordLengths<Dim>(h);
-        FixedKnotFit<Dim> fit;
-        fit.degree = p;
-        for (double s : chord) fit.params.push_back(s / chord.back());
-        fit.samples = h;
-        for (;; m = std::min(mMax, m + std::max(1, m / 4))) {
-            fit.knots = clampedUniformKnots(p, m - p);
-            fit.fixed.assign(m, std::nullopt);
-            fit.fixed.front() = h.front();
-            fit.fixed.back() = h.back();
-            const BSplineCurve<Dim> yc(p, fit.knots, fitFixedKnots(fit));
-            double err = 0.0;
-            for (size_t k = 0; k < h.size(); ++k) err = std::max(err, (yc.evaluate(fit.params[k]) - h[k]).norm());
-            if (err <= tol || m >= mMax) break;
-        }
-    }
+    auto grow = [&](int m) { return std::min(mMax, m + std::max(1, m / 4)); };
 
     // Transition control points CT_s, CT_e (eqs. 4-24..4-26).
     const double period = poly.period;
@@ -217,66 +199,109 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
 
     const auto& U = c.knots();
     const double meanSpacing = (c.domainEnd() - c.domainStart()) / std::max(1, n - (c.isClosed() ? 0 : p));
+    auto knotAt = [&](int i) {  // closed curves: the bi-infinite knot sequence
+        if (!c.isClosed()) return U[i];
+        const int j = i - p;
+        const int q = static_cast<int>(std::floor(double(j) / n));
+        return U[p + (j - q * n)] + q * period;
+    };
+
+    // Parameter lengths, so that the parameter speed does not jump (a jump forces the C2 curve to
+    // slow down to a near-cusp in the transition: curvature 22 against the stroke's 0.7, measured).
+    // v: C1's mean speed; the stroke's spans get its length at that speed. A transition after the
+    // kept point CT_s = a runs from C1(U[a+1]), where the kept curve ends, to the stroke's start
+    // P_s over the kept knots U[a+1..a+p] and one new spacing δ_s chosen so that its parameter
+    // length matches |P_s - C1(U[a+1])| at speed v; likewise before CT_e = b over U[b+1..b+p].
+    // When the kept knots alone are already too long for the gap (CT_s closer than the p - 1 spans
+    // its support reaches), CT_s steps back (at most p points): this lengthens the transition
+    // beyond eq. 4-25's M..1.5M, which is measured between control points, not curve points.
+    const double v = CurveLengths<Dim>(c).total() / (c.domainEnd() - c.domainStart());
+    const double deltaMin = 0.5 * meanSpacing;
+    auto leftGap = [&](int i) {
+        return (h.front() - c.evaluate(knotAt(i + 1))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
+    };
+    auto rightGap = [&](int i) {
+        return (h.back() - c.evaluate(knotAt(i + p))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
+    };
+    int first = cs, last = ce;  // CT_s, CT_e after the gap adjustment (unwrapped indices, first < last)
+    const int lowest = c.isClosed() ? std::numeric_limits<int>::min() / 2 : 1;
+    for (int k = 0; k < p && first != kNone && first > lowest && leftGap(first) < deltaMin; ++k) --first;
+    const int highest = c.isClosed() ? std::numeric_limits<int>::max() / 2 : n - 2;
+    for (int k = 0; k < p && last != kNone && last < highest && rightGap(last) < deltaMin; ++k) ++last;
+    if (c.isClosed() && first != kNone && last != kNone && last - first >= n - std::max(1, p - 1)) {
+        first = cs;  // the loop has no room for longer transitions: keep eq. 4-25's choice
+        last = ce;
+    }
+    const double deltaS = first == kNone ? 0.0 : std::max(deltaMin, leftGap(first));
+    const double deltaE = last == kNone ? 0.0 : std::max(deltaMin, rightGap(last));
+
     if (!c.isClosed()) {
-        // Open: P' = P[0..a] ++ y ++ P[b..n-1]; knots keep U[0..a+p] and U[b+1..] (shifted).
-        const int a = cs == kNone ? -1 : cs;
-        const int b = ce == kNone ? n : ce;
+        // Open: P' = P[0..a] ++ y ++ P[b..n-1]; knots U[0..a+p], δ_s, the stroke's m - p spans,
+        // δ_e, then U[b+1..] shifted.
+        const int a = first == kNone ? -1 : first;
+        const int b = last == kNone ? n : last;
         if (a >= b) throw GeometryError("stroke: the transitions of the over-sketch overlap");
-        {
+        for (int m = m0;; m = grow(m)) {
             std::vector<Pt<Dim>> P(poly.pts.begin(), poly.pts.begin() + (a + 1));
             P.resize(P.size() + m, Pt<Dim>::Zero());
             P.insert(P.end(), poly.pts.begin() + b, poly.pts.end());
             const int total = static_cast<int>(P.size());
             KnotVector K;
-            if (a >= 0)
+            if (a >= 0) {
                 K.assign(U.begin(), U.begin() + a + p + 1);
-            else
+                K.push_back(K.back() + deltaS);
+            } else {
                 K.assign(p + 1, U[p]);
-            const int rightCount = b < n ? n + p + 1 - (b + 1) : p + 1;
-            const int middle = total + p + 1 - static_cast<int>(K.size()) - rightCount;
-            const double left = K.back();
-            for (int i = 1; i <= middle; ++i) K.push_back(left + meanSpacing * i);
-            const double shift = left + meanSpacing * (middle + 1) - (b < n ? U[b + 1] : U[n]);
-            for (int i = 0; i < rightCount; ++i) K.push_back((b < n ? U[b + 1 + i] : U[n]) + shift);
+            }
+            const double t0 = K.back(), hs = st.length / v / (m - p);
+            for (int i = 1; i <= m - p; ++i) K.push_back(t0 + hs * i);
+            const double t1 = K.back();
+            if (b < n) {
+                const double shift = t1 + deltaE - U[b + 1];
+                for (int i = b + 1; i <= n + p; ++i) K.push_back(U[i] + shift);
+            } else {
+                K.insert(K.end(), p, t1);
+            }
             double err = 0.0;
             P = refitInPlace(p, K, std::move(P), a + 1, a + m, st, c, o.scale, err);
-            span = {a >= 0 ? K[a + 1] : K[p], b < n ? K[total - (n - b) + p] : K[total]};
-            maxError = err;
-            return BSplineCurve<Dim>(p, std::move(K), std::move(P));
+            if (err <= tol || m >= mMax) {
+                span = {a >= 0 ? K[a + 1] : K[p], b < n ? K[total - (n - b) + p] : K[total]};
+                maxError = err;
+                return BSplineCurve<Dim>(p, std::move(K), std::move(P));
+            }
         }
     }
 
-    // Closed: Q = kept chain CT_e .. CT_s (cyclic) ++ y. Knot spacings: the kept chain keeps the
-    // old spacings of the knots its spans use, the rest is uniform at the mean spacing.
-    if (cs == kNone || ce == kNone) throw GeometryError("stroke: no transition found on the closed curve");
-    const int e = ce;
-    int s = cs;
+    // Closed: Q = kept chain CT_e .. CT_s (cyclic) ++ y. Knot spacings: δ_e, the kept chain's old
+    // spacings, δ_s, the stroke's m - p spans (periodic; the kept knots keep their values).
+    if (first == kNone || last == kNone) throw GeometryError("stroke: no transition found on the closed curve");
+    const int e = last;
+    int s = first;
     while (s < e) s += n;
     const int kept = s - e + 1;
     if (kept < std::max(2, p) || kept > n) throw GeometryError("stroke: the over-sketch covers the whole closed curve");
-    auto oldKnot = [&](int i) {  // bi-infinite knot sequence of the closed curve
-        const int j = i - p;
-        const int q = static_cast<int>(std::floor(double(j) / n));
-        return U[p + (j - q * n)] + q * period;
-    };
-    m = std::max(m, p);
-    {
+    for (int m = m0;; m = grow(m)) {
         const int N = kept + m;
-        std::vector<double> spacing(N, meanSpacing);
-        for (int i = 0; i < kept + p - 1; ++i) spacing[i] = oldKnot(e + i + 1) - oldKnot(e + i);
+        const double hs = st.length / v / (m - p);
+        std::vector<double> spacing(N, hs);
+        spacing[0] = deltaE;
+        for (int i = 1; i < kept + p - 1; ++i) spacing[i] = knotAt(e + i + 1) - knotAt(e + i);
+        spacing[kept + p - 1] = deltaS;
         std::vector<Pt<Dim>> Q;
         for (int i = 0; i < kept; ++i) Q.push_back(poly.at(e + i));
         Q.resize(N + p, Pt<Dim>::Zero());
         for (int i = 0; i < p; ++i) Q[N + i] = Q[i];  // wrapped copies of kept (hence fixed) points
         // Unwrapped convention: knots[i] starts the support of point i, spacings periodic.
         KnotVector K(N + 2 * p + 1);
-        K[0] = oldKnot(e);
+        K[0] = knotAt(e + 1) - deltaE;
         for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
         double err = 0.0;
         Q = refitInPlace(p, K, std::move(Q), kept, N - 1, st, c, o.scale, err);
-        span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
-        maxError = err;
-        return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
+        if (err <= tol || m >= mMax) {
+            span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
+            maxError = err;
+            return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
+        }
     }
 }
 
