@@ -38,7 +38,9 @@ struct OversketchOptions {
 
 /// Over-sketches `curve` (non-rational; open or closed) with `stroke` (in the curve's space).
 /// A stroke drawn against the curve's direction is reversed first. Open curves: a stroke running
-/// past an end extends the curve (local-c2) or replaces the end (blend).
+/// past an end extends the curve (local-c2) or replaces the end (blend). Closed curves: the stroke
+/// replaces the arc it covers, however long (the uncovered arc is refined by exact knot insertion
+/// when it holds too few control points for the transitions and an untouched span).
 /// @param span receives the new curve's parameter interval that was replaced.
 /// @param maxError receives the fit's max deviation in model units, measured at the fit parameters
 ///        (an upper bound of the distance): over the whole target h̄ for local-c2, over the stroke

@@ -154,14 +154,14 @@ template <int Dim>
 BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOnCurve<Dim>& st,
                                   const OversketchOptions& o, std::pair<double, double>& span, double& maxError)
 {
-    const BSplineCurve<Dim> c = input.isClosed() ? input : input.clamped();
-    const int p = c.degree();
-    const Polygon<Dim> poly = polygonOf(c);
-    const int n = poly.size();
-    double M = 0.0;
-    const int edges = poly.closed ? n : n - 1;
-    for (int i = 0; i < edges; ++i) M += (poly.at(i + 1) - poly.at(i)).norm();
-    M = std::max(M / edges, 1e-12 * st.length);
+    const int p = input.degree();
+    double M = 0.0;  // eq. 4-24, of the input curve (refinement below must not change it)
+    {
+        const Polygon<Dim> poly = polygonOf(input);
+        const int edges = poly.closed ? poly.size() : poly.size() - 1;
+        for (int i = 0; i < edges; ++i) M += (poly.at(i + 1) - poly.at(i)).norm();
+        M = std::max(M / edges, 1e-12 * st.length);
+    }
 
     // The number of replacement points: C1's density over the stroke's length plus the p transition
     // points per side to start with (so that repeated edits keep the count bounded), grown by a
@@ -173,134 +173,158 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     const double tol = o.tolerance * st.length;
     auto grow = [&](int m) { return std::min(mMax, m + std::max(1, m / 4)); };
 
-    // Transition control points CT_s, CT_e (eqs. 4-24..4-26).
-    const double period = poly.period;
-    auto before = [&](double u) {
-        int i = -1;
-        for (int k = 0; k < n; ++k) {
-            if (poly.greville[k] <= u) i = k;
-        }
-        return i;
-    };
-    const double us = c.isClosed() ? c.normalizeParameter(st.us) : st.us;
-    const double ue = c.isClosed() ? c.normalizeParameter(st.ue) : st.ue;
-    int iS = before(us);
-    int iE = before(ue) + 1;
-    if (c.isClosed() && ue < us) iE += n;  // the stroke crosses the seam
-    const int maxSteps = poly.closed ? n / 2 : n;
-    const bool openLeftEnd = !c.isClosed() &&
-                             (h.front() - c.evaluate(c.domainStart())).norm() > o.tolerance * st.length &&
-                             st.us <= c.domainStart();
-    const bool openRightEnd = !c.isClosed() &&
-                              (h.back() - c.evaluate(c.domainEnd())).norm() > o.tolerance * st.length &&
-                              st.ue >= c.domainEnd();
-    const int cs = openLeftEnd ? kNone : transitionPoint(poly, iS, -1, h.front(), M, maxSteps);
-    const int ce = openRightEnd ? kNone : transitionPoint(poly, iE, +1, h.back(), M, maxSteps);
-
-    const auto& U = c.knots();
-    const double meanSpacing = (c.domainEnd() - c.domainStart()) / std::max(1, n - (c.isClosed() ? 0 : p));
-    auto knotAt = [&](int i) {  // closed curves: the bi-infinite knot sequence
-        if (!c.isClosed()) return U[i];
-        const int j = i - p;
-        const int q = static_cast<int>(std::floor(double(j) / n));
-        return U[p + (j - q * n)] + q * period;
-    };
-
-    // Parameter lengths, so that the parameter speed does not jump (a jump forces the C2 curve to
-    // slow down to a near-cusp in the transition: curvature 22 against the stroke's 0.7, measured).
-    // v: C1's mean speed; the stroke's spans get its length at that speed. A transition after the
-    // kept point CT_s = a runs from C1(U[a+1]), where the kept curve ends, to the stroke's start
-    // P_s over the kept knots U[a+1..a+p] and one new spacing δ_s chosen so that its parameter
-    // length matches |P_s - C1(U[a+1])| at speed v; likewise before CT_e = b over U[b+1..b+p].
-    // When the kept knots alone are already too long for the gap (CT_s closer than the p - 1 spans
-    // its support reaches), CT_s steps back (at most p points): this lengthens the transition
-    // beyond eq. 4-25's M..1.5M, which is measured between control points, not curve points.
-    const double v = CurveLengths<Dim>(c).total() / (c.domainEnd() - c.domainStart());
-    const double deltaMin = 0.5 * meanSpacing;
-    auto leftGap = [&](int i) {
-        return (h.front() - c.evaluate(knotAt(i + 1))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
-    };
-    auto rightGap = [&](int i) {
-        return (h.back() - c.evaluate(knotAt(i + p))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
-    };
-    int first = cs, last = ce;  // CT_s, CT_e after the gap adjustment (unwrapped indices, first < last)
-    const int lowest = c.isClosed() ? std::numeric_limits<int>::min() / 2 : 1;
-    for (int k = 0; k < p && first != kNone && first > lowest && leftGap(first) < deltaMin; ++k) --first;
-    const int highest = c.isClosed() ? std::numeric_limits<int>::max() / 2 : n - 2;
-    for (int k = 0; k < p && last != kNone && last < highest && rightGap(last) < deltaMin; ++k) ++last;
-    if (c.isClosed() && first != kNone && last != kNone && last - first >= n - std::max(1, p - 1)) {
-        first = cs;  // the loop has no room for longer transitions: keep eq. 4-25's choice
-        last = ce;
+    // Closed curves: a stroke around most of the loop leaves a short arc for the two transitions
+    // and the kept chain. Eq. 4-25's band shrinks to a quarter of that arc, and when the arc holds
+    // too few control points to keep p + 1 of them (one untouched span), it is refined by exact
+    // knot insertion (the shape is unchanged) and the attempt repeated, as local-c2 does.
+    double Mt = M;
+    if (input.isClosed()) {
+        const CurveLengths<Dim> len(input);
+        const double free = len.total() - (len.lengthAt(st.ue) - len.lengthAt(st.us));
+        if (!(free > 0.0)) throw GeometryError("stroke: the over-sketch covers the whole closed curve");
+        Mt = std::min(M, 0.25 * free);
     }
-    const double deltaS = first == kNone ? 0.0 : std::max(deltaMin, leftGap(first));
-    const double deltaE = last == kNone ? 0.0 : std::max(deltaMin, rightGap(last));
+    constexpr int kMaxRefinements = 6;
+    BSplineCurve<Dim> c = input.isClosed() ? input : input.clamped();
+    for (int attempt = 0;; ++attempt) {
+        const Polygon<Dim> poly = polygonOf(c);
+        const int n = poly.size();
 
-    if (!c.isClosed()) {
-        // Open: P' = P[0..a] ++ y ++ P[b..n-1]; knots U[0..a+p], δ_s, the stroke's m - p spans,
-        // δ_e, then U[b+1..] shifted.
-        const int a = first == kNone ? -1 : first;
-        const int b = last == kNone ? n : last;
-        if (a >= b) throw GeometryError("stroke: the transitions of the over-sketch overlap");
+        // Transition control points CT_s, CT_e (eqs. 4-24..4-26).
+        const double period = poly.period;
+        auto before = [&](double u) {
+            int i = -1;
+            for (int k = 0; k < n; ++k) {
+                if (poly.greville[k] <= u) i = k;
+            }
+            return i;
+        };
+        const double us = c.isClosed() ? c.normalizeParameter(st.us) : st.us;
+        const double ue = c.isClosed() ? c.normalizeParameter(st.ue) : st.ue;
+        int iS = before(us);
+        int iE = before(ue) + 1;
+        if (c.isClosed() && ue < us) iE += n;  // the stroke crosses the seam
+        const int maxSteps = poly.closed ? n / 2 : n;
+        const bool openLeftEnd = !c.isClosed() &&
+                                 (h.front() - c.evaluate(c.domainStart())).norm() > o.tolerance * st.length &&
+                                 st.us <= c.domainStart();
+        const bool openRightEnd = !c.isClosed() &&
+                                  (h.back() - c.evaluate(c.domainEnd())).norm() > o.tolerance * st.length &&
+                                  st.ue >= c.domainEnd();
+        const int cs = openLeftEnd ? kNone : transitionPoint(poly, iS, -1, h.front(), Mt, maxSteps);
+        const int ce = openRightEnd ? kNone : transitionPoint(poly, iE, +1, h.back(), Mt, maxSteps);
+
+        const auto& U = c.knots();
+        const double meanSpacing = (c.domainEnd() - c.domainStart()) / std::max(1, n - (c.isClosed() ? 0 : p));
+        auto knotAt = [&](int i) {  // closed curves: the bi-infinite knot sequence
+            if (!c.isClosed()) return U[i];
+            const int j = i - p;
+            const int q = static_cast<int>(std::floor(double(j) / n));
+            return U[p + (j - q * n)] + q * period;
+        };
+
+        // Parameter lengths, so that the parameter speed does not jump (a jump forces the C2 curve to
+        // slow down to a near-cusp in the transition: curvature 22 against the stroke's 0.7, measured).
+        // v: C1's mean speed; the stroke's spans get its length at that speed. A transition after the
+        // kept point CT_s = a runs from C1(U[a+1]), where the kept curve ends, to the stroke's start
+        // P_s over the kept knots U[a+1..a+p] and one new spacing δ_s chosen so that its parameter
+        // length matches |P_s - C1(U[a+1])| at speed v; likewise before CT_e = b over U[b+1..b+p].
+        // When the kept knots alone are already too long for the gap (CT_s closer than the p - 1 spans
+        // its support reaches), CT_s steps back (at most p points): this lengthens the transition
+        // beyond eq. 4-25's M..1.5M, which is measured between control points, not curve points.
+        const double v = CurveLengths<Dim>(c).total() / (c.domainEnd() - c.domainStart());
+        const double deltaMin = 0.5 * meanSpacing;
+        auto leftGap = [&](int i) {
+            return (h.front() - c.evaluate(knotAt(i + 1))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
+        };
+        auto rightGap = [&](int i) {
+            return (h.back() - c.evaluate(knotAt(i + p))).norm() / v - (knotAt(i + p) - knotAt(i + 1));
+        };
+        int first = cs, last = ce;  // CT_s, CT_e after the gap adjustment (unwrapped indices, first < last)
+        const int lowest = c.isClosed() ? std::numeric_limits<int>::min() / 2 : 1;
+        for (int k = 0; k < p && first != kNone && first > lowest && leftGap(first) < deltaMin; ++k) --first;
+        const int highest = c.isClosed() ? std::numeric_limits<int>::max() / 2 : n - 2;
+        for (int k = 0; k < p && last != kNone && last < highest && rightGap(last) < deltaMin; ++k) ++last;
+        const int keptMin = p + 1;  // closed: p + 1 kept points leave one span untouched
+        if (c.isClosed() && first != kNone && last != kNone && first + n - last + 1 < keptMin) {
+            first = cs;  // the loop has no room for longer transitions: keep eq. 4-25's choice
+            last = ce;
+        }
+        const double deltaS = first == kNone ? 0.0 : std::max(deltaMin, leftGap(first));
+        const double deltaE = last == kNone ? 0.0 : std::max(deltaMin, rightGap(last));
+
+        if (!c.isClosed()) {
+            // Open: P' = P[0..a] ++ y ++ P[b..n-1]; knots U[0..a+p], δ_s, the stroke's m - p spans,
+            // δ_e, then U[b+1..] shifted.
+            const int a = first == kNone ? -1 : first;
+            const int b = last == kNone ? n : last;
+            if (a >= b) throw GeometryError("stroke: the transitions of the over-sketch overlap");
+            for (int m = m0;; m = grow(m)) {
+                std::vector<Pt<Dim>> P(poly.pts.begin(), poly.pts.begin() + (a + 1));
+                P.resize(P.size() + m, Pt<Dim>::Zero());
+                P.insert(P.end(), poly.pts.begin() + b, poly.pts.end());
+                const int total = static_cast<int>(P.size());
+                KnotVector K;
+                if (a >= 0) {
+                    K.assign(U.begin(), U.begin() + a + p + 1);
+                    K.push_back(K.back() + deltaS);
+                } else {
+                    K.assign(p + 1, U[p]);
+                }
+                const double t0 = K.back(), hs = st.length / v / (m - p);
+                for (int i = 1; i <= m - p; ++i) K.push_back(t0 + hs * i);
+                const double t1 = K.back();
+                if (b < n) {
+                    const double shift = t1 + deltaE - U[b + 1];
+                    for (int i = b + 1; i <= n + p; ++i) K.push_back(U[i] + shift);
+                } else {
+                    K.insert(K.end(), p, t1);
+                }
+                double err = 0.0;
+                P = refitInPlace(p, K, std::move(P), a + 1, a + m, st, c, o.scale, err);
+                if (err <= tol || m >= mMax) {
+                    span = {a >= 0 ? K[a + 1] : K[p], b < n ? K[total - (n - b) + p] : K[total]};
+                    maxError = err;
+                    return BSplineCurve<Dim>(p, std::move(K), std::move(P));
+                }
+            }
+        }
+
+        // Closed: Q = kept chain CT_e .. CT_s (cyclic) ++ y. Knot spacings: δ_e, the kept chain's old
+        // spacings, δ_s, the stroke's m - p spans (periodic; the kept knots keep their values).
+        if (first == kNone || last == kNone) throw GeometryError("stroke: no transition found on the closed curve");
+        // Unwrapped indices: first <= iS < iE <= last, the kept chain runs from last to first + n.
+        const int e = last;
+        const int kept = first + n - last + 1;
+        if (kept < keptMin || kept > n) {
+            if (attempt >= kMaxRefinements) {
+                throw GeometryError("stroke: the over-sketch with its transitions covers the whole closed curve");
+            }
+            c = refineOutside(c, {st.us, st.ue}, 1);
+            continue;
+        }
         for (int m = m0;; m = grow(m)) {
-            std::vector<Pt<Dim>> P(poly.pts.begin(), poly.pts.begin() + (a + 1));
-            P.resize(P.size() + m, Pt<Dim>::Zero());
-            P.insert(P.end(), poly.pts.begin() + b, poly.pts.end());
-            const int total = static_cast<int>(P.size());
-            KnotVector K;
-            if (a >= 0) {
-                K.assign(U.begin(), U.begin() + a + p + 1);
-                K.push_back(K.back() + deltaS);
-            } else {
-                K.assign(p + 1, U[p]);
-            }
-            const double t0 = K.back(), hs = st.length / v / (m - p);
-            for (int i = 1; i <= m - p; ++i) K.push_back(t0 + hs * i);
-            const double t1 = K.back();
-            if (b < n) {
-                const double shift = t1 + deltaE - U[b + 1];
-                for (int i = b + 1; i <= n + p; ++i) K.push_back(U[i] + shift);
-            } else {
-                K.insert(K.end(), p, t1);
-            }
+            const int N = kept + m;
+            const double hs = st.length / v / (m - p);
+            std::vector<double> spacing(N, hs);
+            spacing[0] = deltaE;
+            for (int i = 1; i < kept + p - 1; ++i) spacing[i] = knotAt(e + i + 1) - knotAt(e + i);
+            spacing[kept + p - 1] = deltaS;
+            std::vector<Pt<Dim>> Q;
+            for (int i = 0; i < kept; ++i) Q.push_back(poly.at(e + i));
+            Q.resize(N + p, Pt<Dim>::Zero());
+            for (int i = 0; i < p; ++i) Q[N + i] = Q[i];  // wrapped copies of kept (hence fixed) points
+            // Unwrapped convention: knots[i] starts the support of point i, spacings periodic.
+            KnotVector K(N + 2 * p + 1);
+            K[0] = knotAt(e + 1) - deltaE;
+            for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
             double err = 0.0;
-            P = refitInPlace(p, K, std::move(P), a + 1, a + m, st, c, o.scale, err);
+            Q = refitInPlace(p, K, std::move(Q), kept, N - 1, st, c, o.scale, err);
             if (err <= tol || m >= mMax) {
-                span = {a >= 0 ? K[a + 1] : K[p], b < n ? K[total - (n - b) + p] : K[total]};
+                span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
                 maxError = err;
-                return BSplineCurve<Dim>(p, std::move(K), std::move(P));
+                return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
             }
-        }
-    }
-
-    // Closed: Q = kept chain CT_e .. CT_s (cyclic) ++ y. Knot spacings: δ_e, the kept chain's old
-    // spacings, δ_s, the stroke's m - p spans (periodic; the kept knots keep their values).
-    if (first == kNone || last == kNone) throw GeometryError("stroke: no transition found on the closed curve");
-    const int e = last;
-    int s = first;
-    while (s < e) s += n;
-    const int kept = s - e + 1;
-    if (kept < std::max(2, p) || kept > n) throw GeometryError("stroke: the over-sketch covers the whole closed curve");
-    for (int m = m0;; m = grow(m)) {
-        const int N = kept + m;
-        const double hs = st.length / v / (m - p);
-        std::vector<double> spacing(N, hs);
-        spacing[0] = deltaE;
-        for (int i = 1; i < kept + p - 1; ++i) spacing[i] = knotAt(e + i + 1) - knotAt(e + i);
-        spacing[kept + p - 1] = deltaS;
-        std::vector<Pt<Dim>> Q;
-        for (int i = 0; i < kept; ++i) Q.push_back(poly.at(e + i));
-        Q.resize(N + p, Pt<Dim>::Zero());
-        for (int i = 0; i < p; ++i) Q[N + i] = Q[i];  // wrapped copies of kept (hence fixed) points
-        // Unwrapped convention: knots[i] starts the support of point i, spacings periodic.
-        KnotVector K(N + 2 * p + 1);
-        K[0] = knotAt(e + 1) - deltaE;
-        for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
-        double err = 0.0;
-        Q = refitInPlace(p, K, std::move(Q), kept, N - 1, st, c, o.scale, err);
-        if (err <= tol || m >= mMax) {
-            span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
-            maxError = err;
-            return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
         }
     }
 }

@@ -162,7 +162,7 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
     // Closed curves with few spans: rounding [u_ps, u_pe] out to knots may span a whole period, or
     // the edit's support may not fit inside one; exact knot insertion (everywhere, or outside the
     // edit) makes the knots denser and the attempt is repeated.
-    constexpr int kMaxRefinements = 4;
+    constexpr int kMaxRefinements = 8;
     BSplineCurve<Dim> c = curve;
     for (int attempt = 0;; ++attempt) {
         const Breaks br = breakPoints(c, lengths, st, o);

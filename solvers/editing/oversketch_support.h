@@ -200,26 +200,32 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
 }
 
 /// A closed curve with the spans outside [span.first, span.second] split `times` times (exact knot
-/// insertion), so that the edit's support fits inside one period.
+/// insertion), so that the edit's support fits inside one period. A span reaching outside is split
+/// at the middle of its outside part, so that a short uncovered arc inside one long span (a stroke
+/// around most of the loop) gets knots too.
 template <int Dim>
 BSplineCurve<Dim> refineOutside(const BSplineCurve<Dim>& c, std::pair<double, double> span, int times)
 {
     BSplineCurve<Dim> r = c;
-    const double a = c.domainStart(), T = c.domainEnd() - a;
+    const double T = c.domainEnd() - c.domainStart();
+    const double L = span.second - span.first;  // covered length, [0, L] in coordinates relative to span.first
     for (int k = 0; k < times; ++k) {
         std::vector<double> mids;
         const auto& kn = r.knots();
         for (int i = r.degree(); i < r.pointCount(); ++i) {
             if (kn[i + 1] <= kn[i]) continue;
-            const double m = 0.5 * (kn[i] + kn[i + 1]);
-            const double rel = std::fmod(m - span.first + 4.0 * T, T);
-            if (rel > span.second - span.first) mids.push_back(m);
+            const double rel0 = std::fmod(kn[i] - span.first + 4.0 * T, T), rel1 = rel0 + kn[i + 1] - kn[i];
+            // Outside parts (L, T) and (L + T, 2T) of [rel0, rel1]; the longer one is split.
+            const double a1 = std::max(rel0, L), b1 = std::min(rel1, T);
+            const double a2 = std::max(rel0, L + T), b2 = std::min(rel1, 2.0 * T);
+            const bool useFirst = b1 - a1 >= b2 - a2;
+            const double lo = useFirst ? a1 : a2, hi = useFirst ? b1 : b2;
+            if (hi - lo > 1e-9 * T) mids.push_back(kn[i] + (0.5 * (lo + hi) - rel0));
         }
         std::sort(mids.begin(), mids.end());
         if (mids.empty()) break;
         r = r.refine(mids);
     }
-    (void)a;
     return r;
 }
 

@@ -403,27 +403,73 @@ TEST_P(OversketchLocalDegree, GivenDegreeP_WhenOversketched_ThenLocalAndCpMinus1
 
 INSTANTIATE_TEST_SUITE_P(Degrees, OversketchLocalDegree, ::testing::Values(2, 4, 5));
 
-TEST(Oversketch, GivenStrokesAroundMostOfALoop_WhenOversketched_ThenClosedResultOrErrorNeverCrash)
+// Largest distance from the old curve of the new curve's points outside `span` (cyclic, in the new
+// curve's parameters): the part the edit must leave alone.
+double maxMoveOutsideSpan(const Curve2d& out, const Curve2d& old, std::pair<double, double> span)
 {
+    const CurveProjector<2> pr(old);
+    const double a = out.domainStart(), T = out.domainEnd() - a;
+    double worst = 0.0;
+    for (int i = 0; i < 2000; ++i) {
+        const double u = a + T * i / 2000.0;
+        if (std::fmod(u - span.first + 4.0 * T, T) > span.second - span.first) {
+            worst = std::max(worst, pr.project(out.evaluate(u)).distance);
+        }
+    }
+    return worst;
+}
+
+class OversketchLoop : public ::testing::TestWithParam<std::tuple<OversketchMethod, double>> {};
+
+TEST_P(OversketchLoop, GivenStrokeAroundMuchOfALoop_WhenOversketched_ThenTheLongArcIsReplacedLocallyAndSmoothly)
+{
+    // Given a 10-point closed cubic (8 x 5 ellipse) and a stroke outside it (9 x 6) covering
+    // `extent` radians of the loop: up to 6.0 of 2π, leaving an arc of 0.28 rad (~1.4 units) uncovered
+    const auto [m, extent] = GetParam();
     std::vector<Eigen::Vector2d> loop;
     for (int i = 0; i < 10; ++i) loop.emplace_back(8 * std::cos(i * M_PI / 5), 5 * std::sin(i * M_PI / 5));
     const Curve2d curve = makeClosedUniform<2>(3, loop);
-    for (double extent : {1.0, 3.0, 5.0, 6.0}) {  // radians of the loop covered by the stroke
-        std::vector<Eigen::Vector2d> stroke;
-        for (int i = 0; i <= 200; ++i) {
-            const double a = 2.0 + extent * i / 200.0;
-            stroke.emplace_back(9.0 * std::cos(a), 6.0 * std::sin(a));
-        }
-        for (auto m : {OversketchMethod::LocalC2, OversketchMethod::Blend}) {
-            try {
-                const Curve2d out = oversketch(curve, stroke, method(m));
-                EXPECT_TRUE(out.isClosed());
-                EXPECT_LT(maxJump(out, 2), 1e-9);
-                EXPECT_LT(maxDistanceToCurve(out, stroke), 0.5) << "extent " << extent;
-            } catch (const GeometryError& e) {
-                EXPECT_NE(std::string(e.what()).find("stroke"), std::string::npos) << e.what();
-                EXPECT_GE(extent, 5.0) << "only strokes around most of the loop may be refused: " << e.what();
-            }
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 200; ++i) {
+        const double a = 2.0 + extent * i / 200.0;
+        stroke.emplace_back(9.0 * std::cos(a), 6.0 * std::sin(a));
+    }
+    const OversketchOptions o = method(m);
+
+    // When over-sketched
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, o, &span);
+
+    // Then the result is closed and C2, follows the whole stroke (the long arc it covers is
+    // replaced) within the tolerance, and outside the reported span it is the old curve.
+    ASSERT_TRUE(out.isClosed());
+    EXPECT_LT(maxJump(out, 2), 1e-9);
+    EXPECT_LE(maxDistanceToCurve(out, stroke), o.tolerance * polylineLength(stroke)) << "extent " << extent;
+    EXPECT_LT(maxMoveOutsideSpan(out, curve, span), kUnchanged);
+    EXPECT_LT(span.second - span.first, out.domainEnd() - out.domainStart()) << "some of the loop is kept";
+}
+
+INSTANTIATE_TEST_SUITE_P(Extents, OversketchLoop,
+                         ::testing::Combine(::testing::Values(OversketchMethod::LocalC2, OversketchMethod::Blend),
+                                            ::testing::Values(1.0, 3.0, 4.0, 5.0, 5.5, 6.0)));
+
+TEST(Oversketch, GivenStrokeAroundTheWholeLoop_WhenOversketched_ThenStrokeErrorNeverCrash)
+{
+    // Given a stroke that runs all the way round and past its start (its ends project onto one
+    // point): no arc of the loop is left for the transitions.
+    const Curve2d curve = sculptline::editing_fixtures::ellipseLoop();
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i <= 300; ++i) {
+        const double a = 2.0 * M_PI * i / 300.0;
+        stroke.emplace_back(8.5 * std::cos(a), 5.5 * std::sin(a));
+    }
+    for (auto m : {OversketchMethod::LocalC2, OversketchMethod::Blend}) {
+        // When over-sketched, Then it is refused naming the stroke, or gives a valid closed curve
+        try {
+            const Curve2d out = oversketch(curve, stroke, method(m));
+            EXPECT_TRUE(out.isClosed());
+        } catch (const GeometryError& e) {
+            EXPECT_NE(std::string(e.what()).find("stroke"), std::string::npos) << e.what();
         }
     }
 }
