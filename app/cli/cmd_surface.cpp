@@ -12,14 +12,8 @@
 // report "max_deviation". G1 "tangents" for fill are not implemented and are refused.
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
-#include "solvers/surfaces/boundary_rotation.h"
-#include "solvers/surfaces/coons_fill.h"
-#include "solvers/surfaces/extrude.h"
 #include "solvers/surfaces/gordon.h"
-#include "solvers/surfaces/loft.h"
-#include "solvers/surfaces/rail_rotation.h"
-#include "solvers/surfaces/revolve.h"
-#include "solvers/surfaces/sweep.h"
+#include "solvers/surfaces/surface_modes.h"
 
 #include <functional>
 
@@ -40,12 +34,6 @@ std::vector<Curve3d> readCurves(const json& input)
     return out;
 }
 
-void requireCount(const std::vector<Curve3d>& curves, size_t lo, size_t hi, const std::string& what)
-{
-    if (curves.size() < lo || curves.size() > hi)
-        throw InputError("curves: mode needs " + what + ", got " + std::to_string(curves.size()) + " curves");
-}
-
 double positiveOption(const json& input, const std::string& key, double fallback)
 {
     if (!input.contains(key)) return fallback;
@@ -62,83 +50,73 @@ struct Outcome {
     json extra = json::object();
 };
 
-// Input is read and checked before the clock starts; `build` runs timed.
-std::function<Outcome()> prepare(const std::string& mode, const json& input, const std::vector<Curve3d>& c)
+// Gordon takes two curve families, so it is not one of the shared surface modes.
+std::function<Outcome()> prepareGordon(const json& input, const std::vector<Curve3d>& c)
 {
-    if (mode == "fill") {
-        requireCount(c, 2, 4, "2, 3 or 4 boundary curves");
-        if (input.contains("tangents")) throw InputError("tangents: G1 tangent conditions for fill are not implemented");
-        surf::FillOptions o;
-        o.meetTolerance = positiveOption(input, "tolerance", 0.0);
-        return [c, o] { return Outcome{surf::fill(c, o)}; };
+    const double tol = positiveOption(input, "tolerance", 0.0);
+    const json& vj = field(input, "v_curves");
+    if (!vj.is_array()) throw InputError("v_curves: expected an array of curves");
+    std::vector<Curve3d> v;
+    for (size_t k = 0; k < vj.size(); ++k)
+        v.push_back(solvers::io::curveFromJson(vj[k], "v_curves[" + std::to_string(k) + "]"));
+    return [c, v, tol] {
+        const surf::GordonResult g = surf::gordon(c, v, surf::GordonOptions{tol});
+        return Outcome{g.surface, -1.0, 0.0, json{{"max_gap", g.maxGap}, {"u_params", g.uParams}, {"v_params", g.vParams}}};
+    };
+}
+
+// Input is read and checked before the clock starts; `build` runs timed (solvers/surfaces/surface_modes).
+std::function<Outcome()> prepare(const std::string& name, const json& input, const std::vector<Curve3d>& c)
+{
+    if (name == "gordon") return prepareGordon(input, c);
+    // Every mode but these four reads "tolerance" before anything else (the order of the checks
+    // decides which of several mistakes is reported).
+    const bool tolerant = name != "fill" && name != "revolve" && name != "extrude" && name != "loft";
+    const double tolerance = tolerant ? positiveOption(input, "tolerance", 0.0) : 0.0;
+    const surf::SurfaceMode mode = [&] {
+        try {
+            return surf::parseSurfaceMode(name);
+        } catch (const std::invalid_argument&) {
+            throw InputError("mode: unknown mode \"" + name +
+                             "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation, gordon)");
+        }
+    }();
+    try {
+        surf::checkCurveCount(mode, c.size());
+    } catch (const std::invalid_argument& e) {
+        throw InputError(e.what());
     }
-    if (mode == "revolve") {
-        requireCount(c, 1, 1, "one profile curve");
+    surf::SurfaceOptions o;
+    switch (mode) {
+    case surf::SurfaceMode::Fill:
+        if (input.contains("tangents")) throw InputError("tangents: G1 tangent conditions for fill are not implemented");
+        o.tolerance = positiveOption(input, "tolerance", 0.0);
+        break;
+    case surf::SurfaceMode::Revolve: {
         const json& axis = field(input, "axis");
         if (!axis.is_object()) throw InputError("axis: expected {\"point\": [..], \"direction\": [..]}");
-        const surf::Axis a{solvers::io::pointFromJson(solvers::io::member(axis, "point", "axis"), "axis.point"),
-                           solvers::io::pointFromJson(solvers::io::member(axis, "direction", "axis"), "axis.direction")};
-        const double angle = input.contains("angle") ? solvers::io::numberFromJson(input["angle"], "angle") : 360.0;
-        return [c, a, angle] { return Outcome{surf::revolve(c[0], a, angle)}; };
+        o.axisPoint = solvers::io::pointFromJson(solvers::io::member(axis, "point", "axis"), "axis.point");
+        o.axisDirection = solvers::io::pointFromJson(solvers::io::member(axis, "direction", "axis"), "axis.direction");
+        if (input.contains("angle")) o.angleDegrees = solvers::io::numberFromJson(input["angle"], "angle");
+        break;
     }
-    if (mode == "extrude") {
-        requireCount(c, 1, 1, "one profile curve");
+    case surf::SurfaceMode::Extrude:
         if (input.contains("direction") == input.contains("path"))
             throw InputError("direction: extrude needs exactly one of \"direction\" and \"path\"");
-        if (input.contains("direction")) {
-            const Eigen::Vector3d d = solvers::io::pointFromJson(input["direction"], "direction");
-            return [c, d] { return Outcome{surf::extrude(c[0], d)}; };
-        }
-        const Curve3d path = solvers::io::curveFromJson(input["path"], "path");
-        return [c, path] { return Outcome{surf::extrude(c[0], path)}; };
+        if (input.contains("direction")) o.direction = solvers::io::pointFromJson(input["direction"], "direction");
+        else o.extrudePath = solvers::io::curveFromJson(input["path"], "path");
+        break;
+    case surf::SurfaceMode::Loft:
+        if (input.contains("degree")) o.loftDegree = solvers::io::integerFromJson(input["degree"], "degree", 1, 9);
+        break;
+    case surf::SurfaceMode::Sweep:
+    case surf::SurfaceMode::BoundaryRotation:
+    case surf::SurfaceMode::RailRotation: o.tolerance = tolerance; break;
     }
-    if (mode == "loft") {
-        surf::LoftOptions o;
-        if (input.contains("degree")) o.crossDegree = solvers::io::integerFromJson(input["degree"], "degree", 1, 9);
-        return [c, o] { return Outcome{surf::loft(c, o)}; };
-    }
-    const double tol = positiveOption(input, "tolerance", 0.0);
-    if (mode == "gordon") {
-        const json& vj = field(input, "v_curves");
-        if (!vj.is_array()) throw InputError("v_curves: expected an array of curves");
-        std::vector<Curve3d> v;
-        for (size_t k = 0; k < vj.size(); ++k)
-            v.push_back(solvers::io::curveFromJson(vj[k], "v_curves[" + std::to_string(k) + "]"));
-        return [c, v, tol] {
-            const surf::GordonResult g = surf::gordon(c, v, surf::GordonOptions{tol});
-            return Outcome{g.surface, -1.0, 0.0,
-                           json{{"max_gap", g.maxGap}, {"u_params", g.uParams}, {"v_params", g.vParams}}};
-        };
-    }
-    if (mode == "sweep") {
-        requireCount(c, 2, 2, "[profile, path]");
-        return [c, tol] {
-            try {
-                const surf::SweepResult r = surf::sweep(c[0], c[1], surf::SweepOptions{tol, 513});
-                return Outcome{r.surface, r.maxDeviation, r.tolerance};
-            } catch (const solvers::GeometryError& e) {
-                const std::string m = e.what();
-                // The sweep names its path "path"; here the path is curves[1].
-                throw InputError(m.rfind("path:", 0) == 0 ? "curves[1] (path):" + m.substr(5) : m);
-            }
-        };
-    }
-    if (mode == "boundary-rotation") {
-        requireCount(c, 2, 2, "[left outline, right outline]");
-        return [c, tol] {
-            const surf::ApproximatedSurface r = surf::boundaryRotation(c[0], c[1], {tol, 2049});
-            return Outcome{r.surface, r.maxDeviation, r.tolerance};
-        };
-    }
-    if (mode == "rail-rotation") {
-        requireCount(c, 3, 3, "[rail 1, rail 2, profile]");
-        return [c, tol] {
-            const surf::ApproximatedSurface r = surf::railRotation(c[0], c[1], c[2], {tol, 2049});
-            return Outcome{r.surface, r.maxDeviation, r.tolerance};
-        };
-    }
-    throw InputError("mode: unknown mode \"" + mode +
-                     "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation, gordon)");
+    return [mode, c, o] {
+        const surf::SurfaceBuild b = surf::buildSurface(mode, c, o);
+        return Outcome{b.surface, b.maxDeviation, b.tolerance};
+    };
 }
 
 json run(const json& input, const Options&)
@@ -151,7 +129,7 @@ json run(const json& input, const Options&)
     const Outcome r = [&] {
         try {
             return build();
-        } catch (const solvers::GeometryError& e) {
+        } catch (const std::invalid_argument& e) {
             throw InputError(e.what());  // messages name "curves[..]", "axis", "angle", "direction", "path"
         }
     }();

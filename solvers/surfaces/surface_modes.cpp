@@ -1,5 +1,6 @@
 #include "solvers/surfaces/surface_modes.h"
 
+#include "solvers/bspline/geometry_error.h"
 #include "solvers/surfaces/boundary_rotation.h"
 #include "solvers/surfaces/coons_fill.h"
 #include "solvers/surfaces/extrude.h"
@@ -23,10 +24,10 @@ constexpr std::array<std::pair<SurfaceMode, const char*>, 7> kNames{{{SurfaceMod
                                                                      {SurfaceMode::BoundaryRotation, "boundary-rotation"},
                                                                      {SurfaceMode::RailRotation, "rail-rotation"}}};
 
-void requireCount(const std::vector<Curve3d>& curves, size_t lo, size_t hi, const char* what)
+void requireCount(size_t count, size_t lo, size_t hi, const char* what)
 {
-    if (curves.size() < lo || curves.size() > hi)
-        throw std::invalid_argument(std::string("curves: mode needs ") + what + ", got " + std::to_string(curves.size()) + " curves");
+    if (count < lo || count > hi)
+        throw std::invalid_argument(std::string("curves: mode needs ") + what + ", got " + std::to_string(count) + " curves");
 }
 
 SurfaceBuild approximated(const ApproximatedSurface& r) { return {r.surface, r.maxDeviation, r.tolerance}; }
@@ -50,34 +51,44 @@ const char* surfaceModeName(SurfaceMode mode)
     return "?";
 }
 
-SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
+void checkCurveCount(SurfaceMode mode, size_t count)
 {
     switch (mode) {
-    case SurfaceMode::Fill:
-        requireCount(c, 2, 4, "2, 3 or 4 boundary curves");
-        return {fill(c, FillOptions{o.tolerance})};
+    case SurfaceMode::Fill: return requireCount(count, 2, 4, "2, 3 or 4 boundary curves");
     case SurfaceMode::Revolve:
-        requireCount(c, 1, 1, "one profile curve");
-        return {revolve(c[0], Axis{o.axisPoint, o.axisDirection}, o.angleDegrees)};
-    case SurfaceMode::Extrude:
-        requireCount(c, 1, 1, "one profile curve");
-        return {extrude(c[0], o.direction)};
+    case SurfaceMode::Extrude: return requireCount(count, 1, 1, "one profile curve");
+    case SurfaceMode::Sweep: return requireCount(count, 2, 2, "[profile, path]");
+    case SurfaceMode::Loft: return;
+    case SurfaceMode::BoundaryRotation: return requireCount(count, 2, 2, "[left outline, right outline]");
+    case SurfaceMode::RailRotation: return requireCount(count, 3, 3, "[rail 1, rail 2, profile]");
+    }
+    throw std::invalid_argument("mode: unknown surface mode");
+}
+
+SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
+{
+    checkCurveCount(mode, c.size());
+    switch (mode) {
+    case SurfaceMode::Fill: return {fill(c, FillOptions{o.tolerance})};
+    case SurfaceMode::Revolve: return {revolve(c[0], Axis{o.axisPoint, o.axisDirection}, o.angleDegrees)};
+    case SurfaceMode::Extrude: return {o.extrudePath ? extrude(c[0], *o.extrudePath) : extrude(c[0], o.direction)};
     case SurfaceMode::Sweep: {
-        requireCount(c, 2, 2, "[profile, path]");
-        const SweepResult r = sweep(c[0], c[1], SweepOptions{o.tolerance, 513});
-        return {r.surface, r.maxDeviation, r.tolerance};
+        try {
+            const SweepResult r = sweep(c[0], c[1], SweepOptions{o.tolerance, 513});
+            return {r.surface, r.maxDeviation, r.tolerance};
+        } catch (const GeometryError& e) {
+            // The sweep names its path "path"; here the path is curves[1].
+            const std::string m = e.what();
+            throw GeometryError(m.rfind("path:", 0) == 0 ? "curves[1] (path):" + m.substr(5) : m);
+        }
     }
     case SurfaceMode::Loft: {
         LoftOptions lo;
         lo.crossDegree = o.loftDegree;
         return {loft(c, lo)};
     }
-    case SurfaceMode::BoundaryRotation:
-        requireCount(c, 2, 2, "[left outline, right outline]");
-        return approximated(boundaryRotation(c[0], c[1], {o.tolerance, 2049}));
-    case SurfaceMode::RailRotation:
-        requireCount(c, 3, 3, "[rail 1, rail 2, profile]");
-        return approximated(railRotation(c[0], c[1], c[2], {o.tolerance, 2049}));
+    case SurfaceMode::BoundaryRotation: return approximated(boundaryRotation(c[0], c[1], {o.tolerance, 2049}));
+    case SurfaceMode::RailRotation: return approximated(railRotation(c[0], c[1], c[2], {o.tolerance, 2049}));
     }
     throw std::invalid_argument("mode: unknown surface mode");
 }

@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,9 @@ struct SurfaceOptions {
     double angleDegrees = 360.0;
     /// extrude: direction and distance (model units).
     Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    /// extrude: when set, the profile is carried along this curve without turning (translational
+    /// sweep) instead of along `direction`.
+    std::optional<Curve3d> extrudePath;
     /// fill: the largest gap between ends that still meet; sweep, boundary- and rail-rotation: the
     /// largest deviation from the exact construction. Model units; <= 0 = the mode's default,
     /// relative to the curves' size.
@@ -41,11 +45,18 @@ struct SurfaceBuild {
     double tolerance = 0.0;
 };
 
+/// @throws std::invalid_argument "curves: mode needs <what>, got <n> curves" when `count` curves
+/// cannot make a surface of `mode` (loft: any count passes here; buildSurface then reports fewer
+/// than two sections in the loft's own words).
+void checkCurveCount(SurfaceMode mode, size_t count);
+
 /// Builds the surface of `mode` from `curves` (world coordinates, in the mode's order: fill 2-4
 /// boundaries; revolve [profile]; extrude [profile]; sweep [profile, path]; loft [sections..];
 /// boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]).
 /// @throws std::invalid_argument for a wrong number of curves, GeometryError for input the mode
 ///         cannot build (the message says why: curves that do not meet, a path with a cusp, ...).
+///         Messages start with the input they blame: "curves: ", "curves[1] (path): " (sweep),
+///         "axis: ", "angle: ", "direction: ", "path: " (extrudePath).
 SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options = {});
 
 }  // namespace sculptline::solvers::surfaces
