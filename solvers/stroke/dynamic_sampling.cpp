@@ -8,9 +8,10 @@ namespace sculptline::solvers::stroke {
 double samplingThreshold(double speed, double averageSpeed, double unit, const SamplingOptions& o)
 {
     if (!(averageSpeed > 0.0)) return unit;
-    const double ratio = speed / averageSpeed;
-    if (ratio < 1.0) return std::round(o.slowFactor * ratio + 0.5) * unit;  // eq. 4-2
-    return o.fastFactor * ratio * unit;                                    // eq. 4-3
+    // r = S_i / S_avg; one digitizer tick covers r * unit of arc length.
+    const double r = std::max(speed / averageSpeed, 1e-3);  // a stopped pen: at most 2000 ticks
+    if (r < 1.0) return std::round(o.slowFactor / r + 0.5) * r * unit;  // eq. 4-2: round(2 S_avg/S_i + 0.5) ticks
+    return o.fastFactor * unit;                                        // eq. 4-3: 7 S_avg/S_i ticks
 }
 
 std::vector<int> dynamicThresholdSamples(const ConditionedStroke& cs, const StrokeFeatures& f,

@@ -90,6 +90,34 @@ Shape flourishShape(double size)
         0.0, 1.0, false);
 }
 
+Shape hairpinShape(double size, int legs, double turnRadius)
+{
+    Shape s;
+    const int perLeg = kDense / legs;
+    const int perTurn = perLeg / 4;
+    for (int l = 0; l < legs; ++l) {
+        const double x = 2.0 * turnRadius * l;
+        const double y0 = l % 2 == 0 ? 0.0 : size, y1 = size - y0;
+        const double side = l % 2 == 0 ? -1.0 : 1.0;  // legs bow outwards, alternately
+        for (int i = 0; i < perLeg; ++i) {
+            const double t = double(i) / perLeg;
+            s.reference.emplace_back(x + side * 0.06 * size * std::sin(kPi * t), y0 + (y1 - y0) * t, 0.0);
+        }
+        if (l + 1 == legs) {
+            s.reference.emplace_back(x, y1, 0.0);
+            break;
+        }
+        // Half turn around (x + r, y1), from (x, y1) to (x + 2r, y1), bulging away from the leg.
+        const double bulge = l % 2 == 0 ? 1.0 : -1.0;
+        for (int i = 0; i < perTurn; ++i) {
+            const double a = kPi * i / perTurn;
+            if (i == perTurn / 2) s.slowdowns.push_back(static_cast<int>(s.reference.size()));
+            s.reference.emplace_back(x + turnRadius * (1.0 - std::cos(a)), y1 + bulge * turnRadius * std::sin(a), 0.0);
+        }
+    }
+    return s;
+}
+
 Stroke drawWithSamples(const Shape& shape, int samples, DrawOptions o)
 {
     const Stroke probe = draw(shape, o);
@@ -117,7 +145,9 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
         const double kappa = len > 0 ? turn / len : 0.0;
         speed[i] = o.peakSpeed * std::min(1.0, std::pow(1.0 + kappa * total / (2 * kPi), -1.0 / 3.0) * 1.6);
     }
-    for (int c : shape.corners) {
+    std::vector<int> slow = shape.corners;
+    slow.insert(slow.end(), shape.slowdowns.begin(), shape.slowdowns.end());
+    for (int c : slow) {
         for (int i = 0; i < n; ++i) {
             double d = std::abs(arc[i] - arc[c]);
             if (shape.closed) d = std::min(d, total - d);

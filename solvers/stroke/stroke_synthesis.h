@@ -17,6 +17,9 @@ namespace sculptline::solvers::stroke {
 struct Shape {
     std::vector<Eigen::Vector3d> reference;  ///< dense, exact
     std::vector<int> corners;     ///< indices into reference
+    /// Smooth bends where the hand nearly stops without meaning a corner (indices into reference);
+    /// drawn with the same slow-down as corners.
+    std::vector<int> slowdowns;
     bool closed = false;
 };
 
@@ -31,8 +34,11 @@ Shape spiralShape(double size, double turns);
 /// slows down (the kind of stroke of thesis Fig. 4-3).
 Shape flourishShape(double size);
 
-/// Draws `shape` with about `samples` samples (the digitizer rate is scaled to reach the count).
-
+/// The stroke of thesis Fig. 4-3 as far as the figure shows it: a long free-hand curve whose
+/// gently bowed sweeps (fast) are joined by tight rounded turns where the pen nearly stops
+/// (`legs` sweeps `size` long, hairpins of radius `turnRadius`, each a `slowdowns` entry). Smooth
+/// everywhere (C2 is kept in the figure): the turns are slow bends, not corners.
+Shape hairpinShape(double size, int legs, double turnRadius);
 
 struct DrawOptions {
     double rate = 120.0;        ///< digitizer samples per second

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <random>
 
 namespace sculptline::stroketest {
@@ -66,13 +67,16 @@ TEST(CubicBasisDerivatives, GivenClampedAndInteriorSpans_ThenMatchKernelA23)
 TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
 {
     const double unit = 2.0;
-    // Slow (eq. 4-2): round(2 r + 0.5) units.
-    EXPECT_DOUBLE_EQ(samplingThreshold(0.1, 1.0, unit), 1 * unit);   // round(0.7) = 1
-    EXPECT_DOUBLE_EQ(samplingThreshold(0.5, 1.0, unit), 2 * unit);   // round(1.5) = 2
-    EXPECT_DOUBLE_EQ(samplingThreshold(0.9, 1.0, unit), 2 * unit);   // round(2.3) = 2
-    // Fast (eq. 4-3): 7 r units.
+    // Slow (eq. 4-2): round(2 S_avg / S_i + 0.5) ticks of r = S_i / S_avg units each.
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.1, 1.0, unit), 21 * 0.1 * unit);  // round(20.5) = 21 ticks
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.5, 1.0, unit), 5 * 0.5 * unit);   // round(4.5) = 5 ticks
+    EXPECT_DOUBLE_EQ(samplingThreshold(0.9, 1.0, unit), 3 * 0.9 * unit);   // round(2.72) = 3 ticks
+    // Fast (eq. 4-3): 7 S_avg / S_i ticks of r units = 7 units whatever the speed.
     EXPECT_DOUBLE_EQ(samplingThreshold(1.0, 1.0, unit), 7 * unit);
-    EXPECT_DOUBLE_EQ(samplingThreshold(3.0, 1.5, unit), 14 * unit);
+    EXPECT_DOUBLE_EQ(samplingThreshold(3.0, 1.5, unit), 7 * unit);
+    // A stopped pen (S_i = 0) still gives a finite spacing, never below 2 units.
+    EXPECT_GE(samplingThreshold(0.0, 1.0, unit), 2 * unit);
+    EXPECT_TRUE(std::isfinite(samplingThreshold(0.0, 1.0, unit)));
 }
 
 TEST(FastAtan2, GivenAllDirections_ThenWithin1e5OfLibm)
