@@ -3,6 +3,7 @@
 // points of seed 001 §3 and the blended target polyline h̄. Not part of the public API.
 #include "solvers/bspline/arc_length.h"
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/editing/constrained_fit.h"
 #include "solvers/editing/oversketch.h"
 
 #include <algorithm>
@@ -68,6 +69,78 @@ struct Breaks {
     bool tooWide = false;                          // closed: [t_k, t_l] rounded out to knots spans a whole period
 };
 
+constexpr double kTangentSpan = 0.01;
+
+/// Unit direction of the stroke leaving its first point (forward = true) or arriving at its last,
+/// measured over kTangentSpan of its length (short enough to be the tangent of a curved stroke,
+/// long enough that single-sample pen jitter at the tip does not set it).
+template <int Dim>
+Eigen::Matrix<double, Dim, 1> strokeTangent(const StrokeOnCurve<Dim>& st, bool atStart)
+{
+    const auto& h = st.points;
+    const int n = static_cast<int>(h.size());
+    for (int i = 1; i < n; ++i) {
+        const auto& q = atStart ? h[i] : h[n - 1 - i];
+        const auto& e = atStart ? h.front() : h.back();
+        if ((q - e).norm() >= kTangentSpan * st.length || i == n - 1) {
+            return atStart ? Eigen::Matrix<double, Dim, 1>((q - e).normalized())
+                           : Eigen::Matrix<double, Dim, 1>((e - q).normalized());
+        }
+    }
+    return Eigen::Matrix<double, Dim, 1>::UnitX();
+}
+
+/// Largest curvature of the stroke at the scale of 1/40 of its length: turning angle between
+/// successive chords of the stroke resampled by arc length, over the chord length (a pen's jitter
+/// below that scale does not count).
+template <int Dim>
+double strokeCurvature(const StrokeOnCurve<Dim>& st)
+{
+    constexpr int kChords = 40;
+    const auto q = resampleByArcLength<Dim>(st.points, kChords + 1);
+    const double step = st.length / kChords;
+    double worst = 0.0;
+    for (int i = 1; i < kChords; ++i) {
+        const Eigen::Matrix<double, Dim, 1> a = q[i] - q[i - 1], b = q[i + 1] - q[i];
+        if (a.norm() == 0.0 || b.norm() == 0.0) continue;
+        worst = std::max(worst, std::acos(std::clamp(a.dot(b) / (a.norm() * b.norm()), -1.0, 1.0)) / step);
+    }
+    return worst;
+}
+
+/// Largest curvature of the curve sampled on [u0, u1] (closed: may cross the seam).
+template <int Dim>
+double curveCurvature(const BSplineCurve<Dim>& c, double u0, double u1)
+{
+    constexpr int kSamples = 64;
+    double worst = 0.0;
+    for (int i = 0; i <= kSamples; ++i) {
+        const auto d = c.derivatives(c.normalizeParameter(u0 + (u1 - u0) * i / kSamples), 2);
+        const double v = d[1].norm();
+        if (v == 0.0) continue;
+        const double cross2 = std::max(0.0, d[1].squaredNorm() * d[2].squaredNorm() - std::pow(d[1].dot(d[2]), 2));
+        worst = std::max(worst, std::sqrt(cross2) / (v * v * v));
+    }
+    return worst;
+}
+
+// Transition length for a fair blend (this file's addition to seed 001 §3). The blend B of
+// buildTarget moves the curve sideways by δ = |C(u_s) - h_0| and turns it by θ (curve tangent vs
+// stroke tangent) over a length d; its extra curvature is about 6δ/d² (a quintic step's second
+// derivative peaks at 5.8/d²) plus 4θ/d (a turn by θ over d with zero end curvature). Seed 001's
+// d = 3δ gives 2/(3δ), a spike that grows as the stroke starts closer to the curve (measured: 2.3
+// against the curve's 0.3 for δ = 0.1). We take the d that keeps that extra curvature within
+// κ_ref = max(stroke's, curve's own curvature over the edit, 2/length): 6δ/d² + 4θ/d = κ_ref,
+// d = (4θ + sqrt(16θ² + 24δκ_ref)) / (2κ_ref), at most kFairTransitionMax of the stroke's length
+// (a stroke crossing a straight line at an angle would otherwise ask for an unbounded blend), and
+// never shorter than the seed's d.
+constexpr double kFairTransitionMax = 0.5;
+
+inline double fairTransition(double delta, double theta, double kappaRef)
+{
+    return (4.0 * theta + std::sqrt(16.0 * theta * theta + 24.0 * delta * kappaRef)) / (2.0 * kappaRef);
+}
+
 template <int Dim>
 Breaks breakPoints(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& len, const StrokeOnCurve<Dim>& st,
                    const OversketchOptions& o)
@@ -78,6 +151,22 @@ Breaks breakPoints(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& len, con
     const auto& h = st.points;
     b.d1 = std::max(o.transitionFactor * (c.evaluate(b.us) - h.front()).norm(), o.minTransition * st.length);
     b.d2 = std::max(o.transitionFactor * (c.evaluate(b.ue) - h.back()).norm(), o.minTransition * st.length);
+    {
+        const double kappaRef = std::max({strokeCurvature(st),
+                                          curveCurvature(c, len.parameterAt(len.lengthAt(b.us) - b.d1),
+                                                         len.parameterAt(len.lengthAt(b.ue) + b.d2)),
+                                          2.0 / st.length});
+        auto turn = [&](double u, bool atStart) {
+            const Eigen::Matrix<double, Dim, 1> t = c.derivatives(u, 1)[1];
+            const Eigen::Matrix<double, Dim, 1> s = strokeTangent(st, atStart);
+            return t.norm() > 0.0 ? std::acos(std::clamp(t.normalized().dot(s), -1.0, 1.0)) : 0.0;
+        };
+        const double cap = kFairTransitionMax * st.length;
+        b.d1 = std::max(b.d1, std::min(cap, fairTransition((c.evaluate(b.us) - h.front()).norm(), turn(b.us, true),
+                                                           kappaRef)));
+        b.d2 = std::max(b.d2, std::min(cap, fairTransition((c.evaluate(b.ue) - h.back()).norm(), turn(b.ue, false),
+                                                           kappaRef)));
+    }
     const double a = c.domainStart(), e = c.domainEnd();
     if (c.isClosed()) {
         // The transitions share what the stroke leaves of the loop; they are shortened to half of
@@ -115,30 +204,16 @@ struct Target {
     std::vector<Eigen::Matrix<double, Dim, 1>> points;
 };
 
-constexpr double kTangentSpan = 0.01;
-
-/// Unit direction of the stroke leaving its first point (forward = true) or arriving at its last,
-/// measured over kTangentSpan of its length (short enough to be the tangent of a curved stroke,
-/// long enough that single-sample pen jitter at the tip does not set it).
-template <int Dim>
-Eigen::Matrix<double, Dim, 1> strokeTangent(const StrokeOnCurve<Dim>& st, bool atStart)
-{
-    const auto& h = st.points;
-    const int n = static_cast<int>(h.size());
-    for (int i = 1; i < n; ++i) {
-        const auto& q = atStart ? h[i] : h[n - 1 - i];
-        const auto& e = atStart ? h.front() : h.back();
-        if ((q - e).norm() >= kTangentSpan * st.length || i == n - 1) {
-            return atStart ? Eigen::Matrix<double, Dim, 1>((q - e).normalized())
-                           : Eigen::Matrix<double, Dim, 1>((e - q).normalized());
-        }
-    }
-    return Eigen::Matrix<double, Dim, 1>::UnitX();
-}
-
 /// Seed 001 §3: h̄ = E^l ∪ B^l ∪ h ∪ B^r ∪ E^r on [t_k, t_l]. E keeps the curve's own parameters;
-/// B blends the curve into the line L tangent to the stroke at its end, of length d (Baudel 1994),
-/// with the C1 smoothstep weight 3t² - 2t³; the middle gets chord-length parameters on [u_ps, u_pe].
+/// the middle gets chord-length parameters on [u_ps, u_pe]. The blends B: the seed (after Baudel
+/// 1994) blends the curve into the line tangent to the stroke at its end with a smoothstep weight;
+/// that line leaves the curve at the angle θ between curve and stroke, so over a blend of length d
+/// the target strays dθ from both and its curvature peaks near 6(δ + dθ)/d² (measured: 2.1 where
+/// the stroke has 0.8). We follow the curve itself on [u_ps, u_s] and add two quintic Hermite
+/// terms (x from 0 at u_ps to 1 at u_s): H5(x)·D moves it by D = h_0 - C(u_s) and H4(x)·V turns its
+/// end tangent onto the stroke's (V = |C'(u_s)|(u_s - u_ps)(t_stroke - t_curve)). Both vanish with
+/// their first two derivatives at u_ps, so B meets the kept curve G2, ends at h_0 tangent to the
+/// stroke, and adds at most 5.8δ/d² + 4θ/d to the curve's own curvature (fairTransition's model).
 template <int Dim>
 Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*len*/, const StrokeOnCurve<Dim>& st,
                         const Breaks& b)
@@ -146,7 +221,6 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
     using Pt = Eigen::Matrix<double, Dim, 1>;
     constexpr int K = 24;  // samples per piece of h̄ (E^l, B^l, B^r, E^r): enough to pin a few spans
     Target<Dim> t;
-    auto smooth = [](double x) { return x * x * (3.0 - 2.0 * x); };
     for (int i = 0; i < K && b.ups > b.tk; ++i) {
         const double u = b.tk + (b.ups - b.tk) * i / K;
         t.params.push_back(u);
@@ -154,21 +228,31 @@ Target<Dim> buildTarget(const BSplineCurve<Dim>& c, const CurveLengths<Dim>& /*l
     }
     std::vector<Pt> mid;
     const Pt h0 = st.points.front(), hm = st.points.back();
+    // Quintic Hermite basis functions used by the blends (value 1 or slope 1 at one end, all else 0).
+    auto h0Basis = [](double x) { return 1.0 - x * x * x * (10.0 - 15.0 * x + 6.0 * x * x); };
+    auto h1Basis = [](double x) { return x - x * x * x * (6.0 - 8.0 * x + 3.0 * x * x); };
+    auto h4Basis = [](double x) { return -x * x * x * (4.0 - 7.0 * x + 3.0 * x * x); };
+    auto h5Basis = [](double x) { return x * x * x * (10.0 - 15.0 * x + 6.0 * x * x); };
+    auto turnTo = [&](double u, double du, const Pt& strokeDir) {
+        const Pt d1 = c.derivatives(c.normalizeParameter(u), 1)[1];
+        const double v = d1.norm();
+        return v > 0.0 ? Pt(v * du * (strokeDir - d1 / v)) : Pt(Pt::Zero());
+    };
     if (!b.leftExtend && b.us > b.ups) {
-        const Pt tan = strokeTangent(st, true);
+        const double du = b.us - b.ups;
+        const Pt D = h0 - c.evaluate(b.us), V = turnTo(b.us, du, strokeTangent(st, true));
         for (int i = 0; i < K; ++i) {
             const double x = double(i) / K;
-            const Pt line = h0 - (1.0 - x) * b.d1 * tan;
-            mid.push_back((1.0 - smooth(x)) * c.evaluate(b.ups + (b.us - b.ups) * x) + smooth(x) * line);
+            mid.push_back(c.evaluate(b.ups + du * x) + h5Basis(x) * D + h4Basis(x) * V);
         }
     }
     mid.insert(mid.end(), st.points.begin(), st.points.end());
     if (!b.rightExtend && b.upe > b.ue) {
-        const Pt tan = strokeTangent(st, false);
+        const double du = b.upe - b.ue;
+        const Pt D = hm - c.evaluate(b.ue), V = turnTo(b.ue, du, strokeTangent(st, false));
         for (int i = 1; i <= K; ++i) {
             const double x = double(i) / K;
-            const Pt line = hm + x * b.d2 * tan;
-            mid.push_back(smooth(1.0 - x) * line + (1.0 - smooth(1.0 - x)) * c.evaluate(b.ue + (b.upe - b.ue) * x));
+            mid.push_back(c.evaluate(b.ue + du * x) + h0Basis(x) * D + h1Basis(x) * V);
         }
     }
     std::vector<double> chord(mid.size(), 0.0);

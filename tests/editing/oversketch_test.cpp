@@ -247,6 +247,72 @@ TEST(OversketchBlend, GivenBumpStroke_WhenBlended_ThenLocalSmoothAndFollowsStrok
     std::printf("blend: %d -> %d control points, max error %.4f\n", curve.pointCount(), out.pointCount(), err);
 }
 
+double curvature(const Curve2d& c, double u)
+{
+    const auto d = c.derivatives(u, 2);
+    return std::abs(d[1].x() * d[2].y() - d[1].y() * d[2].x()) / std::pow(d[1].norm(), 3);
+}
+
+// A polyline's curvature at the scale of 1/40 of its length (turning angle between successive
+// chords over their mean length): the stroke's own curvature, without its sampling noise.
+double polylineCurvature(const std::vector<Eigen::Vector2d>& pts)
+{
+    constexpr int kChords = 40;
+    double worst = 0.0;
+    std::vector<Eigen::Vector2d> q;
+    for (int i = 0; i <= kChords; ++i) q.push_back(pts[i * (pts.size() - 1) / kChords]);
+    for (int i = 1; i < kChords; ++i) {
+        const Eigen::Vector2d a = q[i] - q[i - 1], b = q[i + 1] - q[i];
+        const double turn = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+        worst = std::max(worst, turn / (0.5 * (a.norm() + b.norm())));
+    }
+    return worst;
+}
+
+class OversketchTransitionFairness
+    : public ::testing::TestWithParam<std::tuple<OversketchMethod, double>> {};
+
+TEST_P(OversketchTransitionFairness, GivenBumpStroke_WhenOversketched_ThenTransitionCurvatureNearOwnCurvatures)
+{
+    // Given the wave (curvature up to 0.34) and a bump of height h leaving it at 0.2 h, rising
+    // at up to 0.5 rad to the curve
+    const auto [m, h] = GetParam();
+    const Curve2d curve = wave(30);
+    const auto stroke = bump(curve, 0.4, 0.6, h, 300);
+    double curveOwn = 0.0;
+    for (int i = 0; i <= 3000; ++i) curveOwn = std::max(curveOwn, curvature(curve, i / 3000.0));
+    const double own = std::max(curveOwn, polylineCurvature(stroke));
+
+    // When over-sketched
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, method(m), &span);
+
+    // Then the curvature peak of the transitions (points of the edited span nearest to one of the
+    // stroke's first or last 1% of samples) stays within 4x the larger of the stroke's and the
+    // curve's own curvature. Measured before the fair blends: local-c2 3.3 / 5.1 / 3.4 (9.6x, 14.5x,
+    // 9.9x for h = 0.5, 1, -1); now 0.57 / 1.22 / 0.64 (1.7x, 3.5x, 1.9x); the turn from the curve
+    // onto a stroke rising at 0.5 rad only 0.2 above it needs an S-shaped transition, whence 3.5x.
+    double peak = 0.0;
+    for (int i = 0; i <= 2000; ++i) {
+        const double u = span.first + (span.second - span.first) * i / 2000.0;
+        const Eigen::Vector2d x = out.evaluate(u);
+        size_t nearest = 0;
+        for (size_t j = 1; j < stroke.size(); ++j) {
+            if ((stroke[j] - x).squaredNorm() < (stroke[nearest] - x).squaredNorm()) nearest = j;
+        }
+        if (nearest < stroke.size() / 100 || nearest >= stroke.size() - stroke.size() / 100) {
+            peak = std::max(peak, curvature(out, u));
+        }
+    }
+    std::printf("%s h=%.1f: transition curvature peak %.2f, own curvature %.2f (%.1fx)\n",
+                m == OversketchMethod::Blend ? "blend" : "local-c2", h, peak, own, peak / own);
+    EXPECT_LT(peak, 4.0 * own);
+}
+
+INSTANTIATE_TEST_SUITE_P(Heights, OversketchTransitionFairness,
+                         ::testing::Combine(::testing::Values(OversketchMethod::LocalC2, OversketchMethod::Blend),
+                                            ::testing::Values(0.5, 1.0, 2.0, -1.0)));
+
 class OversketchBlendHeight : public ::testing::TestWithParam<double> {};
 
 TEST_P(OversketchBlendHeight, GivenBumpStroke_WhenBlended_ThenEveryStrokeSampleWithinTolerance)
