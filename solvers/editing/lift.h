@@ -16,7 +16,21 @@ struct ViewFrame {
     Eigen::Vector3d depth = Eigen::Vector3d::UnitZ();
 };
 
+/// How depths are spread along the stroke (seed 004 §3.1, Theorem 1: the minimum-curvature lift of
+/// a 2D Bézier curve has equally spaced control depths, i.e. a depth linear in the Bézier parameter).
+enum class DepthModel {
+    /// Depth linear in the parameter of a least-squares cubic B-spline fitted to the stroke with
+    /// parameter correction: for a Bézier stroke that parameter is the Bézier's own, and for a
+    /// longer stroke it is the B-spline form of Theorem 1 (equally spaced depths at the Greville
+    /// abscissae). The default, see lift.cpp for the measurement.
+    FittedParameter,
+    /// Alg. 2 as written: depths equally spaced over the critical points of Alg. 1, arc-length
+    /// interpolation between them.
+    CriticalPoints,
+};
+
 struct LiftOptions {
+    DepthModel depths = DepthModel::FittedParameter;
     /// Alg. 1's "user-defined threshold": a critical point closer than this to the chord of its
     /// segment is dropped and recursion stops. Fraction of the stroke's length, (0, 1).
     double linearityThreshold = 0.01;
@@ -27,9 +41,9 @@ struct LiftOptions {
     /// The stroke is resampled to this many points equally spaced by arc length (>= 3), so that
     /// the index-space Laplacian is a length-space one.
     int samples = 200;
-    /// Depths of the critical points: true spaces them equally within each recursion level's
-    /// segment (Theorem 1 per de Casteljau sub-curve); false spaces them equally over the whole flat
-    /// list (the literal reading of Alg. 2). The default is chosen by measurement, see lift.cpp.
+    /// CriticalPoints only. Depths of the critical points: true spaces them equally within each
+    /// recursion level's segment (Theorem 1 per de Casteljau sub-curve); false spaces them equally
+    /// over the whole flat list (the literal reading of Alg. 2). See lift.cpp for the measurement.
     bool hierarchicalDepths = true;
     /// Fit tolerance of the output cubic, fraction of the stroke's 3D length.
     double fitTolerance = 1e-3;
@@ -48,8 +62,8 @@ struct LiftResult {
 /// and when it lies farther than `threshold` from the chord.
 std::vector<int> criticalPoints(const std::vector<Eigen::Vector2d>& pts, double threshold);
 
-/// Alg. 2 and §3.1: depths equally spaced over the critical list (Theorem 1), arc-length
-/// interpolation between them, then the Laplacian filter with the end depths held.
+/// Seed 004 §3: critical points (Alg. 1, reported), depths by `options.depths` (Theorem 1), then
+/// the Laplacian filter with the end depths held (Alg. 2).
 /// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite) or "depth".
 LiftResult liftStroke(const std::vector<Eigen::Vector2d>& stroke, double z0, double z1, const LiftOptions& options = {},
                       const ViewFrame& view = {});

@@ -39,13 +39,19 @@ double theoremOneDeviation(const std::vector<Eigen::Vector2d>& cps, const std::v
 
 struct TheoremOneCase {
     std::vector<Eigen::Vector2d> controlPoints;
-    double allowedFraction;  ///< of the depth range
-    bool beatsArcLength;     ///< critical points must improve on plain arc-length interpolation
 };
 
 }  // namespace
 
 class LiftTheoremOne : public ::testing::TestWithParam<TheoremOneCase> {};
+
+// Tolerance: 0.003 of the depth range. With the depth linear in the fitted parameter the lift is
+// Theorem 1's curve up to the Laplacian filter (10 passes, λ = 0.5: ~0.0005 of the range where the
+// depth is not linear in arc length) and the parameter correction's linear convergence (worst, the
+// asymmetric arc: 0.0016 of the range after 200 passes). Measured 0.0001 / 0.0001 / 0.0016 /
+// 0.0005 / 0.0002; before (depths equally spaced over Alg. 1's critical points) 0.003 / 0.011 /
+// 0.020 / 0.089 / 0.087: the S curves were 9% off.
+constexpr double kTheoremOneFraction = 0.003;
 
 TEST_P(LiftTheoremOne, GivenBezierStroke_WhenLifted_ThenCloseToEquallySpacedDepthBezier)
 {
@@ -55,6 +61,7 @@ TEST_P(LiftTheoremOne, GivenBezierStroke_WhenLifted_ThenCloseToEquallySpacedDept
 
     const LiftResult lifted = liftStroke(stroke, kZ0, kZ1);
     LiftOptions naive;  // no critical point survives: plain arc-length depth interpolation
+    naive.depths = DepthModel::CriticalPoints;
     naive.linearityThreshold = 10.0;
     naive.filterIterations = 0;
     const LiftResult baseline = liftStroke(stroke, kZ0, kZ1, naive);
@@ -63,26 +70,70 @@ TEST_P(LiftTheoremOne, GivenBezierStroke_WhenLifted_ThenCloseToEquallySpacedDept
     const double devBaseline = theoremOneDeviation(cps, baseline.points);
     std::printf("Theorem 1 deviation: lifted %.4f, arc-length baseline %.4f (depth range %.1f)\n", dev, devBaseline,
                 kZ1 - kZ0);
-    EXPECT_LT(dev, GetParam().allowedFraction * (kZ1 - kZ0));
-    if (GetParam().beatsArcLength) {
-        EXPECT_LT(dev, 0.5 * devBaseline);
-    }
+    EXPECT_LT(dev, kTheoremOneFraction * (kZ1 - kZ0));
+    EXPECT_LT(dev, 0.5 * devBaseline);
     EXPECT_DOUBLE_EQ(lifted.points.front().z(), kZ0);
     EXPECT_DOUBLE_EQ(lifted.points.back().z(), kZ1);
     const Eigen::Vector3d start(stroke.front().x(), stroke.front().y(), kZ0);
     EXPECT_LT((lifted.curve.evaluate(lifted.curve.domainStart()) - start).norm(), 1e-12);
 }
 
-// Tolerances: for a parabola and a symmetric cubic arc the critical points found by Alg. 1 are the
-// key points of the proof (tangent parallel to the chord at parameter 1/2, recursively), so the lift
-// is close to exact; measured 0.03 and 0.11 of a range of 10. For an asymmetric arc and an S curve
-// the critical points are not the key points (the paper's stated approximation, §3.1); measured
-// 0.20 and 0.89. Bounds leave ~50% margin over those measurements.
 INSTANTIATE_TEST_SUITE_P(Beziers, LiftTheoremOne,
-                         ::testing::Values(TheoremOneCase{{{0, 0}, {5, 10}, {10, 0}}, 0.005, true},
-                                           TheoremOneCase{{{0, 0}, {2, 8}, {8, 8}, {10, 0}}, 0.02, true},
-                                           TheoremOneCase{{{0, 0}, {2, 8}, {9, 9}, {10, 0}}, 0.03, false},
-                                           TheoremOneCase{{{0, 0}, {1, 9}, {9, -9}, {10, 0}}, 0.13, false}));
+                         ::testing::Values(TheoremOneCase{{{0, 0}, {5, 10}, {10, 0}}},
+                                           TheoremOneCase{{{0, 0}, {2, 8}, {8, 8}, {10, 0}}},
+                                           TheoremOneCase{{{0, 0}, {2, 8}, {9, 9}, {10, 0}}},
+                                           TheoremOneCase{{{0, 0}, {1, 9}, {9, -9}, {10, 0}}},
+                                           TheoremOneCase{{{0, 0}, {3, 6}, {7, -6}, {10, 0}}}));
+
+TEST(Lift, GivenSCurve_WhenDepthsFromCriticalPoints_ThenTheirDepthsNotTheInterpolationCauseTheError)
+{
+    // Given the S-shaped cubic of the issue, lifted with Alg. 2 as written (depths equally spaced
+    // over Alg. 1's critical points, arc-length interpolation, no filter)
+    const std::vector<Eigen::Vector2d> cps = {{0, 0}, {1, 9}, {9, -9}, {10, 0}};
+    const Curve2d bezier = makeClampedUniform<2>(3, cps);
+    LiftOptions literal;
+    literal.depths = DepthModel::CriticalPoints;
+    literal.filterIterations = 0;
+
+    // When the same critical points get the depth of their true Bézier parameter instead
+    const LiftResult r = liftStroke(sample(bezier, 400), kZ0, kZ1, literal);
+    std::vector<Eigen::Vector3d> corrected = r.points;
+    const CurveProjector<2> onBezier(bezier);
+    std::vector<double> s(r.points.size(), 0.0);
+    for (size_t i = 1; i < s.size(); ++i) s[i] = s[i - 1] + (r.points[i] - r.points[i - 1]).head<2>().norm();
+    for (size_t j = 0; j + 1 < r.critical.size(); ++j) {
+        const int a = r.critical[j], b = r.critical[j + 1];
+        const double ta = a == 0 ? 0.0 : onBezier.project(r.points[a].head<2>()).u;
+        const double tb = j + 2 == r.critical.size() ? 1.0 : onBezier.project(r.points[b].head<2>()).u;
+        for (int i = a; i <= b; ++i) {
+            const double f = (s[i] - s[a]) / (s[b] - s[a]);
+            corrected[i].z() = kZ0 + (kZ1 - kZ0) * (ta + f * (tb - ta));
+        }
+    }
+
+    // Then the literal lift is far from Theorem 1 (measured 0.091 of the range) while the corrected
+    // critical depths with the same arc-length interpolation are close (0.007): the error sits in
+    // the critical points' depths (Alg. 1's extrema of an S curve are at t = 0.211 / 0.789, not at
+    // equally spaced t), which is what DepthModel::FittedParameter replaces.
+    EXPECT_GT(theoremOneDeviation(cps, r.points), 0.05 * (kZ1 - kZ0));
+    EXPECT_LT(theoremOneDeviation(cps, corrected), 0.01 * (kZ1 - kZ0));
+}
+
+TEST(Lift, GivenNoisyBezierStroke_WhenLifted_ThenStillCloseToTheoremOne)
+{
+    // Given the S cubic with pen jitter of 0.002 of its chord
+    const std::vector<Eigen::Vector2d> cps = {{0, 0}, {1, 9}, {9, -9}, {10, 0}};
+    auto stroke = sample(makeClampedUniform<2>(3, cps), 400);
+    for (size_t i = 1; i + 1 < stroke.size(); ++i) stroke[i] += 0.02 * Eigen::Vector2d(std::sin(37.0 * i), std::cos(53.0 * i));
+
+    // When lifted
+    const LiftResult r = liftStroke(stroke, kZ0, kZ1);
+
+    // Then the depths still follow Theorem 1 to 1% of the range (the jitter itself is 0.02 in x, y)
+    const double dev = theoremOneDeviation(cps, r.points);
+    std::printf("Theorem 1 deviation with jitter: %.4f (depth range %.1f)\n", dev, kZ1 - kZ0);
+    EXPECT_LT(dev, 0.01 * (kZ1 - kZ0));
+}
 
 TEST(Lift, GivenStraightStroke_WhenLifted_ThenNoCriticalPointsAndLinearDepth)
 {
