@@ -2,14 +2,16 @@
 //
 //   {"mode": m, "curves": [C..], ...options} -> {"surface": S, "elapsed_ms": t[, "max_deviation": d, "tolerance": e]}
 //
-// Modes and options (../shared/interfaces.md): fill [2-4 boundaries] ("tolerance": meet tolerance);
+// Modes and options (../shared/interfaces.md): fill [2-4 boundaries] ("tolerance": meet tolerance;
+// "tangents": [{"curve": index, "surface": S}..] G1 to the adjacent surface S along curves[index],
+// "angle_tolerance" in degrees (default 0.1); reports "max_tangent_angle" in degrees);
 // revolve [profile] {"axis": {"point", "direction"}, "angle": degrees = 360}; extrude [profile]
 // {"direction": [..]} or {"path": C}; sweep [profile, path]; loft [sections..] ("degree": cross
 // degree = 3); boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]; gordon
 // [u-curves..] with {"v_curves": [v-curves..]} (a grid-like network; "tolerance": meet tolerance,
 // reports "max_gap" and the iso-parameters "u_params"/"v_params" of the curves). The
 // approximating modes (sweep, boundary-rotation, rail-rotation) take "tolerance" (model units) and
-// report "max_deviation". G1 "tangents" for fill are not implemented and are refused.
+// report "max_deviation". The modes are built by solvers/surfaces/surface_modes (shared with the GUI).
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 #include "solvers/surfaces/gordon.h"
@@ -89,8 +91,25 @@ std::function<Outcome()> prepare(const std::string& name, const json& input, con
     surf::SurfaceOptions o;
     switch (mode) {
     case surf::SurfaceMode::Fill:
-        if (input.contains("tangents")) throw InputError("tangents: G1 tangent conditions for fill are not implemented");
         o.tolerance = positiveOption(input, "tolerance", 0.0);
+        if (input.contains("tangents")) {
+            const json& tj = input["tangents"];
+            if (!tj.is_array() || tj.empty())
+                throw InputError("tangents: expected a non-empty array of {\"curve\": index, \"surface\": S}");
+            for (size_t k = 0; k < tj.size(); ++k) {
+                const std::string path = "tangents[" + std::to_string(k) + "]";
+                if (!tj[k].is_object()) throw InputError(path + ": expected {\"curve\": index, \"surface\": S}");
+                const int curve = solvers::io::integerFromJson(solvers::io::member(tj[k], "curve", path), path + ".curve", 0,
+                                                               static_cast<int>(c.size()) - 1);
+                o.fillTangents.push_back(
+                    {curve, solvers::io::surfaceFromJson(solvers::io::member(tj[k], "surface", path), path + ".surface")});
+            }
+        }
+        if (input.contains("angle_tolerance")) {
+            o.fillAngleToleranceDegrees = solvers::io::numberFromJson(input["angle_tolerance"], "angle_tolerance");
+            if (!(o.fillAngleToleranceDegrees > 0.0 && o.fillAngleToleranceDegrees < 90.0))
+                throw InputError("angle_tolerance: must be in (0, 90) degrees");
+        }
         break;
     case surf::SurfaceMode::Revolve: {
         const json& axis = field(input, "axis");
@@ -115,7 +134,10 @@ std::function<Outcome()> prepare(const std::string& name, const json& input, con
     }
     return [mode, c, o] {
         const surf::SurfaceBuild b = surf::buildSurface(mode, c, o);
-        return Outcome{b.surface, b.maxDeviation, b.tolerance};
+        json extra = json::object();
+        if (b.maxTangentAngleDegrees >= 0.0)
+            extra = {{"max_tangent_angle", b.maxTangentAngleDegrees}, {"angle_tolerance", o.fillAngleToleranceDegrees}};
+        return Outcome{b.surface, b.maxDeviation, b.tolerance, extra};
     };
 }
 

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <string>
@@ -48,10 +49,9 @@ Curve3d withEnd(const Curve3d& c, bool atEnd, const Vec3& p)
 
 Curve3d constantCurve(const Vec3& p) { return Curve3d(1, {0.0, 0.0, 1.0, 1.0}, {p, p}); }
 
-// The four sides in patch order (bottom, right, top, left), each parameterized on [0, 1] in the
-// direction of increasing u or v, with the loop's corners moved to their midpoints; nullopt when
-// a corner gap exceeds the tolerance.
-std::optional<std::array<Curve3d, 4>> patchSides(const std::vector<Curve3d>& curves, const FillLoop& loop)
+// The loop's curves in loop order and direction, normalized, with the corners moved to their
+// midpoints; nullopt when a corner gap exceeds the tolerance.
+std::optional<std::vector<Curve3d>> loopSides(const std::vector<Curve3d>& curves, const FillLoop& loop)
 {
     const size_t n = loop.order.size();
     std::vector<Curve3d> s;
@@ -69,11 +69,34 @@ std::optional<std::array<Curve3d, 4>> patchSides(const std::vector<Curve3d>& cur
         a = withEnd(a, true, mid);
         b = withEnd(b, false, mid);
     }
+    return s;
+}
+
+// The four sides in patch order (bottom, right, top, left), each parameterized on [0, 1] in the
+// direction of increasing u or v.
+std::array<Curve3d, 4> patchSides(const std::vector<Curve3d>& s)
+{
+    const size_t n = s.size();
     const Curve3d& s0 = s[0];
     if (n == 4) return std::array<Curve3d, 4>{s0, s[1], reversedCurve(s[2]), reversedCurve(s[3])};
     if (n == 3) return std::array<Curve3d, 4>{s0, s[1], reversedCurve(s[2]), constantCurve(startOf(s0))};
     return std::array<Curve3d, 4>{s0, constantCurve(endOf(s0)), reversedCurve(s[1]), constantCurve(startOf(s0))};
 }
+
+// Loop side k is patch side k, except that a lens's second curve is the top (side 2).
+int patchSideOf(size_t loopSide, size_t loopSize) { return loopSize == 2 && loopSide == 1 ? 2 : static_cast<int>(loopSide); }
+
+// The layout with the midpoint of every non-empty span inserted.
+CurveLayout refinedLayout(const CurveLayout& layout)
+{
+    CurveLayout out = layout;
+    for (size_t k = 0; k + 1 < layout.knots.size(); ++k)
+        if (layout.knots[k + 1] > layout.knots[k]) out.knots.push_back(0.5 * (layout.knots[k] + layout.knots[k + 1]));
+    std::sort(out.knots.begin(), out.knots.end());
+    return out;
+}
+
+constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 
@@ -134,30 +157,111 @@ FillBuilder::FillBuilder(const std::vector<Curve3d>& curves, const FillOptions& 
 const Surface3d& FillBuilder::reset(const std::vector<Curve3d>& curves)
 {
     loop_ = chainBoundaries(curves, options_);
-    const std::optional<std::array<Curve3d, 4>> sides = patchSides(curves, loop_);
-    if (!sides) throw GeometryError("curves: the boundary curves do not meet end to end");
-    const std::array<Curve3d, 4>& s = *sides;
-    layouts_[0] = commonLayout({s[0], s[2]});
-    layouts_[1] = commonLayout({s[3], s[1]});
+    const std::optional<std::vector<Curve3d>> ls = loopSides(curves, loop_);
+    if (!ls) throw GeometryError("curves: the boundary curves do not meet end to end");
+    setupTangents(*ls);
+    const std::array<Curve3d, 4> s = patchSides(*ls);
+    // G1 needs inner rows that are free of the boundaries: at least cubic across every side.
+    const int minDegree = g1_.empty() ? 1 : 3;
+    layouts_[0] = commonLayout({s[0], s[2]}, minDegree);
+    layouts_[1] = commonLayout({s[3], s[1]}, minDegree);
     for (int d = 0; d < 2; ++d) greville_[d] = grevilleAbscissae(layouts_[d].degree, layouts_[d].knots);
     if (!build(curves)) throw GeometryError("curves: internal error, compatible layout rejected a boundary");
+    refineUntilTangent(curves);
     return *surface_;
 }
 
 const Surface3d& FillBuilder::update(const std::vector<Curve3d>& curves)
 {
     if (curves.size() != loop_.order.size() || !build(curves)) return reset(curves);
+    refineUntilTangent(curves);
     return *surface_;
+}
+
+void FillBuilder::setupTangents(const std::vector<Curve3d>& ls)
+{
+    g1_.clear();
+    maxAngle_ = 0.0;
+    const std::vector<FillTangent>& tangents = options_.tangents;
+    if (tangents.empty()) return;
+    const double tol = options_.angleToleranceDegrees;
+    if (!(tol > 0.0 && tol < 90.0))
+        throw GeometryError("tangents: the angle tolerance must be in (0, 90) degrees, got " + std::to_string(tol));
+    const size_t n = ls.size();
+    for (size_t k = 0; k < tangents.size(); ++k) {
+        const std::string name = "tangents[" + std::to_string(k) + "]";
+        const int c = tangents[k].curve;
+        if (c < 0 || c >= static_cast<int>(n))
+            throw GeometryError(name + ": curve " + std::to_string(c) + " is not one of the " + std::to_string(n) +
+                                " boundary curves");
+        for (size_t j = 0; j < k; ++j)
+            if (tangents[j].curve == c)
+                throw GeometryError(name + ": curves[" + std::to_string(c) + "] already has a tangent condition (tangents[" +
+                                    std::to_string(j) + "])");
+        const size_t kl = static_cast<size_t>(std::find(loop_.order.begin(), loop_.order.end(), c) - loop_.order.begin());
+        G1Side g;
+        g.side = patchSideOf(kl, n);
+        g.tangentIndex = static_cast<int>(k);
+        g.curveIndex = c;
+        g.tracker = std::make_shared<ReferenceTracker>(tangents[k].reference);
+        // At each end of the G1 boundary the fill's tangent plane is spanned by the two boundaries
+        // meeting there, so the neighbour must leave the corner in the reference's tangent plane.
+        for (bool atEnd : {false, true}) {
+            const Curve3d& side = ls[kl];
+            const Curve3d& other = ls[atEnd ? (kl + 1) % n : (kl + n - 1) % n];
+            const Vec3 corner = atEnd ? endOf(side) : startOf(side);
+            double gap = 0.0;
+            const Eigen::Vector2d uv = g.tracker->locate({corner}, &gap).front();
+            if (!(gap <= loop_.tolerance))
+                throw GeometryError(name + ": curves[" + std::to_string(c) + "] does not lie on its reference surface: its " +
+                                    (atEnd ? "end" : "start") + " is " + std::to_string(gap) + " away (tolerance " +
+                                    std::to_string(loop_.tolerance) + ")");
+            const Vec3 normal = g.tracker->normal(uv);
+            const Vec3 d = other.derivatives(atEnd ? other.domainStart() : other.domainEnd(), 1)[1];
+            if (normal.squaredNorm() < 0.5 || d.norm() == 0.0) continue;
+            const double off = std::asin(std::min(1.0, std::abs(normal.dot(d.normalized())))) * 180.0 / kPi;
+            if (off > tol)
+                throw GeometryError(name + ": where curves[" + std::to_string(loop_.order[atEnd ? (kl + 1) % n : (kl + n - 1) % n]) +
+                                    "] meets curves[" + std::to_string(c) + "] it leaves the reference surface's tangent plane by " +
+                                    std::to_string(off) + " degrees (angle tolerance " + std::to_string(tol) +
+                                    "), so no fill can be G1 to the reference along curves[" + std::to_string(c) + "]");
+        }
+        g1_.push_back(std::move(g));
+    }
+}
+
+void FillBuilder::refineUntilTangent(const std::vector<Curve3d>& curves)
+{
+    while (!g1_.empty() && maxAngle_ > options_.angleToleranceDegrees) {
+        // Refine along the G1 boundaries: their cross derivative gains freedom span by span.
+        std::array<bool, 2> along{false, false};
+        for (const G1Side& g : g1_) along[g.side % 2 == 0 ? 0 : 1] = true;
+        std::array<CurveLayout, 2> next = layouts_;
+        bool grew = false;
+        for (int d = 0; d < 2; ++d) {
+            if (!along[d]) continue;
+            const CurveLayout r = refinedLayout(layouts_[d]);
+            if (r.pointCount() <= options_.maxPoints) {
+                next[d] = r;
+                grew = grew || r.pointCount() > layouts_[d].pointCount();
+            }
+        }
+        if (!grew) return;  // the bound is reached; maxTangentAngleDegrees() reports what was achieved
+        layouts_ = next;
+        for (int d = 0; d < 2; ++d) greville_[d] = grevilleAbscissae(layouts_[d].degree, layouts_[d].knots);
+        if (!build(curves)) throw GeometryError("curves: internal error, refined layout rejected a boundary");
+    }
 }
 
 bool FillBuilder::build(const std::vector<Curve3d>& curves)
 {
     requireFillable(curves);
-    const std::optional<std::array<Curve3d, 4>> sides = patchSides(curves, loop_);
-    if (!sides) return false;
+    const std::optional<std::vector<Curve3d>> ls = loopSides(curves, loop_);
+    if (!ls) return false;
+    const std::array<Curve3d, 4> sides = patchSides(*ls);
     std::array<std::optional<Curve3d>, 4> c;
     for (int k = 0; k < 4; ++k) {
-        c[k] = conformToLayout((*sides)[k], layouts_[k % 2 == 0 ? 0 : 1]);
+        c[k] = conformToLayout(sides[k], layouts_[k % 2 == 0 ? 0 : 1]);
         if (!c[k]) return false;
     }
     const std::vector<Vec3>& B = c[0]->points();  // v = 0
@@ -190,8 +294,13 @@ bool FillBuilder::build(const std::vector<Curve3d>& curves)
     };
     collapse(0, L);
     collapse(nu - 1, R);
+    if (!g1_.empty()) {
+        for (G1Side& g : g1_) locateSamples(g, *c[g.side], layouts_[g.side % 2 == 0 ? 0 : 1], loop_.tolerance);
+        applyG1(pts, nu, nv, layouts_, g1_);
+    }
     surface_ = std::make_unique<Surface3d>(layouts_[0].degree, layouts_[1].degree, layouts_[0].knots,
                                            layouts_[1].knots, nu, nv, std::move(pts));
+    if (!g1_.empty()) maxAngle_ = maxG1AngleDegrees(*surface_, g1_);
     return true;
 }
 

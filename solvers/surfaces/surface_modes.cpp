@@ -69,7 +69,16 @@ SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const
 {
     checkCurveCount(mode, c.size());
     switch (mode) {
-    case SurfaceMode::Fill: return {fill(c, FillOptions{o.tolerance})};
+    case SurfaceMode::Fill: {
+        FillOptions fo;
+        fo.meetTolerance = o.tolerance;
+        fo.tangents = o.fillTangents;
+        fo.angleToleranceDegrees = o.fillAngleToleranceDegrees;
+        const FillBuilder b(c, fo);
+        SurfaceBuild out{b.surface()};
+        if (!fo.tangents.empty()) out.maxTangentAngleDegrees = b.maxTangentAngleDegrees();
+        return out;
+    }
     case SurfaceMode::Revolve: return {revolve(c[0], Axis{o.axisPoint, o.axisDirection}, o.angleDegrees)};
     case SurfaceMode::Extrude: return {o.extrudePath ? extrude(c[0], *o.extrudePath) : extrude(c[0], o.direction)};
     case SurfaceMode::Sweep: {

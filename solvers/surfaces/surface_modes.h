@@ -2,6 +2,7 @@
 // One entry point for every surface mode (issue 6): the CLI's `surface` subcommand and the GUI's
 // surface entities (scene/model) build through it, so a mode behaves the same in both.
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/surfaces/coons_fill.h"
 
 #include <Eigen/Core>
 
@@ -35,6 +36,10 @@ struct SurfaceOptions {
     double tolerance = 0.0;
     /// loft: the degree across the sections (lowered to sections - 1 when there are fewer).
     int loftDegree = 3;
+    /// fill: optional G1 conditions (curve index -> adjacent reference surface, coons_fill.h) and
+    /// the largest angle in degrees between the normals across those boundaries.
+    std::vector<FillTangent> fillTangents;
+    double fillAngleToleranceDegrees = kDefaultFillAngleDegrees;
 };
 
 struct SurfaceBuild {
@@ -43,6 +48,9 @@ struct SurfaceBuild {
     /// modes: -1 and 0.
     double maxDeviation = -1.0;
     double tolerance = 0.0;
+    /// fill with tangents: the largest angle (degrees) reached between the normals across the G1
+    /// boundaries; -1 otherwise.
+    double maxTangentAngleDegrees = -1.0;
 };
 
 /// @throws std::invalid_argument "curves: mode needs <what>, got <n> curves" when `count` curves

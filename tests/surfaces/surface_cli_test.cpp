@@ -98,6 +98,43 @@ TEST(SurfaceCli, GivenFourBoundaries_WhenFilled_ThenCornersOnTheSurface)
     EXPECT_LT((s.evaluate(0.5, 0.0) - Eigen::Vector3d(1, 0, 0.25)).norm(), kExact);  // mid of the first boundary
 }
 
+TEST(SurfaceCli, GivenFillWithTangentToAdjacentSurface_WhenRun_ThenNormalAcrossTheEdgeIsTheSurfaces)
+{
+    // Given: a reference strip whose edge y = 0 (from (0,0,0) to (2,0,0)) has the tangent plane
+    // z = 0 (it rises only further in), and a fill hanging off that edge whose sides leave it
+    // horizontally but whose far side is raised (the plain Coons fill would crease at the edge).
+    const std::vector<Eigen::Vector3d> rp{{0, 0, 0}, {0, 0.5, 0}, {0, 1, 0.5}, {2, 0, 0}, {2, 0.5, 0}, {2, 1, 0.5}};
+    const Surface3d reference(1, 2, {0, 0, 1, 1}, {0, 0, 0, 1, 1, 1}, 2, 3, rp);
+    const json edge = curve({{0, 0, 0}, {2, 0, 0}});
+    const json right = curve({{2, 0, 0}, {2, -1, 0}, {2, -2, 1}});
+    const json far = curve({{2, -2, 1}, {1, -2, 2}, {0, -2, 1}});
+    const json left = curve({{0, -2, 1}, {0, -1, 0}, {0, 0, 0}});
+    const json tangents = json::array({{{"curve", 0}, {"surface", io::toJson(reference)}}});
+    const json in{{"mode", "fill"}, {"curves", {edge, right, far, left}}, {"tangents", tangents}};
+
+    // When
+    const CliRun r = runCli("surface", in);
+
+    // Then: the edge is met, the normal along it is vertical like the reference's, and the angle
+    // reached is reported within the default tolerance (0.1 degree).
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json out = json::parse(r.out);
+    const Surface3d s = surfaceOf(r);
+    for (double t : {0.1, 0.3, 0.5, 0.7, 0.9}) {
+        EXPECT_LT((s.evaluate(t, 0.0) - Eigen::Vector3d(2 * t, 0, 0)).norm(), kExact);
+        EXPECT_GT(std::abs(s.normal(t, 0.0).z()), std::cos(0.1 * 3.14159265358979323846 / 180.0)) << t;
+    }
+    EXPECT_LE(out.at("max_tangent_angle").get<double>(), 0.1);
+    EXPECT_EQ(out.at("angle_tolerance").get<double>(), 0.1);
+
+    // And: a side that leaves the edge's end upwards makes G1 impossible there: refused.
+    json tilted = in;
+    tilted["curves"][3] = curve({{0, -2, 1}, {0, -1, 0.5}, {0, 0, 0}});
+    const CliRun bad = runCli("surface", tilted);
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("tangents[0]"), std::string::npos) << bad.err;
+}
+
 TEST(SurfaceCli, GivenImpossibleInput_WhenRun_ThenExitTwoWithMessage)
 {
     const json line = curve({{1, 0, 0}, {1, 0, 2}});
