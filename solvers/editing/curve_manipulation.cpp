@@ -23,16 +23,38 @@ int uniqueCount(const BSplineCurve<Dim>& c)
 
 // Adds the coefficients of the k-th derivative of C at u to `row` (unique indices; a closed
 // curve's wrapped basis functions fold onto the point they repeat).
+//
+// Rational curves, weights held fixed: C(u) = Σ R_i(u) P_i with R_i = w_i N_i / W, W = Σ w_j N_j
+// (The NURBS Book eq. 4.2). R_i and its derivatives depend on u and the weights only, so every
+// constraint stays exactly linear in the Cartesian control points: there is nothing to linearize
+// (the linearization would be needed only if the weights moved too; C is then bilinear in
+// (w_i P_i, w_i)). Derivatives of the quotient A_i / W with A_i = w_i N_i:
+// R' = (A' - R W') / W, R'' = (A'' - 2 R' W' - R W'') / W.
 template <int Dim>
 void addBasisRow(const BSplineCurve<Dim>& curve, double u, int k, double sign, Eigen::VectorXd& row)
 {
     if (!std::isfinite(u)) throw GeometryError("constraints: parameter u is not a finite number");
+    if (k > 2) throw GeometryError("constraints: derivatives above the second are not supported");
     const double un = curve.normalizeParameter(u);
     const int p = curve.degree();
     const int span = findSpan(p, curve.knots(), un);
     const Eigen::MatrixXd ders = basisDerivatives(span, un, p, k, curve.knots());
     const int n = uniqueCount(curve);
-    for (int j = 0; j <= p; ++j) row[(span - p + j) % n] += sign * ders(k, j);
+    if (!curve.isRational()) {
+        for (int j = 0; j <= p; ++j) row[(span - p + j) % n] += sign * ders(k, j);
+        return;
+    }
+    double W[3] = {0.0, 0.0, 0.0};
+    for (int j = 0; j <= p; ++j) {
+        for (int d = 0; d <= k; ++d) W[d] += curve.weight(span - p + j) * ders(d, j);
+    }
+    for (int j = 0; j <= p; ++j) {
+        const double w = curve.weight(span - p + j);
+        const double r0 = w * ders(0, j) / W[0];
+        const double r1 = k >= 1 ? (w * ders(1, j) - r0 * W[1]) / W[0] : 0.0;
+        const double r2 = k >= 2 ? (w * ders(2, j) - 2.0 * r1 * W[1] - r0 * W[2]) / W[0] : 0.0;
+        row[(span - p + j) % n] += sign * (k == 0 ? r0 : k == 1 ? r1 : r2);
+    }
 }
 
 template <int Dim>
@@ -48,7 +70,7 @@ BSplineCurve<Dim> withUniquePoints(const BSplineCurve<Dim>& c, std::vector<typen
     if (c.isClosed()) {
         for (int i = 0; i < c.degree(); ++i) pts.push_back(pts[i]);
     }
-    return BSplineCurve<Dim>(c.degree(), c.knots(), std::move(pts), {}, c.isClosed());
+    return BSplineCurve<Dim>(c.degree(), c.knots(), std::move(pts), c.weights(), c.isClosed());
 }
 
 }  // namespace
@@ -80,7 +102,6 @@ CurveManipulationSolver<Dim>::CurveManipulationSolver(Curve curve, std::vector<C
                                                       std::vector<int> blocked)
     : curve_(std::move(curve)), constraints_(std::move(constraints))
 {
-    if (curve_.isRational()) throw GeometryError("curve: constrained manipulation needs a non-rational curve");
     const int n = uniqueCount(curve_);
     std::vector<bool> isBlocked(n, false);
     for (int b : blocked) {

@@ -49,7 +49,9 @@ struct ManipulationReport {
 /// becomes Π[R₁ᵀ; R₂ᵀ] y = b, solved in least squares: exact when F has full row rank (then
 /// y = R₁⁻ᵀΠᵀb, the formula above) and the best compromise otherwise. C = Q₁·[R₁ᵀ; R₂ᵀ]⁺·Πᵀ.
 ///
-/// @note Non-rational curves only (for rational ones the constraints are not linear in the points).
+/// @note Rational curves keep their weights: the constraints are then exactly linear in the
+///       Cartesian control points (rational basis R_i = w_i N_i / Σ w_j N_j), and d is the least
+///       change of those points (curve_manipulation.cpp).
 /// @note Closed curves: unknowns are the unique control points; blocked indices refer to them.
 template <int Dim>
 class CurveManipulationSolver {
@@ -61,7 +63,7 @@ public:
 
     /// @param constraints types and parameters; their values are ignored here (targets come per event).
     /// @param blocked control point indices that must not move (unique indices for closed curves).
-    /// @throws GeometryError for a rational curve, a non-finite parameter or a bad blocked index.
+    /// @throws GeometryError for a non-finite parameter or a bad blocked index.
     CurveManipulationSolver(Curve curve, std::vector<CurveConstraint<Dim>> constraints, std::vector<int> blocked = {});
 
     /// Per-event stage: the curve that meets `targets` (one per constraint, same order and meaning

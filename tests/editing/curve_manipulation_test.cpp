@@ -240,3 +240,101 @@ TEST(CurveManipulation, GivenFig63Setup_WhenPointDragged_ThenTangentAndDistanceK
         EXPECT_EQ(out.points().back(), curve.points().back());
     }
 }
+
+namespace {
+
+// A rational open cubic with weights 0.4 .. 2.2 (a NURBS whose shape the weights visibly pull).
+Curve2d rationalOpen(int n)
+{
+    std::vector<Eigen::Vector2d> pts;
+    std::vector<double> w;
+    for (int i = 0; i < n; ++i) {
+        pts.emplace_back(i, std::sin(0.7 * i) * 2.0);
+        w.push_back(1.3 + 0.9 * std::sin(1.9 * i));
+    }
+    return makeClampedUniform<2>(3, pts, w);
+}
+
+}  // namespace
+
+TEST(CurveManipulation, GivenRationalCurve_WhenRowsBuilt_ThenTheyReproduceTheKernelsDerivatives)
+{
+    // Given a rational cubic and one constraint of each order at several parameters
+    const Curve2d curve = rationalOpen(12);
+    for (double u : {0.0, 0.13, 0.5, 0.77, 1.0}) {
+        const auto d = curve.derivatives(u, 2);  // The NURBS Book A4.2: independent of the rows
+        for (int k = 0; k <= 2; ++k) {
+            const ConstraintType t[] = {ConstraintType::Position, ConstraintType::Tangent, ConstraintType::Curvature};
+            // When the row of F is applied to the control points
+            const Eigen::VectorXd row = constraintRow(curve, make<2>(t[k], u, Eigen::Vector2d::Zero()));
+            Eigen::Vector2d v = Eigen::Vector2d::Zero();
+            for (int i = 0; i < curve.pointCount(); ++i) v += row[i] * curve.points()[i];
+            // Then it is the k-th derivative of the rational curve (weights held fixed, C is linear in P)
+            EXPECT_LT((v - d[k]).norm(), 1e-12 * std::max(1.0, d[k].norm())) << "u " << u << " order " << k;
+        }
+    }
+}
+
+TEST(CurveManipulation, GivenRationalCurve_WhenConstrained_ThenConstraintsHoldWeightsKeptLeastNorm)
+{
+    // Given a rational cubic, two blocked points and three constraints (position, tangent, distance)
+    const Curve2d curve = rationalOpen(14);
+    const std::vector<int> blocked = {0, 5};
+    const std::vector<CurveConstraint<2>> cs = {
+        make<2>(ConstraintType::Position, 0.25, curve.evaluate(0.25) + Eigen::Vector2d(0.4, -0.8)),
+        make<2>(ConstraintType::Tangent, 0.55, curve.derivatives(0.55, 1)[1] * 1.2),
+        make<2>(ConstraintType::Distance, 0.7, Eigen::Vector2d(1.5, 0.5), 0.85),
+    };
+    CurveManipulationSolver<2> solver(curve, cs, blocked);
+    std::vector<Eigen::Vector2d> targets;
+    for (const auto& c : cs) targets.push_back(c.value);
+
+    // When solved
+    ManipulationReport report;
+    const Curve2d out = solver.solve(targets, &report);
+
+    // Then the rational result (evaluated by the kernel) meets every constraint to 1e-9, keeps its
+    // weights and its blocked points exactly, and the change is the least-norm one.
+    ASSERT_TRUE(out.isRational());
+    EXPECT_LT((out.evaluate(0.25) - cs[0].value).norm(), kConstraintTolerance);
+    EXPECT_LT((out.derivatives(0.55, 1)[1] - cs[1].value).norm(), kConstraintTolerance);
+    EXPECT_LT((out.evaluate(0.85) - out.evaluate(0.7) - cs[2].value).norm(), kConstraintTolerance);
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    EXPECT_EQ(out.weights(), curve.weights());
+    for (int b : blocked) EXPECT_EQ(out.points()[b], curve.points()[b]);
+    Eigen::MatrixXd b(3, 2);
+    for (int j = 0; j < 3; ++j) b.row(j) = (targets[j] - solver.currentValues()[j]).transpose();
+    const Eigen::MatrixXd ref = solver.constraintMatrix().completeOrthogonalDecomposition().solve(b);
+    CurveManipulationSolver<2>::Displacements d;
+    solver.displacements(targets, d);
+    EXPECT_LT((Eigen::MatrixXd(d) - ref).norm(), 1e-10 * ref.norm());
+}
+
+TEST(CurveManipulation, GivenClosedRationalCurve_WhenCurvatureConstrainedAcrossSeam_ThenHoldsAndStaysClosed)
+{
+    // Given a closed rational cubic in 3D with uneven weights (1, 1.5, 2 repeating)
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> w;
+    for (int i = 0; i < 9; ++i) {
+        pts.emplace_back(4 * std::cos(i * 2 * M_PI / 9), 3 * std::sin(i * 2 * M_PI / 9), 0.5 * std::sin(2.0 * i));
+        w.push_back(1.0 + 0.5 * (i % 3));
+    }
+    const Curve3d curve = makeClosedUniform<3>(3, pts, w);
+    const double seam = curve.domainStart();
+    const std::vector<CurveConstraint<3>> cs = {
+        make<3>(ConstraintType::Position, seam, curve.evaluate(seam) + Eigen::Vector3d(0, 0, 1)),
+        make<3>(ConstraintType::Curvature, seam + 0.5, curve.derivatives(seam + 0.5, 2)[2] * 0.5),
+    };
+
+    // When constrained
+    ManipulationReport report;
+    const Curve3d out = constrainCurve(curve, cs, {}, &report);
+
+    // Then both hold to 1e-9, the curve is closed with its weights, C2 across the seam
+    ASSERT_TRUE(out.isClosed());
+    EXPECT_EQ(out.weights(), curve.weights());
+    EXPECT_LT((out.evaluate(seam) - cs[0].value).norm(), kConstraintTolerance);
+    EXPECT_LT((out.derivatives(seam + 0.5, 2)[2] - cs[1].value).norm(), kConstraintTolerance);
+    const auto a = out.derivatives(out.domainStart(), 2), e = out.derivatives(out.domainEnd(), 2);
+    for (int k = 0; k <= 2; ++k) EXPECT_LT((a[k] - e[k]).norm(), 1e-9) << "order " << k;
+}
