@@ -34,4 +34,18 @@ void BandMatrix::solveInPlace(Eigen::MatrixXd& b) const
     }
 }
 
+void BandMatrix::solveInPlace(std::vector<Eigen::Vector3d>& b) const
+{
+    for (int i = 0; i < n_; ++i) {  // L y = b
+        Eigen::Vector3d r = b[i];
+        for (int k = std::max(0, i - w_); k < i; ++k) r -= at(i, k) * b[k];
+        b[i] = r / at(i, i);
+    }
+    for (int i = n_ - 1; i >= 0; --i) {  // L^T x = y
+        Eigen::Vector3d r = b[i];
+        for (int k = i + 1; k <= std::min(n_ - 1, i + w_); ++k) r -= at(k, i) * b[k];
+        b[i] = r / at(i, i);
+    }
+}
+
 }  // namespace sculptline::solvers::stroke

@@ -24,6 +24,9 @@ public:
     bool factor();
     /// Solves A X = B for the factored matrix; B has one row per unknown, any number of columns.
     void solveInPlace(Eigen::MatrixXd& b) const;
+    /// The same for three right-hand sides stored as one 3-vector per unknown (the least-squares
+    /// fit's x, y, z): fixed-size rows, no dynamic-matrix indexing in the inner loops.
+    void solveInPlace(std::vector<Eigen::Vector3d>& b) const;
 
 private:
     int n_;

@@ -102,9 +102,17 @@ double distanceAt(const Spline& s, const Vec3& x, double u) { return (s.point(u)
 double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot)
 {
     double best = distanceAt(s, x, u), bestU = u;
+    // Each Newton step needs C, C' and C'' at the current u; the evaluation that measures the
+    // distance at a new u also serves the next step, so a step costs one evaluation, not two.
+    Vec3 c[3];
+    if (best > tol) s.eval(u, c);
     for (int it = 0; it < 2 && best > tol; ++it) {
-        u = newtonStep(s, x, u, lo, hi);
-        const double d = distanceAt(s, x, u);
+        const Vec3 r = c[0] - x;
+        const double df = c[2].dot(r) + c[1].squaredNorm();
+        if (!(df > 0.0)) break;
+        u = std::clamp(u - c[1].dot(r) / df, lo, hi);
+        s.eval(u, c);
+        const double d = (c[0] - x).norm();
         if (d < best) {
             best = d;
             bestU = u;
@@ -136,27 +144,24 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
     const int nFree = nCtrl - 2;
     const Vec3 first = X[S.front()], last = X[S.back()];
     BandMatrix a(nFree, kDegree);
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(nFree, 3);
+    std::vector<Vec3> b(static_cast<size_t>(nFree), Vec3::Zero());
     double basis[kDegree + 1];
     int span = kDegree;
     for (size_t k = 1; k + 1 < S.size(); ++k) {
         // Samples come in increasing parameter: walk the span instead of searching for it.
         while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
         cubicBasis(s.knots, span, u[k], basis);
+        const int i0 = span - kDegree;  // control point of basis[0]
         Vec3 rhs = X[S[k]];
-        for (int q = 0; q <= kDegree; ++q) {
-            const int i = span - kDegree + q;
-            if (i == 0) rhs -= basis[q] * first;
-            if (i == nCtrl - 1) rhs -= basis[q] * last;
-        }
-        for (int q = 0; q <= kDegree; ++q) {
-            const int i = span - kDegree + q - 1;  // unknown index
-            if (i < 0 || i >= nFree) continue;
-            b.row(i) += basis[q] * rhs.transpose();
-            for (int r = 0; r <= q; ++r) {
-                const int j = span - kDegree + r - 1;
-                if (j >= 0) a.add(i, j, basis[q] * basis[r]);
-            }
+        if (i0 == 0) rhs -= basis[0] * first;
+        if (i0 + kDegree == nCtrl - 1) rhs -= basis[kDegree] * last;
+        // Rows and columns of the free unknowns only (unknown index = control index - 1).
+        const int q0 = i0 == 0 ? 1 : 0;
+        const int q1 = i0 + kDegree == nCtrl - 1 ? kDegree - 1 : kDegree;
+        for (int q = q0; q <= q1; ++q) {
+            const int i = i0 + q - 1;
+            b[i] += basis[q] * rhs;
+            for (int r = q0; r <= q; ++r) a.at(i, i0 + r - 1) += basis[q] * basis[r];
         }
     }
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / nCtrl);
@@ -171,7 +176,7 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
         for (int t = 0; t < 3; ++t) {
             const int i = idx[t] - 1;
             if (i < 0 || i >= nFree) continue;
-            b.row(i) -= lambda * w[t] * fixedPart.transpose();
+            b[i] -= lambda * w[t] * fixedPart;
             for (int r = 0; r <= t; ++r) {
                 const int j = idx[r] - 1;
                 if (j >= 0) a.add(i, j, lambda * w[t] * w[r]);
@@ -183,7 +188,7 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
     s.ctrl.assign(nCtrl, Vec3::Zero());
     s.ctrl.front() = first;
     s.ctrl.back() = last;
-    for (int i = 0; i < nFree; ++i) s.ctrl[i + 1] = b.row(i).transpose();
+    for (int i = 0; i < nFree; ++i) s.ctrl[i + 1] = b[i];
 }
 
 // Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal

@@ -48,21 +48,31 @@ struct Spline {
     double spanEnd(int j) const { return j + 1 < static_cast<int>(breaks.size()) ? breaks[j + 1] : 1.0; }
     void buildPowerForm()
     {
-        coef.resize(spanCount());
-        for (int j = 0; j < spanCount(); ++j) {
-            const double a = breaks[j], h = spanEnd(j) - a;
-            const int span = findSpan(kDegree, knots, a);
-            double d0[3][4], d1[3][4];
-            cubicBasisDerivatives(knots, span, a, d0);
-            cubicBasisDerivatives(knots, span, a + h, d1);
-            Vec3 c[3], e2 = Vec3::Zero();
-            for (int k = 0; k < 3; ++k) c[k].setZero();
+        // C, C', C'' at each span start from the B-spline basis; the cubic term from C'' at the
+        // span's end, which is the next span's start value (C2 across the simple breaks), so each
+        // break is evaluated once. Only the open curve's end (u = 1) needs its own evaluation;
+        // a closed curve's end is its start.
+        const int spans = spanCount();
+        coef.resize(spans);
+        std::vector<std::array<Vec3, 3>> at(spans + 1);
+        for (int j = 0; j <= spans; ++j) {
+            if (j == spans && closed) {
+                at[j] = at[0];
+                break;
+            }
+            const double a = j < spans ? breaks[j] : 1.0;
+            const int span = j < spans ? findSpan(kDegree, knots, a) : static_cast<int>(knots.size()) - kDegree - 2;
+            double d[3][4];
+            cubicBasisDerivatives(knots, span, a, d);
+            for (int k = 0; k < 3; ++k) at[j][k].setZero();
             for (int q = 0; q < 4; ++q) {
                 const Vec3& p = ctrl[span - kDegree + q];
-                for (int k = 0; k < 3; ++k) c[k] += d0[k][q] * p;
-                e2 += d1[2][q] * p;
+                for (int k = 0; k < 3; ++k) at[j][k] += d[k][q] * p;
             }
-            coef[j] = {c[0], c[1], 0.5 * c[2], h > 0.0 ? (e2 - c[2]) / (6.0 * h) : Vec3::Zero().eval()};
+        }
+        for (int j = 0; j < spans; ++j) {
+            const double h = spanEnd(j) - breaks[j];
+            coef[j] = {at[j][0], at[j][1], 0.5 * at[j][2], h > 0.0 ? ((at[j + 1][2] - at[j][2]) / (6.0 * h)).eval() : Vec3::Zero().eval()};
         }
     }
     // Point and first two derivatives at u.
@@ -89,12 +99,14 @@ struct Spline {
     mutable int hint = 0;
     int spanOf(double u) const
     {
-        const int count = spanCount();
-        for (int j = hint; j < std::min(hint + 2, count); ++j) {
-            if (u >= breaks[j] && (u < spanEnd(j) || j == count - 1) && (j > 0 || u >= 0.0)) return hint = j;
+        // Span j holds [b_j, b_{j+1}); the last span also holds u = 1 (open) or runs to the period
+        // end (closed), so only its start is tested.
+        const int last = spanCount() - 1;
+        for (int j = std::min(hint, last), e = std::min(hint + 1, last); j <= e; ++j) {
+            if (u >= breaks[j] && (j == last || u < breaks[j + 1])) return hint = j;
         }
         const auto it = std::upper_bound(breaks.begin(), breaks.end(), u);
-        return hint = std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, count - 1);
+        return hint = std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, last);
     }
 };
 

@@ -85,8 +85,9 @@ Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q)
 FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
 {
     FitResult res;
-    const double extent = strokeExtent(stroke.points);
     ConditioningOptions copt = options.conditioning;
+    // The extent is needed here only to relate an absolute tolerance to the merge distance.
+    const double extent = options.tolerance > 0.0 ? strokeExtent(stroke.points) : 0.0;
     if (options.tolerance > 0.0 && extent > 0.0) {
         copt.minSpacing = std::min(copt.minSpacing, 0.4 * options.tolerance / extent);
     }
