@@ -13,6 +13,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 using namespace sculptline::solvers;
@@ -111,6 +112,41 @@ void BM_SurfaceSweep(benchmark::State& state)
     state.counters["max_deviation"] = r.maxDeviation;
 }
 
+// A curve moved as its plane is when dragged: turned by `angle` about z and lifted by `dz`.
+Curve3d dragged(const Curve3d& c, double angle, double dz)
+{
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, Vec3::UnitZ()).toRotationMatrix();
+    std::vector<Vec3> pts;
+    for (const Vec3& p : c.points()) pts.push_back(R * p + Vec3(0, 0, dz));
+    return Curve3d(c.degree(), c.knots(), pts, c.weights());
+}
+
+// Per drag event while the profile's plane is dragged (the path stays).
+void BM_SurfaceSweepBuilderProfileDrag(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    const Curve3d profile = wavy(n, Vec3(0, -0.5, 0), Vec3(0, 0.5, 0), 0.0, 0.2);
+    const Curve3d path = wavy(n, Vec3(0, 0, 0), Vec3(6, 0, 2), 1.0, 1.0);
+    SweepBuilder builder(profile, path);
+    const Curve3d a = dragged(profile, 0.0, 0.01), b = dragged(profile, 0.0, -0.01);
+    int k = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(&builder.update((++k % 2) ? a : b, path));
+    state.counters["sections"] = builder.result().sections;
+}
+
+// Per drag event while the path's plane is dragged (the path moves rigidly).
+void BM_SurfaceSweepBuilderPathDrag(benchmark::State& state)
+{
+    const int n = static_cast<int>(state.range(0));
+    const Curve3d profile = wavy(n, Vec3(0, -0.5, 0), Vec3(0, 0.5, 0), 0.0, 0.2);
+    const Curve3d path = wavy(n, Vec3(0, 0, 0), Vec3(6, 0, 2), 1.0, 1.0);
+    SweepBuilder builder(profile, path);
+    const Curve3d a = dragged(path, 0.01, 0.01), b = dragged(path, -0.01, -0.01);
+    int k = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(&builder.update(profile, (++k % 2) ? a : b));
+    state.counters["sections"] = builder.result().sections;
+}
+
 void BM_SurfaceBoundaryRotation(benchmark::State& state)
 {
     const int n = static_cast<int>(state.range(0));
@@ -193,6 +229,8 @@ BENCHMARK(BM_SurfaceFillBuilderUpdate)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmar
 BENCHMARK(BM_SurfaceRevolve)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceExtrudePath)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceSweep)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceSweepBuilderProfileDrag)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceSweepBuilderPathDrag)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceBoundaryRotation)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceRailRotation)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceGordon)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);

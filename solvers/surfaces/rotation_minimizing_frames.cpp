@@ -25,6 +25,92 @@ Eigen::Matrix3d Frame::axes() const
     return m;
 }
 
+// Largest degree the fixed arrays of CurveJet hold (the kernel's basisFunctions has the same bound).
+constexpr int kMaxJetDegree = 31;
+
+CurveJet::CurveJet(const Curve3d& curve) : degree_(curve.degree()), knots_(curve.knots())
+{
+    if (degree_ > kMaxJetDegree) throw GeometryError("path: degree above " + std::to_string(kMaxJetDegree));
+    for (int i = 0; i < curve.pointCount(); ++i) {
+        const double w = curve.weight(i);
+        points_.emplace_back(w * curve.points()[i].x(), w * curve.points()[i].y(), w * curve.points()[i].z(), w);
+    }
+}
+
+void CurveJet::evaluate(double u, Eigen::Vector3d& x, Eigen::Vector3d& d1, Eigen::Vector3d& d2) const
+{
+    // The NURBS Book A2.3 with n = 2 derivatives.
+    const int p = degree_;
+    const KnotVector& U = knots_;
+    u = std::clamp(u, U[p], U[points_.size()]);
+    const int span = findSpan(p, U, u);
+    double ndu[kMaxJetDegree + 1][kMaxJetDegree + 1];
+    double left[kMaxJetDegree + 1], right[kMaxJetDegree + 1];
+    double ders[3][kMaxJetDegree + 1] = {};
+    double a[2][kMaxJetDegree + 1];
+    ndu[0][0] = 1.0;
+    for (int j = 1; j <= p; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            ndu[j][r] = right[r + 1] + left[j - r];
+            const double temp = ndu[r][j - 1] / ndu[j][r];
+            ndu[r][j] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        ndu[j][j] = saved;
+    }
+    for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
+    const int n = std::min(2, p);
+    for (int r = 0; r <= p; ++r) {
+        int s1 = 0, s2 = 1;
+        a[0][0] = 1.0;
+        for (int k = 1; k <= n; ++k) {
+            double d = 0.0;
+            const int rk = r - k, pk = p - k;
+            if (r >= k) {
+                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                d = a[s2][0] * ndu[rk][pk];
+            }
+            const int j1 = rk >= -1 ? 1 : -rk;
+            const int j2 = r - 1 <= pk ? k - 1 : p - r;
+            for (int j = j1; j <= j2; ++j) {
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+                d += a[s2][j] * ndu[rk + j][pk];
+            }
+            if (r <= pk) {
+                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                d += a[s2][k] * ndu[r][pk];
+            }
+            ders[k][r] = d;
+            std::swap(s1, s2);
+        }
+    }
+    double factor = p;
+    for (int k = 1; k <= n; ++k) {
+        for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
+        factor *= p - k;
+    }
+    Eigen::Vector4d A[3] = {Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()};
+    for (int j = 0; j <= p; ++j) {
+        const Eigen::Vector4d& P = points_[span - p + j];
+        for (int k = 0; k < 3; ++k) A[k] += ders[k][j] * P;
+    }
+    // C = A/w: C' = (A' - w' C) / w, C'' = (A'' - 2 w' C' - w'' C) / w (The NURBS Book eq. 4.8).
+    const double w = A[0].w();
+    x = A[0].head<3>() / w;
+    d1 = (A[1].head<3>() - A[1].w() * x) / w;
+    d2 = (A[2].head<3>() - 2.0 * A[1].w() * d1 - A[2].w() * x) / w;
+}
+
+Eigen::Vector3d CurveJet::derivative(double u) const
+{
+    Eigen::Vector3d x, d1, d2;
+    evaluate(u, x, d1, d2);
+    return d1;
+}
+
 Eigen::Vector3d unitTangent(const Curve3d& path, double u)
 {
     const Eigen::Vector3d d = path.derivatives(u, 1)[1];
@@ -52,15 +138,25 @@ Frame propagateFrame(const Frame& f, const Eigen::Vector3d& x1, const Eigen::Vec
 std::vector<Frame> rotationMinimizingFrames(const Curve3d& path, const std::vector<double>& params,
                                             const Eigen::Vector3d& initialNormal)
 {
+    return rotationMinimizingFrames(CurveJet(path), params, initialNormal);
+}
+
+std::vector<Frame> rotationMinimizingFrames(const CurveJet& path, const std::vector<double>& params,
+                                            const Eigen::Vector3d& initialNormal)
+{
     std::vector<Frame> frames;
     frames.reserve(params.size());
     if (params.empty()) return frames;
-    const Eigen::Vector3d t0 = unitTangent(path, params.front());
+    Eigen::Vector3d x, d1, d2;
+    path.evaluate(params.front(), x, d1, d2);
+    const Eigen::Vector3d t0 = d1.normalized();
     Eigen::Vector3d r0 = initialNormal - initialNormal.dot(t0) * t0;
     r0 = r0.norm() > 1e-12 * initialNormal.norm() ? Eigen::Vector3d(r0.normalized()) : t0.unitOrthogonal();
-    frames.push_back(Frame{path.evaluate(params.front()), t0, r0, t0.cross(r0)});
-    for (size_t k = 1; k < params.size(); ++k)
-        frames.push_back(propagateFrame(frames.back(), path.evaluate(params[k]), unitTangent(path, params[k])));
+    frames.push_back(Frame{x, t0, r0, t0.cross(r0)});
+    for (size_t k = 1; k < params.size(); ++k) {
+        path.evaluate(params[k], x, d1, d2);
+        frames.push_back(propagateFrame(frames.back(), x, d1.normalized()));
+    }
     return frames;
 }
 
@@ -71,22 +167,27 @@ void requireNoCusp(const Curve3d& path)
     std::vector<double> breaks{a};
     for (double k : interiorBreakpoints(path.degree(), path.knots())) breaks.push_back(k);
     breaks.push_back(b);
+    const CurveJet jet(path);
     double length = 0.0;
     Eigen::Vector3d prev = path.evaluate(a);
     std::vector<double> params;
+    std::vector<Eigen::Vector3d> derivatives;
     for (size_t s = 0; s + 1 < breaks.size(); ++s)
         for (int k = (s == 0 ? 0 : 1); k <= kCuspSamplesPerSpan; ++k) {
             const double u = breaks[s] + (breaks[s + 1] - breaks[s]) * k / kCuspSamplesPerSpan;
+            Eigen::Vector3d p, d1, d2;
+            jet.evaluate(u, p, d1, d2);
             params.push_back(u);
-            const Eigen::Vector3d p = path.evaluate(u);
+            derivatives.push_back(d1);
             length += (p - prev).norm();
             prev = p;
         }
     if (!(length > 0.0)) throw GeometryError("path: zero length, nothing to sweep along");
     const double meanSpeed = length / (b - a);
     Eigen::Vector3d lastTangent = Eigen::Vector3d::Zero();
-    for (double u : params) {
-        const Eigen::Vector3d d = path.derivatives(u, 1)[1];
+    for (size_t k = 0; k < params.size(); ++k) {
+        const double u = params[k];
+        const Eigen::Vector3d& d = derivatives[k];
         if (!(d.norm() > kMinRelativeSpeed * meanSpeed))
             throw GeometryError("path: cusp at u = " + std::to_string(u) +
                                 " (the tangent vanishes); a profile cannot be swept through it");

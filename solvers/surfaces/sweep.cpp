@@ -4,149 +4,317 @@
 #include "solvers/surfaces/rotation_minimizing_frames.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/SVD>
 #include <algorithm>
+#include <cmath>
 #include <memory>
+#include <optional>
 
 namespace sculptline::solvers::surfaces {
+
+using Vec3 = Eigen::Vector3d;
+
+/// The path sampled for sweeping: frames at every section and probe (kProbes per interval between
+/// sections), and at each section the path's derivative and the frames' angular velocity.
+struct SweepPathSamples {
+    double a = 0.0, b = 1.0;
+    std::vector<double> breaks;   // the path's distinct knots in the domain
+    std::vector<int> perSpan;     // sections per path knot span
+    std::vector<double> params;   // sections and probes
+    std::vector<int> spanOf;      // path knot span of each interval between sections
+    std::vector<Frame> frames;    // at params
+    std::vector<Vec3> d1, omega;  // at the sections, params[kProbes * k]
+    Vec3 x0 = Vec3::Zero();       // the path's start
+
+    int sections() const { return static_cast<int>(d1.size()); }
+    /// The samples of the path moved by x -> R x + t.
+    void transform(const Eigen::Matrix3d& R, const Vec3& t)
+    {
+        for (Frame& f : frames) {
+            f.origin = R * f.origin + t;
+            f.tangent = R * f.tangent;
+            f.normal = R * f.normal;
+            f.binormal = R * f.binormal;
+        }
+        for (Vec3& d : d1) d = R * d;
+        for (Vec3& w : omega) w = R * w;
+        x0 = R * x0 + t;
+    }
+};
 
 namespace {
 
 // Profile samples per control point when measuring the deviation between sections.
 constexpr int kProfileSamplesPerPoint = 2;
-// Sections per path knot span to start from (then doubled until the tolerance is met).
+// Sections per path knot span to start from.
 constexpr int kInitialPerSpan = 2;
 // Probes per interval between sections: the interpolation error peaks inside each interval, not
 // necessarily at its middle; quarter points bound it to within a few percent.
 constexpr int kProbes = 4;
+// The C1 cubic Hermite error falls as h^4 (de Boor, "A Practical Guide to Splines", ch. IV): a
+// span r times over tolerance needs r^(1/4) times the sections; the margin covers the estimate's
+// error (the probes, and the frames' own O(h^4) error) so that one more pass is rarely needed.
+constexpr double kGrowthMargin = 1.25;
+// A path whose control points a rigid motion maps onto the new ones to this fraction of its size
+// has moved rigidly (round-off of a plane's transform is ~1e-16).
+constexpr double kRigidRelative = 1e-10;
+
+std::shared_ptr<SweepPathSamples> samplePath(const CurveJet& jet, const std::vector<double>& breaks,
+                                             const std::vector<int>& perSpan)
+{
+    auto s = std::make_shared<SweepPathSamples>();
+    s->a = breaks.front();
+    s->b = breaks.back();
+    s->breaks = breaks;
+    s->perSpan = perSpan;
+    for (size_t span = 0; span + 1 < breaks.size(); ++span) {
+        const int m = kProbes * perSpan[span];
+        for (int k = 0; k < m; ++k) s->params.push_back(breaks[span] + (breaks[span + 1] - breaks[span]) * k / m);
+        for (int k = 0; k < perSpan[span]; ++k) s->spanOf.push_back(static_cast<int>(span));
+    }
+    s->params.push_back(s->b);
+    Vec3 x, d1, d2;
+    jet.evaluate(s->a, x, d1, d2);
+    s->x0 = x;
+    // Reference normal: any direction off the tangent; the swept shape does not depend on it (an
+    // RMF rotated about t0 rotates every frame alike).
+    s->frames = rotationMinimizingFrames(jet, s->params, d1.normalized().unitOrthogonal());
+    for (size_t k = 0; k < s->params.size(); k += kProbes) {
+        jet.evaluate(s->params[k], x, d1, d2);
+        // d/dt of x(t) + M(t)(P - x0) is x'(t) + ω × M(P - x0), ω = T × dT/dt, the angular
+        // velocity of a rotation-minimizing frame (no component along T; Bishop 1975).
+        const double speed = d1.norm();
+        const Vec3 T = d1 / speed;
+        const Vec3 dT = (d2 - d2.dot(T) * T) / speed;
+        s->d1.push_back(d1);
+        s->omega.push_back(T.cross(dT));
+    }
+    return s;
+}
+
+// The profile (clamped) with its samples for the deviation check, relative to the path's start.
+struct ProfileSamples {
+    const Curve3d& profile;
+    int n, h, pu;
+    std::vector<Vec3> points;  // profile(u_i) - x0
+    std::vector<int> span;
+    std::vector<double> basis;  // (pu + 1) per sample (The NURBS Book A2.1, A2.2)
+
+    ProfileSamples(const Curve3d& c, const Vec3& x0)
+        : profile(c), n(c.pointCount()), h(c.isRational() ? 4 : 3), pu(c.degree())
+    {
+        const int us = kProfileSamplesPerPoint * n;
+        basis.resize(static_cast<size_t>(us + 1) * (pu + 1));
+        for (int i = 0; i <= us; ++i) {
+            const double u = c.domainStart() + (c.domainEnd() - c.domainStart()) * i / us;
+            points.push_back(c.evaluate(u) - x0);
+            span.push_back(findSpan(pu, c.knots(), u));
+            basisFunctions(span.back(), u, pu, c.knots(), &basis[static_cast<size_t>(i) * (pu + 1)]);
+        }
+    }
+};
+
+struct Assembly {
+    ControlMatrix net;
+    KnotVector knotsV;
+    std::vector<double> spanDeviation;  // per path knot span
+    double deviation = 0.0;
+};
+
+// The C1 cubic net (double knots at the inner sections: S_k, then S_k ± h/3·S'_k) and its
+// deviation from the exact sweep at the probes.
+Assembly assemble(const ProfileSamples& P, const SweepPathSamples& S)
+{
+    const int count = S.sections();
+    const int n = P.n, h = P.h;
+    const double a = S.a, b = S.b;
+    const Eigen::Matrix3d base = S.frames.front().axes().transpose();
+    Assembly out;
+    out.net.resize(2 * count, static_cast<Eigen::Index>(n) * h);
+    out.knotsV.assign(4, 0.0);
+    std::vector<double> v(count);
+    for (int k = 0; k < count; ++k) v[k] = (S.params[kProbes * k] - a) / (b - a);
+    v.back() = 1.0;
+    for (int k = 1; k + 1 < count; ++k) out.knotsV.insert(out.knotsV.end(), 2, v[k]);
+    out.knotsV.insert(out.knotsV.end(), 4, 1.0);
+    std::vector<Vec3> rel(n);
+    for (int k = 0; k < count; ++k) {
+        const Frame& f = S.frames[kProbes * k];
+        const Eigen::Matrix3d M = f.axes() * base;
+        const double hPrev = k > 0 ? v[k] - v[k - 1] : 0.0;
+        const double hNext = k + 1 < count ? v[k + 1] - v[k] : 0.0;
+        for (int i = 0; i < n; ++i) {
+            const double w = P.profile.weight(i);
+            const Vec3 r = M * (P.profile.points()[i] - S.x0);
+            const Vec3 p = f.origin + r;
+            const Vec3 dp = (b - a) * (S.d1[k] + S.omega[k].cross(r));  // d/dv
+            const auto put = [&](int row, const Vec3& x) {
+                out.net.block(row, static_cast<Eigen::Index>(i) * h, 1, 3) = w * x.transpose();
+                if (h == 4) out.net(row, static_cast<Eigen::Index>(i) * h + 3) = w;
+            };
+            // Rows: S_0, S_0 + h0/3 S'_0, S_1 - h0/3 S'_1, S_1 + h1/3 S'_1, ..., S_last.
+            if (k == 0) {
+                put(0, p);
+                put(1, p + hNext / 3.0 * dp);
+            } else if (k + 1 == count) {
+                put(2 * k, p - hPrev / 3.0 * dp);
+                put(2 * k + 1, p);
+            } else {
+                put(2 * k, p - hPrev / 3.0 * dp);
+                put(2 * k + 1, p + hNext / 3.0 * dp);
+            }
+        }
+    }
+    out.spanDeviation.assign(S.breaks.size() - 1, 0.0);
+    Eigen::RowVectorXd iso(out.net.cols());
+    const int pu = P.pu;
+    for (int k = 0; k + 1 < count; ++k) {
+        double& worst = out.spanDeviation[S.spanOf[k]];
+        for (int q = 1; q < kProbes; ++q) {
+            const Frame& f = S.frames[kProbes * k + q];
+            const Eigen::Matrix3d M = f.axes() * base;
+            const double vm = (S.params[kProbes * k + q] - a) / (b - a);
+            // The probe's iso-curve rows (v basis applied to the net), then the fixed u samples.
+            const int vSpan = findSpan(3, out.knotsV, vm);
+            double nv[4];
+            basisFunctions(vSpan, vm, 3, out.knotsV, nv);
+            iso.noalias() = nv[0] * out.net.row(vSpan - 3) + nv[1] * out.net.row(vSpan - 2) +
+                            nv[2] * out.net.row(vSpan - 1) + nv[3] * out.net.row(vSpan);
+            for (size_t i = 0; i < P.points.size(); ++i) {
+                const double* N = &P.basis[i * (pu + 1)];
+                Eigen::Vector4d hp = Eigen::Vector4d::Zero();
+                for (int c = 0; c <= pu; ++c) {
+                    const Eigen::Index col = static_cast<Eigen::Index>(P.span[i] - pu + c) * h;
+                    hp.head<3>() += N[c] * iso.segment<3>(col).transpose();
+                    hp(3) += N[c] * (h == 4 ? iso(col + 3) : 1.0);
+                }
+                const Vec3 x = hp.head<3>() / hp(3);
+                worst = std::max(worst, (x - (f.origin + M * P.points[i])).norm());
+            }
+        }
+        out.deviation = std::max(out.deviation, worst);
+    }
+    return out;
+}
+
+double sweepTolerance(const Curve3d& profile, const Curve3d& path, const SweepOptions& options)
+{
+    const double size = std::max(profile.controlSize(), path.controlSize());
+    return options.tolerance > 0.0 ? options.tolerance : kDefaultSweepRelative * size;
+}
+
+SweepResult sweepResult(const Curve3d& profile, Assembly&& A, int sections, double tolerance)
+{
+    return SweepResult{Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(),
+                                                  std::move(A.knotsV), A.net, profile.isRational()),
+                       A.deviation, sections, tolerance};
+}
+
+SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options,
+                       std::shared_ptr<SweepPathSamples>& samples)
+{
+    requireNoCusp(path);
+    const double tolerance = sweepTolerance(profile, path, options);
+    const CurveJet jet(path);
+    // Sections at equally spaced parameters per path knot span, so every path knot (where the
+    // exact sweep is only C1) is a section: C1 in v, error O(h^4) on each piece instead of the
+    // O(h^2) a C2 interpolant gets across the C1 knots.
+    std::vector<double> breaks{path.domainStart()};
+    for (double k : interiorBreakpoints(path.degree(), path.knots())) breaks.push_back(k);
+    breaks.push_back(path.domainEnd());
+    const int spans = static_cast<int>(breaks.size()) - 1;
+    const int budget = std::max(spans, options.maxSections - 1);  // intervals between sections
+    std::vector<int> perSpan(spans, std::max(1, std::min(kInitialPerSpan, budget / spans)));
+    for (;;) {
+        samples = samplePath(jet, breaks, perSpan);
+        const ProfileSamples P(profile, samples->x0);
+        Assembly A = assemble(P, *samples);
+        // Grow the spans over tolerance by the h^4 estimate, within the budget.
+        std::vector<int> next = perSpan;
+        for (int s = 0; s < spans; ++s)
+            if (A.spanDeviation[s] > tolerance) {
+                const double factor = std::pow(kGrowthMargin * A.spanDeviation[s] / tolerance, 0.25);
+                next[s] = std::max(perSpan[s] + 1, static_cast<int>(std::ceil(perSpan[s] * factor)));
+            }
+        int total = 0, wanted = 0;
+        for (int s = 0; s < spans; ++s) {
+            total += perSpan[s];
+            wanted += next[s];
+        }
+        if (wanted > budget && wanted > total) {
+            // Share what the budget allows in proportion to each span's growth.
+            const double share = static_cast<double>(budget - total) / (wanted - total);
+            for (int s = 0; s < spans; ++s) next[s] = perSpan[s] + static_cast<int>(std::floor((next[s] - perSpan[s]) * share));
+        }
+        if (A.deviation <= tolerance || next == perSpan) return sweepResult(profile, std::move(A), samples->sections(), tolerance);
+        perSpan = next;
+    }
+}
+
+// The rigid motion x -> R x + t taking `from`'s control points onto `to`'s (Kabsch's SVD fit), if
+// the two curves have the same knots and weights and the fit is exact to kRigidRelative.
+std::optional<std::pair<Eigen::Matrix3d, Vec3>> rigidMotion(const Curve3d& from, const Curve3d& to)
+{
+    if (from.degree() != to.degree() || from.knots() != to.knots() || from.weights() != to.weights()) return std::nullopt;
+    const std::vector<Vec3>& p = from.points();
+    const std::vector<Vec3>& q = to.points();
+    if (p == q) return std::make_pair(Eigen::Matrix3d(Eigen::Matrix3d::Identity()), Vec3(Vec3::Zero()));
+    Vec3 cp = Vec3::Zero(), cq = Vec3::Zero();
+    for (size_t k = 0; k < p.size(); ++k) {
+        cp += p[k];
+        cq += q[k];
+    }
+    cp /= static_cast<double>(p.size());
+    cq /= static_cast<double>(q.size());
+    Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+    for (size_t k = 0; k < p.size(); ++k) H += (p[k] - cp) * (q[k] - cq).transpose();
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d D = Eigen::Matrix3d::Identity();
+    D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+    const Eigen::Matrix3d R = svd.matrixV() * D * svd.matrixU().transpose();
+    const Vec3 t = cq - R * cp;
+    const double size = std::max(from.controlSize(), to.controlSize());
+    for (size_t k = 0; k < p.size(); ++k)
+        if (!((R * p[k] + t - q[k]).norm() <= kRigidRelative * size)) return std::nullopt;
+    return std::make_pair(R, t);
+}
 
 }  // namespace
 
 SweepResult sweep(const Curve3d& input, const Curve3d& inputPath, const SweepOptions& options)
 {
-    const Curve3d profile = input.clamped();
+    std::shared_ptr<SweepPathSamples> samples;
+    return buildSweep(input.clamped(), inputPath.clamped(), options, samples);
+}
+
+SweepBuilder::SweepBuilder(const Curve3d& profile, const Curve3d& path, const SweepOptions& options) : options_(options)
+{
+    reset(profile, path);
+}
+
+const SweepResult& SweepBuilder::reset(const Curve3d& profile, const Curve3d& path)
+{
+    auto clampedPath = std::make_unique<Curve3d>(path.clamped());
+    result_ = std::make_unique<SweepResult>(buildSweep(profile.clamped(), *clampedPath, options_, samples_));
+    path_ = std::move(clampedPath);
+    return *result_;
+}
+
+const SweepResult& SweepBuilder::update(const Curve3d& inputProfile, const Curve3d& inputPath)
+{
     const Curve3d path = inputPath.clamped();
-    requireNoCusp(path);
-    const double size = std::max(profile.controlSize(), path.controlSize());
-    const double tolerance = options.tolerance > 0.0 ? options.tolerance : kDefaultSweepRelative * size;
-    const double a = path.domainStart();
-    const double b = path.domainEnd();
-    const int n = profile.pointCount();
-    const int h = profile.isRational() ? 4 : 3;
-
-    // Reference normal: the profile's principal direction off the tangent would do as well; the
-    // swept shape does not depend on it (an RMF rotated about t0 rotates every frame alike).
-    const Eigen::Vector3d n0 = unitTangent(path, a).unitOrthogonal();
-    const Eigen::Vector3d x0 = path.evaluate(a);
-
-    std::vector<double> uSamples;
-    const int us = kProfileSamplesPerPoint * n;
-    for (int i = 0; i <= us; ++i) uSamples.push_back(profile.domainStart() + (profile.domainEnd() - profile.domainStart()) * i / us);
-    std::vector<Eigen::Vector3d> profilePts;
-    for (double u : uSamples) profilePts.push_back(profile.evaluate(u) - x0);
-    // u basis at the samples, fixed for every probe (The NURBS Book A2.1, A2.2).
-    const int pu = profile.degree();
-    std::vector<int> uSpan;
-    std::vector<std::vector<double>> uBasis;
-    for (double u : uSamples) {
-        uSpan.push_back(findSpan(pu, profile.knots(), u));
-        uBasis.emplace_back(pu + 1);
-        basisFunctions(uSpan.back(), u, pu, profile.knots(), uBasis.back().data());
+    const std::optional<std::pair<Eigen::Matrix3d, Vec3>> motion = rigidMotion(*path_, path);
+    if (!motion) return reset(inputProfile, inputPath);
+    if (!motion->first.isIdentity(0.0) || !motion->second.isZero(0.0)) {
+        samples_->transform(motion->first, motion->second);
+        *path_ = path;
     }
-
-    // Sections at m equally spaced parameters per path knot span (so every path knot, where the
-    // exact sweep is only C1, is a section), joined by cubic Hermite pieces with the exact
-    // derivative of the moving section: C1 in v, error O(h^4) on each piece (de Boor, "A Practical
-    // Guide to Splines", ch. IV) instead of the O(h^2) a C2 interpolant gets across the C1 knots.
-    std::vector<double> breaks{a};
-    for (double k : interiorBreakpoints(path.degree(), path.knots())) breaks.push_back(k);
-    breaks.push_back(b);
-    const int spans = static_cast<int>(breaks.size()) - 1;
-    int perSpan = std::max(1, std::min(kInitialPerSpan, (options.maxSections - 1) / spans));
-    std::unique_ptr<SweepResult> best;
-    for (;;) {
-        const int count = spans * perSpan + 1;
-        // Frames at kProbes points per interval: every kProbes-th is a section, the others (quarter
-        // points between sections) measure the deviation; one frame sweep serves both.
-        std::vector<double> params;
-        for (int s0 = 0; s0 < spans; ++s0)
-            for (int k = 0; k < kProbes * perSpan; ++k)
-                params.push_back(breaks[s0] + (breaks[s0 + 1] - breaks[s0]) * k / (kProbes * perSpan));
-        params.push_back(b);
-        const std::vector<Frame> frames = rotationMinimizingFrames(path, params, n0);
-        const Eigen::Matrix3d base = frames.front().axes().transpose();
-        // Control rows of the C1 cubic (double knots at the inner sections): S_k, then S_k ± h/3·S'_k.
-        ControlMatrix net(2 * count, static_cast<Eigen::Index>(n) * h);
-        KnotVector knotsV(4, 0.0);
-        std::vector<double> v(count);
-        for (int k = 0; k < count; ++k) v[k] = (params[kProbes * k] - a) / (b - a);
-        v.back() = 1.0;
-        for (int k = 1; k + 1 < count; ++k) knotsV.insert(knotsV.end(), 2, v[k]);
-        knotsV.insert(knotsV.end(), 4, 1.0);
-        for (int k = 0; k < count; ++k) {
-            const double t = params[kProbes * k];
-            const Frame& f = frames[kProbes * k];
-            const Eigen::Matrix3d M = f.axes() * base;
-            // d/dt of x(t) + M(t)(P - x0): x'(t) + ω × M(P - x0), ω = T × dT/dt, the angular
-            // velocity of a rotation-minimizing frame (no component along T; Bishop 1975).
-            const auto d = path.derivatives(t, 2);
-            const double speed = d[1].norm();
-            const Eigen::Vector3d T = d[1] / speed;
-            const Eigen::Vector3d dT = (d[2] - d[2].dot(T) * T) / speed;
-            const Eigen::Vector3d omega = T.cross(dT);
-            const double hPrev = k > 0 ? v[k] - v[k - 1] : 0.0;
-            const double hNext = k + 1 < count ? v[k + 1] - v[k] : 0.0;
-            for (int i = 0; i < n; ++i) {
-                const double w = profile.weight(i);
-                const Eigen::Vector3d rel = M * (profile.points()[i] - x0);
-                const Eigen::Vector3d p = f.origin + rel;
-                const Eigen::Vector3d dp = (b - a) * (d[1] + omega.cross(rel));  // d/dv
-                const auto put = [&](int row, const Eigen::Vector3d& x) {
-                    net.block(row, static_cast<Eigen::Index>(i) * h, 1, 3) = w * x.transpose();
-                    if (h == 4) net(row, static_cast<Eigen::Index>(i) * h + 3) = w;
-                };
-                // Row layout: S_0, S_0 + h0/3 S'_0, S_1 - h0/3 S'_1, S_1 + h1/3 S'_1, ..., S_last.
-                if (k == 0) {
-                    put(0, p);
-                    put(1, p + hNext / 3.0 * dp);
-                } else if (k + 1 == count) {
-                    put(2 * k, p - hPrev / 3.0 * dp);
-                    put(2 * k + 1, p);
-                } else {
-                    put(2 * k, p - hPrev / 3.0 * dp);
-                    put(2 * k + 1, p + hNext / 3.0 * dp);
-                }
-            }
-        }
-        Surface3d s = Surface3d::fromGroupedRows(Direction::V, profile.degree(), 3, profile.knots(), knotsV, net,
-                                                 profile.isRational());
-        double deviation = 0.0;
-        for (int k = 0; k + 1 < count; ++k)
-            for (int q = 1; q < kProbes; ++q) {
-                const Frame& f = frames[kProbes * k + q];
-                const Eigen::Matrix3d M = f.axes() * base;
-                const double vm = (params[kProbes * k + q] - a) / (b - a);
-                // The probe's iso-curve rows (v basis applied to the net), then the fixed u samples.
-                const int vSpan = findSpan(3, knotsV, vm);
-                double nv[4];
-                basisFunctions(vSpan, vm, 3, knotsV, nv);
-                Eigen::RowVectorXd iso = Eigen::RowVectorXd::Zero(net.cols());
-                for (int r = 0; r < 4; ++r) iso += nv[r] * net.row(vSpan - 3 + r);
-                for (size_t i = 0; i < uSamples.size(); ++i) {
-                    Eigen::Vector4d hp = Eigen::Vector4d::Zero();
-                    for (int c = 0; c <= pu; ++c) {
-                        const Eigen::Index col = static_cast<Eigen::Index>(uSpan[i] - pu + c) * h;
-                        hp.head<3>() += uBasis[i][c] * iso.segment(col, 3).transpose();
-                        hp(3) += uBasis[i][c] * (h == 4 ? iso(col + 3) : 1.0);
-                    }
-                    const Eigen::Vector3d x = hp.head<3>() / hp(3);
-                    deviation = std::max(deviation, (x - (f.origin + M * profilePts[i])).norm());
-                }
-            }
-        best = std::make_unique<SweepResult>(SweepResult{std::move(s), deviation, count, tolerance});
-        if (deviation <= tolerance || spans * 2 * perSpan + 1 > options.maxSections) break;
-        perSpan *= 2;  // keeps the old sections (their parameters) and adds the midpoints
-    }
-    return *best;
+    const Curve3d profile = inputProfile.clamped();
+    const double tolerance = sweepTolerance(profile, path, options_);
+    Assembly A = assemble(ProfileSamples(profile, samples_->x0), *samples_);
+    if (A.deviation > tolerance) return reset(inputProfile, inputPath);
+    result_ = std::make_unique<SweepResult>(sweepResult(profile, std::move(A), samples_->sections(), tolerance));
+    return *result_;
 }
 
 }  // namespace sculptline::solvers::surfaces

@@ -4,6 +4,8 @@
 // sweeps by skinning sampled instances of the profile).
 #include "solvers/bspline/bspline_surface.h"
 
+#include <memory>
+
 namespace sculptline::solvers::surfaces {
 
 struct SweepOptions {
@@ -28,10 +30,33 @@ struct SweepResult {
 /// (proportional to the path's parameter). The profile is taken as it lies at the path's start
 /// and moved rigidly with the path's rotation-minimizing frame: section v is
 /// x(v) + F(v) F(0)^T (profile - x(0)), F = (t, r, s). Sections at path parameters are exact
-/// (control points transformed rigidly); between them the surface interpolates cubically across;
-/// the number of sections doubles until the deviation, measured at the quarter points between
-/// sections (profile samples 1/(2n) apart), is within tolerance.
+/// (control points transformed rigidly); between them the surface is a C1 cubic Hermite in v with
+/// the sections' exact v-derivatives. The deviation is measured at the quarter points between
+/// sections (profile samples 1/(2n) apart) for each path knot span; a span over tolerance gets
+/// (r·1.25)^(1/4) times its sections (r = deviation / tolerance; the Hermite error falls as h^4)
+/// until every span is within tolerance or maxSections is reached.
 /// @throws GeometryError "path: ..." for a path with a cusp or no length.
 SweepResult sweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options = {});
+
+struct SweepPathSamples;  // sweep.cpp: frames and derivatives of the path at the sections and probes
+
+/// Incremental sweep for dragging (a curve's plane moves, so profile or path moves rigidly): the
+/// path's frames, section parameters and derivatives are kept; update() maps them by the path's
+/// rigid motion (rotation-minimizing frames are equivariant: F' = R F) and re-transforms the
+/// profile's control points, then re-measures the deviation. A path that changed shape, or a
+/// deviation over tolerance, falls back to a full build (reset).
+class SweepBuilder {
+public:
+    SweepBuilder(const Curve3d& profile, const Curve3d& path, const SweepOptions& options = {});
+    const SweepResult& update(const Curve3d& profile, const Curve3d& path);
+    const SweepResult& reset(const Curve3d& profile, const Curve3d& path);
+    const SweepResult& result() const { return *result_; }
+
+private:
+    SweepOptions options_;
+    std::unique_ptr<Curve3d> path_;  // clamped, as the samples were taken (or moved to)
+    std::shared_ptr<SweepPathSamples> samples_;
+    std::unique_ptr<SweepResult> result_;
+};
 
 }  // namespace sculptline::solvers::surfaces

@@ -109,3 +109,101 @@ TEST(RotationMinimizingFrames, GivenHelix_WhenPropagated_ThenOrthonormalAndAngul
         EXPECT_LT(std::abs(twist), 1e-5) << k;
     }
 }
+
+TEST(CurveJet, GivenCubicAndRationalCurves_WhenEvaluated_ThenMatchesTheKernelsDerivatives)
+{
+    // Reference: Curve3d::derivatives (The NURBS Book A3.2 / A4.2), at knots and between them.
+    const Curve3d helix = helixPath();
+    const Curve3d circle = fullCircle(Vec3(1, 2, 3), 2.0, Vec3::UnitX(), Vec3(0, 0.6, 0.8));
+    const Curve3d line(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 2, 3}});
+    for (const Curve3d& c : {helix, circle, line}) {
+        const CurveJet jet(c);
+        for (int k = 0; k <= 40; ++k) {
+            const double u = c.domainStart() + (c.domainEnd() - c.domainStart()) * k / 40.0;
+            Vec3 x, d1, d2;
+            jet.evaluate(u, x, d1, d2);
+            const auto ref = c.derivatives(u, 2);
+            const double scale = 1.0 + ref[1].norm() + ref[2].norm();
+            EXPECT_LT((x - ref[0]).norm(), kExact);
+            EXPECT_LT((d1 - ref[1]).norm(), kExact * scale) << u;
+            EXPECT_LT((d2 - ref[2]).norm(), kExact * scale) << u;
+        }
+    }
+}
+
+namespace {
+
+// The curve moved by the rotation `angle` about `axis` through the origin, then by `shift` (a
+// dragged plane moves its curves this way).
+Curve3d movedRigidly(const Curve3d& c, const Vec3& axis, double angle, const Vec3& shift)
+{
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    std::vector<Vec3> pts;
+    for (const Vec3& p : c.points()) pts.push_back(R * p + shift);
+    return Curve3d(c.degree(), c.knots(), pts, c.weights());
+}
+
+// Largest distance between two surfaces on a grid of their common domain.
+double gridGap(const Surface3d& a, const Surface3d& b)
+{
+    double worst = 0.0;
+    for (int i = 0; i <= 20; ++i)
+        for (int j = 0; j <= 60; ++j) worst = std::max(worst, (a.evaluate(i / 20.0, j / 60.0) - b.evaluate(i / 20.0, j / 60.0)).norm());
+    return worst;
+}
+
+}  // namespace
+
+TEST(SweepBuilder, GivenProfileOrPathMovedRigidly_WhenUpdated_ThenSameSweepAsAFreshBuild)
+{
+    // Given: a helix sweep built once.
+    const Curve3d path = helixPath();
+    const Curve3d profile = profileAtStart(path);
+    const SweepOptions options{1e-4, 513};
+    SweepBuilder builder(profile, path, options);
+
+    // When: the profile's plane turns a little about the path's start (the profile moves off the
+    // normal plane), then the path's plane is dragged (the path moves rigidly).
+    const Curve3d tilted = movedRigidly(profile, Vec3(1, 1, 0), 0.05, Vec3(0, 0, 0.02));
+    const SweepResult afterProfile = builder.update(tilted, path);
+    const Curve3d movedPath = movedRigidly(path, Vec3(0, 1, 2), 0.3, Vec3(0.5, -1, 2));
+    const SweepResult afterPath = builder.update(tilted, movedPath);
+
+    // Then: each update is within tolerance of the exact sweep, as a fresh build is, so the two
+    // differ by at most twice the tolerance; the start section is the profile exactly.
+    const SweepResult freshProfile = sweep(tilted, path, options);
+    const SweepResult freshPath = sweep(tilted, movedPath, options);
+    EXPECT_LE(afterProfile.maxDeviation, options.tolerance);
+    EXPECT_LE(afterPath.maxDeviation, options.tolerance);
+    EXPECT_LT(gridGap(afterProfile.surface, freshProfile.surface), 2 * options.tolerance);
+    EXPECT_LT(gridGap(afterPath.surface, freshPath.surface), 2 * options.tolerance);
+    EXPECT_LT(isoDeviation(afterPath.surface, true, 0.0, tilted), kExact);
+}
+
+TEST(Sweep, GivenWavyPath_WhenSwept_ThenSpansGetSectionsByTheirOwnDeviation)
+{
+    // Given: a path that is straight on its first half and wavy on its second.
+    std::vector<Vec3> pts;
+    for (int k = 0; k < 16; ++k) pts.push_back(k < 8 ? Vec3(k, 0, 0) : Vec3(k, std::sin(1.7 * k), std::cos(1.3 * k) - std::cos(1.3 * 8)));
+    const Curve3d path = cubic(pts);
+    const Curve3d profile = fullCircle(path.evaluate(0.0), 0.3, Vec3::UnitY(), Vec3::UnitZ());
+
+    // When
+    const SweepResult r = sweep(profile, path, SweepOptions{1e-4, 2049});
+
+    // Then: within tolerance, with fewer sections than uniform refinement to the wavy part's
+    // density would need (13 spans x the wavy spans' sections).
+    EXPECT_LE(r.maxDeviation, 1e-4);
+    const CurveProjector<3> onPath(path);
+    for (int j = 0; j <= 200; ++j)
+        for (int i = 0; i <= 16; ++i)
+            EXPECT_NEAR(onPath.project(r.surface.evaluate(i / 16.0, j / 200.0)).distance, 0.3, 1e-4 + kExact);
+    std::vector<double> knots = r.surface.knotsV();
+    knots.erase(std::unique(knots.begin(), knots.end()), knots.end());
+    double shortest = 1.0, longest = 0.0;
+    for (size_t k = 0; k + 1 < knots.size(); ++k) {
+        shortest = std::min(shortest, knots[k + 1] - knots[k]);
+        longest = std::max(longest, knots[k + 1] - knots[k]);
+    }
+    EXPECT_GT(longest, 2.0 * shortest);
+}
