@@ -12,7 +12,36 @@ constexpr double kQuarterTurn = kPi / 2;
 
 Eigen::Vector3d lift(const StrokeGeometry& g, const Point2& p) { return g.origin + p.x() * g.axisU + p.y() * g.axisV; }
 
-// Degree-1 B-spline through the vertices (closed: back to the first), uniform knots on [0, 1].
+// A clamped curve whose last point repeats its first, as the equivalent closed (periodic) curve in the
+// unwrapped convention of BSplineCurve: per period the knots are the clamped vector's start knot
+// p times and its interior knots (N values for N distinct points), U_i = L[(i-1) mod N] + T
+// floor((i-1)/N), and the first p points (and weights) repeat at the end. On each span the basis
+// functions see the same knots U_1..U_2p as the clamped curve's, so the shape is unchanged; only the
+// curve now says that it is closed (it wraps, and the JSON form carries "closed": true).
+Curve3d closeLoop(const Curve3d& c)
+{
+    const int p = c.degree();
+    const int n = c.pointCount() - 1;  // distinct points Q_0..Q_{n-1}
+    const KnotVector& k = c.knots();
+    const double period = c.domainEnd() - c.domainStart();
+    std::vector<double> per(k.begin() + 1, k.begin() + 1 + n);
+    KnotVector u;
+    for (int i = 0; i <= n + 2 * p; ++i) {
+        const int j = i - 1;
+        const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
+        u.push_back(per[j - q * n] + q * period);
+    }
+    std::vector<Eigen::Vector3d> pts(c.points().begin(), c.points().end() - 1);
+    std::vector<double> w;
+    if (c.isRational()) w.assign(c.weights().begin(), c.weights().end() - 1);
+    for (int i = 0; i < p; ++i) {
+        pts.push_back(pts[i % n]);
+        if (c.isRational()) w.push_back(w[i % n]);
+    }
+    return Curve3d(p, u, pts, w, true);
+}
+
+// Degree-1 B-spline through the vertices, uniform knots on [0, 1]; closed: a periodic polygon.
 Curve3d polylineCurve(const StrokeGeometry& g, std::vector<Point2> v, bool closed)
 {
     if (closed) v.push_back(v.front());
@@ -22,7 +51,8 @@ Curve3d polylineCurve(const StrokeGeometry& g, std::vector<Point2> v, bool close
     const int n = static_cast<int>(pts.size());
     for (int i = 0; i < n; ++i) knots.push_back(double(i) / (n - 1));
     knots.push_back(1.0);
-    return Curve3d(1, knots, pts);
+    const Curve3d open(1, knots, pts);
+    return closed ? closeLoop(open) : open;
 }
 
 double angleOf(const Point2& v) { return std::atan2(v.y(), v.x()); }
@@ -140,7 +170,9 @@ QuadShape classifyQuad(const std::vector<Point2>& v, const RecognizeOptions& o)
     }
     q.right = worstAngle <= o.rightAngle;
     q.equal = (smax - smin) / (ssum / 4) <= o.equalSides;
-    const double orient = std::abs(quadOrientation(v));  // 0 = axis-aligned, pi/4 = rotated by 45 degrees
+    // The one orientation-dependent test of the recognizer (ShapeKind): square vs diamond is decided
+    // by the sides' angle to the plane's axes, modulo 90 degrees. 0 = axis-aligned, pi/4 = on a corner.
+    const double orient = std::abs(quadOrientation(v));
     q.axisAligned = orient < kPi / 8;
     return q;
 }
@@ -253,7 +285,10 @@ Curve3d makeArc(const StrokeGeometry& g, const Point2& c, double r, double a0, d
         if (i + 1 < arcs) knots.insert(knots.end(), 2, double(i + 1) / arcs);
     }
     knots.insert(knots.end(), 3, 1.0);
-    if (arcs == 4 && std::abs(std::abs(total) - 2 * kPi) < 1e-12) pts.back() = pts.front();  // exact closure
+    if (arcs == 4 && std::abs(std::abs(total) - 2 * kPi) < 1e-12) {  // a full turn: exact closure, periodic
+        pts.back() = pts.front();
+        return closeLoop(Curve3d(2, knots, pts, weights));
+    }
     return Curve3d(2, knots, pts, weights);
 }
 
@@ -344,7 +379,7 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         for (const auto& p : circle.points()) {
             pts.push_back(lift(g, Point2(rec.ellipse.center + rec.ellipse.a * p.x() * ua + rec.ellipse.b * p.y() * ub)));
         }
-        rec.regularized = Curve3d(2, circle.knots(), pts, circle.weights());
+        rec.regularized = Curve3d(2, circle.knots(), pts, circle.weights(), true);  // closed like the circle
         break;
     }
     case ShapeKind::Square:

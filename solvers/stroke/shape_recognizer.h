@@ -8,6 +8,13 @@
 
 namespace sculptline::solvers::stroke {
 
+/// The classes of thesis Fig. 3-3. All are invariant under rotation of the stroke in its plane except
+/// one pair, by definition: Square and Diamond differ only in orientation relative to the drawing
+/// plane's axes (StrokeGeometry::axisU/axisV; the x and y axes for a planar stroke). A square whose
+/// sides run within 22.5 degrees of the axes is a Square; the same square standing on a corner is a
+/// Diamond. A rhombus that is not right-angled is a Diamond at any orientation. So square/diamond
+/// answers are invariant under rotations by multiples of 90 degrees only (shape_recognition_test,
+/// GivenRotatedStrokes_WhenRecognized_ThenSameClassExceptSquareDiamondOffQuarterTurns).
 enum class ShapeKind { Line, Arc, Circle, Ellipse, Triangle, Rectangle, Square, Diamond, Polyline, Freeform };
 
 /// "line", "arc", ... as in ../shared/interfaces.md (`recognize`).
@@ -61,6 +68,8 @@ struct Recognition {
     std::vector<ShapeCandidate> candidates;  ///< ranked, best first
     /// The regularized primitive (exact rational circle/arc/ellipse of degree 2, polygons and lines
     /// of degree 1), or the fitted cubic for freeform shapes / when regularization is declined.
+    /// Circles, ellipses, triangles, squares, rectangles, diamonds and closed polylines are closed
+    /// (periodic) curves: isClosed() is true and their JSON form carries "closed": true.
     Curve3d regularized{1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}};
     StrokeGeometry geometry;
     // Primitive parameters of the best candidate (plane coordinates), for composite reasoning.
@@ -74,7 +83,8 @@ struct Recognition {
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& options = {});
 
 /// An exact circular arc as a rational quadratic B-spline (The NURBS Book A7.1): centre, radius
-/// and angles in the plane frame of `g`; a full turn gives the 9-point closed circle.
+/// and angles in the plane frame of `g`; a full turn gives the 9-point circle as a closed (periodic)
+/// curve: 8 distinct points, the first two repeated (isClosed() true).
 Curve3d makeArc(const StrokeGeometry& g, const Point2& center, double radius, double a0, double a1);
 
 }  // namespace sculptline::solvers::stroke

@@ -120,6 +120,71 @@ TEST(ShapeRecognition, GivenSquareStroke_WhenRegularized_ThenEqualSidesAndRightA
     }
 }
 
+TEST(ShapeRecognition, GivenClosedPrimitives_WhenRegularized_ThenClosedCurvesThatWrap)
+{
+    std::mt19937 rng(7);
+    const std::vector<ShapeKind> closedKinds = {ShapeKind::Circle,    ShapeKind::Ellipse, ShapeKind::Triangle,
+                                                ShapeKind::Rectangle, ShapeKind::Square,  ShapeKind::Diamond};
+    for (ShapeKind kind : closedKinds) {
+        DrawOptions d;
+        d.noise = 0.25;
+        const Recognition r = recognizeShape(fitStroke(draw(makeShape(kind, rng), d)));
+
+        ASSERT_EQ(r.kind, kind) << shapeName(kind);
+        EXPECT_TRUE(r.regularized.isClosed()) << shapeName(kind);
+        // Periodic: the parameter wraps, and the curve meets itself at the seam.
+        const double t0 = r.regularized.domainStart(), t1 = r.regularized.domainEnd();
+        const double size = r.geometry.extent;
+        EXPECT_LE((r.regularized.evaluate(t0) - r.regularized.evaluate(t1)).norm(), 1e-9 * size) << shapeName(kind);
+        const double mid = t0 + 0.3 * (t1 - t0);
+        EXPECT_LE((r.regularized.evaluate(mid) - r.regularized.evaluate(mid + (t1 - t0))).norm(), 1e-9 * size) << shapeName(kind);
+    }
+    // Open primitives stay open.
+    for (ShapeKind kind : {ShapeKind::Line, ShapeKind::Arc, ShapeKind::Polyline}) {
+        const Recognition r = recognizeShape(fitStroke(draw(makeShape(kind, rng))));
+        ASSERT_EQ(r.kind, kind) << shapeName(kind);
+        EXPECT_FALSE(r.regularized.isClosed()) << shapeName(kind);
+    }
+}
+
+// Square vs diamond is orientation-dependent by definition (ShapeKind): a square standing on a
+// corner relative to the plane's axes is a diamond. Every other class is rotation invariant, and
+// square/diamond are invariant under rotations by multiples of 90 degrees.
+TEST(ShapeRecognition, GivenRotatedStrokes_WhenRecognized_ThenSameClassExceptSquareDiamondOffQuarterTurns)
+{
+    auto rotated = [](const Stroke& s, double a) {
+        Stroke out = s;
+        for (auto& p : out.points) p = rot(p, a);
+        return out;
+    };
+    std::mt19937 rng(11);
+    const std::vector<ShapeKind> kinds = {ShapeKind::Line,      ShapeKind::Arc,    ShapeKind::Circle,   ShapeKind::Ellipse,
+                                          ShapeKind::Triangle,  ShapeKind::Rectangle, ShapeKind::Polyline, ShapeKind::Freeform};
+    for (ShapeKind kind : kinds) {
+        DrawOptions d;
+        d.noise = 0.25;
+        const Stroke s = draw(makeShape(kind, rng), d);
+        ASSERT_EQ(recognizeShape(fitStroke(s)).kind, kind) << shapeName(kind);
+        for (double a : {0.37, 1.3, 2.9, 4.4}) {
+            EXPECT_EQ(recognizeShape(fitStroke(rotated(s, a))).kind, kind) << shapeName(kind) << " rotated by " << a;
+        }
+    }
+    DrawOptions d;
+    d.noise = 0.25;
+    const Stroke square = draw(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true), d);
+    const Stroke rhombus = draw(polygonShape({{0, -60, 0}, {35, 0, 0}, {0, 60, 0}, {-35, 0, 0}}, true), d);
+    for (int quarter = 0; quarter < 4; ++quarter) {
+        const double a = quarter * kPi / 2;
+        EXPECT_EQ(recognizeShape(fitStroke(rotated(square, a))).kind, ShapeKind::Square) << quarter << " quarter turns";
+        // On a corner: the same square, turned by 45 degrees, is a diamond.
+        EXPECT_EQ(recognizeShape(fitStroke(rotated(square, a + kPi / 4))).kind, ShapeKind::Diamond) << quarter;
+        // A rhombus that is not right-angled is a diamond at any orientation.
+        for (double off : {0.0, 0.4, kPi / 4}) {
+            EXPECT_EQ(recognizeShape(fitStroke(rotated(rhombus, a + off))).kind, ShapeKind::Diamond) << quarter << " + " << off;
+        }
+    }
+}
+
 TEST(ShapeRecognition, GivenDeclinedRegularization_ThenFittedCurveReturned)
 {
     RecognizeOptions o;

@@ -82,6 +82,26 @@ TEST(StrokeCli, GivenCircleStroke_WhenRecognized_ThenCircleRankedFirstAndExactRa
     EXPECT_GE(o["candidates"][0]["score"].get<double>(), o["candidates"][1]["score"].get<double>());
     EXPECT_EQ(o["regularized"]["degree"], 2);
     EXPECT_TRUE(o["regularized"].contains("weights"));
+    EXPECT_EQ(o["regularized"].value("closed", false), true);  // a circle is a closed curve
+}
+
+TEST(StrokeCli, GivenClosedPrimitiveStrokes_WhenRecognized_ThenRegularizedCurveIsClosedAndOpenOnesAreNot)
+{
+    const std::vector<std::pair<std::string, Shape>> closedShapes = {
+        {"square", polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)},
+        {"triangle", polygonShape({{0, 0, 0}, {160, 10, 0}, {70, 120, 0}}, true)},
+        {"ellipse", ellipseShape({0, 0, 0}, 120, 60, 0.3)},
+    };
+    for (const auto& [name, shape] : closedShapes) {
+        const CliRun r = cli("recognize", "{\"stroke\": " + strokeJson(shape) + "}");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const json o = json::parse(r.out);
+        EXPECT_EQ(o["shape"], name);
+        EXPECT_EQ(o["regularized"].value("closed", false), true) << name;
+    }
+    const CliRun line = cli("recognize", "{\"stroke\": " + strokeJson(lineShape({0, 0, 0}, {150, 40, 0})) + "}");
+    ASSERT_EQ(line.status, 0) << line.err;
+    EXPECT_EQ(json::parse(line.out)["regularized"].value("closed", false), false);
 }
 
 TEST(StrokeCli, GivenStrokeSequenceAndModelFile_ThenNewPairLearnedOnceAndSaved)
