@@ -5,7 +5,6 @@
 #include "solvers/surfaces/compatible_curves.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -29,6 +28,8 @@ constexpr double kFullTurnSlack = 0.1;
 // A decrease of the unwrapped angle beyond this (radians) means a half-plane cuts the rail twice.
 constexpr double kMonotoneSlack = 1e-9;
 constexpr int kInitialSections = 16;
+// Margin on the h^4 estimate of the sections needed, so that one more pass is rarely needed.
+constexpr double kGrowthMargin = 1.25;
 // Probes between neighbouring sections: the interpolation error peaks inside each interval, not
 // necessarily at its middle; quarter points bound it to within a few percent.
 constexpr int kProbesPerInterval = 4;
@@ -83,8 +84,14 @@ public:
     Vec3 pointAt(double theta) const
     {
         const double target = sign_ > 0 ? theta : theta - 2 * M_PI;
-        int k = 0;
-        while (k + 1 < kRailSamples && sign_ * (angles_[k + 1] - target) < 0.0) ++k;
+        // The bracket: the last sample whose signed angle is below the target (the signed angles
+        // increase, checked in the constructor), by bisection.
+        int k = 0, hiK = kRailSamples - 1;
+        while (k < hiK) {
+            const int mid = (k + hiK + 1) / 2;
+            if (sign_ * (angles_[mid] - target) < 0.0) k = mid;
+            else hiK = mid - 1;
+        }
         double lo = static_cast<double>(k) / kRailSamples;
         double hi = static_cast<double>(k + 1) / kRailSamples;
         const double ref = angles_[k];
@@ -208,6 +215,7 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
         const KnotVector knotsV = periodicCubicKnots(count);
         const ControlMatrix net = periodicCubicInterpolation(data);
         double deviation = 0.0;
+        Eigen::RowVectorXd iso(net.cols());
         for (int k = 0; k < count; ++k)
             for (int q = 1; q < kProbesPerInterval; ++q) {
                 const double vm = (k + static_cast<double>(q) / kProbesPerInterval) / count;
@@ -216,8 +224,8 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
                 const int vSpan = findSpan(3, knotsV, vm);
                 double nv[4];
                 basisFunctions(vSpan, vm, 3, knotsV, nv);
-                Eigen::RowVectorXd iso = Eigen::RowVectorXd::Zero(net.cols());
-                for (int r = 0; r < 4; ++r) iso += nv[r] * net.row(vSpan - 3 + r);
+                iso.noalias() = nv[0] * net.row(vSpan - 3) + nv[1] * net.row(vSpan - 2) + nv[2] * net.row(vSpan - 1) +
+                                nv[3] * net.row(vSpan);
                 for (size_t i = 0; i < us.size(); ++i) {
                     Eigen::Vector4d hp = Eigen::Vector4d::Zero();
                     for (int c = 0; c <= pu; ++c) {
@@ -228,11 +236,18 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
                     deviation = std::max(deviation, (hp.head<3>() / hp(3) - m * profilePts[i]).norm());
                 }
             }
-        if (deviation <= tolerance || 2 * count > options.maxPoints)
+        // Periodic cubic interpolation errs as h^4 (de Boor ch. IV): r times over tolerance needs
+        // r^(1/4) times the sections, with a margin for the probes' estimate.
+        const int next = deviation <= tolerance
+                             ? count
+                             : std::min(options.maxPoints - 3,
+                                        std::max(count + 1, static_cast<int>(std::ceil(
+                                                                count * std::pow(kGrowthMargin * deviation / tolerance, 0.25)))));
+        if (next <= count)
             return ApproximatedSurface{Surface3d::fromGroupedRows(Direction::V, pu, 3, profile.knots(), knotsV, net,
                                                                   profile.isRational()),
                                        deviation, tolerance};
-        count *= 2;
+        count = next;
     }
 }
 
@@ -246,21 +261,45 @@ KnotVector periodicCubicKnots(int count)
 ControlMatrix periodicCubicInterpolation(const ControlMatrix& data)
 {
     // Uniform cubic B-spline at its knots: S(t_{k+3}) = (P_k + 4 P_{k+1} + P_{k+2}) / 6, indices
-    // mod K: a cyclic tridiagonal system (strictly diagonally dominant, so well conditioned).
+    // mod K. With Q_k = P_{k+1} it is the cyclic tridiagonal system (Q_{k-1} + 4 Q_k + Q_{k+1}) / 6
+    // = D_k (strictly diagonally dominant, so well conditioned), solved in O(K) by the Thomas
+    // algorithm with the Sherman-Morrison correction for the two corner entries (Press et al.,
+    // "Numerical Recipes", §2.7, cyclic tridiagonal systems).
     const int K = static_cast<int>(data.rows());
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int k = 0; k < K; ++k) {
-        entries.emplace_back(k, k, 1.0 / 6.0);
-        entries.emplace_back(k, (k + 1) % K, 4.0 / 6.0);
-        entries.emplace_back(k, (k + 2) % K, 1.0 / 6.0);
+    if (K < 3) throw GeometryError("periodic interpolation needs at least 3 rows");
+    const double a = 1.0 / 6.0, b = 4.0 / 6.0, c = 1.0 / 6.0;
+    const double alpha = c, beta = a;  // A(K-1, 0) and A(0, K-1)
+    const double gamma = -b;
+    std::vector<double> diag(K, b);
+    diag[0] = b - gamma;
+    diag[K - 1] = b - alpha * beta / gamma;
+    // Forward elimination of tridiag(a, diag, c), shared by both right-hand sides.
+    std::vector<double> cp(K), m(K);
+    m[0] = diag[0];
+    cp[0] = c / m[0];
+    for (int i = 1; i < K; ++i) {
+        m[i] = diag[i] - a * cp[i - 1];
+        cp[i] = c / m[i];
     }
-    Eigen::SparseMatrix<double> A(K, K);
-    A.setFromTriplets(entries.begin(), entries.end());  // duplicates (K < 3) are summed
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(A);
-    const Eigen::MatrixXd p = lu.solve(Eigen::MatrixXd(data));
+    const auto solve = [&](Eigen::MatrixXd& x) {
+        x.row(0) /= m[0];
+        for (int i = 1; i < K; ++i) x.row(i) = (x.row(i) - a * x.row(i - 1)) / m[i];
+        for (int i = K - 2; i >= 0; --i) x.row(i) -= cp[i] * x.row(i + 1);
+    };
+    Eigen::MatrixXd x = data;
+    solve(x);
+    Eigen::MatrixXd z = Eigen::MatrixXd::Zero(K, 1);
+    z(0, 0) = gamma;
+    z(K - 1, 0) = alpha;
+    solve(z);
+    const double fact = 1.0 / (1.0 + z(0, 0) + beta * z(K - 1, 0) / gamma);
+    const Eigen::RowVectorXd correction = fact * (x.row(0) + (beta / gamma) * x.row(K - 1));
+    x -= z.col(0) * correction;
+    // P_j = Q_{j-1}.
     ControlMatrix out(K + 3, data.cols());
-    out.topRows(K) = p;
-    out.bottomRows(3) = p.topRows(3);  // the wrapped points of a closed curve
+    out.row(0) = x.row(K - 1);
+    out.middleRows(1, K - 1) = x.topRows(K - 1);
+    out.bottomRows(3) = out.topRows(3);  // the wrapped points of a closed curve
     return out;
 }
 

@@ -13,8 +13,10 @@ namespace sculptline::solvers::surfaces {
 /// to line PP'"), and with circular coaxial rails it is the plain surface of revolution.
 /// Sections C_θ = M_θ C3 are exact (control points mapped); the surface interpolates them by a
 /// periodic uniform cubic at θ_k = 2πk/K (v = θ / 2π on [0, 1]; knots unclamped in v, so the seam
-/// is C2 like the rest), doubling K until the distance from the exact construction, measured at the
-/// quarter points between sections (profile samples 1/(2n) apart), is within tolerance.
+/// is C2 like the rest), K starting at 16 and grown by the h^4 estimate (K·(1.25 r)^(1/4), r =
+/// deviation / tolerance) until the distance from the exact construction, measured at the quarter
+/// points between sections (profile samples 1/(2n) apart), is within tolerance (or K + 3 reaches
+/// maxPoints).
 /// u runs along the profile (its degree and knots, clamped), v around the axis.
 /// @param rail1, rail2 closed curves (periodic, or open with coinciding ends), each going once
 ///        around the axis and star-shaped about it (every half-plane at the axis cuts it once).
@@ -27,8 +29,8 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
 KnotVector periodicCubicKnots(int count);
 
 /// Control rows (K distinct ones, then the first three repeated) of the closed uniform cubic that
-/// passes through data row k at v = k/K.
-/// @pre data.rows() >= 3.
+/// passes through data row k at v = k/K. O(K) per column.
+/// @throws GeometryError when data.rows() < 3.
 ControlMatrix periodicCubicInterpolation(const ControlMatrix& data);
 
 }  // namespace sculptline::solvers::surfaces

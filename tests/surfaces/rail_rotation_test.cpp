@@ -85,3 +85,27 @@ TEST(RailRotation, GivenBadInput_WhenRotated_ThenClearErrors)
         EXPECT_NE(std::string(e.what()).find("profile"), std::string::npos) << e.what();
     }
 }
+
+TEST(PeriodicCubicInterpolation, GivenDataRows_WhenInterpolated_ThenClosedCurvePassesThroughEachRowAtItsParameter)
+{
+    // Given: K rows of pseudo-random points (K from the minimum 3 up to a large count).
+    for (int K : {3, 4, 7, 16, 53}) {
+        ControlMatrix data(K, 3);
+        for (int k = 0; k < K; ++k) data.row(k) << std::sin(1.3 * k + 0.2), std::cos(0.7 * k * k), 0.1 * k;
+
+        // When
+        const ControlMatrix net = periodicCubicInterpolation(data);
+
+        // Then: the closed uniform cubic on those rows meets row k at v = k/K, and is periodic.
+        ASSERT_EQ(net.rows(), K + 3);
+        std::vector<Vec3> pts;
+        for (int r = 0; r < net.rows(); ++r) pts.emplace_back(net(r, 0), net(r, 1), net(r, 2));
+        // (Evaluated as an unclamped open curve on the same knots: the same function on [0, 1],
+        // and it admits K = 3, which the kernel's closed convention does not.)
+        const Curve3d closed(3, periodicCubicKnots(K), pts);
+        for (int k = 0; k < K; ++k)
+            EXPECT_LT((closed.evaluate(static_cast<double>(k) / K) - Vec3(data.row(k).transpose())).norm(), kExact)
+                << "K = " << K << ", k = " << k;
+    }
+    EXPECT_THROW(periodicCubicInterpolation(ControlMatrix::Zero(2, 3)), GeometryError);
+}
