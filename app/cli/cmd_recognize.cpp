@@ -5,7 +5,9 @@
 //   {"strokes": [K..], "user_model": M or "path.json"}
 //     -> the fields above for the last stroke, plus "strokes": [per stroke: shape, candidates,
 //        regularized, relations (to the previous stroke), composite, node, composite_node,
-//        learned, offered], "composite": the last pair's object, "user_model": the updated model.
+//        pre_node (the previous stroke's node, or its composite's for a three-stroke object such
+//        as Fig. 3-4 d's polygon_volume), learned, offered], "composite": the last stroke's object,
+//        "user_model": the updated model.
 //   Optional: "tolerance" (fitting, model units), "regularize": false to keep the fitted curves.
 // A "user_model" path is read if it exists (else the predefined Table 3-2 is used) and written back
 // with what was learned: one file per user.
@@ -97,6 +99,7 @@ json run(const json& input, const Options&)
             item["composite"] = stroke::compositeName(seq[i].composite);
             item["node"] = seq[i].node;
             item["composite_node"] = seq[i].compositeNode;
+            item["pre_node"] = seq[i].preNode;
             item["learned"] = seq[i].learned;
             item["offered"] = seq[i].offered;
             items.push_back(std::move(item));

@@ -39,10 +39,13 @@ UserModel UserModel::predefined(const std::string& user)
     UserModel m;
     m.user_ = user;
     // Table 3-2: Index, Name, Pre-Node, Curr-Node, Constraint.
+    // Rows 15-16: Fig. 3-4 (d) for a square profile, a three-stroke chain (square, line touching it:
+    // extrusion; then the top square touching the line: polygon volume).
     m.nodes_ = {{1, "T1", 0, 0, "C1"},  {2, "T2", 0, 0, "C2"},    {3, "T3", 0, 0, "C3"},  {4, "T4", 0, 0, "C4"},
                 {5, "T5", 0, 0, "C5"},  {6, "T6", 0, 0, "C6"},    {7, "T7", 3, 4, "C8"},  {8, "prism", 2, 3, "C7"},
                 {9, "T9", 2, 1, "C10"}, {10, "T10", 9, 1, "C9"},  {11, "T11", 2, 5, "C8"}, {12, "T12", 6, 6, "C7"},
-                {13, "cylinder", 1, 3, "C10"}, {14, "cone", 1, 3, "C11"}};
+                {13, "cylinder", 1, 3, "C10"}, {14, "cone", 1, 3, "C11"},
+                {15, "extrusion", 4, 3, "C10"}, {16, "polygon_volume", 15, 4, "C10"}};
     return m;
 }
 
@@ -110,7 +113,26 @@ std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits,
             // perpendicular take precedence as in Table 3-2 (T7, T11: C8).
             const Relation key = it.relations.front();
             const std::string constraint = constraintOf(key);
-            it.compositeNode = model.match(prev.node, it.node, constraint);
+            // USER MODELING (Table 3-2): a matched composite becomes the pre-node of the next stroke
+            // (P->Pre-Node = Q), so three strokes chain as (composite of the first two, third). We
+            // take that chain when the geometry confirms a three-stroke object (Fig. 3-4 d,
+            // composeThree): the row is matched, or learned when new. Otherwise the pair is matched.
+            if (i > 1 && prev.composite != CompositeKind::None && prev.compositeNode != 0) {
+                const CompositeKind three = composeThree(out[i - 2].recognition, prev.recognition, it.recognition);
+                if (three != CompositeKind::None) {
+                    it.composite = three;
+                    it.preNode = prev.compositeNode;
+                    it.compositeNode = model.match(it.preNode, it.node, constraint);
+                    if (it.compositeNode == 0) {
+                        it.compositeNode = model.insert({0, compositeName(three), it.preNode, it.node, constraint});
+                        it.learned = true;
+                    }
+                }
+            }
+            if (it.compositeNode == 0) {
+                it.preNode = prev.node;
+                it.compositeNode = model.match(prev.node, it.node, constraint);
+            }
             if (it.compositeNode == 0) {
                 const std::string name = it.composite != CompositeKind::None ? compositeName(it.composite)
                                                                              : "T" + std::to_string(model.nodes().size() + 1);

@@ -21,7 +21,9 @@ struct ChainNode {
 class UserModel {
 public:
     /// Table 3-2 as printed (T1..T12), T8 named "prism" (Fig. 3-4 a), plus the Fig. 3-4 objects
-    /// cylinder and cone (circle then line, touching / inside).
+    /// cylinder and cone (circle then line, touching / inside), and the three-stroke chain of
+    /// Fig. 3-4 (d) for a square profile: extrusion (square, line, C10), polygon_volume (extrusion,
+    /// square, C10).
     static UserModel predefined(const std::string& user = "default");
 
     const std::string& user() const { return user_; }
@@ -56,14 +58,19 @@ struct Interpretation {
     std::vector<Relation> relations;  ///< STEP 4, to the previous stroke (empty for the first)
     CompositeKind composite = CompositeKind::None;
     int node = 0;                   ///< the user-model row of this stroke's primitive
-    int compositeNode = 0;          ///< the row matched or learned for (previous, this, relation)
+    int compositeNode = 0;          ///< the row matched or learned for (pre-node, this, relation)
+    /// The pre-node of that row: the previous stroke's primitive row, or, for a three-stroke object,
+    /// the previous stroke's composite row (Table 3-2 chains, e.g. T10 = (T9, T1, C9)); 0 for the first.
+    int preNode = 0;
     bool learned = false;           ///< STEP 5 inserted a new row
     std::vector<int> offered;       ///< rows offered because the recognition was ambiguous
 };
 
 /// Runs Table 3-1 over strokes drawn one after another: each is recognized (STEP 2); from the
 /// second on, its relation to the previous one is reasoned (STEP 4), the pair is matched in the
-/// user model and inserted when new (STEP 5). A stroke is ambiguous when its two best candidates
+/// user model and inserted when new (STEP 5). When the previous stroke completed a composite, the
+/// row (that composite, this stroke, relation) is matched first: a three-stroke object (Fig. 3-4 d,
+/// composeThree; learned as such when new). A stroke is ambiguous when its two best candidates
 /// score within `ambiguity`; the model's rows following the previous node are then offered.
 std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits, UserModel& model,
                                              const RecognizeOptions& options = {}, double ambiguity = 0.1);

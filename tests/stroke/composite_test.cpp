@@ -62,6 +62,84 @@ TEST(Composite, GivenFigure34Pairs_ThenPrismCylinderConeExtrusionSkinning)
     EXPECT_EQ(compose(rec(sCurveShape(200)), rec(lifted)), CompositeKind::Skinning);
 }
 
+// Fig. 3-4 (d): a square profile, an edge rising from its corner, and the top face where the edge
+// carries the profile (or a second, parallel edge) make a polygon volume.
+struct VolumeStrokes {
+    Shape profile = polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true);
+    Shape edge = lineShape({100, 100, 0}, {160, 160, 0});
+    Shape top = polygonShape({{60, 60, 0}, {160, 60, 0}, {160, 160, 0}, {60, 160, 0}}, true);
+    Shape secondEdge = lineShape({100, 0, 0}, {160, 60, 0});
+};
+
+TEST(Composite, GivenProfileEdgeAndTopFace_ThenPolygonVolume)
+{
+    const VolumeStrokes v;
+    const Recognition profile = rec(v.profile), edge = rec(v.edge);
+    ASSERT_EQ(profile.kind, ShapeKind::Square);
+    ASSERT_EQ(edge.kind, ShapeKind::Line);
+    ASSERT_EQ(composeShapes(profile, edge, relate(profile, edge)), CompositeKind::Extrusion);
+
+    EXPECT_EQ(composeThree(profile, edge, rec(v.top)), CompositeKind::PolygonVolume);
+    EXPECT_EQ(composeThree(profile, edge, rec(v.secondEdge)), CompositeKind::PolygonVolume);
+    // A triangle profile with its top triangle: the same construction for any polygon.
+    const Shape tri = polygonShape({{0, 0, 0}, {120, 0, 0}, {60, 100, 0}}, true);
+    const Shape triTop = polygonShape({{50, 40, 0}, {170, 40, 0}, {110, 140, 0}}, true);
+    EXPECT_EQ(composeThree(rec(tri), rec(lineShape({120, 0, 0}, {170, 40, 0})), rec(triTop)), CompositeKind::PolygonVolume);
+}
+
+TEST(Composite, GivenThirdStrokesThatBreakTheConstraints_ThenNoPolygonVolume)
+{
+    const VolumeStrokes v;
+    const Recognition profile = rec(v.profile), edge = rec(v.edge);
+    // Top face in the wrong place (not where the edge carries the profile).
+    EXPECT_EQ(composeThree(profile, edge, rec(polygonShape({{200, -150, 0}, {300, -150, 0}, {300, -50, 0}, {200, -50, 0}}, true))),
+              CompositeKind::None);
+    // Wrong size: half the profile.
+    EXPECT_EQ(composeThree(profile, edge, rec(polygonShape({{85, 85, 0}, {135, 85, 0}, {135, 135, 0}, {85, 135, 0}}, true))),
+              CompositeKind::None);
+    // Another kind of shape: a circle at the top face's place.
+    EXPECT_EQ(composeThree(profile, edge, rec(circleShape({110, 110, 0}, 50))), CompositeKind::None);
+    // A line that is not parallel to the edge.
+    EXPECT_EQ(composeThree(profile, edge, rec(lineShape({100, 0, 0}, {100, -80, 0}))), CompositeKind::None);
+    // The first two strokes are no extrusion (the line misses the profile).
+    EXPECT_EQ(composeThree(profile, rec(lineShape({200, 200, 0}, {260, 260, 0})), rec(v.top)), CompositeKind::None);
+}
+
+TEST(UserModel, GivenThreeStrokeVolume_ThenChainRowMatchedWithTheExtrusionAsPreNode)
+{
+    UserModel m = UserModel::predefined();
+    const size_t before = m.nodes().size();
+    const VolumeStrokes v;
+    DrawOptions d;
+    d.noise = 0.25;
+    const std::vector<FitResult> fits = {fitStroke(draw(v.profile, d)), fitStroke(draw(v.edge, d)), fitStroke(draw(v.top, d))};
+
+    const auto seq = interpretStrokes(fits, m);
+
+    ASSERT_EQ(seq.size(), 3u);
+    EXPECT_EQ(seq[1].composite, CompositeKind::Extrusion);
+    EXPECT_EQ(m.nodes()[seq[1].compositeNode - 1].name, "extrusion");
+    EXPECT_EQ(seq[2].composite, CompositeKind::PolygonVolume);
+    EXPECT_EQ(seq[2].preNode, seq[1].compositeNode);  // Table 3-2 chain: P->Pre-Node = Q
+    EXPECT_EQ(m.nodes()[seq[2].compositeNode - 1].name, "polygon_volume");
+    EXPECT_FALSE(seq[2].learned);
+    EXPECT_EQ(m.nodes().size(), before);
+
+    // A triangle volume is not predefined: learned once as a chain row, then matched.
+    const Shape tri = polygonShape({{0, 0, 0}, {120, 0, 0}, {60, 100, 0}}, true);
+    const std::vector<FitResult> triFits = {fitStroke(draw(tri, d)), fitStroke(draw(lineShape({120, 0, 0}, {170, 40, 0}), d)),
+                                            fitStroke(draw(polygonShape({{50, 40, 0}, {170, 40, 0}, {110, 140, 0}}, true), d))};
+    const auto first = interpretStrokes(triFits, m);
+    const size_t learnedSize = m.nodes().size();
+    const auto again = interpretStrokes(triFits, m);
+    EXPECT_EQ(first[2].composite, CompositeKind::PolygonVolume);
+    EXPECT_TRUE(first[2].learned);
+    EXPECT_EQ(m.nodes()[first[2].compositeNode - 1].preNode, first[1].compositeNode);
+    EXPECT_FALSE(again[2].learned);
+    EXPECT_EQ(again[2].compositeNode, first[2].compositeNode);
+    EXPECT_EQ(m.nodes().size(), learnedSize);
+}
+
 TEST(UserModel, GivenTable32_ThenMatchAndCandidatesAsInTheThesis)
 {
     const UserModel m = UserModel::predefined("alice");
