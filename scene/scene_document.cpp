@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <algorithm>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -101,6 +102,56 @@ int entityId(const json& j, const std::string& path, std::set<int>& used)
     return id;
 }
 
+/// A surface's optional "construction"; its curves must be curves of `doc` with smaller ids than
+/// the surface's (inputs are created first).
+std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json& surface, const std::string& path,
+                                                                      int surfaceId, const SceneDocument& doc)
+{
+    const auto it = surface.find("construction");
+    if (it == surface.end()) return std::nullopt;
+    const std::string at = path + ".construction";
+    if (!it->is_object()) throw io::InputError(at + ": must be an object");
+    SceneDocument::ConstructedSurface c;
+    c.id = surfaceId;
+    if (surface.contains("points")) {
+        c.saved = io::surfaceFromJson(surface, path);
+        checkExtent(c.saved->points(), path);
+    }
+    const json& mode = io::member(*it, "mode", at);
+    if (!mode.is_string()) throw io::InputError(at + ".mode: expected a string");
+    c.recipe.mode = mode.get<std::string>();
+    InputCount count;
+    try {
+        count = surfaceInputCount(c.recipe.mode);
+    } catch (const std::invalid_argument& e) {
+        throw io::InputError(at + ".mode: " + e.what());
+    }
+    const json& curves = io::member(*it, "curves", at);
+    if (!curves.is_array()) throw io::InputError(at + ".curves: expected an array of curve ids");
+    for (size_t k = 0; k < curves.size(); ++k) {
+        const std::string field = at + ".curves[" + std::to_string(k) + "]";
+        const int id = io::integerFromJson(curves[k], field, 1, 1 << 30);
+        if (std::find(doc.curveIds.begin(), doc.curveIds.end(), id) == doc.curveIds.end())
+            throw io::InputError(field + ": no curve has id " + std::to_string(id));
+        if (surfaceId != 0 && id >= surfaceId) throw io::InputError(field + ": must be smaller than the surface's id");
+        c.curves.push_back(id);
+    }
+    const int n = static_cast<int>(c.curves.size());
+    if (n < count.min || n > count.max)
+        throw io::InputError(at + ".curves: mode " + c.recipe.mode + " takes " + std::to_string(count.min) + " to " +
+                             std::to_string(count.max) + " curves");
+    if (const auto a = it->find("angle"); a != it->end()) {
+        c.recipe.angleDegrees = io::numberFromJson(*a, at + ".angle");
+        if (!(c.recipe.angleDegrees > 0.0 && c.recipe.angleDegrees <= 360.0)) throw io::InputError(at + ".angle: must be in (0, 360]");
+    }
+    if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
+    if (const auto t = it->find("tolerance"); t != it->end()) {
+        c.recipe.tolerance = io::numberFromJson(*t, at + ".tolerance");
+        if (!(c.recipe.tolerance >= 0.0)) throw io::InputError(at + ".tolerance: must not be negative");
+    }
+    return c;
+}
+
 }  // namespace
 
 SceneDocument documentFromJson(const json& j)
@@ -141,9 +192,14 @@ SceneDocument documentFromJson(const json& j)
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {
         const std::string path = "surfaces[" + std::to_string(i) + "]";
+        const int id = entityId(surfaces[i], path, planeIds);
+        if (auto constructed = constructionFromJson(surfaces[i], path, id, doc)) {
+            doc.constructed.push_back(std::move(*constructed));
+            continue;
+        }
         doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
         checkExtent(doc.surfaces.back().points(), path);
-        doc.surfaceIds.push_back(entityId(surfaces[i], path, planeIds));
+        doc.surfaceIds.push_back(id);
     }
     return doc;
 }

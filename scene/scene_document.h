@@ -2,6 +2,7 @@
 // The document a scene is built from: projection planes, a ground grid, curves and surfaces, read
 // from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
 // its error messages are testable on their own.
+#include "scene/model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 
 #include <Eigen/Geometry>
@@ -42,6 +43,15 @@ struct SceneDocument {
     std::vector<int> curveIds;
     std::vector<int> surfaceIds;
     std::vector<solvers::Surface3d> surfaces;
+    /// Surfaces built from curves: a surface entry with "construction": {"mode", "curves": [curve
+    /// ids], "angle", "direction", "tolerance"}; its geometry is optional (rebuilt on opening).
+    struct ConstructedSurface {
+        int id = 0;
+        SurfaceRecipe recipe;
+        std::vector<int> curves;
+        std::optional<solvers::Surface3d> saved;  ///< the geometry as saved, if it was
+    };
+    std::vector<ConstructedSurface> constructed;
 };
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every

@@ -6,6 +6,7 @@
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoTransform.h>
 
 namespace sculptline::scene {
 namespace {
@@ -33,16 +34,26 @@ StrokeFeedback::StrokeFeedback()
     root_ = makeOverlayRoot();
     root_->ref();
     root_->setName("StrokeFeedback");
+    frame_ = new SoTransform;
+    root_->addChild(frame_);
     samples_ = addDots(root_, kSampleColor, kSampleSize);
     corners_ = addDots(root_, kCornerColor, kCornerSize);
 }
 
 StrokeFeedback::~StrokeFeedback() { root_->unref(); }
 
-void StrokeFeedback::show(const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& corners)
+void StrokeFeedback::show(const PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples,
+                          const std::vector<Eigen::Vector3d>& corners)
 {
+    setFrame(frame);
     setPoints(samples_->point, samples);
     setPoints(corners_->point, corners);
+}
+
+void StrokeFeedback::setFrame(const PlaneFrame& frame)
+{
+    frame_->translation = toSb(frame.origin);
+    frame_->rotation = toSb(frame.rotation);
 }
 
 int StrokeFeedback::sampleCount() const { return samples_->point.getNum(); }

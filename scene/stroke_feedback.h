@@ -1,12 +1,16 @@
 #pragma once
 // What the fitter made of the last stroke, shown in the viewport (issue 5 §3, recognition
 // feedback): the sampling points the least squares used as small dots, the detected corners as
-// larger red ones. World coordinates; replaced by the next stroke.
+// larger red ones. In the frame of the plane the stroke's curve lies on, so the dots follow that
+// plane when it is dragged; replaced by the next stroke.
+#include "scene/model/plane_frame.h"
+
 #include <Eigen/Core>
 
 #include <vector>
 
 class SoCoordinate3;
+class SoTransform;
 class SoSeparator;
 
 namespace sculptline::scene {
@@ -20,8 +24,11 @@ public:
 
     /// SoSeparator "StrokeFeedback" (unpickable); ref()ed by this object.
     SoSeparator* root() const { return root_; }
-    void show(const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& corners);
-    void clear() { show({}, {}); }
+    /// Dots at `samples` and `corners`, given in `frame`'s local coordinates.
+    void show(const PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& corners);
+    /// Moves the dots with their plane (one transform write).
+    void setFrame(const PlaneFrame& frame);
+    void clear() { show(PlaneFrame{}, {}, {}); }
     int sampleCount() const;
     int cornerCount() const;
 
@@ -29,6 +36,7 @@ private:
     SoSeparator* root_ = nullptr;
     SoCoordinate3* samples_ = nullptr;
     SoCoordinate3* corners_ = nullptr;
+    SoTransform* frame_ = nullptr;
 };
 
 }  // namespace sculptline::scene

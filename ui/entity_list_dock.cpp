@@ -34,7 +34,9 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
     }
     for (const auto& [id, e] : model.entities()) {
         if (e.kind == scene::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
-        if (e.kind == scene::EntityKind::Surface) add(e, tr("Surface %1").arg(id));
+        if (e.kind == scene::EntityKind::Surface) {
+            add(e, e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id));
+        }
     }
     updating_ = false;
     setSelection(selection);

@@ -62,6 +62,15 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
         for (int i = 0; i < c.pointCount(); ++i) s << "  " << i << ": " << point(c.points()[i]) << "\n";
     } else {
         const solvers::Surface3d& f = *e->surface;
+        if (e->recipe) {
+            QStringList inputs;
+            for (scene::EntityId c : e->inputs) inputs << QString::number(c);
+            s << tr("Made by: %1 of curves %2").arg(QString::fromStdString(e->recipe->mode), inputs.join(QStringLiteral(", "))) << "\n";
+            if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
+            if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
+        } else {
+            s << tr("Geometry only (not built from curves)") << "\n";
+        }
         s << tr("Degree: %1 x %2").arg(f.degreeU()).arg(f.degreeV()) << "\n";
         s << tr("Control points: %1 x %2").arg(f.countU()).arg(f.countV()) << "\n";
         s << tr("Knots U: %1").arg(knots(f.knotsU())) << "\n";

@@ -10,6 +10,8 @@
 #include "ui/sketch_document.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/SbViewportRegion.h>
 #include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoGLRenderAction.h>
 #include <Inventor/actions/SoRayPickAction.h>
@@ -27,6 +29,7 @@
 #include <QStatusBar>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 
 namespace sculptline::ui {
@@ -45,6 +48,10 @@ constexpr int kMinViewportWidth = 480;
 constexpr int kMinViewportHeight = 360;
 /// Share of the screen a window opened without --size takes.
 constexpr double kDefaultScreenShare = 0.85;
+/// How far from a curve (pixels) a click in a surface mode still picks it: a fingertip's slack.
+constexpr double kCurvePickRadius = 12.0;
+/// Samples per curve when looking for the nearest one on screen.
+constexpr int kCurvePickSamples = 128;
 
 }  // namespace
 
@@ -80,6 +87,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
     connect(document_, &SketchDocument::strokeFinished, this, [this]() {
         recognition_->refresh();
         statusBar()->showMessage(document_->lastStroke().message);
+        if (automated_) {
+            const StrokeReport& r = document_->lastStroke();
+            std::cerr << "sculptline: " << r.message.toStdString()
+                      << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString()) << "\n";
+        }
+    });
+    connect(document_, &SketchDocument::surfaceStateChanged, this, [this]() {
+        updateStatus();
+        // A replay has nobody reading the status bar: its log says what the surface modes did.
+        if (automated_ && !document_->surfaceMessage().isEmpty())
+            std::cerr << "sculptline: " << document_->surfaceMessage().toStdString() << "\n";
     });
     connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this]() { updateTitle(); });
     setMode(Mode::View);
@@ -162,6 +180,23 @@ void MainWindow::createActions()
     modeAction("mode.lift", tr("&Lift a stroke between two curves into space"), QStringLiteral("L"), Mode::Lift);
     modeAction("mode.pull", tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
     modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
+    modeMenu->addSeparator();
+    // The surface modes (thesis §5.1.3, §5.2; seed 000): pick the curves, the surface follows them.
+    auto surfaceAction = [&](const char* name, const QString& text, const QString& key, const char* mode) {
+        QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, mode]() { setMode(Mode::Surface, mode); });
+        a->setCheckable(true);
+        modes_->addAction(a);
+    };
+    surfaceAction("mode.fill", tr("&Fill 2-4 boundary curves"), QStringLiteral("F"), "fill");
+    surfaceAction("mode.revolve", tr("&Revolve a profile about an axis line"), QStringLiteral("R"), "revolve");
+    surfaceAction("mode.extrude", tr("E&xtrude: drag a curve out"), QStringLiteral("X"), "extrude");
+    surfaceAction("mode.sweep", tr("S&weep a profile along a path"), QStringLiteral("W"), "sweep");
+    surfaceAction("mode.loft", tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
+    surfaceAction("mode.boundaryRotation", tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
+    surfaceAction("mode.railRotation", tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
+    make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return),
+         [this]() { document_->buildSurface(); });
+    make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() { document_->cancelSurface(); });
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
@@ -174,7 +209,10 @@ void MainWindow::createDocks()
     auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
                                  action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.lift")),
                                  action(QStringLiteral("mode.pull")),
-                                 action(QStringLiteral("mode.select")),
+                                 action(QStringLiteral("mode.select")), action(QStringLiteral("mode.fill")),
+                                 action(QStringLiteral("mode.revolve")), action(QStringLiteral("mode.extrude")),
+                                 action(QStringLiteral("mode.sweep")), action(QStringLiteral("mode.loft")),
+                                 action(QStringLiteral("mode.boundaryRotation")), action(QStringLiteral("mode.railRotation")),
                                  action(QStringLiteral("plane.add"))},
                                 this);
     addDockWidget(Qt::LeftDockWidgetArea, modes);
@@ -188,24 +226,22 @@ void MainWindow::createDocks()
     connect(entities_, &EntityListDock::entityPicked, this, [this](scene::EntityId id) { document_->select(id); });
 }
 
-void MainWindow::setMode(Mode mode)
+void MainWindow::setMode(Mode mode, const std::string& surfaceMode)
 {
     mode_ = mode;
+    surfaceMode_ = mode == Mode::Surface ? surfaceMode : std::string();
+    document_->setSurfaceMode(surfaceMode_);
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
     document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift);
-    document_->curvePull().setEnabled(mode == Mode::Pull);
+    document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == "extrude");
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch
                              : mode == Mode::Lift     ? SketchDocument::StrokeMode::Lift
                                                       : SketchDocument::StrokeMode::Sketch);
-    const char* name = mode == Mode::View         ? "mode.view"
-                       : mode == Mode::Sketch     ? "mode.sketch"
-                       : mode == Mode::Oversketch ? "mode.oversketch"
-                       : mode == Mode::Pull       ? "mode.pull"
-                       : mode == Mode::Lift       ? "mode.lift"
-                                                  : "mode.select";
-    action(QString::fromLatin1(name))->setChecked(true);
+    for (QAction* a : modes_->actions()) {
+        if (a->objectName() == modeActionName()) a->setChecked(true);
+    }
     updateStatus();
 }
 
@@ -225,8 +261,47 @@ void MainWindow::updateStatus()
     case Mode::Lift: text = tr("Lift: draw from a point of one curve to a point of another; the stroke becomes a space curve of least curvature between them."); break;
     case Mode::Pull: text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point."); break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
+    case Mode::Surface: text = surfaceGuidance(); break;
     }
     statusBar()->showMessage(text);
+}
+
+QString MainWindow::modeActionName() const
+{
+    switch (mode_) {
+    case Mode::View: return QStringLiteral("mode.view");
+    case Mode::Sketch: return QStringLiteral("mode.sketch");
+    case Mode::Oversketch: return QStringLiteral("mode.oversketch");
+    case Mode::Lift: return QStringLiteral("mode.lift");
+    case Mode::Pull: return QStringLiteral("mode.pull");
+    case Mode::Select: return QStringLiteral("mode.select");
+    case Mode::Surface: break;
+    }
+    // "boundary-rotation" -> "mode.boundaryRotation"
+    QString name = QStringLiteral("mode.");
+    bool upper = false;
+    for (char c : surfaceMode_) {
+        if (c == '-') {
+            upper = true;
+            continue;
+        }
+        name += upper ? QChar(c).toUpper() : QChar(c);
+        upper = false;
+    }
+    return name;
+}
+
+QString MainWindow::surfaceGuidance() const
+{
+    const QString mode = QString::fromStdString(surfaceMode_);
+    if (!document_->surfaceMessage().isEmpty()) return document_->surfaceMessage();
+    if (surfaceMode_ == "extrude") return tr("Extrude: press on a curve and drag; the surface follows the pointer.");
+    const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
+    const int picked = static_cast<int>(document_->surfaceInputs().size());
+    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(scene::surfaceInputRole(surfaceMode_, picked)));
+    text += count.min == count.max ? tr(" (%1 of %2).").arg(picked + 1).arg(count.max)
+                                   : tr(" (%1 picked; Enter builds with %2 or more).").arg(picked).arg(count.min);
+    return text + tr(" Esc forgets the picks.");
 }
 
 void MainWindow::updateTitle()
@@ -278,9 +353,15 @@ void MainWindow::addPlaneFacingViewer()
 SbBool MainWindow::viewerEvent(void* self, QEvent* event)
 {
     auto* window = static_cast<MainWindow*>(self);
-    if (window->mode_ != Mode::Select || event->type() != QEvent::MouseButtonPress) return FALSE;
+    if (event->type() != QEvent::MouseButtonPress) return FALSE;
     auto* mouse = static_cast<QMouseEvent*>(event);
     if (mouse->button() != Qt::LeftButton) return FALSE;
+    if (window->mode_ == Mode::Surface && window->surfaceMode_ != "extrude") {
+        // A click picks the nearest curve as the next input; nothing else sees the press.
+        if (const scene::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickSurfaceInput(curve);
+        return TRUE;
+    }
+    if (window->mode_ != Mode::Select) return FALSE;
     // Let the press go on to the scene graph as well, so a press on a dragger selects and drags.
     window->pickAt(mouse->pos());
     return FALSE;
@@ -309,6 +390,39 @@ bool MainWindow::pickAt(const QPoint& position)
     }
     document_->select(picked);
     return picked != 0;
+}
+
+QPoint MainWindow::pixelOf(const Eigen::Vector3d& world) const
+{
+    SoCamera* camera = viewer_->getCamera();
+    if (!camera) return {};
+    const SbViewportRegion& viewport = viewer_->getViewportRegion();
+    const SbVec2s size = viewport.getViewportSizePixels();
+    SbVec3f screen;
+    camera->getViewVolume(viewport.getViewportAspectRatio()).projectToScreen(scene::toSb(world), screen);
+    // Normalized [0, 1] with y up -> Qt pixels with y down (the inverse of pickAt's flip).
+    return QPoint(static_cast<int>(std::lround(screen[0] * size[0])), static_cast<int>(std::lround(size[1] - 1 - screen[1] * size[1])));
+}
+
+scene::EntityId MainWindow::curveNear(const QPoint& position) const
+{
+    scene::EntityId best = 0;
+    double bestDistance = kCurvePickRadius;
+    for (const auto& [id, e] : document_->model().entities()) {
+        if (e.kind != scene::EntityKind::Curve || !e.world) continue;
+        // Dense enough that the chord between samples stays within a pixel or two of the curve at
+        // the sizes curves have on screen.
+        const double u0 = e.world->domainStart(), u1 = e.world->domainEnd();
+        for (int k = 0; k <= kCurvePickSamples; ++k) {
+            const QPoint p = pixelOf(e.world->evaluate(u0 + (u1 - u0) * k / kCurvePickSamples));
+            const double d = std::hypot(p.x() - position.x(), p.y() - position.y());
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = id;
+            }
+        }
+    }
+    return best;
 }
 
 bool MainWindow::refuseDialog(const char* action) const

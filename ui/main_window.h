@@ -3,10 +3,13 @@
 // inspector, File/Edit/Plane/Mode menus whose actions all carry an object name (`file.save`,
 // `mode.sketch`, ...: the names replays and --list-actions use), and a status bar that tells the
 // user what the current mode does with the mouse.
+#include "scene/model/model.h"
 #include "scene/scene_document.h"
 
 #include <QImage>
 #include <QMainWindow>
+
+#include <string>
 
 #include <Inventor/SbBasic.h>
 
@@ -24,7 +27,8 @@ class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
 
-enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select };
+/// Surface: one of the surface modes (MainWindow::surfaceMode() says which).
+enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface };
 
 /// @note SoQt::init() must have been called before construction.
 class MainWindow : public QMainWindow {
@@ -51,7 +55,11 @@ public:
     /// Every named action, sorted by name.
     QList<QAction*> namedActions() const;
     QAction* action(const QString& name) const;
+    /// The viewport pixel (origin top-left) where the camera shows model point `world`.
+    QPoint pixelOf(const Eigen::Vector3d& world) const;
     Mode mode() const { return mode_; }
+    /// The solvers/surfaces mode name while mode() is Surface.
+    const std::string& surfaceMode() const { return surfaceMode_; }
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
@@ -62,9 +70,13 @@ protected:
 private:
     void createActions();
     void createDocks();
-    void setMode(Mode mode);
+    void setMode(Mode mode, const std::string& surfaceMode = std::string());
     void updateStatus();
     void updateTitle();
+    /// The object name of the current mode's action ("mode.boundaryRotation", ...).
+    QString modeActionName() const;
+    /// Status text of a surface mode: what to pick next, or the last build's outcome.
+    QString surfaceGuidance() const;
     void frameScene();
     bool maybeSave();
     /// File > Open Recent: the last kMaxRecentFiles documents opened or saved (QSettings).
@@ -81,6 +93,9 @@ private:
     void addPlaneFacingViewer();
     static SbBool viewerEvent(void* self, QEvent* event);
     bool pickAt(const QPoint& position);
+    /// The curve drawn nearest to `position` (viewport pixels) within kCurvePickRadius, or 0: in
+    /// the surface modes a click need not hit the thin line exactly.
+    scene::EntityId curveNear(const QPoint& position) const;
 
     SoQtExaminerViewer* viewer_ = nullptr;
     SketchDocument* document_ = nullptr;
@@ -89,6 +104,7 @@ private:
     RecognitionDock* recognition_ = nullptr;
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::View;
+    std::string surfaceMode_;
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
 };

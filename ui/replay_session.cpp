@@ -29,8 +29,12 @@ ReplayEvent eventFromJson(const json& j, const std::string& path)
     if (const auto it = j.find("t"); it != j.end()) e.t = bounded(*it, path + ".t");
     if (type == "press" || type == "move" || type == "release") {
         e.type = type == "press" ? ReplayEvent::Type::Press : type == "move" ? ReplayEvent::Type::Move : ReplayEvent::Type::Release;
-        e.x = io::integerFromJson(io::member(j, "x", path), path + ".x", -100000, 100000);
-        e.y = io::integerFromJson(io::member(j, "y", path), path + ".y", -100000, 100000);
+        if (const auto at = j.find("at"); at != j.end()) {
+            e.at = io::pointFromJson(*at, path + ".at");
+        } else {
+            e.x = io::integerFromJson(io::member(j, "x", path), path + ".x", -100000, 100000);
+            e.y = io::integerFromJson(io::member(j, "y", path), path + ".y", -100000, 100000);
+        }
         if (const auto it = j.find("button"); it != j.end()) {
             const std::string b = it->is_string() ? it->get<std::string>() : "";
             if (b == "left") e.button = Qt::LeftButton;

@@ -7,7 +7,10 @@
 #include <Qt>
 
 #include <string>
+#include <optional>
 #include <vector>
+
+#include <Eigen/Core>
 
 namespace sculptline::ui {
 
@@ -15,6 +18,9 @@ struct ReplayEvent {
     enum class Type { Press, Move, Release, Key, Action, Wait };
     Type type = Type::Wait;
     int x = 0, y = 0;  ///< viewport pixels, origin top-left
+    /// Instead of x, y: a model point ("at": [x, y, z]) whose pixel the current camera gives when
+    /// the event is played, so a session can name the geometry it means, whatever the framing.
+    std::optional<Eigen::Vector3d> at;
     Qt::MouseButton button = Qt::LeftButton;
     Qt::KeyboardModifiers modifiers;
     double t = -1.0;  ///< ms since the replay started; < 0 = as soon as the previous event is done

@@ -112,8 +112,9 @@ void Replayer::dispatch(const ReplayEvent& e)
 void Replayer::sendMouse(const ReplayEvent& e)
 {
     QWidget* target = window_.viewport();
-    const QPointF local(e.x, e.y);
-    const QPointF global = target->mapToGlobal(QPoint(e.x, e.y));
+    const QPoint pixel = e.at ? window_.pixelOf(*e.at) : QPoint(e.x, e.y);
+    const QPointF local(pixel);
+    const QPointF global = target->mapToGlobal(pixel);
     QEvent::Type type = QEvent::MouseMove;
     Qt::MouseButton button = Qt::NoButton;
     if (e.type == ReplayEvent::Type::Press) {

@@ -25,8 +25,12 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     strokeInput_->setFinishedCallback([this](const manipulators::FinishedStroke& s) { addStroke(s); });
     curvePull_ = std::make_unique<manipulators::CurvePull>();
     root_->addChild(curvePull_->root());
-    curvePull_->setCallbacks([this](const manipulators::StrokeHit& hit) { return grabCurve(hit); },
-                             [this](const Eigen::Vector3d& local) { pullTo(local); }, [this]() { releaseCurve(); });
+    // One handle for two drags: pulling a curve point, or (extrude mode) pulling a curve out into
+    // a surface.
+    curvePull_->setCallbacks(
+        [this](const manipulators::StrokeHit& hit) { return surfaceMode_ == "extrude" ? grabExtrusion(hit) : grabCurve(hit); },
+        [this](const Eigen::Vector3d& local) { extrusion_ || extrudeProfile_ ? extrudeTo(local) : pullTo(local); },
+        [this]() { extrudeProfile_ ? releaseExtrusion() : releaseCurve(); });
     gridNode_ = scene::makeGroundGrid(grid_);
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
@@ -164,6 +168,7 @@ void SketchDocument::entityUpdated(const scene::Entity& e)
 {
     // During a drag the manipulator is the source of the frame; any other change (undo, redo)
     // puts the manipulator where the model says.
+    if (e.kind == scene::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
     if (e.kind != scene::EntityKind::Plane || e.id == dragging_) return;
     const auto it = planes_.find(e.id);
     if (it != planes_.end() && it->second->frame() != e.frame) it->second->setFrame(e.frame);

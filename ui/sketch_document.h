@@ -20,6 +20,7 @@
 #include <vector>
 #include <optional>
 #include <memory>
+#include <string>
 
 class SoCamera;
 class SoGroup;
@@ -97,6 +98,22 @@ public:
     void deleteSelection();
     void addStroke(const manipulators::FinishedStroke& stroke);
 
+    /// Surface modes (issue 6): curves picked one by one become the inputs of a surface of
+    /// `mode` (a solvers/surfaces mode name; empty = no surface mode). When the mode's largest
+    /// count is reached the surface is built; fill and loft can be built earlier (buildSurface()).
+    /// Extrude instead drags a picked curve: the surface follows the pointer and is one undo step.
+    void setSurfaceMode(const std::string& mode);
+    const std::string& surfaceMode() const { return surfaceMode_; }
+    /// Adds `curve` to the picked inputs (a second pick of the last one takes it back).
+    void pickSurfaceInput(scene::EntityId curve);
+    const std::vector<scene::EntityId>& surfaceInputs() const { return surfaceInputs_; }
+    /// Builds the surface from the picked inputs (undoable); false with `surfaceMessage()` when
+    /// it cannot (too few inputs, the curves do not meet, ...). The picks are cleared either way.
+    bool buildSurface();
+    void cancelSurface();
+    /// What the surface mode wants next, or why the last build failed.
+    const QString& surfaceMessage() const { return surfaceMessage_; }
+
     /// Draws curves and surfaces with SoNurbsCurve / SoNurbsSurface (the frame-time comparison of
     /// issue 5 §4); call before load().
     void setNurbsNodes(bool nurbs);
@@ -113,6 +130,8 @@ Q_SIGNALS:
     void entitiesChanged();
     void selectionChanged(scene::EntityId id);
     void strokeFinished();
+    /// The surface mode's picks or message changed (status bar).
+    void surfaceStateChanged();
 
 private:
     /// The plane a stroke starting at `start` is drawn on (records strokeOnPlane_).
@@ -127,6 +146,11 @@ private:
     std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     void pullTo(const Eigen::Vector3d& local);
     void releaseCurve();
+    /// Extrude mode's drag (the pointer pulls the picked curve out into a surface).
+    std::optional<scene::PlaneFrame> grabExtrusion(const manipulators::StrokeHit& hit);
+    void extrudeTo(const Eigen::Vector3d& local);
+    void releaseExtrusion();
+    void setSurfaceMessage(const QString& message);
     void dragStarted(scene::EntityId plane);
     void dragFinished(scene::EntityId plane);
 
@@ -157,6 +181,14 @@ private:
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
+    scene::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
+    std::string surfaceMode_;
+    std::vector<scene::EntityId> surfaceInputs_;
+    QString surfaceMessage_;
+    /// Extrude drag: the profile, the surface shown live (in the model, not yet on the undo
+    /// stack), the grabbed point and the drag plane.
+    scene::EntityId extrudeProfile_ = 0, extrusion_ = 0;
+    scene::PlaneFrame extrudeFrame_;
 };
 
 }  // namespace sculptline::ui

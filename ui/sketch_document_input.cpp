@@ -86,6 +86,15 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         if (auto plane = scene::planeThroughPoints(from->point, to->point, from->binormal, stroke.start.view, kMinAuxiliarySize)) {
             manipulators::reproject(stroke, *plane);
             strokeOnPlane_ = 0;
+            // The stroke connects the two curves: its ends go exactly onto them (the picked points
+            // lie on the curves' tessellation, a fraction of a millimetre off), and the fit
+            // interpolates its ends, so the curves meet to round-off (a rail-rotation profile, a
+            // fill boundary).
+            if (stroke.points.size() >= 2) {
+                stroke.points.front() = plane->toLocal(from->point);
+                stroke.points.back() = plane->toLocal(to->point);
+                stroke.points.front().z() = stroke.points.back().z() = 0.0;
+            }
         }
     }
     if (stroke.points.size() < 2) return;
@@ -133,15 +142,18 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
         recognize(fit);
-        // Sampling points and corners where the stroke was drawn (indices into the raw samples).
+        // Sampling points and corners where the stroke was drawn (indices into the raw samples),
+        // in the plane's frame so that they follow the plane.
         const scene::PlaneFrame& drawn = added.size() > 1 ? added.front().frame : stroke.frame;
         std::vector<Eigen::Vector3d> samples, corners;
-        for (int i : fit.samples) samples.push_back(drawn.toWorld(stroke.points[static_cast<size_t>(i)]));
-        for (int i : fit.corners) corners.push_back(drawn.toWorld(stroke.points[static_cast<size_t>(i)]));
-        feedback_->show(samples, corners);
+        for (int i : fit.samples) samples.push_back(stroke.points[static_cast<size_t>(i)]);
+        for (int i : fit.corners) corners.push_back(stroke.points[static_cast<size_t>(i)]);
+        feedback_->show(drawn, samples, corners);
         const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
         undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         recognizedCurve_ = selection_;  // the command selects the curve it added
+        const scene::Entity* made = model_.find(selection_);
+        feedbackPlane_ = made ? made->plane() : 0;
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.
         lastStroke_.message = tr("Stroke not used: %1").arg(QString::fromStdString(e.what()));

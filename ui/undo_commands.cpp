@@ -9,7 +9,8 @@ scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
     switch (e.kind) {
     case scene::EntityKind::Plane: return model.addPlane(e.frame, e.id);
     case scene::EntityKind::Curve: return model.addCurve(e.plane(), *e.local, e.id);
-    case scene::EntityKind::Surface: return model.addSurface(*e.surface, e.id);
+    case scene::EntityKind::Surface:
+        return e.recipe ? model.addSurface(e.inputs, *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);
     }
     return 0;
 }

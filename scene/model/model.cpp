@@ -1,5 +1,7 @@
 #include "scene/model/model.h"
 
+#include "solvers/surfaces/surface_modes.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -45,14 +47,14 @@ void Model::setCurveShape(EntityId curve, const solvers::Curve3d& local)
     markDirty(curve);
 }
 
-EntityId Model::insert(Entity entity, EntityId id)
+EntityId Model::insert(Entity entity, EntityId id, bool built)
 {
     if (id == 0) id = nextId_;
     if (entities_.count(id) != 0) throw std::invalid_argument("entity id " + std::to_string(id) + " is taken");
     nextId_ = std::max(nextId_, id + 1);
     entity.id = id;
     for (EntityId input : entity.inputs) dependents_[input].insert(id);
-    recompute(entity);
+    if (!built) recompute(entity);
     entity.recomputations = 0;  // building is not an update
     const Entity& stored = entities_.emplace(id, std::move(entity)).first->second;
     for (ModelObserver* o : observers_) o->entityAdded(stored);
@@ -86,6 +88,92 @@ EntityId Model::addSurface(const solvers::Surface3d& surface, EntityId id)
     e.kind = EntityKind::Surface;
     e.surface = surface;
     return insert(std::move(e), id);
+}
+
+void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
+{
+    const InputCount count = surfaceInputCount(recipe.mode);
+    const int n = static_cast<int>(curves.size());
+    if (n < count.min || n > count.max) {
+        throw std::invalid_argument(recipe.mode + " needs " +
+                                    (count.min == count.max ? std::to_string(count.min)
+                                                            : std::to_string(count.min) + " to " + std::to_string(count.max)) +
+                                    " curves, got " + std::to_string(n));
+    }
+    for (EntityId c : curves) {
+        const Entity* e = find(c);
+        if (!e || e->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(c) + " is not a curve");
+    }
+}
+
+Entity Model::makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
+{
+    checkSurfaceInputs(curves, recipe);
+    Entity e;
+    e.kind = EntityKind::Surface;
+    e.inputs = curves;
+    e.recipe = recipe;
+    try {
+        buildSurface(e);
+    } catch (const std::exception& error) {
+        throw std::invalid_argument(error.what());
+    }
+    return e;
+}
+
+EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id,
+                           const solvers::Surface3d* saved)
+{
+    checkSurfaceInputs(curves, recipe);
+    Entity e;
+    e.kind = EntityKind::Surface;
+    e.inputs = curves;
+    e.recipe = recipe;
+    try {
+        buildSurface(e);
+    } catch (const std::exception& error) {
+        if (!saved) throw std::invalid_argument(error.what());
+        e.surface = *saved;
+        e.buildError = error.what();
+    }
+    return insert(std::move(e), id, true);
+}
+
+void Model::setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || !it->second.recipe) return;
+    it->second.recipe = recipe;
+    markDirty(surface);
+}
+
+void Model::buildSurface(Entity& e) const
+{
+    namespace surf = solvers::surfaces;
+    const SurfaceRecipe& r = *e.recipe;
+    std::vector<solvers::Curve3d> curves;
+    for (EntityId input : e.inputs) curves.push_back(*entities_.at(input).world);
+    surf::SurfaceOptions options;
+    options.tolerance = r.tolerance;
+    const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
+    if (mode == surf::SurfaceMode::Revolve) {
+        // The axis is the line the designer drew: the last input's ends, start to end.
+        const solvers::Curve3d axis = curves.back();
+        curves.pop_back();
+        options.axisPoint = axis.evaluate(axis.domainStart());
+        options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
+        options.angleDegrees = r.angleDegrees;
+    }
+    if (mode == surf::SurfaceMode::Extrude) {
+        const Entity& profile = entities_.at(e.inputs.front());
+        options.direction = profile.plane() != 0 ? Eigen::Vector3d(entities_.at(profile.plane()).frame.rotation * r.direction)
+                                                 : r.direction;
+    }
+    surf::SurfaceBuild build = surf::buildSurface(mode, curves, options);
+    e.surface = std::move(build.surface);
+    e.maxDeviation = build.maxDeviation;
+    e.buildError.clear();
+    ++e.shapeVersion;
 }
 
 void Model::setPlaneFrame(EntityId plane, const PlaneFrame& frame)
@@ -130,7 +218,18 @@ int Model::update()
 
 void Model::recompute(Entity& e)
 {
-    if (e.kind != EntityKind::Curve) return;  // planes hold their frame; surfaces are static for now
+    if (e.kind == EntityKind::Surface) {
+        if (!e.recipe) return;  // a static surface, as read
+        try {
+            buildSurface(e);
+        } catch (const std::exception& error) {
+            // Mid-drag the curves may pass through a configuration the mode cannot build (a fill
+            // whose boundaries no longer meet): keep the last good surface and say why.
+            e.buildError = error.what();
+        }
+        return;
+    }
+    if (e.kind != EntityKind::Curve) return;  // a plane holds its frame
     const EntityId plane = e.plane();
     e.world = plane != 0 ? transformCurve(*e.local, entities_.at(plane).frame) : *e.local;
 }

@@ -9,6 +9,7 @@
 // each exactly once, in dependency order. Ids grow with creation and an entity's inputs always exist
 // before it, so ascending id order is a topological order (restored entities keep their ids).
 #include "scene/model/plane_frame.h"
+#include "scene/model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 
 #include <cstdint>
@@ -38,11 +39,20 @@ struct Entity {
     /// Curve: derived world-space curve (the frame applied to the control points), kept for
     /// dependents (surfaces) and export; recomputed by update().
     std::optional<solvers::Curve3d> world;
-    std::optional<solvers::Surface3d> surface;  ///< Surface: as read (depends on nothing yet)
+    /// Surface: the current surface (rebuilt from the inputs by update() when it has a recipe).
+    std::optional<solvers::Surface3d> surface;
+    /// Surface: how it is built from its input curves (`inputs`, in the mode's order); absent = a
+    /// static surface as read from a document.
+    std::optional<SurfaceRecipe> recipe;
+    /// Surface: why the last rebuild failed (the curves no longer meet, ...), empty when it
+    /// succeeded; the last good surface is kept meanwhile.
+    std::string buildError;
+    /// Surface: the deviation an approximating mode reached (model units); negative for exact modes.
+    double maxDeviation = -1.0;
 
     int recomputations = 0;  ///< times update() recomputed this entity (tests count them)
     /// Curve: bumped whenever `local` is replaced (an over-sketch), so views know to re-tessellate;
-    /// a plane drag leaves it alone.
+    /// a plane drag leaves it alone. Surface: bumped on every rebuild.
     int shapeVersion = 0;
 
     EntityId plane() const { return kind == EntityKind::Curve && !inputs.empty() ? inputs.front() : 0; }
@@ -66,6 +76,18 @@ public:
     /// curve when plane = 0. @throws std::invalid_argument when `plane` is not a plane.
     EntityId addCurve(EntityId plane, const solvers::Curve3d& local, EntityId id = 0);
     EntityId addSurface(const solvers::Surface3d& surface, EntityId id = 0);
+    /// Adds a surface built from `curves` (world forms) by `recipe`, rebuilt whenever one of them
+    /// changes. When the first build fails, `saved` (the surface as it was saved or before an undo)
+    /// stands in with buildError set; without it nothing is added.
+    /// @throws std::invalid_argument when an input is not a curve, the count does not fit the mode,
+    ///         or the build fails and there is no `saved` surface (the message says why).
+    EntityId addSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id = 0,
+                        const solvers::Surface3d* saved = nullptr);
+    /// The surface entity `addSurface(curves, recipe)` would add (built, id 0), without adding it.
+    /// @throws std::invalid_argument as addSurface does.
+    Entity makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// Replaces a built surface's recipe (an extrusion following the pointer): marks it dirty.
+    void setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe);
 
     /// Moves a plane: only marks it dirty (the curves follow in the next update()).
     void setPlaneFrame(EntityId plane, const PlaneFrame& frame);
@@ -97,8 +119,13 @@ public:
     void setDirtyCallback(std::function<void()> callback) { dirtyCallback_ = std::move(callback); }
 
 private:
-    EntityId insert(Entity entity, EntityId id);
+    /// `built`: the entity's derived data is already computed (a surface built by addSurface).
+    EntityId insert(Entity entity, EntityId id, bool built = false);
     void recompute(Entity& entity);
+    /// @throws std::invalid_argument when `curves` do not fit `recipe` (count, kinds).
+    void checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// Builds a surface entity's surface from its recipe and inputs. @throws on failure.
+    void buildSurface(Entity& entity) const;
     void markDirty(EntityId id);
 
     std::map<EntityId, Entity> entities_;

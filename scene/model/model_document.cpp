@@ -22,7 +22,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface };
+    enum class Kind { Plane, Curve, Surface, Constructed };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -36,6 +36,10 @@ void populateModel(const SceneDocument& doc, Model& model)
         if (id != 0) byId[id] = {Kind::Surface, i};
         else unnumbered.push_back({Kind::Surface, i});
     }
+    for (size_t i = 0; i < doc.constructed.size(); ++i) {
+        if (doc.constructed[i].id != 0) byId[doc.constructed[i].id] = {Kind::Constructed, i};
+        else unnumbered.push_back({Kind::Constructed, i});
+    }
     auto create = [&](Kind kind, size_t i, EntityId id) {
         switch (kind) {
         case Kind::Plane: model.addPlane(planeFrame(doc.planes[i]), id); break;
@@ -45,6 +49,14 @@ void populateModel(const SceneDocument& doc, Model& model)
             break;
         }
         case Kind::Surface: model.addSurface(doc.surfaces[i], id); break;
+        case Kind::Constructed: {
+            // Rebuilt from its curves (the build is deterministic, so this is the saved surface);
+            // should it fail, the saved surface stands, with the reason on the entity.
+            const SceneDocument::ConstructedSurface& c = doc.constructed[i];
+            const std::vector<EntityId> curves(c.curves.begin(), c.curves.end());
+            model.addSurface(curves, c.recipe, id, c.saved ? &*c.saved : nullptr);
+            break;
+        }
         }
     };
     for (const auto& [id, entry] : byId) create(entry.first, entry.second, static_cast<EntityId>(id));
@@ -79,6 +91,13 @@ json modelToJson(const Model& model, const GridSpec& grid)
         case EntityKind::Surface: {
             json s = io::toJson(*e.surface);
             s["id"] = id;
+            if (e.recipe) {
+                json c{{"mode", e.recipe->mode}, {"curves", e.inputs}};
+                if (e.recipe->mode == "revolve") c["angle"] = e.recipe->angleDegrees;
+                if (e.recipe->mode == "extrude") c["direction"] = io::toJson(e.recipe->direction);
+                if (e.recipe->tolerance > 0.0) c["tolerance"] = e.recipe->tolerance;
+                s["construction"] = std::move(c);
+            }
             surfaces.push_back(std::move(s));
             break;
         }

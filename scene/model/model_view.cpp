@@ -14,6 +14,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTransform.h>
 
+#include <algorithm>
 #include <array>
 #include <string>
 
@@ -24,6 +25,8 @@ namespace {
 const std::array<SbColor, 3> kCurveColors{SbColor(1.0f, 0.5f, 0.1f), SbColor(0.95f, 0.85f, 0.2f),
                                           SbColor(0.95f, 0.3f, 0.55f)};
 const SbColor kHighlight(1.0f, 1.0f, 1.0f);
+/// Curves picked as the inputs of a surface being made: a cool cyan no curve colour uses.
+const SbColor kMarked(0.3f, 0.9f, 1.0f);
 /// Control polygons in a muted light grey: readable over planes and surfaces, never taken for a curve.
 const SbColor kPolygonColor(0.75f, 0.78f, 0.85f);
 constexpr float kPolygonPointSize = 5.0f;
@@ -77,6 +80,10 @@ CurveStyle ModelView::curveStyle(EntityId id) const
     CurveStyle style;
     // Offset so that the default scene's curve (id 2, after its plane) keeps the first colour.
     style.color = kCurveColors[(id + 1) % kCurveColors.size()];
+    if (std::find(marked_.begin(), marked_.end(), id) != marked_.end()) {
+        style.color = kMarked;
+        style.lineWidth = kHighlightWidth;
+    }
     if (id == highlighted_) {
         style.color = kHighlight;
         style.lineWidth = kHighlightWidth;
@@ -161,15 +168,18 @@ void ModelView::entityAdded(const Entity& e)
         break;
     }
     case EntityKind::Curve: addCurveNode(e); break;
-    case EntityKind::Surface: {
-        SoSeparator* node = nurbsNodes_ ? makeNurbsSurfaceNode(*e.surface) : makeSurfaceNode(*e.surface);
-        ++nodeBuilds_;
-        node->setName(nodeName("Surface", e.id).c_str());
-        surfaces_->addChild(node);
-        nodes_[e.id] = node;
-        break;
+    case EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
     }
-    }
+}
+
+SoSeparator* ModelView::makeSurfaceEntityNode(const Entity& e)
+{
+    SoSeparator* node = nurbsNodes_ ? makeNurbsSurfaceNode(*e.surface) : makeSurfaceNode(*e.surface);
+    ++nodeBuilds_;
+    node->setName(nodeName("Surface", e.id).c_str());
+    nodes_[e.id] = node;
+    builtShape_[e.id] = e.shapeVersion;
+    return node;
 }
 
 void ModelView::entityRemoved(const Entity& e)
@@ -185,6 +195,7 @@ void ModelView::entityRemoved(const Entity& e)
     frames_.erase(e.id);
     builtShape_.erase(e.id);
     if (highlighted_ == e.id) highlighted_ = 0;
+    marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
 
 void ModelView::entityUpdated(const Entity& e)
@@ -193,9 +204,26 @@ void ModelView::entityUpdated(const Entity& e)
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
     if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
+    if (e.kind == EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
+        // A built surface follows its curves: re-tessellated once per update that rebuilt it.
+        SoSeparator* old = nodes_.at(e.id);
+        surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(e));
+    }
     if (e.kind != EntityKind::Plane) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
+}
+
+void ModelView::setMarked(const std::vector<EntityId>& ids)
+{
+    if (ids == marked_) return;
+    std::vector<EntityId> changed = marked_;
+    changed.insert(changed.end(), ids.begin(), ids.end());
+    marked_ = ids;
+    for (EntityId id : changed) {
+        const Entity* e = model_.find(id);
+        if (e && e->kind == EntityKind::Curve) rebuildCurveNode(*e);
+    }
 }
 
 void ModelView::setHighlighted(EntityId id)

@@ -11,6 +11,7 @@
 #include "scene/model/model.h"
 
 #include <map>
+#include <vector>
 
 class SoGroup;
 class SoSeparator;
@@ -44,6 +45,9 @@ public:
 
     /// Draws curve `id` highlighted (selection); 0 = none.
     void setHighlighted(EntityId id);
+    /// Draws these curves marked (the inputs picked for a surface so far).
+    void setMarked(const std::vector<EntityId>& ids);
+    const std::vector<EntityId>& marked() const { return marked_; }
 
     void entityAdded(const Entity& entity) override;
     void entityRemoved(const Entity& entity) override;
@@ -54,6 +58,8 @@ private:
     void addCurveNode(const Entity& entity);
     void rebuildCurveNode(const Entity& entity);
     SoSeparator* makeCurveWithPolygon(const Entity& entity);
+    /// A surface's node, named and registered (nodes_, builtShape_).
+    SoSeparator* makeSurfaceEntityNode(const Entity& entity);
     CurveStyle curveStyle(EntityId id) const;
 
     Model& model_;
@@ -63,8 +69,9 @@ private:
     SoGroup* planeCurves_ = nullptr;
     std::map<EntityId, SoSeparator*> nodes_;
     std::map<EntityId, SoTransform*> frames_;
-    std::map<EntityId, int> builtShape_;  ///< a curve's shapeVersion its node was built from
+    std::map<EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
     EntityId highlighted_ = 0;
+    std::vector<EntityId> marked_;
     bool nurbsNodes_ = false;
     bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;

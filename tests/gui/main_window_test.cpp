@@ -11,8 +11,13 @@
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 
+#include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <QUndoStack>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -20,13 +25,21 @@
 namespace sculptline::ui {
 namespace {
 
+/// One QApplication and one SoQt::init for the whole test program (neither may be made twice).
+void startApplication()
+{
+    static int argc = 1;
+    static char name[] = "main_window_test";
+    static char* argv[] = {name, nullptr};
+    static QApplication* app = nullptr;
+    if (app) return;
+    app = new QApplication(argc, argv);
+    SoQt::init(static_cast<QWidget*>(nullptr));
+}
+
 TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
 {
-    int argc = 1;
-    char name[] = "main_window_test";
-    char* argv[] = {name, nullptr};
-    QApplication app(argc, argv);
-    SoQt::init(static_cast<QWidget*>(nullptr));
+    startApplication();
     MainWindow window;
     window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
     window.show();
@@ -60,7 +73,82 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     window.action(QStringLiteral("mode.view"))->trigger();
     EXPECT_TRUE(window.viewer()->isViewing());
 
+    // The surface modes each have an action with a hot key, and tell what to pick
+    for (const char* mode : {"mode.fill", "mode.revolve", "mode.extrude", "mode.sweep", "mode.loft", "mode.boundaryRotation",
+                             "mode.railRotation"}) {
+        QAction* a = window.action(QString::fromLatin1(mode));
+        ASSERT_NE(a, nullptr) << mode;
+        EXPECT_FALSE(a->shortcut().isEmpty()) << mode;
+    }
+    window.action(QStringLiteral("mode.revolve"))->trigger();
+    EXPECT_EQ(window.mode(), Mode::Surface);
+    EXPECT_EQ(window.surfaceMode(), "revolve");
+    EXPECT_TRUE(window.action(QStringLiteral("mode.revolve"))->isChecked());
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("profile"))) << window.statusBar()->currentMessage().toStdString();
+    // Picking the default curve (id 2) twice takes it back; a plane is not a curve
+    window.document().pickSurfaceInput(2);
+    EXPECT_EQ(window.document().surfaceInputs(), std::vector<scene::EntityId>{2});
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("axis"))) << window.statusBar()->currentMessage().toStdString();
+    window.document().pickSurfaceInput(2);
+    EXPECT_TRUE(window.document().surfaceInputs().empty());
+    window.document().pickSurfaceInput(1);
+    EXPECT_TRUE(window.document().surfaceInputs().empty());
+    // A loft through one curve is refused with a message and adds nothing
+    window.action(QStringLiteral("mode.loft"))->trigger();
+    window.document().pickSurfaceInput(2);
+    const size_t entities = window.document().model().entities().size();
+    EXPECT_FALSE(window.document().buildSurface());
+    EXPECT_EQ(window.document().model().entities().size(), entities);
+    EXPECT_FALSE(window.document().surfaceMessage().isEmpty());
+    window.action(QStringLiteral("mode.view"))->trigger();
+
     if (const char* shot = std::getenv("SCULPTLINE_WINDOW_SHOT")) window.grab().save(QString::fromLocal8Bit(shot));
+}
+
+/// Answers the next modal question box with `button` once it is shown; true through `answered`.
+void answerNextQuestion(QMessageBox::StandardButton button, bool* answered)
+{
+    QTimer::singleShot(50, [button, answered]() {
+        auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget());
+        if (!box) {
+            answerNextQuestion(button, answered);  // not shown yet: look again
+            return;
+        }
+        *answered = true;
+        box->button(button)->click();
+    });
+}
+
+TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
+{
+    startApplication();
+    MainWindow window;
+    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.show();
+    QApplication::processEvents();
+    // Given an edit (a new plane) that was not saved
+    window.action(QStringLiteral("plane.add"))->trigger();
+    ASSERT_FALSE(window.document().undoStack()->isClean());
+    const size_t entities = window.document().model().entities().size();
+    // When the window is closed and the question is answered "Cancel"
+    bool asked = false;
+    answerNextQuestion(QMessageBox::Cancel, &asked);
+    EXPECT_FALSE(window.close());
+    // Then it was asked, the window stays and the work is still there
+    EXPECT_TRUE(asked);
+    EXPECT_TRUE(window.isVisible());
+    EXPECT_EQ(window.document().model().entities().size(), entities);
+    // And File > New asks too; "Cancel" keeps the document
+    asked = false;
+    answerNextQuestion(QMessageBox::Cancel, &asked);
+    window.action(QStringLiteral("file.new"))->trigger();
+    EXPECT_TRUE(asked);
+    EXPECT_EQ(window.document().model().entities().size(), entities);
+    // And "Discard" lets it close
+    asked = false;
+    answerNextQuestion(QMessageBox::Discard, &asked);
+    EXPECT_TRUE(window.close());
+    EXPECT_TRUE(asked);
 }
 
 }  // namespace

@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""Writes the surface-model sessions of issue 6 §4 (the thesis's Figs. 5-7, 5-9, 5-10): a bottle with
+its plug and handle, a boat, a fish and a vase, each from a few strokes, plus the live-update
+benchmark session. Each session starts from a document in data/models/ that holds only the
+projection planes the designer placed (and, for the drag session, curves and surfaces); the strokes,
+mode switches and curve picks are replayed. Pointer events name model points ("at": [x, y, z]) and
+the replayer finds their pixels with the camera of the moment, so the sessions do not depend on how
+the window frames the scene. Units: mm, Z up."""
+import json
+import math
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+MODELS = os.path.join(os.path.dirname(HERE), "models")
+
+
+class Session:
+    def __init__(self):
+        self.events = []
+        self.t = 0
+
+    def tick(self, dt=20):
+        self.t += dt
+        return self.t
+
+    def action(self, name):
+        self.events.append({"type": "action", "name": name, "t": self.tick()})
+
+    def key(self, key):
+        self.events.append({"type": "key", "key": key, "t": self.tick()})
+
+    def stroke(self, points, dt=8):
+        """press, moves, release through world points (on the active plane)."""
+        self.events.append({"type": "press", "at": points[0], "button": "left", "t": self.tick(50)})
+        for p in points[1:]:
+            self.events.append({"type": "move", "at": p, "t": self.tick(dt)})
+        self.events.append({"type": "release", "at": points[-1], "button": "left", "t": self.tick(dt)})
+
+    def click(self, point):
+        self.events.append({"type": "press", "at": point, "button": "left", "t": self.tick(40)})
+        self.events.append({"type": "release", "at": point, "button": "left", "t": self.tick(10)})
+
+    def select_plane(self, origin):
+        """Select mode, a click on the plane's jack (at its origin), back to sketching."""
+        self.action("mode.select")
+        self.click(origin)
+        self.action("mode.sketch")
+
+    def write(self, name):
+        with open(os.path.join(HERE, name), "w") as f:
+            json.dump({"size": [800, 600], "events": self.events + [{"type": "wait", "ms": 50}]}, f, indent=1)
+            f.write("\n")
+
+
+def r(p):
+    return [round(c, 3) for c in p]
+
+
+def bezier(ctrl, n=40):
+    """Points of the Bezier curve with control points ctrl (any dimension), n samples."""
+    out = []
+    for i in range(n):
+        t = i / (n - 1)
+        pts = [list(c) for c in ctrl]
+        while len(pts) > 1:
+            pts = [[(1 - t) * a + t * b for a, b in zip(p, q)] for p, q in zip(pts, pts[1:])]
+        out.append(r(pts[0]))
+    return out
+
+
+def circle(centre, u, v, radius, n=48, turns=1.0):
+    return [r([centre[k] + radius * (math.cos(2 * math.pi * turns * i / (n - 1)) * u[k] +
+                                      math.sin(2 * math.pi * turns * i / (n - 1)) * v[k]) for k in range(3)])
+            for i in range(n)]
+
+
+def plane(pid, origin, normal, size, x_axis):
+    return {"id": pid, "origin": origin, "normal": normal, "size": size, "xAxis": x_axis}
+
+
+def write_document(name, planes, curves=(), surfaces=()):
+    doc = {"units": "mm", "grid": {"size": 200, "spacing": 10}, "planes": planes,
+           "curves": list(curves), "surfaces": list(surfaces)}
+    with open(os.path.join(MODELS, name), "w") as f:
+        json.dump(doc, f, indent=1)
+        f.write("\n")
+
+
+def bottle():
+    # Plane 1: small, facing +X at the handle's upper end (its profile circle); plane 2: the
+    # vertical XZ plane through the axis, added last so it is the active one.
+    handle_start = [37, 0, 78]
+    p1 = [37, 10, 88]
+    write_document("bottle_start.json", [plane(1, p1, [1, 0, 0], 40, [0, 1, 0]),
+                                         plane(2, [-20, 0, 65], [0, -1, 0], 180, [1, 0, 0])])
+    s = Session()
+    s.action("mode.sketch")
+    s.stroke([r([0, 0, z]) for z in range(8, 127, 3)])  # the axis
+    s.stroke(bezier([[18, 0, 6], [36, 0, 6], [34, 0, 40], [33, 0, 62], [32, 0, 84],
+                     [10, 0, 84], [10, 0, 100], [10, 0, 116]], 60))  # the bottle's profile
+    s.stroke(bezier([[2, 0, 132], [8, 0, 132], [8, 0, 120], [7, 0, 106]], 30))  # the plug's profile
+    s.stroke(bezier([handle_start, [62, 0, 78], [64, 0, 38], [37, 0, 40]], 40))  # the handle's path
+    s.select_plane(p1)
+    # The handle's section, started at its top: a start within the pick radius of the path
+    # would put the stroke on an auxiliary plane (seed 000 §3.1).
+    s.stroke(circle(handle_start, [0, 0, 1], [0, 1, 0], 8, 64))
+    s.action("stroke.useRecognized")
+    s.action("mode.revolve")
+    s.click([33.4, 0, 50])   # bottle profile
+    s.click([0, 0, 60])      # axis
+    s.click([8, 0, 126])     # plug profile
+    s.click([0, 0, 90])      # axis
+    s.action("mode.sweep")
+    s.click([37, -8, 78])  # section
+    s.click(bezier([handle_start, [62, 0, 78], [64, 0, 38], [37, 0, 40]], 41)[20])  # path
+    s.action("mode.view")
+    s.write("bottle.json")
+
+
+def boat():
+    # Five cross-section planes across the hull (normal +X), jacks above the sections.
+    xs = [-70, -35, 0, 35, 70]
+    half = [6, 26, 32, 28, 14]    # half beam at the gunwale
+    depth = [24, 22, 20, 19, 16]  # keel depth below the gunwale (z = 40)
+    planes = [plane(k + 1, [x, 0, 75], [1, 0, 0], 90, [0, 1, 0]) for k, x in enumerate(xs)]
+    write_document("boat_start.json", planes)
+    s = Session()
+    for k, x in enumerate(xs):
+        s.select_plane([x, 0, 75])
+        w, d = half[k], depth[k]
+        # a U from one gunwale round the keel to the other
+        s.stroke(bezier([[x, -w, 40], [x, -w, 40 - d], [x, w, 40 - d], [x, w, 40]], 36))
+    s.action("mode.loft")
+    for k, x in enumerate(xs):
+        w, d = half[k], depth[k]
+        s.click(r([x, 0, 40 - 0.75 * d]))  # bottom of each section
+    s.key("Return")
+    s.action("mode.view")
+    s.write("boat.json")
+
+
+def fish():
+    # One vertical plane (XZ) for the side view.
+    write_document("fish_start.json", [plane(1, [0, 0, 100], [0, -1, 0], 200, [1, 0, 0])])
+    s = Session()
+    s.action("mode.sketch")
+    top = bezier([[-60, 0, 42], [-50, 0, 72], [20, 0, 70], [40, 0, 43]], 40)
+    bottom = bezier([[-60, 0, 38], [-45, 0, 14], [15, 0, 18], [40, 0, 37]], 40)
+    tail_top = bezier([[47, 0, 43], [58, 0, 48], [66, 0, 62], [78, 0, 66]], 30)
+    tail_bottom = bezier([[47, 0, 37], [58, 0, 32], [66, 0, 20], [78, 0, 14]], 30)
+    for stroke in (top, bottom, tail_top, tail_bottom):
+        s.stroke(stroke)
+    s.action("mode.boundaryRotation")
+    s.click(top[18])
+    s.click(bottom[18])
+    s.click(tail_top[20])
+    s.click(tail_bottom[20])
+    s.action("mode.view")
+    s.write("fish.json")
+
+
+def vase():
+    # Two horizontal planes for the rails, their jacks well off the rails (a stroke pressed on a
+    # jack would drag the plane instead).
+    lower, upper = [0, 0, 10], [0, 0, 110]
+    jack1, jack2 = [-40, -40, 10], [-40, -40, 110]
+    write_document("vase_start.json", [plane(1, jack1, [0, 0, 1], 140, [1, 0, 0]),
+                                       plane(2, jack2, [0, 0, 1], 140, [1, 0, 0])])
+    s = Session()
+    s.select_plane(jack1)
+    s.stroke(circle(lower, [1, 0, 0], [0, 1, 0], 30, 56))
+    s.action("stroke.useRecognized")
+    s.select_plane(jack2)
+    s.stroke(circle(upper, [1, 0, 0], [0, 1, 0], 20, 56))
+    s.action("stroke.useRecognized")
+    # The profile from rail 1 to rail 2: a stroke between two curves lies on the plane through
+    # both points and the first curve's binormal (seed 000 §3.1), here the vertical XZ plane.
+    profile = bezier([[30, 0, 10], [60, 0, 40], [10, 0, 80], [20, 0, 110]], 40)
+    s.stroke(profile)
+    s.action("mode.railRotation")
+    s.click([-30, 0, 10])
+    s.click([-20, 0, 110])
+    s.click(profile[20])
+    s.action("mode.view")
+    s.write("vase.json")
+
+
+def cubic(ctrl):
+    return {"degree": 3, "knots": [0, 0, 0, 0, 1, 1, 1, 1], "points": ctrl}
+
+
+def surfaces_drag():
+    """20 curves' worth of work on one plane: four surfaces of four modes depend on its curves,
+    and the session drags the plane by its jack (issue 6 §2's latency goal)."""
+    # Plane 1 vertical (XZ, local x = X, local y = Z - 60); plane 2 small, facing +X, for the sweep's section.
+    # Plane 1 vertical (XZ: local x = X, local y = Z - 60), its jack at the centre kept clear of
+    # the surfaces (a press there must reach the dragger); plane 2 small, facing +Z, for the
+    # sweep's section at the path's start.
+    planes = [plane(1, [0, 0, 60], [0, -1, 0], 200, [1, 0, 0]), plane(2, [60, 8, 80], [0, 0, 1], 40, [1, 0, 0])]
+    curves = [
+        dict(cubic([[-90, 20], [-80, 60], [-60, 60], [-50, 20]]), id=3, plane=1),   # outline left
+        dict(cubic([[-90, 17], [-80, -5], [-60, -5], [-50, 17]]), id=4, plane=1),   # outline right
+        dict(cubic([[-25, -75], [-10, -60], [-25, -30], [-20, -10]]), id=5, plane=1),  # revolve profile
+        dict(cubic([[-40, -80], [-40, -60], [-40, -30], [-40, -5]]), id=6, plane=1),  # revolve axis
+        dict(cubic([[20, -70], [30, -50], [50, -80], [60, -60]]), id=7, plane=1),     # extrude profile
+        dict(cubic([[60, 20], [85, 30], [85, 70], [60, 80]]), id=8, plane=1),          # sweep path
+        {"degree": 2, "knots": [0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1],
+         "points": [[0, -3], [5, -3], [5, -8], [5, -13], [0, -13], [-5, -13], [-5, -8], [-5, -3], [0, -3]],
+         "weights": [1, 0.7071067811865476, 1, 0.7071067811865476, 1, 0.7071067811865476, 1, 0.7071067811865476, 1],
+         "id": 9, "plane": 2},                                                           # sweep section
+    ]
+    # Plane 2's local (0, -8) is world (60, 0, 80), the path's start: the section is centred there.
+    surfaces = [
+        {"id": 10, "construction": {"mode": "boundary-rotation", "curves": [3, 4]}},
+        {"id": 11, "construction": {"mode": "revolve", "curves": [5, 6], "angle": 360}},
+        {"id": 12, "construction": {"mode": "extrude", "curves": [7], "direction": [0, 0, 30]}},
+        {"id": 13, "construction": {"mode": "sweep", "curves": [9, 8]}},
+    ]
+    write_document("surfaces_drag_start.json", planes, curves, surfaces)
+    s = Session()
+    s.action("mode.sketch")
+    # The jack's translator plate at plane 1's origin, dragged in 60 steps.
+    start, end = [0, 0, 60], [30, 0, 80]
+    pts = [r([start[k] + (end[k] - start[k]) * i / 60 for k in range(3)]) for i in range(61)]
+    s.stroke(pts, dt=10)
+    s.write("surfaces_drag.json")
+
+
+def extrude():
+    """Thesis mode 3 on the default scene: a stroke on the default plane (y = 95, facing -Y), then
+    extrude mode: the curve is pressed and pulled 40 mm towards the viewer, the surface following
+    the pointer; then undo and redo of that one step."""
+    s = Session()
+    s.action("mode.sketch")
+    wave = [r([-40 + 80 * i / 39, 95, 50 + 10 * math.sin(2 * math.pi * i / 39)]) for i in range(40)]
+    s.stroke(wave)
+    s.action("mode.extrude")
+    grab = wave[10]
+    s.stroke([r([grab[0], grab[1] - 40 * i / 30, grab[2]]) for i in range(31)], dt=10)
+    s.key("Ctrl+Z")
+    s.key("Ctrl+Shift+Z")
+    s.action("mode.view")
+    s.write("extrude.json")
+
+
+if __name__ == "__main__":
+    extrude()
+    bottle()
+    boat()
+    fish()
+    vase()
+    surfaces_drag()

@@ -1,0 +1,204 @@
+// Surfaces as model entities (issue 6 §2): a surface built from curves by a recipe is rebuilt when
+// one of its curves changes (a plane drag, a new shape), only the affected surfaces are rebuilt,
+// once per update, a build that fails mid-drag keeps the last good surface, and documents save
+// the construction so reopening rebuilds the same surface. Headless (no Coin, no window).
+#include "scene/model/model.h"
+#include "scene/model/model_document.h"
+#include "scene/scene_document.h"
+#include "solvers/bspline/projection.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+
+namespace sculptline::scene {
+namespace {
+
+/// Round-off of the transforms and builds involved, far below any visible distance (mm).
+constexpr double kTolerance = 1e-9;
+
+solvers::Curve3d cubic(std::initializer_list<Eigen::Vector3d> points)
+{
+    return solvers::Curve3d(3, {0, 0, 0, 0, 1, 1, 1, 1}, std::vector<Eigen::Vector3d>(points));
+}
+
+/// A vertical plane (local x = world X, local y = world Z) through `origin`.
+PlaneFrame verticalFrame(const Eigen::Vector3d& origin)
+{
+    return PlaneFrame::fromNormal(origin, -Eigen::Vector3d::UnitY(), 200.0, Eigen::Vector3d::UnitX());
+}
+
+struct Scene {
+    Model model;
+    EntityId plane = 0, profile = 0, axis = 0, outlineA = 0, outlineB = 0, revolved = 0, rotated = 0;
+
+    Scene()
+    {
+        plane = model.addPlane(verticalFrame(Eigen::Vector3d(0, 0, 50)));
+        profile = model.addCurve(plane, cubic({{20, -40, 0}, {35, -10, 0}, {10, 10, 0}, {12, 40, 0}}));
+        axis = model.addCurve(plane, cubic({{0, -45, 0}, {0, -15, 0}, {0, 15, 0}, {0, 45, 0}}));
+        const EntityId other = model.addPlane(verticalFrame(Eigen::Vector3d(0, 80, 50)));
+        outlineA = model.addCurve(other, cubic({{-40, 0, 0}, {-20, 25, 0}, {20, 25, 0}, {40, 0, 0}}));
+        outlineB = model.addCurve(other, cubic({{-40, -3, 0}, {-20, -25, 0}, {20, -25, 0}, {40, -3, 0}}));
+        SurfaceRecipe revolve;
+        revolve.mode = "revolve";
+        revolved = model.addSurface({profile, axis}, revolve);
+        SurfaceRecipe rotation;
+        rotation.mode = "boundary-rotation";
+        rotated = model.addSurface({outlineA, outlineB}, rotation);
+    }
+};
+
+/// Largest distance from samples of `curve` to `surface` (the defining curve is met when ~0).
+double curveToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
+{
+    const solvers::SurfaceProjector projector(surface);
+    double worst = 0.0;
+    for (int k = 0; k <= 20; ++k) {
+        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 20.0;
+        worst = std::max(worst, projector.project(curve.evaluate(u)).distance);
+    }
+    return worst;
+}
+
+TEST(SurfaceEntity, ARevolvedSurfaceFollowsItsPlaneAndOnlyItIsRebuilt)
+{
+    // Given a revolve surface on plane 1's curves and a boundary rotation on plane 2's
+    Scene s;
+    const int rotatedBuilds = s.model.find(s.rotated)->shapeVersion;
+    // When plane 1 moves and turns
+    PlaneFrame moved = verticalFrame(Eigen::Vector3d(30, -20, 70));
+    moved.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ())) * moved.rotation;
+    s.model.setPlaneFrame(s.plane, moved);
+    s.model.update();
+    // Then the revolved surface was rebuilt once and still contains its (moved) profile
+    const Entity* revolved = s.model.find(s.revolved);
+    EXPECT_EQ(revolved->recomputations, 1);
+    EXPECT_TRUE(revolved->buildError.empty());
+    EXPECT_LT(curveToSurface(*s.model.find(s.profile)->world, *revolved->surface), kTolerance);
+    // And its axis is the moved axis line: the surface's points keep their distance from it
+    const solvers::Curve3d& axis = *s.model.find(s.axis)->world;
+    const Eigen::Vector3d a0 = axis.evaluate(0.0), dir = (axis.evaluate(1.0) - a0).normalized();
+    const auto distanceFromAxis = [&](const Eigen::Vector3d& x) { return (x - a0 - (x - a0).dot(dir) * dir).norm(); };
+    const solvers::Curve3d& profile = *s.model.find(s.profile)->world;
+    for (double v : {0.1, 0.37, 0.8}) {
+        EXPECT_NEAR(distanceFromAxis(revolved->surface->evaluate(0.5, v)), distanceFromAxis(profile.evaluate(0.5)), kTolerance);
+    }
+    // And the surface on the other plane was not touched
+    EXPECT_EQ(s.model.find(s.rotated)->recomputations, 0);
+    EXPECT_EQ(s.model.find(s.rotated)->shapeVersion, rotatedBuilds);
+}
+
+TEST(SurfaceEntity, ANewCurveShapeRebuildsItsSurfacesOnce)
+{
+    // Given the two surfaces
+    Scene s;
+    // When one outline is redrawn
+    s.model.setCurveShape(s.outlineA, cubic({{-40, 0, 0}, {-20, 35, 0}, {20, 35, 0}, {40, 0, 0}}));
+    const int recomputed = s.model.update();
+    // Then the curve and its one surface were recomputed, once each, and the surface meets the
+    // new outline within the deviation it reports
+    EXPECT_EQ(recomputed, 2);
+    const Entity* rotated = s.model.find(s.rotated);
+    EXPECT_EQ(rotated->recomputations, 1);
+    ASSERT_GE(rotated->maxDeviation, 0.0);
+    EXPECT_LT(curveToSurface(*s.model.find(s.outlineA)->world, *rotated->surface), rotated->maxDeviation + kTolerance);
+    EXPECT_EQ(s.model.find(s.revolved)->recomputations, 0);
+}
+
+TEST(SurfaceEntity, AFailedRebuildKeepsTheLastSurfaceAndSaysWhy)
+{
+    // Given a revolve about an axis line
+    Scene s;
+    const solvers::Surface3d before = *s.model.find(s.revolved)->surface;
+    // When the axis collapses to a point (no direction), then comes back
+    s.model.setCurveShape(s.axis, cubic({{0, 5, 0}, {0, 5, 0}, {0, 5, 0}, {0, 5, 0}}));
+    s.model.update();
+    // Then the surface is the last good one, with the reason
+    const Entity* revolved = s.model.find(s.revolved);
+    EXPECT_FALSE(revolved->buildError.empty());
+    EXPECT_EQ(revolved->surface->points(), before.points());
+    s.model.setCurveShape(s.axis, cubic({{0, -45, 0}, {0, -15, 0}, {0, 15, 0}, {0, 45, 0}}));
+    s.model.update();
+    EXPECT_TRUE(s.model.find(s.revolved)->buildError.empty());
+}
+
+TEST(SurfaceEntity, ImpossibleInputIsRefusedWithAMessageAndAddsNothing)
+{
+    Scene s;
+    const size_t count = s.model.entities().size();
+    SurfaceRecipe fill;
+    fill.mode = "fill";
+    // Two curves whose ends are far apart do not bound a surface
+    EXPECT_THROW(s.model.addSurface({s.profile, s.outlineA}, fill), std::invalid_argument);
+    // A plane is not a curve, and revolve takes exactly a profile and an axis
+    SurfaceRecipe revolve;
+    revolve.mode = "revolve";
+    EXPECT_THROW(s.model.addSurface({s.profile, s.plane}, revolve), std::invalid_argument);
+    EXPECT_THROW(s.model.addSurface({s.profile}, revolve), std::invalid_argument);
+    SurfaceRecipe unknown;
+    unknown.mode = "teleport";
+    EXPECT_THROW(s.model.addSurface({s.profile}, unknown), std::invalid_argument);
+    EXPECT_EQ(s.model.entities().size(), count);
+}
+
+TEST(SurfaceEntity, RemovingACurveTakesItsSurfacesAlong)
+{
+    Scene s;
+    const std::vector<Entity> removed = s.model.remove(s.axis);
+    ASSERT_EQ(removed.size(), 2u);
+    EXPECT_EQ(removed[1].id, s.revolved);
+    EXPECT_EQ(s.model.find(s.revolved), nullptr);
+    EXPECT_NE(s.model.find(s.rotated), nullptr);
+}
+
+TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
+{
+    // Given the model with an extrusion too, saved
+    Scene s;
+    SurfaceRecipe extrude;
+    extrude.mode = "extrude";
+    extrude.direction = Eigen::Vector3d(0, 0, 25);  // along plane 1's normal
+    const EntityId extruded = s.model.addSurface({s.profile}, extrude);
+    const nlohmann::json saved = modelToJson(s.model, GridSpec{});
+    // When it is read back into a new model
+    Model reopened;
+    populateModel(documentFromJson(saved), reopened);
+    // Then every surface has its construction and the very same control points
+    for (EntityId id : {s.revolved, s.rotated, extruded}) {
+        const Entity* a = s.model.find(id);
+        const Entity* b = reopened.find(id);
+        ASSERT_NE(b, nullptr) << id;
+        ASSERT_TRUE(b->recipe) << id;
+        EXPECT_EQ(b->recipe->mode, a->recipe->mode);
+        EXPECT_EQ(b->inputs, a->inputs);
+        EXPECT_EQ(b->surface->points(), a->surface->points()) << id;
+    }
+    // And the extrusion is along the plane's normal, 25 mm
+    const Entity* e = reopened.find(extruded);
+    const Eigen::Vector3d normal = reopened.find(s.plane)->frame.normal();
+    const solvers::Curve3d& profile = *reopened.find(s.profile)->world;
+    // (S(u, v) = profile(u) + v·direction, solvers/surfaces/extrude.h)
+    EXPECT_LT((e->surface->evaluate(0.3, 1.0) - (profile.evaluate(0.3) + 25.0 * normal)).norm(), kTolerance);
+}
+
+TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
+{
+    const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"id": 5, "construction": {"mode": "loft", "curves": [1, 2]}}]})");
+    try {
+        documentFromJson(doc);
+        FAIL() << "accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("surfaces[0].construction.curves[0]"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SurfaceDocument, AnUnknownModeIsRefused)
+{
+    const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"construction": {"mode": "melt", "curves": []}}]})");
+    EXPECT_THROW(documentFromJson(doc), std::exception);
+}
+
+}  // namespace
+}  // namespace sculptline::scene

@@ -1,0 +1,253 @@
+// Checks the surface models of issue 6 §4 made by replays under Xvfb (tests/gui/CMakeLists.txt runs
+// `sculptline data/models/<m>_start.json --replay data/sessions/<m>.json --save --export-iv
+// --screenshot` first): the documents hold surfaces built by the intended modes from the sketched
+// curves, the surfaces meet their defining curves, the exported .iv reads back in Coin with the same
+// geometry, and the live-update session moved the surfaces with the dragged plane. Files are in
+// $SCULPTLINE_REPLAY_DIR.
+#include "scene/model/model.h"
+#include "scene/model/model_document.h"
+#include "scene/scene_document.h"
+#include "solvers/bspline/projection.h"
+
+#include <Inventor/SoDB.h>
+#include <Inventor/SoInput.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <QColor>
+#include <QImage>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace sculptline {
+namespace {
+
+/// Exact modes meet their curves to round-off (issue 6 §3: 1e-9); the reported deviation of the
+/// approximating ones is checked against their own report.
+constexpr double kExact = 1e-9;
+/// Coin stores coordinates as float: a model of 100 mm keeps about 1e-5 mm; the tessellation's
+/// vertices lie on the surface.
+constexpr double kFloatTolerance = 1e-3;
+/// Pixels of surface shading expected in an 800x600 view of a model that fills a good part of it.
+constexpr int kMinSurfacePixels = 5000;
+
+std::string file(const std::string& name)
+{
+    const char* dir = std::getenv("SCULPTLINE_REPLAY_DIR");
+    return std::string(dir ? dir : ".") + "/" + name;
+}
+
+scene::Model readModel(const std::string& name)
+{
+    scene::Model model;
+    scene::populateModel(scene::loadDocument(file(name)), model);
+    return model;
+}
+
+std::vector<const scene::Entity*> surfaces(const scene::Model& model)
+{
+    std::vector<const scene::Entity*> out;
+    for (const auto& [id, e] : model.entities()) {
+        if (e.kind == scene::EntityKind::Surface) out.push_back(&e);
+    }
+    return out;
+}
+
+/// Largest distance from 41 samples of `curve` to `surface`.
+double curveToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
+{
+    const solvers::SurfaceProjector projector(surface);
+    double worst = 0.0;
+    for (int k = 0; k <= 40; ++k) {
+        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 40.0;
+        worst = std::max(worst, projector.project(curve.evaluate(u)).distance);
+    }
+    return worst;
+}
+
+/// Every defining curve of every surface lies on it: exactly for exact modes, within the reported
+/// deviation (plus the curve's own sampling) for approximating ones.
+void expectCurvesMet(const scene::Model& model, const scene::Entity& s)
+{
+    ASSERT_TRUE(s.recipe);
+    EXPECT_TRUE(s.buildError.empty()) << s.buildError;
+    const double tolerance = s.maxDeviation >= 0.0 ? s.maxDeviation + kExact : kExact;
+    for (size_t k = 0; k < s.inputs.size(); ++k) {
+        if (s.recipe->mode == "revolve" && k == 1) continue;  // the axis is not on the surface
+        if (s.recipe->mode == "sweep" && k == 1) continue;    // nor is the sweep's path
+        EXPECT_LT(curveToSurface(*model.find(s.inputs[k])->world, *s.surface), tolerance)
+            << s.recipe->mode << " surface " << s.id << " input " << s.inputs[k];
+    }
+}
+
+/// The exported .iv read back with Coin: each surface's vertices lie on the saved surface.
+void expectExportMatches(const std::string& iv, const scene::Model& model)
+{
+    SoDB::init();
+    SoInput in;
+    ASSERT_TRUE(in.openFile(file(iv).c_str())) << iv;
+    SoSeparator* root = SoDB::readAll(&in);
+    ASSERT_NE(root, nullptr) << iv;
+    root->ref();
+    const auto all = surfaces(model);
+    for (const scene::Entity* s : all) {
+        SoSearchAction search;
+        search.setName(SbName(("surface" + std::to_string(s->id)).c_str()));
+        search.apply(root);
+        ASSERT_NE(search.getPath(), nullptr) << "surface" << s->id;
+        SoSearchAction coords;
+        coords.setType(SoCoordinate3::getClassTypeId());
+        coords.apply(search.getPath()->getTail());
+        ASSERT_NE(coords.getPath(), nullptr);
+        const auto* c = static_cast<SoCoordinate3*>(coords.getPath()->getTail());
+        ASSERT_GT(c->point.getNum(), 16);
+        const solvers::SurfaceProjector projector(*s->surface);
+        for (int i = 0; i < c->point.getNum(); i += 7) {
+            const SbVec3f p = c->point[i];
+            EXPECT_LT(projector.project(Eigen::Vector3d(p[0], p[1], p[2])).distance, kFloatTolerance) << s->id << " vertex " << i;
+        }
+    }
+    root->unref();
+}
+
+/// Pixels of the cool blue-grey surface shading (scene/geometry_nodes.cpp's surface colour, lit).
+int surfacePixels(const std::string& png)
+{
+    const QImage image(QString::fromStdString(file(png)));
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c(image.pixel(x, y));
+            n += c.blue() > c.red() + 25 && c.blue() > 90 ? 1 : 0;
+        }
+    }
+    return n;
+}
+
+std::map<std::string, int> modes(const scene::Model& model)
+{
+    std::map<std::string, int> count;
+    for (const scene::Entity* s : surfaces(model)) ++count[s->recipe ? s->recipe->mode : "static"];
+    return count;
+}
+
+TEST(SurfaceModels, BottleWithPlugAndHandle)
+{
+    const scene::Model model = readModel("bottle.json");
+    // Two revolves (the bottle and its plug about the same drawn axis) and a swept handle
+    EXPECT_EQ(modes(model), (std::map<std::string, int>{{"revolve", 2}, {"sweep", 1}}));
+    for (const scene::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
+    // Both revolves share their axis curve, and the handle's section is an exact (rational) circle
+    std::vector<scene::EntityId> axes;
+    for (const scene::Entity* s : surfaces(model)) {
+        if (s->recipe->mode == "revolve") axes.push_back(s->inputs[1]);
+        if (s->recipe->mode == "sweep") {
+            EXPECT_TRUE(model.find(s->inputs[0])->world->isRational());
+        }
+    }
+    ASSERT_EQ(axes.size(), 2u);
+    EXPECT_EQ(axes[0], axes[1]);
+    expectExportMatches("bottle.iv", model);
+    EXPECT_GT(surfacePixels("bottle.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, BoatSkinnedThroughFiveSections)
+{
+    const scene::Model model = readModel("boat.json");
+    EXPECT_EQ(modes(model), (std::map<std::string, int>{{"loft", 1}}));
+    const auto all = surfaces(model);
+    ASSERT_EQ(all.size(), 1u);
+    EXPECT_EQ(all[0]->inputs.size(), 5u);
+    expectCurvesMet(model, *all[0]);
+    expectExportMatches("boat.iv", model);
+    EXPECT_GT(surfacePixels("boat.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, FishBodyAndTailByBoundaryRotation)
+{
+    const scene::Model model = readModel("fish.json");
+    EXPECT_EQ(modes(model), (std::map<std::string, int>{{"boundary-rotation", 2}}));
+    for (const scene::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
+    expectExportMatches("fish.iv", model);
+    EXPECT_GT(surfacePixels("fish.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, VaseByRailRotation)
+{
+    const scene::Model model = readModel("vase.json");
+    EXPECT_EQ(modes(model), (std::map<std::string, int>{{"rail-rotation", 1}}));
+    const auto all = surfaces(model);
+    ASSERT_EQ(all.size(), 1u);
+    // The rails are the recognizer's closed circles
+    for (size_t k : {0u, 1u}) {
+        const solvers::Curve3d& rail = *model.find(all[0]->inputs[k])->world;
+        EXPECT_TRUE(rail.isRational()) << k;
+        EXPECT_LT((rail.evaluate(rail.domainStart()) - rail.evaluate(rail.domainEnd())).norm(), kExact) << k;
+    }
+    expectCurvesMet(model, *all[0]);
+    expectExportMatches("vase.iv", model);
+    EXPECT_GT(surfacePixels("vase.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, DraggingAPlaneRebuildsTheFourSurfacesOnItsCurves)
+{
+    // The start document's plane 1 was dragged by its jack in the replay
+    scene::Model before;
+    scene::populateModel(scene::loadDocument(std::string(SCULPTLINE_DATA_DIR) + "/models/surfaces_drag_start.json"), before);
+    const scene::Model after = readModel("surfaces_drag.json");
+    EXPECT_GT((after.find(1)->frame.origin - before.find(1)->frame.origin).norm(), 5.0);
+    // Every surface was rebuilt where its curves now are
+    const auto all = surfaces(after);
+    ASSERT_EQ(all.size(), 4u);
+    for (const scene::Entity* s : all) {
+        expectCurvesMet(after, *s);
+        EXPECT_NE(s->surface->points(), before.find(s->id)->surface->points()) << s->id;
+    }
+    // And the replay measured the drag (the latencies themselves are reported, not asserted)
+    std::ifstream in(file("surfaces_drag_stats.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    ASSERT_TRUE(stats.contains("drag_move")) << stats.dump();
+    EXPECT_GE(stats["drag_move"]["count"].get<int>(), 30);
+}
+
+TEST(SurfaceModels, ExtrudingByDraggingACurveIsOneUndoableStep)
+{
+    // The stroke's curve was pulled 40 mm along the plane's normal (-Y), undone and redone
+    const scene::Model model = readModel("extrude.json");
+    const auto all = surfaces(model);
+    ASSERT_EQ(all.size(), 2u);  // the default scene's surface and the extrusion
+    const scene::Entity* e = all[1];
+    ASSERT_TRUE(e->recipe);
+    EXPECT_EQ(e->recipe->mode, "extrude");
+    expectCurvesMet(model, *e);
+    // S(u, 1) - S(u, 0) is the world direction: towards the viewer, about 40 mm. The press grabs
+    // the curve point the pick found within its 5-pixel radius, and pixels are about 0.45 mm
+    // here, so the pointer and the grabbed point may differ by up to kPointerSlack.
+    constexpr double kPointerSlack = 2.5;
+    const Eigen::Vector3d d = e->surface->evaluate(0.5, 1.0) - e->surface->evaluate(0.5, 0.0);
+    EXPECT_NEAR(d.y(), -40.0, kPointerSlack);
+    EXPECT_LT(std::hypot(d.x(), d.z()), kPointerSlack);
+}
+
+TEST(SurfaceModels, SavedModelsReopenToTheSameSurfaces)
+{
+    // The bottle reopened and saved again (gui_replay_bottle_reopen) has the same surfaces
+    const scene::Model a = readModel("bottle.json");
+    const scene::Model b = readModel("bottle_reopened.json");
+    const auto sa = surfaces(a), sb = surfaces(b);
+    ASSERT_EQ(sa.size(), sb.size());
+    for (size_t i = 0; i < sa.size(); ++i) {
+        EXPECT_EQ(sa[i]->id, sb[i]->id);
+        EXPECT_EQ(sa[i]->surface->points(), sb[i]->surface->points());
+    }
+}
+
+}  // namespace
+}  // namespace sculptline

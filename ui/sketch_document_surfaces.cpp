@@ -1,0 +1,137 @@
+// SketchDocument's surface modes (issue 6): picking the input curves of a surface, building it as
+// one undo step, and extrusion by dragging a curve. The surface itself is a model entity with a
+// recipe (scene/model/surface_recipe.h): the model rebuilds it whenever one of its curves changes.
+#include "ui/sketch_document.h"
+
+#include "manipulators/stroke_input.h"
+#include "ui/undo_commands.h"
+
+#include <algorithm>
+
+namespace sculptline::ui {
+namespace {
+
+/// Pointer travel (model units) below which an extrusion is not started: a click is not a drag.
+constexpr double kMinExtrusion = 1e-3;
+
+}  // namespace
+
+void SketchDocument::setSurfaceMode(const std::string& mode)
+{
+    if (mode == surfaceMode_) return;
+    surfaceMode_ = mode;
+    surfaceInputs_.clear();
+    view_->setMarked({});
+    setSurfaceMessage(QString());
+}
+
+void SketchDocument::setSurfaceMessage(const QString& message)
+{
+    surfaceMessage_ = message;
+    Q_EMIT surfaceStateChanged();
+}
+
+void SketchDocument::pickSurfaceInput(scene::EntityId curve)
+{
+    const scene::Entity* e = model_.find(curve);
+    if (surfaceMode_.empty() || !e || e->kind != scene::EntityKind::Curve) return;
+    if (!surfaceInputs_.empty() && surfaceInputs_.back() == curve) {
+        surfaceInputs_.pop_back();  // picked twice: taken back
+    } else if (std::find(surfaceInputs_.begin(), surfaceInputs_.end(), curve) != surfaceInputs_.end()) {
+        setSurfaceMessage(tr("Curve %1 is already an input of this surface.").arg(curve));
+        return;
+    } else {
+        surfaceInputs_.push_back(curve);
+    }
+    view_->setMarked(surfaceInputs_);
+    const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
+    if (static_cast<int>(surfaceInputs_.size()) >= count.max) {
+        buildSurface();
+        return;
+    }
+    setSurfaceMessage(QString());
+}
+
+bool SketchDocument::buildSurface()
+{
+    if (surfaceMode_.empty()) return false;
+    const std::vector<scene::EntityId> inputs = surfaceInputs_;
+    surfaceInputs_.clear();
+    view_->setMarked({});
+    scheduler_->flush();
+    scene::SurfaceRecipe recipe;
+    recipe.mode = surfaceMode_;
+    try {
+        scene::Entity surface = model_.makeSurface(inputs, recipe);
+        undo_.push(new AddEntitiesCommand(*this, {surface}, tr("Make %1 surface").arg(QString::fromStdString(surfaceMode_))));
+    } catch (const std::exception& error) {
+        setSurfaceMessage(tr("No %1 surface: %2").arg(QString::fromStdString(surfaceMode_), QString::fromStdString(error.what())));
+        return false;
+    }
+    const scene::Entity* made = model_.find(selection_);
+    setSurfaceMessage(made && made->maxDeviation >= 0.0
+                          ? tr("Surface %1 made (within %2 of its construction).").arg(made->id).arg(made->maxDeviation, 0, 'g', 3)
+                          : tr("Surface %1 made.").arg(selection_));
+    return true;
+}
+
+void SketchDocument::cancelSurface()
+{
+    surfaceInputs_.clear();
+    view_->setMarked({});
+    setSurfaceMessage(QString());
+}
+
+std::optional<scene::PlaneFrame> SketchDocument::grabExtrusion(const manipulators::StrokeHit& hit)
+{
+    const scene::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != scene::EntityKind::Curve) return std::nullopt;
+    scheduler_->flush();
+    // The drag plane contains the profile plane's normal and faces the viewer as much as it can:
+    // pulling towards or away from the plane and sideways both read naturally on screen.
+    const Eigen::Vector3d n = curve->plane() != 0 ? model_.find(curve->plane())->frame.normal() : Eigen::Vector3d::UnitZ();
+    Eigen::Vector3d facing = -hit.view - (-hit.view).dot(n) * n;
+    if (facing.norm() < 1e-6) facing = n.unitOrthogonal();  // looking along n: any plane containing it
+    extrudeFrame_ = scene::PlaneFrame::fromNormal(hit.point, facing.normalized(), 1.0, n);
+    extrudeProfile_ = curve->id;
+    extrusion_ = 0;
+    select(curve->id);
+    return extrudeFrame_;
+}
+
+void SketchDocument::extrudeTo(const Eigen::Vector3d& local)
+{
+    const scene::Entity* profile = model_.find(extrudeProfile_);
+    if (!profile) return;
+    const Eigen::Vector3d world = extrudeFrame_.rotation * local;
+    if (extrusion_ == 0 && world.norm() < kMinExtrusion) return;
+    scene::SurfaceRecipe recipe;
+    recipe.mode = "extrude";
+    // Stored in the profile plane's frame so that the extrusion turns with the plane.
+    recipe.direction = profile->plane() != 0 ? Eigen::Vector3d(model_.find(profile->plane())->frame.rotation.conjugate() * world) : world;
+    if (extrusion_ != 0) {
+        model_.setSurfaceRecipe(extrusion_, recipe);  // rebuilt once per frame by the scheduler
+        return;
+    }
+    try {
+        // Shown live in the model, outside the undo stack, until the release makes it one step.
+        extrusion_ = model_.addSurface({extrudeProfile_}, recipe);
+    } catch (const std::exception& error) {
+        setSurfaceMessage(tr("No extrusion: %1").arg(QString::fromStdString(error.what())));
+    }
+}
+
+void SketchDocument::releaseExtrusion()
+{
+    scheduler_->flush();
+    const scene::EntityId id = extrusion_;
+    extrusion_ = 0;
+    extrudeProfile_ = 0;
+    const scene::Entity* e = model_.find(id);
+    if (!e) return;
+    std::vector<scene::Entity> removed = model_.remove(id);
+    undo_.push(new AddEntitiesCommand(*this, removed, tr("Extrude curve %1").arg(removed.front().inputs.front())));
+    setSurfaceMessage(tr("Surface %1 made.").arg(id));
+}
+
+}  // namespace sculptline::ui
