@@ -107,6 +107,29 @@ void clusterSamples(const std::vector<Eigen::Vector3d>& pts, const std::vector<d
     if (last > 0 && cs.source.back() != sources[last] && (pts[last] - pts[0]).squaredNorm() > 0.0) keep(last);
 }
 
+// [first, last] without the light-pressure hooks at the ends (ConditioningOptions::hookPressure).
+std::pair<int, int> withoutHooks(const Stroke& s, const ConditioningOptions& o)
+{
+    const int last = static_cast<int>(s.points.size()) - 1;
+    if (s.pressure.empty() || last < 4) return {0, last};
+    std::vector<double> sorted = s.pressure;
+    std::nth_element(sorted.begin(), sorted.begin() + last / 2, sorted.end());
+    const double light = o.hookPressure * sorted[last / 2];
+    if (!(light > 0.0)) return {0, last};
+    double total = 0.0;
+    for (int i = 1; i <= last; ++i) total += (s.points[i] - s.points[i - 1]).norm();
+    const double maxLength = o.maxHookLength * total;
+    int a = 0, b = last;
+    double len = 0.0;
+    while (a < last && s.pressure[a] < light) len += (s.points[a + 1] - s.points[a]).norm(), ++a;
+    if (len > maxLength) a = 0;
+    len = 0.0;
+    while (b > a && s.pressure[b] < light) len += (s.points[b] - s.points[b - 1]).norm(), --b;
+    if (len > maxLength) b = last;
+    if (b - a < 1) return {0, last};  // all light: nothing to tell hook from stroke
+    return {a, b};
+}
+
 template <typename T>
 void keepRange(std::vector<T>& v, int first, int last)
 {
@@ -176,14 +199,24 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
         rawLength += (stroke.points[i] - stroke.points[i - stride]).norm();
     }
     double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
-    const int last = static_cast<int>(stroke.points.size()) - 1;
-    std::vector<double> times(stroke.points.size());
-    std::vector<int> sources(stroke.points.size());
-    for (int i = 0; i <= last; ++i) {
-        times[i] = timed ? stroke.times[i] : static_cast<double>(i);
-        sources[i] = i;
+    const auto [first, last] = withoutHooks(stroke, options);
+    if (first > 0) cs.warnings.push_back("stroke: light-pressure hook trimmed at the start (samples 0.." + std::to_string(first - 1) + ")");
+    if (last + 1 < static_cast<int>(stroke.points.size())) {
+        cs.warnings.push_back("stroke: light-pressure hook trimmed at the end (samples " + std::to_string(last + 1) + ".." +
+                              std::to_string(stroke.points.size() - 1) + ")");
     }
-    clusterSamples(stroke.points, times, sources, minDist, cs);
+    std::vector<double> times(static_cast<size_t>(last - first + 1));
+    std::vector<int> sources(times.size());
+    for (int i = first; i <= last; ++i) {
+        times[i - first] = timed ? stroke.times[i] : static_cast<double>(i);
+        sources[i - first] = i;
+    }
+    if (first == 0 && last + 1 == static_cast<int>(stroke.points.size())) {
+        clusterSamples(stroke.points, times, sources, minDist, cs);
+    } else {
+        clusterSamples(std::vector<Eigen::Vector3d>(stroke.points.begin() + first, stroke.points.begin() + last + 1), times,
+                       sources, minDist, cs);
+    }
     // The strided length can still be inflated by jitter; the clusters are averaged and nearly
     // noise-free, so a second pass over them with their own length honours the bound.
     for (int pass = 0; pass < 2 && cs.size() > options.maxSamples; ++pass) {

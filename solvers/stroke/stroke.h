@@ -37,6 +37,14 @@ struct ConditioningOptions {
     /// Upper bound on the conditioned sample count; denser input is thinned first so that a
     /// million-sample stroke is handled in bounded time.
     int maxSamples = 20000;
+    /// Pen-down and pen-up hooks (the digitizer artifacts of seed 003 §3.1): while the pressure builds
+    /// up or falls off the tip skids, and the first or last few samples curl away from the stroke.
+    /// End samples drawn with less than this fraction of the stroke's median pressure are trimmed...
+    double hookPressure = 0.5;
+    /// ...when the light run is at most this share of the stroke's path length (a hook is a few
+    /// pixels; a longer light run was drawn on purpose and is kept). Strokes without pressure are
+    /// not trimmed.
+    double maxHookLength = 0.08;
 };
 
 /// The stroke after validation, de-duplication, closure detection and corner-preserving smoothing.

@@ -180,5 +180,67 @@ TEST(StrokeFit, GivenFig43Stroke_WhenDynamicThresholdSampling_ThenAtMost18Contro
     }
 }
 
+// A pen-down hook: the first samples, drawn while the pressure builds up, curl ~9 units away from
+// the stroke (about 4 % of its length) before the line starts at pressure 0.8.
+Stroke hookedLine()
+{
+    DrawOptions d;
+    d.noise = kNoiseSigma;
+    Stroke line = draw(lineShape({0, 0, 0}, {200, 0, 0}), d);
+    const std::vector<Vec3> hook = {{-2, 9, 0}, {-5, 7.5, 0}, {-6.5, 5, 0}, {-6, 2.5, 0}, {-4, 0.8, 0}, {-1.5, 0.1, 0}};
+    const std::vector<double> hookPressure = {0.05, 0.1, 0.15, 0.2, 0.25, 0.3};
+    Stroke s;
+    const double dt = line.times[1] - line.times[0];
+    for (size_t i = 0; i < hook.size(); ++i) {
+        s.points.push_back(hook[i]);
+        s.times.push_back(dt * static_cast<double>(i));
+        s.pressure.push_back(hookPressure[i]);
+    }
+    for (size_t i = 0; i < line.points.size(); ++i) {
+        s.points.push_back(line.points[i]);
+        s.times.push_back(dt * static_cast<double>(hook.size()) + line.times[i]);
+        s.pressure.push_back(0.8);
+    }
+    return s;
+}
+
+double worstDistanceToXAxisSegment(const solvers::Curve3d& c)
+{
+    double worst = 0;
+    for (int i = 0; i <= 2000; ++i) {
+        const Vec3 p = c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / 2000);
+        worst = std::max(worst, distanceToPolyline(p, {{0, 0, 0}, {200, 0, 0}}, false));
+    }
+    return worst;
+}
+
+TEST(StrokeFit, GivenLightPressureHookAtPenDown_WhenFitted_ThenHookTrimmedAndCurveFollowsTheLine)
+{
+    const Stroke withPressure = hookedLine();
+    Stroke withoutPressure = withPressure;
+    withoutPressure.pressure.clear();
+
+    const FitResult a = fitStroke(withPressure);
+    const FitResult b = fitStroke(withoutPressure);
+
+    // The hook is gone: the curve stays within the tolerance (and the smoothed noise) of the line.
+    EXPECT_LE(worstDistanceToXAxisSegment(a.curve), a.tolerance + kNoiseAllowance);
+    EXPECT_TRUE(std::any_of(a.warnings.begin(), a.warnings.end(), [](const std::string& w) { return w.find("hook") != std::string::npos; }));
+    EXPECT_GE(a.samples.front(), 6);  // sample indices still refer to the input
+    // Without pressure there is nothing to tell the hook from the stroke: it is fitted.
+    EXPECT_GE(worstDistanceToXAxisSegment(b.curve), 5.0);
+}
+
+TEST(StrokeFit, GivenLongLightStart_WhenFitted_ThenKeptAsDrawnOnPurpose)
+{
+    // The hook and the first 30 % of the line drawn lightly: far longer than a hook
+    // (ConditioningOptions::maxHookLength, 8 % of the path), so nothing is trimmed.
+    Stroke s = hookedLine();
+    for (size_t i = 0; i < s.pressure.size() * 3 / 10; ++i) s.pressure[i] = 0.1;
+    const FitResult r = fitStroke(s);
+    EXPECT_EQ(r.samples.front(), 0);
+    EXPECT_GE(worstDistanceToXAxisSegment(r.curve), 5.0);
+}
+
 }  // namespace
 }  // namespace sculptline::stroketest
