@@ -71,7 +71,6 @@ std::vector<CurveConstraint<3>> constraintsFromJson(const json& j, const solvers
 json run(const json& input, const Options&)
 {
     const solvers::Curve3d curve0 = solvers::io::curveFromJson(field(input, "curve"), "curve");
-    if (curve0.isRational()) throw InputError("curve: constrain-curve needs a non-rational curve (no weights)");
     const int rounds =
         input.contains("insert_knots") ? solvers::io::integerFromJson(input["insert_knots"], "insert_knots", 0, 8) : 0;
     const auto constraints = constraintsFromJson(field(input, "constraints"), curve0);

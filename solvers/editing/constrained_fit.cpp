@@ -89,9 +89,16 @@ std::vector<Eigen::Matrix<double, Dim, 1>> fitFixedKnots(const FixedKnotFit<Dim>
     Eigen::Matrix<double, Eigen::Dynamic, Dim> rhs(rowsData + rowsFair, Dim);
     rhs.setZero();
     double basis[kMaxDegree + 1];
+    const bool rational = !pr.weights.empty();
+    if (rational && static_cast<int>(pr.weights.size()) != n) throw GeometryError("weights: one per control point needed");
     for (int k = 0; k < rowsData; ++k) {
         const int span = findSpan(p, pr.knots, pr.params[k]);
         basisFunctions(span, pr.params[k], p, pr.knots, basis);
+        if (rational) {  // R_i = w_i N_i / Σ w_j N_j (The NURBS Book eq. 4.2)
+            double W = 0.0;
+            for (int j = 0; j <= p; ++j) W += (basis[j] *= pr.weights[span - p + j]);
+            for (int j = 0; j <= p; ++j) basis[j] /= W;
+        }
         rhs.row(k) = pr.samples[k].transpose();
         for (int j = 0; j <= p; ++j) {
             const int i = span - p + j;

@@ -18,6 +18,9 @@ struct FixedKnotFit {
     std::vector<double> params;               ///< one parameter per sample, inside the domain
     std::vector<Point> samples;               ///< the data
     std::vector<std::optional<Point>> fixed;  ///< size n (or empty): a value pins that control point
+    /// Size n (or empty: non-rational): fixed positive weights; the fit is then over the Cartesian
+    /// points of the rational curve Σ w_i N_i P_i / Σ w_i N_i, still linear in them.
+    std::vector<double> weights;
 };
 
 /// Minimises Σ|C(params_k) - samples_k|² + w·Σ|P_{i-1} - 2P_i + P_{i+1}|² over the free control

@@ -83,7 +83,6 @@ template <int Dim>
 BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke,
                              const OversketchOptions& options, std::pair<double, double>* span, double* maxError)
 {
-    if (curve.isRational()) throw GeometryError("curve: over-sketching needs a non-rational curve");
     if (!(options.tolerance > 0.0 && options.tolerance < 1.0)) throw GeometryError("tolerance: must be in (0, 1)");
     if (!(options.scale >= 0.0 && options.scale <= 1.0)) throw GeometryError("scale: must be in [0, 1]");
     if (!(options.transitionFactor >= 0.0) || !(options.minTransition > 0.0)) {

@@ -36,7 +36,9 @@ struct OversketchOptions {
     double minTransition = 0.1;
 };
 
-/// Over-sketches `curve` (non-rational; open or closed) with `stroke` (in the curve's space).
+/// Over-sketches `curve` (open or closed, rational or not) with `stroke` (in the curve's space).
+/// Rational curves: the untouched parts keep their points and weights; the new points get weights
+/// interpolated between those of the kept points next to them.
 /// A stroke drawn against the curve's direction is reversed first. Open curves: a stroke running
 /// past an end extends the curve (local-c2) or replaces the end (blend). Closed curves: the stroke
 /// replaces the arc it covers, however long (the uncovered arc is refined by exact knot insertion
@@ -46,7 +48,7 @@ struct OversketchOptions {
 ///        (an upper bound of the distance): over the whole target h̄ for local-c2, over the stroke
 ///        for blend (before the scale of eq. 4-23 is applied).
 /// @throws GeometryError naming "stroke" (fewer than two distinct points, non-finite, or covering a
-///         whole closed curve), "curve" (rational), "scale" or "tolerance" (out of range).
+///         whole closed curve), "scale" or "tolerance" (out of range).
 /// @note Any degree works; local-c2 then pins `degree` points per side and is C^{degree-1}.
 template <int Dim>
 BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<Eigen::Matrix<double, Dim, 1>>& stroke,

@@ -101,6 +101,20 @@ int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>&
     return best != kNone ? best : fallback;
 }
 
+// Weights of a spliced polygon (rational curves; empty otherwise): kept points keep theirs, the m
+// new ones between kept points `left` and `right` (-1: none on that side) are interpolated linearly
+// by index, so the untouched parts of the curve keep their weights.
+template <int Dim>
+std::vector<double> newWeights(const BSplineCurve<Dim>& c, int m, int left, int right)
+{
+    if (!c.isRational()) return {};
+    const double wl = left >= 0 ? c.weight(left) : right >= 0 ? c.weight(right) : 1.0;
+    const double wr = right >= 0 ? c.weight(right) : wl;
+    std::vector<double> w;
+    for (int i = 1; i <= m; ++i) w.push_back(wl + (wr - wl) * i / (m + 1));
+    return w;
+}
+
 // The spliced polygon with its final knots: the new points `first..last` are fitted to the stroke
 // with the kept points fixed. The stroke's samples go only on the spans built from new points alone,
 // [K[first + p], K[last + 1]] (chord-length parameters): the p spans on each side that mix kept and
@@ -112,9 +126,9 @@ int transitionPoint(const Polygon<Dim>& poly, int start, int dir, const Pt<Dim>&
 // stroke's ends by 2-3x the tolerance however many points were added.) Eq. 4-23 then scales the new
 // points towards the original curve.
 template <int Dim>
-std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim>> P, int first, int last,
-                                  const StrokeOnCurve<Dim>& st, const BSplineCurve<Dim>& original, double scale,
-                                  double& fitError)
+std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim>> P, const std::vector<double>& W,
+                                  int first, int last, const StrokeOnCurve<Dim>& st, const BSplineCurve<Dim>& original,
+                                  double scale, double& fitError)
 {
     const double t0 = K[first + p], t1 = K[last + 1];
     const std::vector<double> chord = chordLengths<Dim>(st.points);
@@ -124,6 +138,7 @@ std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim
     fit.samples = st.points;
     for (double s : chord) fit.params.push_back(t0 + (t1 - t0) * s / chord.back());
     fit.params.back() = t1;
+    fit.weights = W;
     fit.fixed.resize(P.size());
     for (int i = 0; i < static_cast<int>(P.size()); ++i) {
         if (i < first || i > last) fit.fixed[i] = P[i];
@@ -135,8 +150,13 @@ std::vector<Pt<Dim>> refitInPlace(int p, const KnotVector& K, std::vector<Pt<Dim
         const int span = std::min(findSpan(p, K, fit.params[k]), last);
         basisFunctions(span, fit.params[k], p, K, basis);
         Pt<Dim> v = Pt<Dim>::Zero();
-        for (int j = 0; j <= p; ++j) v += basis[j] * P[span - p + j];
-        fitError = std::max(fitError, (v - st.points[k]).norm());
+        double sum = 0.0;
+        for (int j = 0; j <= p; ++j) {
+            const double bw = basis[j] * (W.empty() ? 1.0 : W[span - p + j]);
+            v += bw * P[span - p + j];
+            sum += bw;
+        }
+        fitError = std::max(fitError, (v / sum - st.points[k]).norm());
     }
     if (scale < 1.0) {
         const CurveProjector<Dim> projector(original);
@@ -280,12 +300,19 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
                 } else {
                     K.insert(K.end(), p, t1);
                 }
+                std::vector<double> W;
+                if (c.isRational()) {
+                    W.assign(c.weights().begin(), c.weights().begin() + (a + 1));
+                    const std::vector<double> mid = newWeights(c, m, a, b < n ? b : -1);
+                    W.insert(W.end(), mid.begin(), mid.end());
+                    W.insert(W.end(), c.weights().begin() + b, c.weights().end());
+                }
                 double err = 0.0;
-                P = refitInPlace(p, K, std::move(P), a + 1, a + m, st, c, o.scale, err);
+                P = refitInPlace(p, K, std::move(P), W, a + 1, a + m, st, c, o.scale, err);
                 if (err <= tol || m >= mMax) {
                     span = {a >= 0 ? K[a + 1] : K[p], b < n ? K[total - (n - b) + p] : K[total]};
                     maxError = err;
-                    return BSplineCurve<Dim>(p, std::move(K), std::move(P));
+                    return BSplineCurve<Dim>(p, std::move(K), std::move(P), std::move(W));
                 }
             }
         }
@@ -318,12 +345,20 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
             KnotVector K(N + 2 * p + 1);
             K[0] = knotAt(e + 1) - deltaE;
             for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
+            std::vector<double> W;
+            if (c.isRational()) {
+                auto wAt = [&](int i) { return c.weight(((i % n) + n) % n); };
+                for (int i = 0; i < kept; ++i) W.push_back(wAt(e + i));
+                const double wl = W.back(), wr = W.front();
+                for (int i = 1; i <= m; ++i) W.push_back(wl + (wr - wl) * i / (m + 1));
+                for (int i = 0; i < p; ++i) W.push_back(W[i]);
+            }
             double err = 0.0;
-            Q = refitInPlace(p, K, std::move(Q), kept, N - 1, st, c, o.scale, err);
+            Q = refitInPlace(p, K, std::move(Q), W, kept, N - 1, st, c, o.scale, err);
             if (err <= tol || m >= mMax) {
                 span = {K[kept], K[N + p]};  // spans using any new point: j in [kept, N - 1 + p]
                 maxError = err;
-                return BSplineCurve<Dim>(p, std::move(K), std::move(Q), {}, true);
+                return BSplineCurve<Dim>(p, std::move(K), std::move(Q), std::move(W), true);
             }
         }
     }

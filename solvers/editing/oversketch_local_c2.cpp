@@ -34,10 +34,10 @@ using Pt = Eigen::Matrix<double, Dim, 1>;
 // Blossom of the degree-p polynomial piece on span r at x[0..p-1]: de Boor's evaluation triangle
 // with the k-th level taking the k-th argument instead of u (Ramshaw 1989, "Blossoms are polar
 // forms"; with all x = u it is The NURBS Book's de Boor recurrence, eq. 5.15 form).
-template <int Dim>
-Pt<Dim> blossom(const KnotVector& U, const std::vector<Pt<Dim>>& P, int p, int r, const double* x)
+template <typename V>
+V blossom(const KnotVector& U, const std::vector<V>& P, int p, int r, const double* x)
 {
-    Pt<Dim> d[kMaxDegree + 1];
+    V d[kMaxDegree + 1];
     for (int j = 0; j <= p; ++j) d[j] = P[r - p + j];
     for (int k = 1; k <= p; ++k) {
         for (int j = p; j >= k; --j) {
@@ -49,19 +49,34 @@ Pt<Dim> blossom(const KnotVector& U, const std::vector<Pt<Dim>>& P, int p, int r
     return d[p];
 }
 
+// Homogeneous control point (w·P, w): rational curves are blossomed (knot-inserted) in this space,
+// where they are polynomial (The NURBS Book §5.2); non-rational ones carry w = 1.
+template <int Dim>
+using Hp = Eigen::Matrix<double, Dim + 1, 1>;
+
+template <int Dim>
+Pt<Dim> cartesian(const Hp<Dim>& h)
+{
+    return h.template head<Dim>() / h[Dim];
+}
+
 template <int Dim>
 struct Edit {
     KnotVector knots;
     std::vector<Pt<Dim>> points;
+    std::vector<double> weights;  // empty for a non-rational curve
     int localFirst = 0, localLast = 0;  // new indices of the points that may differ
     double error = 0.0;
 };
 
-// Alg. 1-1 on an open (possibly unclamped) window: knots U, points P. [tk, tl] are knot values;
-// leftFree/rightFree mark a clamped end where the new curve interpolates h̄'s end instead.
+// Alg. 1-1 on an open (possibly unclamped) window: knots U, homogeneous points P. [tk, tl] are knot
+// values; leftFree/rightFree mark a clamped end where the new curve interpolates h̄'s end instead.
+// Rational curves: the pinned points come with their blossomed weights, the free points get weights
+// interpolated linearly (by index) between the pinned ones next to them, so the untouched parts keep
+// theirs; with the weights fixed the fit stays linear in the Cartesian points.
 template <int Dim>
-Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Dim>>& P, double tk, double tl,
-                             bool leftFree, bool rightFree, const std::vector<double>& params,
+Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Hp<Dim>>& P, bool rational, double tk,
+                             double tl, bool leftFree, bool rightFree, const std::vector<double>& params,
                              const std::vector<Pt<Dim>>& target, double tolerance)
 {
     const int a = static_cast<int>(std::upper_bound(U.begin(), U.end(), tk) - U.begin());      // knots <= tk
@@ -90,17 +105,35 @@ Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Di
         fit.params = params;
         fit.samples = target;
         fit.fixed.assign(L1 - L0 + 1, std::nullopt);
+        std::vector<double> w(L1 - L0 + 1, 0.0);  // 0: free weight, set below
+        auto pin = [&](int j, const Hp<Dim>& h) {
+            fit.fixed[j - L0] = cartesian<Dim>(h);
+            w[j - L0] = h[Dim];
+        };
         if (leftFree) {
             fit.fixed.front() = target.front();
+            w.front() = P[L0][Dim];
         } else {
-            for (int j = std::max(rLeft - p, L0); j <= rLeft; ++j)
-                fit.fixed[j - L0] = blossom<Dim>(U, P, p, rLeft, &Un[j + 1]);
+            for (int j = std::max(rLeft - p, L0); j <= rLeft; ++j) pin(j, blossom(U, P, p, rLeft, &Un[j + 1]));
         }
         if (rightFree) {
             fit.fixed.back() = target.back();
+            w.back() = P[ibOld - 1][Dim];  // the clamped end's old point
         } else {
             const int rNew = ibLastOld + delta;
-            for (int j = rNew - p; j <= L1; ++j) fit.fixed[j - L0] = blossom<Dim>(U, P, p, ibLastOld, &Un[j + 1]);
+            for (int j = rNew - p; j <= L1; ++j) pin(j, blossom(U, P, p, ibLastOld, &Un[j + 1]));
+        }
+        if (rational) {  // free weights: linear by index between the known ones, constant beyond them
+            int last = -1;
+            for (int i = 0; i < static_cast<int>(w.size()); ++i) {
+                if (w[i] == 0.0) continue;
+                for (int j = last + 1; j < i; ++j) {
+                    w[j] = last < 0 ? w[i] : w[last] + (w[i] - w[last]) * (j - last) / (i - last);
+                }
+                last = i;
+            }
+            for (int j = last + 1; j < static_cast<int>(w.size()); ++j) w[j] = w[last];
+            fit.weights = w;
         }
         const std::vector<Pt<Dim>> local = fitFixedKnots(fit);
 
@@ -118,7 +151,13 @@ Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Di
             const int span = findSpan(p, fit.knots, params[k]);
             basisFunctions(span, params[k], p, fit.knots, basis);
             Pt<Dim> c = Pt<Dim>::Zero();
-            for (int j = 0; j <= p; ++j) c += basis[j] * local[span - p + j];
+            double W = 0.0;
+            for (int j = 0; j <= p; ++j) {
+                const double bw = basis[j] * (rational ? w[span - p + j] : 1.0);
+                c += bw * local[span - p + j];
+                W += bw;
+            }
+            c /= W;
             const double err = (c - target[k]).norm();
             worst = std::max(worst, err);
             spanErr[span] += err * err;
@@ -133,9 +172,14 @@ Edit<Dim> localApproximation(int p, const KnotVector& U, const std::vector<Pt<Di
         }
         if (worst <= tolerance || s >= maxInterior || worstSpan < 0) {
             e.knots = std::move(Un);
-            e.points.assign(P.begin(), P.begin() + L0);
+            for (int i = 0; i < L0; ++i) e.points.push_back(cartesian<Dim>(P[i]));
             e.points.insert(e.points.end(), local.begin(), local.end());
-            e.points.insert(e.points.end(), P.begin() + ibOld, P.end());
+            for (size_t i = ibOld; i < P.size(); ++i) e.points.push_back(cartesian<Dim>(P[i]));
+            if (rational) {
+                for (int i = 0; i < L0; ++i) e.weights.push_back(P[i][Dim]);
+                e.weights.insert(e.weights.end(), w.begin(), w.end());
+                for (size_t i = ibOld; i < P.size(); ++i) e.weights.push_back(P[i][Dim]);
+            }
             e.localFirst = L0;
             e.localLast = L1;
             e.error = worst;
@@ -175,22 +219,30 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
             continue;
         }
         KnotVector U;
-        std::vector<Pt<Dim>> P;
+        std::vector<Hp<Dim>> P;
+        auto homogeneous = [&](const ControlMatrix& rows) {
+            for (Eigen::Index i = 0; i < rows.rows(); ++i) {
+                Hp<Dim> h = Hp<Dim>::Ones();
+                h.head(rows.cols()) = rows.row(i).transpose();
+                P.push_back(h);
+            }
+        };
         if (c.isClosed()) {
             // Two periods each side: [t_k, t_l] lies within one period of [a - T, a + 2T] (breakPoints
             // checks t_l - t_k < T) and the pinned points reach p spans further.
             const PeriodicWindow w = periodicExtension(p, c.knots(), c.homogeneous(), 2);
             U = w.knots;
-            for (Eigen::Index i = 0; i < w.points.rows(); ++i) P.push_back(w.points.row(i).transpose());
+            homogeneous(w.points);
         } else {
             U = c.knots();
-            P = c.points();
+            homogeneous(c.homogeneous());
         }
         const Target<Dim> tgt = buildTarget(c, lengths, st, br);
         const Edit<Dim> e =
-            localApproximation<Dim>(p, U, P, br.tk, br.tl, br.leftFree, br.rightFree, tgt.params, tgt.points, tol);
+            localApproximation<Dim>(p, U, P, c.isRational(), br.tk, br.tl, br.leftFree, br.rightFree, tgt.params,
+                                    tgt.points, tol);
         maxError = e.error;
-        if (!c.isClosed()) return BSplineCurve<Dim>(p, e.knots, e.points);
+        if (!c.isClosed()) return BSplineCurve<Dim>(p, e.knots, e.points, e.weights);
 
         // Closed: read one period [A, A + T] off the edited window such that no changed point's
         // support crosses its ends (then the wrapped points are unchanged copies and repeat).
@@ -201,7 +253,9 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
         if (iA >= p && iA <= e.localFirst && sigma + p < static_cast<int>(e.knots.size())) {
             KnotVector k(e.knots.begin() + iA - p, e.knots.begin() + sigma + p + 1);
             std::vector<Pt<Dim>> q(e.points.begin() + iA - p, e.points.begin() + sigma);
-            return BSplineCurve<Dim>(p, std::move(k), std::move(q), {}, true);
+            std::vector<double> w;
+            if (!e.weights.empty()) w.assign(e.weights.begin() + iA - p, e.weights.begin() + sigma);
+            return BSplineCurve<Dim>(p, std::move(k), std::move(q), std::move(w), true);
         }
         if (attempt >= kMaxRefinements) {
             throw GeometryError("stroke: the over-sketch covers (almost) the whole closed curve");

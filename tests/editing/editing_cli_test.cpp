@@ -98,6 +98,31 @@ TEST(EditingCli, GivenConstraints_WhenRun_ThenMetAndReported)
     EXPECT_FALSE(out["compromise"].get<bool>());
 }
 
+TEST(EditingCli, GivenRationalCurve_WhenConstrainedAndOversketched_ThenWeightsKeptAndResultsValid)
+{
+    // Given the wave with weights 0.5 .. 2.1
+    json curve = wave();
+    json weights = json::array();
+    for (int i = 0; i < 12; ++i) weights.push_back(1.3 + 0.8 * std::sin(1.3 * i));
+    curve["weights"] = weights;
+
+    // When constrained, Then the constraint holds on the rational result and the weights are kept
+    const json in = {{"curve", curve}, {"constraints", {{{"type", "position"}, {"u", 0.4}, {"value", {4, 3}}}}}};
+    const CliResult r = runCli("constrain-curve", in.dump());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Curve3d c = io::curveFromJson(json::parse(r.out)["curve"], "curve");
+    ASSERT_TRUE(c.isRational());
+    EXPECT_LT((c.evaluate(0.4) - Eigen::Vector3d(4, 3, 0)).norm(), 1e-9);
+    for (int i = 0; i < 12; ++i) EXPECT_DOUBLE_EQ(c.weight(i), weights[i].get<double>());
+
+    // When over-sketched by either method, Then a rational curve comes back
+    for (const char* method : {"local-c2", "blend"}) {
+        const CliResult o = runCli("oversketch", json{{"curve", curve}, {"stroke", stroke()}, {"method", method}}.dump());
+        ASSERT_EQ(o.status, 0) << method << ": " << o.err;
+        EXPECT_TRUE(io::curveFromJson(json::parse(o.out)["curve"], "curve").isRational()) << method;
+    }
+}
+
 TEST(EditingCli, GivenInvalidInputs_WhenRun_ThenExitStatus2)
 {
     const json bad[][2] = {

@@ -33,23 +33,36 @@ double maxDistanceToCurve(const Curve2d& c, const std::vector<Eigen::Vector2d>& 
 // Largest jump of the k-th derivative across any interior knot, relative to its size: the two
 // one-sided limits are evaluated exactly from the polynomial pieces on either side (The NURBS Book
 // A2.3 on the left span and on the right span), not by finite differences.
-double maxJump(const Curve2d& c, int k)
+template <int Dim>
+double maxJump(const BSplineCurve<Dim>& c, int k)
 {
+    using Pt = Eigen::Matrix<double, Dim, 1>;
     const auto& U = c.knots();
     const int p = c.degree();
     double worst = 0.0;
     auto piece = [&](int span, double t) {
         const Eigen::MatrixXd d = basisDerivatives(span, t, p, k, U);
-        Eigen::Vector2d v = Eigen::Vector2d::Zero();
+        Pt v = Pt::Zero();
         for (int j = 0; j <= p; ++j) v += d(k, j) * c.points()[(span - p + j) % c.pointCount()];
         return v;
     };
     for (int i = p + 1; i < c.pointCount(); ++i) {
         if (U[i] == U[i - 1] || U[i] == U[i + 1]) continue;  // multiple knots are reported by the caller's checks
-        const Eigen::Vector2d l = piece(i - 1, U[i]), r = piece(i, U[i]);
+        const Pt l = piece(i - 1, U[i]), r = piece(i, U[i]);
         worst = std::max(worst, (l - r).norm() / std::max(1.0, l.norm()));
     }
     return worst;
+}
+
+// A rational curve is C^k where its homogeneous curve (w·P, w), a polynomial spline, is.
+double maxJumpHomogeneous(const Curve2d& c, int k)
+{
+    std::vector<Eigen::Vector3d> h;
+    for (int i = 0; i < c.pointCount(); ++i) {
+        const double w = c.weight(i);
+        h.emplace_back(w * c.points()[i].x(), w * c.points()[i].y(), w);
+    }
+    return maxJump(Curve3d(c.degree(), c.knots(), h), k);
 }
 
 bool simpleInteriorKnots(const Curve2d& c)
@@ -569,3 +582,85 @@ TEST(OversketchLocalC2, GivenSpaceCurveAndSpaceStroke_WhenOversketched_ThenLocal
     }
     EXPECT_LE(worst, OversketchOptions{}.tolerance * length);
 }
+
+namespace {
+
+// The wave with weights 0.5 .. 2.1 (a NURBS the weights visibly pull).
+Curve2d rationalWave(int n)
+{
+    std::vector<Eigen::Vector2d> pts;
+    std::vector<double> w;
+    for (int i = 0; i < n; ++i) {
+        pts.emplace_back(i, 2.0 * std::sin(0.4 * i));
+        w.push_back(1.3 + 0.8 * std::sin(1.3 * i));
+    }
+    return makeClampedUniform<2>(3, pts, w);
+}
+
+// Max distance of the new curve's points outside `span` from the old curve, for open curves whose
+// kept left part keeps its parameters and right part its shape.
+double maxMoveOutsideOpenSpan(const Curve2d& out, const Curve2d& old, std::pair<double, double> span)
+{
+    const CurveProjector<2> pr(old);
+    double worst = 0.0;
+    for (int i = 0; i <= 1000; ++i) {
+        const double u = out.domainStart() + (out.domainEnd() - out.domainStart()) * i / 1000.0;
+        if (u <= span.first || u >= span.second) worst = std::max(worst, pr.project(out.evaluate(u)).distance);
+    }
+    return worst;
+}
+
+}  // namespace
+
+class OversketchRational : public ::testing::TestWithParam<OversketchMethod> {};
+
+TEST_P(OversketchRational, GivenRationalCurve_WhenOversketched_ThenKeptPartsKeepPointsAndWeightsAndStrokeFollowed)
+{
+    // Given a rational cubic (weights 0.5 .. 2.1) and a bump stroke over its middle
+    const Curve2d curve = rationalWave(30);
+    const auto stroke = bump(curve, 0.4, 0.6, 2.0, 300);
+    const OversketchOptions o = method(GetParam());
+
+    // When over-sketched
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, o, &span);
+
+    // Then the result is rational, unchanged outside the span to round-off (its first points and
+    // their weights are the old ones, the points to round-off of (w·P)/w), C2, and follows the
+    // stroke within the tolerance.
+    ASSERT_TRUE(out.isRational());
+    EXPECT_LT(maxMoveOutsideOpenSpan(out, curve, span), kUnchanged);
+    for (int i = 0; i < 5; ++i) {
+        EXPECT_LT((out.points()[i] - curve.points()[i]).norm(), kUnchanged);
+        EXPECT_EQ(out.weight(i), curve.weight(i));
+        EXPECT_EQ(out.weight(out.pointCount() - 1 - i), curve.weight(curve.pointCount() - 1 - i));
+    }
+    EXPECT_LT(maxJumpHomogeneous(out, 2), 1e-9);
+    EXPECT_LE(maxDistanceToCurve(out, stroke), o.tolerance * polylineLength(stroke));
+}
+
+TEST_P(OversketchRational, GivenClosedRationalCurve_WhenOversketchedAcrossSeam_ThenClosedLocalAndFollows)
+{
+    // Given the ellipse loop with weights 1, 1.5, 2 repeating
+    const Curve2d plain = sculptline::editing_fixtures::ellipseLoop();
+    std::vector<Eigen::Vector2d> pts(plain.points().begin(), plain.points().begin() + 16);
+    std::vector<double> w;
+    for (int i = 0; i < 16; ++i) w.push_back(1.0 + 0.5 * (i % 3));
+    const Curve2d curve = makeClosedUniform<2>(3, pts, w);
+    const auto stroke = sculptline::editing_fixtures::strokeAcrossSeam();
+    const OversketchOptions o = method(GetParam());
+
+    // When over-sketched across the seam
+    std::pair<double, double> span;
+    const Curve2d out = oversketch(curve, stroke, o, &span);
+
+    // Then it stays closed and rational, is the old curve outside the span, and follows the stroke
+    ASSERT_TRUE(out.isClosed());
+    ASSERT_TRUE(out.isRational());
+    EXPECT_LT(maxMoveOutsideSpan(out, curve, span), kUnchanged);
+    EXPECT_LT(maxJumpHomogeneous(out, 2), 1e-9);
+    EXPECT_LE(maxDistanceToCurve(out, stroke), o.tolerance * polylineLength(stroke));
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, OversketchRational,
+                         ::testing::Values(OversketchMethod::LocalC2, OversketchMethod::Blend));
