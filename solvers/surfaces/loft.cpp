@@ -1,7 +1,9 @@
 #include "solvers/surfaces/loft.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <string>
 
@@ -13,6 +15,32 @@ void requireSections(const std::vector<Curve3d>& sections)
 {
     if (sections.size() < 2)
         throw GeometryError("curves: a loft needs at least two sections, got " + std::to_string(sections.size()));
+}
+
+// Ends closer than this fraction of the curve's size make a closed loop (round-off of a stroke
+// that was snapped shut, or of opening a periodic curve).
+constexpr double kClosedRelative = 1e-9;
+// Samples for the vector area of a closed section.
+constexpr int kAreaSamples = 64;
+
+bool isLoop(const Curve3d& c)
+{
+    return c.isClosed() ||
+           (c.evaluate(c.domainStart()) - c.evaluate(c.domainEnd())).norm() <= kClosedRelative * c.controlSize();
+}
+
+// The vector area (1/2) sum x_i x x_(i+1) of a closed polygon through samples of the loop: its
+// direction is the loop's winding normal (right-hand rule).
+Eigen::Vector3d vectorArea(const Curve3d& c)
+{
+    Eigen::Vector3d area = Eigen::Vector3d::Zero();
+    Eigen::Vector3d prev = c.evaluate(c.domainStart());
+    for (int k = 1; k <= kAreaSamples; ++k) {
+        const Eigen::Vector3d x = c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * k / kAreaSamples);
+        area += 0.5 * prev.cross(x);
+        prev = x;
+    }
+    return area;
 }
 
 }  // namespace
@@ -32,19 +60,28 @@ const Surface3d& LoftBuilder::reset(const std::vector<Curve3d>& sections)
     requireSections(sections);
     if (options_.crossDegree < 1) throw GeometryError("crossDegree: must be >= 1");
     // Sections sketched in opposite directions would twist the surface: each is turned to run like
-    // its predecessor (its ends nearer the predecessor's same ends).
+    // its predecessor (open sections: its ends nearer the predecessor's same ends; closed ones
+    // after a closed predecessor: the same winding). A closed periodic section after a closed
+    // predecessor is opened at its point nearest the predecessor's seam, so the seams line up.
     std::vector<Curve3d> oriented;
     reversed_.assign(sections.size(), false);
+    seams_.assign(sections.size(), std::nullopt);
     for (size_t k = 0; k < sections.size(); ++k) {
         Curve3d c = normalizedCurve(sections[k]);
         if (k > 0) {
             const Curve3d& prev = oriented.back();
-            const Eigen::Vector3d p0 = prev.evaluate(0.0), p1 = prev.evaluate(1.0);
-            const Eigen::Vector3d c0 = c.evaluate(0.0), c1 = c.evaluate(1.0);
-            if ((p0 - c1).norm() + (p1 - c0).norm() < (p0 - c0).norm() + (p1 - c1).norm()) {
-                c = reversedCurve(c);
-                reversed_[k] = true;
+            if (isLoop(sections[k]) && isLoop(prev)) {
+                if (sections[k].isClosed()) {
+                    seams_[k] = projectToCurve(sections[k], prev.evaluate(0.0)).u;
+                    c = normalizedCurve(sections[k].openAt(*seams_[k]));
+                }
+                reversed_[k] = vectorArea(c).dot(vectorArea(prev)) < 0.0;
+            } else {
+                const Eigen::Vector3d p0 = prev.evaluate(0.0), p1 = prev.evaluate(1.0);
+                const Eigen::Vector3d c0 = c.evaluate(0.0), c1 = c.evaluate(1.0);
+                reversed_[k] = (p0 - c1).norm() + (p1 - c0).norm() < (p0 - c0).norm() + (p1 - c1).norm();
             }
+            if (reversed_[k]) c = reversedCurve(c);
         }
         oriented.push_back(std::move(c));
     }
@@ -77,12 +114,18 @@ const Surface3d& LoftBuilder::reset(const std::vector<Curve3d>& sections)
 
 bool LoftBuilder::setSection(int index, const Curve3d& section)
 {
-    const Curve3d normalized = normalizedCurve(section);
-    const std::optional<Curve3d> c = conformToLayout(reversed_[index] ? reversedCurve(normalized) : normalized, layout_);
+    const std::optional<Curve3d> c = conformToLayout(laidOut(index, section), layout_);
     if (!c || c->isRational() != rational_) return false;
     const ControlMatrix rows = c->homogeneous();
     for (int i = 0; i < layout_.pointCount(); ++i) data_.block(index, i * columns_, 1, columns_) = rows.row(i);
     return true;
+}
+
+Curve3d LoftBuilder::laidOut(int index, const Curve3d& section) const
+{
+    const Curve3d c = seams_[index] && section.isClosed() ? normalizedCurve(section.openAt(*seams_[index]))
+                                                          : normalizedCurve(section);
+    return reversed_[index] ? reversedCurve(c) : c;
 }
 
 const Surface3d& LoftBuilder::update(int index, const Curve3d& section)
@@ -94,8 +137,7 @@ const Surface3d& LoftBuilder::update(int index, const Curve3d& section)
         for (Eigen::Index k = 0; k < data_.rows(); ++k) {
             ControlMatrix rows(layout_.pointCount(), columns_);
             for (int i = 0; i < layout_.pointCount(); ++i) rows.row(i) = data_.block(k, i * columns_, 1, columns_);
-            const Curve3d normalized = normalizedCurve(section);
-            all.push_back(k == index ? (reversed_[index] ? reversedCurve(normalized) : normalized)
+            all.push_back(k == index ? laidOut(index, section)
                                      : Curve3d::fromHomogeneous(layout_.degree, layout_.knots, rows, rational_));
         }
         return reset(all);

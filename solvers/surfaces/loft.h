@@ -6,6 +6,7 @@
 #include "solvers/surfaces/interpolation.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace sculptline::solvers::surfaces {
@@ -16,7 +17,9 @@ struct LoftOptions {
 };
 
 /// S(u, v): u runs along the sections (made compatible: common degree and knots on [0, 1]; a
-/// section drawn the other way round than its predecessor is reversed first), v across them; S(u, v_k) = section k exactly (homogeneous control rows are interpolated, so
+/// section drawn the other way round than its predecessor is reversed first; a closed section after
+/// a closed one is turned to wind the same way and, if periodic, opened at its point nearest the
+/// predecessor's seam, so closed sections give a tube closed along u), v across them; S(u, v_k) = section k exactly (homogeneous control rows are interpolated, so
 /// rational sections are met exactly too). v_k are averaged chord lengths between the sections'
 /// control points (The NURBS Book eq. 10.8); knots V by averaging (eq. 9.8).
 /// @throws GeometryError ("curves: ...") for fewer than two sections, coincident consecutive
@@ -45,11 +48,14 @@ public:
 private:
     void solve();
     bool setSection(int index, const Curve3d& section);
+    /// The section normalized as it was laid out at the last reset (opened at its seam, turned).
+    Curve3d laidOut(int index, const Curve3d& section) const;
 
     LoftOptions options_;
     CurveLayout layout_;
     bool rational_ = false;
     std::vector<bool> reversed_;  // section k was turned to run like section k - 1
+    std::vector<std::optional<double>> seams_;  // closed section k opened at this parameter
     int columns_ = 0;  // homogeneous coordinates per control point (3 or 4)
     std::unique_ptr<CurveInterpolator> interpolator_;
     ControlMatrix data_;  // row k: section k's control rows side by side

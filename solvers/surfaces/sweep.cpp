@@ -59,8 +59,22 @@ constexpr double kGrowthMargin = 1.25;
 // has moved rigidly (round-off of a plane's transform is ~1e-16).
 constexpr double kRigidRelative = 1e-10;
 
+// A path closes smoothly when its ends coincide to round-off and its end tangents agree to this
+// angle (radians): a periodic curve's seam is C^(p-1), so its tangents agree to round-off.
+constexpr double kSmoothSeam = 1e-6;
+constexpr double kSeamGapRelative = 1e-9;
+
+bool closesSmoothly(const CurveJet& jet, double a, double b, double size)
+{
+    Vec3 x0, t0, d2, x1, t1;
+    jet.evaluate(a, x0, t0, d2);
+    jet.evaluate(b, x1, t1, d2);
+    return (x1 - x0).norm() <= kSeamGapRelative * size && t0.normalized().cross(t1.normalized()).norm() <= kSmoothSeam &&
+           t0.dot(t1) > 0.0;
+}
+
 std::shared_ptr<SweepPathSamples> samplePath(const CurveJet& jet, const std::vector<double>& breaks,
-                                             const std::vector<int>& perSpan)
+                                             const std::vector<int>& perSpan, bool closed)
 {
     auto s = std::make_shared<SweepPathSamples>();
     s->a = breaks.front();
@@ -79,6 +93,22 @@ std::shared_ptr<SweepPathSamples> samplePath(const CurveJet& jet, const std::vec
     // Reference normal: any direction off the tangent; the swept shape does not depend on it (an
     // RMF rotated about t0 rotates every frame alike).
     s->frames = rotationMinimizingFrames(jet, s->params, d1.normalized().unitOrthogonal());
+    // On a closed path the rotation-minimizing frame returns rotated about the tangent by the
+    // path's holonomy angle φ; turning frame v back by φ·v closes the sweep at the path's seam
+    // (Wang et al. 2008, §6, "closed curves"), adding -φ/(b - a) about T to the angular velocity.
+    double twistRate = 0.0;
+    if (closed) {
+        const Frame& first = s->frames.front();
+        const Frame& last = s->frames.back();
+        const double phi = std::atan2(first.normal.cross(last.normal).dot(first.tangent), first.normal.dot(last.normal));
+        twistRate = -phi / (s->b - s->a);
+        for (size_t k = 0; k < s->frames.size(); ++k) {
+            Frame& f = s->frames[k];
+            const double psi = twistRate * (s->params[k] - s->a);
+            f.normal = std::cos(psi) * f.normal + std::sin(psi) * f.binormal;
+            f.binormal = f.tangent.cross(f.normal);
+        }
+    }
     for (size_t k = 0; k < s->params.size(); k += kProbes) {
         jet.evaluate(s->params[k], x, d1, d2);
         // d/dt of x(t) + M(t)(P - x0) is x'(t) + ω × M(P - x0), ω = T × dT/dt, the angular
@@ -87,7 +117,7 @@ std::shared_ptr<SweepPathSamples> samplePath(const CurveJet& jet, const std::vec
         const Vec3 T = d1 / speed;
         const Vec3 dT = (d2 - d2.dot(T) * T) / speed;
         s->d1.push_back(d1);
-        s->omega.push_back(T.cross(dT));
+        s->omega.push_back(T.cross(dT) + twistRate * T);
     }
     return s;
 }
@@ -225,8 +255,9 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
     const int spans = static_cast<int>(breaks.size()) - 1;
     const int budget = std::max(spans, options.maxSections - 1);  // intervals between sections
     std::vector<int> perSpan(spans, std::max(1, std::min(kInitialPerSpan, budget / spans)));
+    const bool closed = closesSmoothly(jet, breaks.front(), breaks.back(), path.controlSize());
     for (;;) {
-        samples = samplePath(jet, breaks, perSpan);
+        samples = samplePath(jet, breaks, perSpan, closed);
         const ProfileSamples P(profile, samples->x0);
         Assembly A = assemble(P, *samples);
         // Grow the spans over tolerance by the h^4 estimate, within the budget.

@@ -34,7 +34,10 @@ struct SweepResult {
 /// the sections' exact v-derivatives. The deviation is measured at the quarter points between
 /// sections (profile samples 1/(2n) apart) for each path knot span; a span over tolerance gets
 /// (r·1.25)^(1/4) times its sections (r = deviation / tolerance; the Hermite error falls as h^4)
-/// until every span is within tolerance or maxSections is reached.
+/// until every span is within tolerance or maxSections is reached. A closed path (periodic, or ends
+/// and end tangents that coincide) gets its frames' holonomy spread evenly along it, so the last
+/// section is the first and the surface closes at the path's seam; a closed profile closes the
+/// surface along u (its seam stays where the profile's domain starts).
 /// @throws GeometryError "path: ..." for a path with a cusp or no length.
 SweepResult sweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options = {});
 
