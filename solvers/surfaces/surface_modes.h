@@ -6,11 +6,15 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace sculptline::solvers::surfaces {
+
+class LoftBuilder;
+class SweepBuilder;
 
 enum class SurfaceMode { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation };
 
@@ -66,5 +70,36 @@ void checkCurveCount(SurfaceMode mode, size_t count);
 ///         Messages start with the input they blame: "curves: ", "curves[1] (path): " (sweep),
 ///         "axis: ", "angle: ", "direction: ", "path: " (extrudePath).
 SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options = {});
+
+/// Incremental builds for dragging (issue 6 §2): keeps the mode's builder (fill: FillBuilder, loft:
+/// LoftBuilder, sweep: SweepBuilder), so that update() re-solves with what was set up at the first
+/// build; the other modes rebuild in full (each under a millisecond at 20 control points per
+/// direction, bench/surfaces_bench.cpp). While a drag lasts the loft keeps its cross parameters and
+/// the fill and sweep their refinement (a surface that moves smoothly with the pointer); reset()
+/// when the drag ends gives exactly buildSurface's result.
+class SurfaceBuilder {
+public:
+    /// @throws like buildSurface.
+    SurfaceBuilder(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options = {});
+    ~SurfaceBuilder();
+    SurfaceBuilder(SurfaceBuilder&&) noexcept;
+    SurfaceBuilder& operator=(SurfaceBuilder&&) noexcept;
+
+    /// The same mode and options with moved curves. @throws like buildSurface; build() then still
+    /// returns the last good surface.
+    const SurfaceBuild& update(const std::vector<Curve3d>& curves);
+    /// Full rebuild (new parameterization and refinement), as buildSurface.
+    const SurfaceBuild& reset(const std::vector<Curve3d>& curves);
+    const SurfaceBuild& build() const { return *build_; }
+    SurfaceMode mode() const { return mode_; }
+
+private:
+    SurfaceMode mode_;
+    SurfaceOptions options_;
+    std::unique_ptr<FillBuilder> fill_;
+    std::unique_ptr<LoftBuilder> loft_;
+    std::unique_ptr<SweepBuilder> sweep_;
+    std::unique_ptr<SurfaceBuild> build_;
+};
 
 }  // namespace sculptline::solvers::surfaces
