@@ -11,12 +11,19 @@ namespace {
 // A translation shorter than this fraction of the profile's size sweeps out no surface.
 constexpr double kMinExtentRelative = 1e-12;
 
+void requireExtent(const Curve3d& profile, double scale)
+{
+    if (!(profile.controlSize() > kMinExtentRelative * scale))
+        throw GeometryError("curves: the profile is a single point, extruding it gives no surface");
+}
+
 }  // namespace
 
 Surface3d extrude(const Curve3d& input, const Eigen::Vector3d& direction)
 {
     const Curve3d profile = input.clamped();
     const double size = std::max(1.0, profile.controlSize());
+    requireExtent(profile, std::max(1.0, direction.norm()));
     if (!direction.allFinite() || !(direction.norm() > kMinExtentRelative * size))
         throw GeometryError("direction: zero length, nothing to extrude");
     const int n = profile.pointCount();
@@ -39,6 +46,7 @@ Surface3d extrude(const Curve3d& input, const Curve3d& inputPath)
     const Eigen::Vector3d start = path.evaluate(path.domainStart());
     for (const Eigen::Vector3d& q : path.points()) extent = std::max(extent, (q - start).norm());
     if (!(extent > kMinExtentRelative * size)) throw GeometryError("path: zero length, nothing to extrude");
+    requireExtent(profile, std::max(1.0, extent));
     const bool rational = profile.isRational() || path.isRational();
     std::vector<Eigen::Vector3d> pts;
     std::vector<double> w;

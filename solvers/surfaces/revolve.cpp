@@ -14,6 +14,31 @@ namespace {
 constexpr double kMinAxisLength = 1e-12;
 // Control points closer to the axis than this fraction of the profile's size count as on it.
 constexpr double kOnAxisRelative = 1e-12;
+// Profile samples per knot span for the axis-crossing test.
+constexpr int kCrossingSamplesPerSpan = 32;
+
+// Throws when the profile passes from one side of the axis to the other: its radial direction
+// turns by more than 90 degrees between neighbouring dense samples (planar profiles: the signed
+// distance changes sign). The revolved surface would then pass through itself. Touching the axis
+// and turning back, or ending on it (a pole), is fine.
+void requireNoAxisCrossing(const Curve3d& profile, const Eigen::Vector3d& point, const Eigen::Vector3d& T, double size)
+{
+    std::vector<double> breaks{profile.domainStart()};
+    for (double k : interiorBreakpoints(profile.degree(), profile.knots())) breaks.push_back(k);
+    breaks.push_back(profile.domainEnd());
+    Eigen::Vector3d last = Eigen::Vector3d::Zero();
+    for (size_t s = 0; s + 1 < breaks.size(); ++s)
+        for (int k = 0; k <= kCrossingSamplesPerSpan; ++k) {
+            const double u = breaks[s] + (breaks[s + 1] - breaks[s]) * k / kCrossingSamplesPerSpan;
+            const Eigen::Vector3d d = profile.evaluate(u) - point;
+            const Eigen::Vector3d radial = d - d.dot(T) * T;
+            if (radial.norm() <= kOnAxisRelative * size) continue;
+            if (last.squaredNorm() > 0.0 && radial.dot(last) < 0.0)
+                throw GeometryError("curves: the profile crosses the axis near u = " + std::to_string(u) +
+                                    "; the revolved surface would pass through itself (end the profile on the axis)");
+            last = radial;
+        }
+}
 
 }  // namespace
 
@@ -71,6 +96,9 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
     }
     if (!(maxRadius > kOnAxisRelative * size))
         throw GeometryError("curves: the profile lies on the axis, revolving it gives no surface");
+    if (!(profile.controlSize() > kOnAxisRelative * size))
+        throw GeometryError("curves: the profile is a single point, revolving it gives no surface");
+    requireNoAxisCrossing(profile, axis.point, T, size);
     return Surface3d(profile.degree(), 2, profile.knots(), knotsV, countU, countV, std::move(pts), std::move(w));
 }
 

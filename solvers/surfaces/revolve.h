@@ -14,8 +14,9 @@ struct Axis {
 /// v around the axis on [0, 1], degree 2, one rational arc per <= 90 degrees (A8.1), so every
 /// iso-curve u = const is an exact circular arc and S(u, 0) = profile(u).
 /// @param angleDegrees in (0, 360].
-/// @throws GeometryError "axis: zero-length direction", "angle: ...", or "curves: the profile lies
-///         on the axis" (nothing to revolve).
+/// @throws GeometryError "axis: zero-length direction", "angle: ...", "curves: the profile lies
+///         on the axis" or "is a single point" (nothing to revolve), or "curves: the profile
+///         crosses the axis" (the surface would pass through itself; ending on the axis is fine).
 Surface3d revolve(const Curve3d& profile, const Axis& axis, double angleDegrees = 360.0);
 
 /// Distance of x from the axis line.

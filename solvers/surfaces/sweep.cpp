@@ -58,6 +58,7 @@ constexpr double kGrowthMargin = 1.25;
 // A path whose control points a rigid motion maps onto the new ones to this fraction of its size
 // has moved rigidly (round-off of a plane's transform is ~1e-16).
 constexpr double kRigidRelative = 1e-10;
+constexpr double kSinglePointRelative = 1e-12;
 
 // A path closes smoothly when its ends coincide to round-off and its end tangents agree to this
 // angle (radians): a periodic curve's seam is C^(p-1), so its tangents agree to round-off.
@@ -244,6 +245,9 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
                        std::shared_ptr<SweepPathSamples>& samples)
 {
     requireNoCusp(path);
+    // A profile this much smaller than the path sweeps out a curve, not a surface.
+    if (!(profile.controlSize() > kSinglePointRelative * std::max(1.0, path.controlSize())))
+        throw GeometryError("curves: the profile is a single point, sweeping it gives no surface");
     const double tolerance = sweepTolerance(profile, path, options);
     const CurveJet jet(path);
     // Sections at equally spaced parameters per path knot span, so every path knot (where the

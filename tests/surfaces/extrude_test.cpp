@@ -46,3 +46,10 @@ TEST(Extrude, GivenZeroExtent_WhenExtruded_ThenClearError)
     const Curve3d point = cubic({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}});
     EXPECT_THROW(extrude(profile, point), GeometryError);
 }
+
+TEST(Extrude, GivenPointProfile_WhenExtruded_ThenClearError)
+{
+    const Curve3d point = cubic({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}});
+    EXPECT_THROW(extrude(point, Vec3(0, 0, 1)), GeometryError);
+    EXPECT_THROW(extrude(point, cubic({{0, 0, 0}, {0, 1, 0}, {0, 2, 1}, {0, 3, 1}})), GeometryError);
+}

@@ -75,3 +75,21 @@ TEST(Revolve, GivenDegenerateInput_WhenRevolved_ThenClearErrors)
     const Curve3d onAxis = cubic({{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 0, 3}});
     EXPECT_THROW(revolve(onAxis, Axis{}), GeometryError);
 }
+
+TEST(Revolve, GivenProfileCrossingTheAxisOrAPoint_WhenRevolved_ThenClearErrors)
+{
+    // Given: a profile in the xz-plane from x = 1 to x = -1 (through the z axis), and a point.
+    const Curve3d crossing = cubic({{1, 0, 0}, {0.5, 0, 1}, {-0.5, 0, 1}, {-1, 0, 2}});
+    const Curve3d point = cubic({{1, 0, 1}, {1, 0, 1}, {1, 0, 1}, {1, 0, 1}});
+    // When / Then
+    try {
+        revolve(crossing, Axis{});
+        FAIL() << "expected GeometryError";
+    } catch (const GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("crosses the axis"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(revolve(point, Axis{}), GeometryError);
+    // And: a profile that ends on the axis (a pole), or comes near it and turns back, is revolved.
+    EXPECT_NO_THROW(revolve(cubic({{0, 0, 0}, {1, 0, 0.5}, {1, 0, 1.5}, {0, 0, 2}}), Axis{}));
+    EXPECT_NO_THROW(revolve(cubic({{1, 0, 0}, {0, 0, 1}, {0, 0, 1}, {1, 0, 2}}), Axis{}));
+}

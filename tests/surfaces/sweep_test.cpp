@@ -207,3 +207,14 @@ TEST(Sweep, GivenWavyPath_WhenSwept_ThenSpansGetSectionsByTheirOwnDeviation)
     }
     EXPECT_GT(longest, 2.0 * shortest);
 }
+
+TEST(Sweep, GivenPointProfile_WhenSwept_ThenClearError)
+{
+    const Curve3d point = cubic({{0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}});
+    try {
+        sweep(point, helixPath());
+        FAIL() << "expected GeometryError";
+    } catch (const GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("single point"), std::string::npos) << e.what();
+    }
+}
