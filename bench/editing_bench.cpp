@@ -37,30 +37,19 @@ void BM_EditingOversketchBlend(benchmark::State& s)
 BENCHMARK(BM_EditingOversketchLocalC2)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_EditingOversketchBlend)->Unit(benchmark::kMillisecond);
 
-// A drag with 3 constraints on a 50-control-point curve (thesis Fig. 6-3: a moving point, a kept
-// tangent, a kept distance).
-std::vector<CurveConstraint<3>> dragConstraints(const Curve3d& c)
+// The same stroke over the closed ellipse loop's seam (closed curves, tests/editing: strokeAcrossSeam).
+void BM_EditingOversketchClosedLocalC2(benchmark::State& state)
 {
-    std::vector<CurveConstraint<3>> cs(3);
-    cs[0].type = ConstraintType::Position;
-    cs[0].u = 0.45;
-    cs[0].value = c.evaluate(0.45);
-    cs[1].type = ConstraintType::Tangent;
-    cs[1].u = 0.5;
-    cs[1].value = c.derivatives(0.5, 1)[1];
-    cs[2].type = ConstraintType::Distance;
-    cs[2].u = 0.5;
-    cs[2].u2 = 0.55;
-    cs[2].value = c.evaluate(0.55) - c.evaluate(0.5);
-    return cs;
+    const Curve2d curve = sculptline::editing_fixtures::ellipseLoop();
+    const auto stroke = sculptline::editing_fixtures::strokeAcrossSeam();
+    for (auto _ : state) benchmark::DoNotOptimize(oversketch(curve, stroke));
 }
+BENCHMARK(BM_EditingOversketchClosedLocalC2)->Unit(benchmark::kMillisecond);
 
-Curve3d helix(int n)
-{
-    std::vector<Eigen::Vector3d> pts;
-    for (int i = 0; i < n; ++i) pts.emplace_back(10 * std::cos(0.4 * i), 10 * std::sin(0.4 * i), 0.8 * i);
-    return makeClampedUniform<3>(3, pts);
-}
+// A drag with 3 constraints on a 50-control-point curve (thesis Fig. 6-3: a moving point, a kept
+// tangent, a kept distance); tests/editing/curve_manipulation_test.cpp checks this very drag.
+using sculptline::editing_fixtures::dragConstraints;
+using sculptline::editing_fixtures::helix;
 
 void BM_EditingDragPreprocess(benchmark::State& state)
 {
@@ -106,11 +95,7 @@ BENCHMARK(BM_EditingDragPerEventCurve)->Unit(benchmark::kMicrosecond);
 
 void BM_EditingLift300(benchmark::State& state)
 {
-    std::vector<Eigen::Vector2d> stroke;
-    for (int i = 0; i < 300; ++i) {
-        const double t = i / 299.0;
-        stroke.emplace_back(10 * t, 6 * std::sin(2.5 * t) + 0.5 * std::sin(9 * t));
-    }
+    const auto stroke = sculptline::editing_fixtures::liftStroke300();
     for (auto _ : state) benchmark::DoNotOptimize(liftStroke(stroke, 0.0, 5.0));
 }
 BENCHMARK(BM_EditingLift300)->Unit(benchmark::kMillisecond);

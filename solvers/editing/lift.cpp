@@ -131,6 +131,9 @@ std::vector<double> fittedParameters(const std::vector<Eigen::Vector2d>& pts, do
                 u[i] = x;
             }
             if (moved < kParameterConverged) break;
+            // A single span still off by more than the tolerance after the spline's passes is no
+            // Bézier: the remaining passes would only polish a fit that more spans replace.
+            if (pass + 1 >= kCorrectionsSpline && err > tol) break;
         }
         for (int i = 1; i < n; ++i) u[i] = std::max(u[i], u[i - 1]);
         if (err <= tol || 2 * spans > maxSpans) return u;

@@ -5,6 +5,8 @@
 
 #include "solvers/bspline/geometry_error.h"
 
+#include "tests/editing/editing_fixtures.h"
+
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <gtest/gtest.h>
@@ -337,4 +339,28 @@ TEST(CurveManipulation, GivenClosedRationalCurve_WhenCurvatureConstrainedAcrossS
     EXPECT_LT((out.derivatives(seam + 0.5, 2)[2] - cs[1].value).norm(), kConstraintTolerance);
     const auto a = out.derivatives(out.domainStart(), 2), e = out.derivatives(out.domainEnd(), 2);
     for (int k = 0; k <= 2; ++k) EXPECT_LT((a[k] - e[k]).norm(), 1e-9) << "order " << k;
+}
+
+TEST(CurveManipulation, GivenTheBenchmarkedDrag_WhenSolvedPerEvent_ThenConstraintsHoldAndEndsStayFixed)
+{
+    // Given bench/editing_bench.cpp's drag: 50-point helix, 3 constraints, both ends blocked
+    const Curve3d curve = sculptline::editing_fixtures::helix(50);
+    const auto cs = sculptline::editing_fixtures::dragConstraints(curve);
+    const CurveManipulationSolver<3> solver(curve, cs, {0, 49});
+    std::vector<Eigen::Vector3d> targets = {cs[0].value, cs[1].value, cs[2].value};
+
+    for (int event = 1; event <= 50; ++event) {
+        // When the point is dragged 0.05 further per event
+        targets[0] = cs[0].value + Eigen::Vector3d(0.05 * event, 0.025 * event, 0.0);
+        ManipulationReport report;
+        const Curve3d out = solver.solve(targets, &report);
+
+        // Then the moved point, the kept tangent and the kept distance hold to 1e-9 and the ends stay
+        EXPECT_LT((out.evaluate(0.45) - targets[0]).norm(), kConstraintTolerance);
+        EXPECT_LT((out.derivatives(0.5, 1)[1] - targets[1]).norm(), kConstraintTolerance * targets[1].norm());
+        EXPECT_LT((out.evaluate(0.55) - out.evaluate(0.5) - targets[2]).norm(), kConstraintTolerance);
+        EXPECT_EQ(out.points().front(), curve.points().front());
+        EXPECT_EQ(out.points().back(), curve.points().back());
+        EXPECT_FALSE(report.compromise);
+    }
 }

@@ -2,6 +2,7 @@
 // Curves and strokes shared by the editing tests and benchmarks (bench/editing_bench.cpp), so that
 // the benchmarked cases are the tested ones.
 #include "solvers/bspline/bspline_curve.h"
+#include "solvers/editing/curve_manipulation.h"
 
 #include <cmath>
 #include <vector>
@@ -45,6 +46,45 @@ inline std::vector<Eigen::Vector2d> strokeAcrossSeam()
     for (int i = 0; i <= 150; ++i) {
         const double a = -0.5 + 1.0 * i / 150.0;
         stroke.emplace_back((8.0 + 1.5 * std::cos(M_PI * a)) * std::cos(a), 5.5 * std::sin(a));
+    }
+    return stroke;
+}
+
+/// An open cubic on n points of a helix of radius 10 and pitch 0.8 per point (the drag benchmark's
+/// 50-control-point curve).
+inline solvers::Curve3d helix(int n)
+{
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < n; ++i) pts.emplace_back(10 * std::cos(0.4 * i), 10 * std::sin(0.4 * i), 0.8 * i);
+    return solvers::makeClampedUniform<3>(3, pts);
+}
+
+/// A drag with 3 constraints (thesis Fig. 6-3): a moving point at 0.45, the tangent at 0.5 and the
+/// distance vector from 0.5 to 0.55 kept at their current values.
+inline std::vector<solvers::editing::CurveConstraint<3>> dragConstraints(const solvers::Curve3d& c)
+{
+    using solvers::editing::ConstraintType;
+    std::vector<solvers::editing::CurveConstraint<3>> cs(3);
+    cs[0].type = ConstraintType::Position;
+    cs[0].u = 0.45;
+    cs[0].value = c.evaluate(0.45);
+    cs[1].type = ConstraintType::Tangent;
+    cs[1].u = 0.5;
+    cs[1].value = c.derivatives(0.5, 1)[1];
+    cs[2].type = ConstraintType::Distance;
+    cs[2].u = 0.5;
+    cs[2].u2 = 0.55;
+    cs[2].value = c.evaluate(0.55) - c.evaluate(0.5);
+    return cs;
+}
+
+/// The lift benchmark's stroke: 300 samples of a wavy arc, 10 units wide.
+inline std::vector<Eigen::Vector2d> liftStroke300()
+{
+    std::vector<Eigen::Vector2d> stroke;
+    for (int i = 0; i < 300; ++i) {
+        const double t = i / 299.0;
+        stroke.emplace_back(10 * t, 6 * std::sin(2.5 * t) + 0.5 * std::sin(9 * t));
     }
     return stroke;
 }

@@ -4,6 +4,8 @@
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/projection.h"
 
+#include "tests/editing/editing_fixtures.h"
+
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -189,4 +191,22 @@ TEST(Lift, GivenDegenerateStroke_WhenLifted_ThenGeometryError)
     EXPECT_THROW(liftStroke({{0, 0}, {1, 1}}, 0, NAN), GeometryError);
     const LiftResult two = liftStroke({{0, 0}, {1, 1}}, 0, 1);
     EXPECT_NEAR(two.curve.evaluate(two.curve.domainEnd()).z(), 1.0, 1e-12);
+}
+
+TEST(Lift, GivenTheBenchmarkedStroke_WhenLifted_ThenEndDepthsHeldAndCurveWithinTolerance)
+{
+    // Given bench/editing_bench.cpp's 300-sample stroke and depths 0 and 5
+    const auto stroke = sculptline::editing_fixtures::liftStroke300();
+
+    // When lifted
+    const LiftResult r = liftStroke(stroke, 0.0, 5.0);
+
+    // Then the ends keep their depths, the depth runs monotonically between them (a stroke with no
+    // loop has a monotone parameter), and the output cubic is within its tolerance of the points
+    EXPECT_DOUBLE_EQ(r.points.front().z(), 0.0);
+    EXPECT_DOUBLE_EQ(r.points.back().z(), 5.0);
+    for (size_t i = 1; i < r.points.size(); ++i) EXPECT_GE(r.points[i].z(), r.points[i - 1].z() - 1e-12);
+    double length = 0.0;
+    for (size_t i = 1; i < r.points.size(); ++i) length += (r.points[i] - r.points[i - 1]).norm();
+    EXPECT_LE(r.fitError, LiftOptions{}.fitTolerance * length * (1.0 + 1e-9));
 }
