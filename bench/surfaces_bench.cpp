@@ -5,6 +5,7 @@
 #include "solvers/surfaces/coons_fill.h"
 #include "solvers/surfaces/extrude.h"
 #include "solvers/surfaces/gordon.h"
+#include "solvers/surfaces/interpolation.h"
 #include "solvers/surfaces/network_mesh.h"
 #include "solvers/surfaces/loft.h"
 #include "solvers/surfaces/rail_rotation.h"
@@ -84,6 +85,54 @@ void BM_SurfaceFillBuilderUpdate(benchmark::State& state)
     other[2] = moved(b[2], 0.5);
     int k = 0;
     for (auto _ : state) benchmark::DoNotOptimize(&builder.update((++k % 2) ? other : b));
+}
+
+// The fill boundaries with a reference surface along the first: the ruled surface b0(u) + w·D(u),
+// D running linearly from the direction in which the last boundary arrives at b0's start to the
+// one in which the second leaves b0's end, so G1 along b0 is consistent at both corners.
+Surface3d referenceAlongFirst(const std::vector<Curve3d>& b)
+{
+    const Curve3d& b0 = b[0];
+    const Vec3 d0 = -(b[3].derivatives(b[3].domainEnd(), 1)[1]).normalized();
+    const Vec3 d1 = b[1].derivatives(b[1].domainStart(), 1)[1].normalized();
+    const std::vector<double> g = grevilleAbscissae(b0.degree(), b0.knots());
+    std::vector<Vec3> pts;
+    for (int i = 0; i < b0.pointCount(); ++i) {
+        // A linear function's B-spline coefficients are its values at the Greville abscissae.
+        pts.push_back(b0.points()[i]);
+        pts.push_back(b0.points()[i] + (1.0 - g[i]) * d0 + g[i] * d1);
+    }
+    return Surface3d(b0.degree(), 1, b0.knots(), {0.0, 0.0, 1.0, 1.0}, b0.pointCount(), 2, pts);
+}
+
+void BM_SurfaceFillG1(benchmark::State& state)
+{
+    const std::vector<Curve3d> b = boundaries(static_cast<int>(state.range(0)));
+    FillOptions options;
+    options.tangents.push_back({0, referenceAlongFirst(b)});
+    FillBuilder built(b, options);
+    for (auto _ : state) benchmark::DoNotOptimize(fill(b, options));
+    state.counters["countU"] = built.surface().countU();
+    state.counters["max_angle_deg"] = built.maxTangentAngleDegrees();
+}
+
+void BM_SurfaceFillG1BuilderUpdate(benchmark::State& state)
+{
+    const std::vector<Curve3d> b = boundaries(static_cast<int>(state.range(0)));
+    FillOptions options;
+    options.tangents.push_back({0, referenceAlongFirst(b)});
+    FillBuilder builder(b, options);
+    std::vector<Curve3d> other = b;
+    other[2] = moved(b[2], 0.5);
+    int k = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(&builder.update((++k % 2) ? other : b));
+    state.counters["max_angle_deg"] = builder.maxTangentAngleDegrees();
+}
+
+void BM_SurfaceExtrude(benchmark::State& state)
+{
+    const Curve3d profile = wavy(static_cast<int>(state.range(0)), Vec3(0, 0, 0), Vec3(4, 0, 0), 0.0);
+    for (auto _ : state) benchmark::DoNotOptimize(extrude(profile, Vec3(0, 2, 1)));
 }
 
 void BM_SurfaceRevolve(benchmark::State& state)
@@ -226,6 +275,9 @@ BENCHMARK(BM_SurfaceLoft)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicroseco
 BENCHMARK(BM_SurfaceLoftBuilderUpdate)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceFill)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceFillBuilderUpdate)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceFillG1)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceFillG1BuilderUpdate)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceExtrude)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceRevolve)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceExtrudePath)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SurfaceSweep)->Arg(10)->Arg(20)->Arg(40)->Unit(benchmark::kMicrosecond);

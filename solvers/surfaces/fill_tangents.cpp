@@ -25,6 +25,8 @@ constexpr double kRegularization = 1e-12;
 // A tracked point this close (relative to the reference's size) is on the surface: round-off of
 // evaluating a point of a curve that lies on it.
 constexpr double kOnSurface = 1e-9;
+// Newton stops once the point is this close (relative): round-off of evaluating the surface.
+constexpr double kConverged = 1e-14;
 
 // The grid index of point r (0 = on the side, 1 = next inner row) at position i along patch side `side`.
 size_t gridIndex(int side, int i, int r, int nu, int nv)
@@ -56,48 +58,60 @@ ReferenceTracker::ReferenceTracker(const Surface3d& reference) : reference_(std:
     size_ = std::max(box.diagonal().norm(), std::numeric_limits<double>::min());
 }
 
-bool ReferenceTracker::refine(const Vec3& x, Eigen::Vector2d& uv) const
+double ReferenceTracker::refine(const Vec3& x, Eigen::Vector2d& uv, Vec3& normal) const
 {
     const Surface3d& s = *reference_;
     const Eigen::Vector2d lo(s.domainStart(Direction::U), s.domainStart(Direction::V));
     const Eigen::Vector2d hi(s.domainEnd(Direction::U), s.domainEnd(Direction::V));
-    for (int it = 0; it < kNewtonSteps; ++it) {
+    double dist = std::numeric_limits<double>::infinity();
+    for (int it = 0; it <= kNewtonSteps; ++it) {
         const auto d = s.derivatives(uv.x(), uv.y(), 1);
         const Vec3 r = d[0][0] - x;
+        dist = r.norm();
+        const Vec3 n = d[1][0].cross(d[0][1]);
+        normal = n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+        if (dist <= kConverged * size_ || it == kNewtonSteps) break;
         Eigen::Matrix<double, 3, 2> J;
         J << d[1][0], d[0][1];
         const Eigen::Matrix2d JtJ = J.transpose() * J;
-        if (!(std::abs(JtJ.determinant()) > 0.0)) return false;
-        const Eigen::Vector2d step = -JtJ.ldlt().solve(J.transpose() * r);
-        const Eigen::Vector2d next = (uv + step).cwiseMax(lo).cwiseMin(hi);
-        const double moved = (next - uv).norm();
+        if (!(std::abs(JtJ.determinant()) > 0.0)) break;
+        const Eigen::Vector2d next = (uv - JtJ.ldlt().solve(J.transpose() * r)).cwiseMax(lo).cwiseMin(hi);
+        if (!next.allFinite() || (next - uv).norm() <= 1e-15 * (hi - lo).norm()) break;
         uv = next;
-        if (moved <= 1e-15 * (hi - lo).norm()) break;
     }
-    return uv.allFinite();
+    // At a collapsed edge of the reference the first derivatives do not give the normal.
+    if (normal.squaredNorm() < 0.5) normal = reference_->normal(uv.x(), uv.y());
+    return dist;
 }
 
-std::vector<Eigen::Vector2d> ReferenceTracker::locate(const std::vector<Vec3>& points, double* worst)
+std::vector<Eigen::Vector2d> ReferenceTracker::locate(const std::vector<Vec3>& points, double* worst,
+                                                      std::vector<Vec3>* normals)
 {
     std::vector<Eigen::Vector2d> out;
+    if (normals) normals->clear();
     double far = 0.0;
-    for (const Vec3& x : points) {
-        Eigen::Vector2d uv = out.empty() ? Eigen::Vector2d::Zero() : out.back();
+    const bool warm = last_.size() == points.size();
+    for (size_t k = 0; k < points.size(); ++k) {
+        const Vec3& x = points[k];
+        Eigen::Vector2d uv = warm ? last_[k] : out.empty() ? Eigen::Vector2d::Zero() : out.back();
+        Vec3 normal = Vec3::Zero();
         double dist = std::numeric_limits<double>::infinity();
-        if (!out.empty() && refine(x, uv)) dist = (reference_->evaluate(uv.x(), uv.y()) - x).norm();
-        // Tracking from the previous point lands on the nearest local minimum; a distance above
-        // round-off means it lost the curve (a fold of the reference), so search globally.
+        if (warm || !out.empty()) dist = refine(x, uv, normal);
+        // Tracking lands on the nearest local minimum; a distance above round-off means it lost
+        // the curve (a fold of the reference), so search globally.
         if (!(dist <= kOnSurface * size_)) {
             if (!projector_) projector_ = std::make_shared<SurfaceProjector>(*reference_);
             const SurfaceProjection p = projector_->project(x);
             if (p.distance < dist) {
                 uv = {p.u, p.v};
-                dist = p.distance;
+                dist = refine(x, uv, normal);
             }
         }
         far = std::max(far, dist);
         out.push_back(uv);
+        if (normals) normals->push_back(normal);
     }
+    last_ = out;
     if (worst) *worst = far;
     return out;
 }
@@ -116,13 +130,11 @@ void locateSamples(G1Side& g, const Curve3d& side, const CurveLayout& layout, do
     std::vector<Vec3> points;
     for (double t : g.samples) points.push_back(side.evaluate(t));
     double worst = 0.0;
-    const std::vector<Eigen::Vector2d> uv = g.tracker->locate(points, &worst);
+    g.tracker->locate(points, &worst, &g.normals);
     if (!(worst <= tolerance))
         throw GeometryError("tangents[" + std::to_string(g.tangentIndex) + "]: curves[" + std::to_string(g.curveIndex) +
                             "] does not lie on its reference surface: up to " + std::to_string(worst) +
                             " away (tolerance " + std::to_string(tolerance) + ")");
-    g.normals.clear();
-    for (const Eigen::Vector2d& p : uv) g.normals.push_back(g.tracker->normal(p));
 }
 
 void applyG1(std::vector<Vec3>& pts, int nu, int nv, const std::array<CurveLayout, 2>& layouts,

@@ -20,17 +20,22 @@ namespace sculptline::solvers::surfaces {
 class ReferenceTracker {
 public:
     explicit ReferenceTracker(const Surface3d& reference);
-    /// Parameters of each point; `worst` receives the largest distance from the surface.
-    std::vector<Eigen::Vector2d> locate(const std::vector<Eigen::Vector3d>& points, double* worst);
+    /// Parameters of each point; `worst` receives the largest distance from the surface and
+    /// `normals` (if given) the unit normals there. A call with as many points as the previous one
+    /// starts each point from its previous parameters (a dragged curve moves little per event).
+    std::vector<Eigen::Vector2d> locate(const std::vector<Eigen::Vector3d>& points, double* worst,
+                                        std::vector<Eigen::Vector3d>* normals = nullptr);
     /// Unit normal of the reference at (u, v); zero where it is undefined.
     Eigen::Vector3d normal(const Eigen::Vector2d& uv) const;
     const Surface3d& surface() const { return *reference_; }
 
 private:
-    bool refine(const Eigen::Vector3d& x, Eigen::Vector2d& uv) const;
+    /// Gauss-Newton from uv; returns the distance reached and sets the normal there.
+    double refine(const Eigen::Vector3d& x, Eigen::Vector2d& uv, Eigen::Vector3d& normal) const;
 
     std::shared_ptr<const Surface3d> reference_;
     double size_ = 1.0;  // control-box diagonal (model units)
+    std::vector<Eigen::Vector2d> last_;  // parameters found by the previous locate()
     std::shared_ptr<const SurfaceProjector> projector_;  // built on first need
 };
 
