@@ -20,6 +20,10 @@ using Vec3 = Eigen::Vector3d;
 constexpr int kSamplesPerSpan = 16;
 // Ratio of the two largest principal extents below which the samples lie on a line.
 constexpr double kCollinearRatio = 1e-9;
+// Margin on the estimate of the pieces a span needs, so that one more pass is rarely needed; and a
+// bound on them per pass (the estimate is for smooth E; near a vanishing D it is not).
+constexpr double kGrowthMargin = 1.25;
+constexpr int kMaxPiecesPerPass = 8;
 
 // D turned by 90 degrees towards n within span(D, n), same length (zero when D vanishes).
 Vec3 quarterTurn(const Vec3& d, const Vec3& n)
@@ -106,15 +110,28 @@ ApproximatedSurface boundaryRotation(const Curve3d& left, const Curve3d& right, 
         for (size_t k = 0; k < g.size(); ++k) target.row(k) = quarterTurn(dCurve.evaluate(g[k]), n).transpose();
         eRows = CurveInterpolator(g, p, knots).solve(target);
         const Curve3d e = Curve3d::fromHomogeneous(p, knots, eRows, false);
-        deviation = 0.0;
-        for (double u : samples(knots, p)) deviation = std::max(deviation, (e.evaluate(u) - quarterTurn(dCurve.evaluate(u), n)).norm());
-        if (deviation <= tolerance || 2 * static_cast<int>(qd.rows()) > options.maxPoints) break;
-        // Halve every span (A5.4 keeps Q and D exact).
-        std::vector<double> mids;
         std::vector<double> br{0.0};
         for (double k : interiorBreakpoints(p, knots)) br.push_back(k);
         br.push_back(1.0);
-        for (size_t s = 0; s + 1 < br.size(); ++s) mids.push_back(0.5 * (br[s] + br[s + 1]));
+        // The deviation per knot span (samples inside it and at its end).
+        std::vector<double> spanDeviation(br.size() - 1, 0.0);
+        size_t span = 0;
+        for (double u : samples(knots, p)) {
+            while (span + 2 < br.size() && u > br[span + 1]) ++span;
+            spanDeviation[span] = std::max(spanDeviation[span], (e.evaluate(u) - quarterTurn(dCurve.evaluate(u), n)).norm());
+        }
+        deviation = *std::max_element(spanDeviation.begin(), spanDeviation.end());
+        if (deviation <= tolerance) break;
+        // Split the spans over tolerance only, each into as many pieces as the h^(p+1) error of
+        // the interpolant asks for (A5.4 keeps Q and D exact).
+        std::vector<double> mids;
+        for (size_t s = 0; s + 1 < br.size(); ++s) {
+            if (!(spanDeviation[s] > tolerance)) continue;
+            const double pieces = std::ceil(std::pow(kGrowthMargin * spanDeviation[s] / tolerance, 1.0 / (p + 1)));
+            const int m = std::clamp(static_cast<int>(pieces), 2, kMaxPiecesPerPass);
+            for (int k = 1; k < m; ++k) mids.push_back(br[s] + (br[s + 1] - br[s]) * k / m);
+        }
+        if (static_cast<int>(qd.rows() + mids.size()) > options.maxPoints) break;
         KnotsAndPoints r = refineKnots(p, knots, qd, mids);
         knots = std::move(r.knots);
         qd = std::move(r.points);

@@ -33,7 +33,8 @@ constexpr double kDefaultApproximationRelative = 1e-4;
 /// Instead of interpolating sampled circle points (the thesis's eq. 5-8), Q and D are kept exactly
 /// in the outlines' compatible layout, the circle is the exact rational one (9 points, A7.1 style),
 /// and only E(u) = |D(u)|·e(u) (not polynomial) is approximated, by interpolation at the Greville
-/// abscissae, refining every span until |E - E*| <= tolerance. The surface's distance from the
+/// abscissae, splitting each span where |E - E*| > tolerance (into pieces by the interpolant's
+/// h^(p+1) error) until it is within tolerance everywhere. The surface's distance from the
 /// thesis's surface is |sin θ|·|E - E*|, so maxDeviation bounds it. C0 corners of the outlines stay
 /// C0 knots of the surface: sharp features and rotational creases are kept (thesis §5.2.1).
 /// u runs along the outlines (on [0, 1]), v around the circles (v = 0 at Cl, 1/2 at Cr). An outline
