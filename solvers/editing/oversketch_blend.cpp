@@ -205,6 +205,8 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         Mt = std::min(M, 0.25 * free);
     }
     constexpr int kMaxRefinements = 6;
+    // C1's mean speed (refinement does not change it).
+    const double speed = CurveLengths<Dim>(input).total() / (input.domainEnd() - input.domainStart());
     BSplineCurve<Dim> c = input.isClosed() ? input : input.clamped();
     for (int attempt = 0;; ++attempt) {
         const Polygon<Dim> poly = polygonOf(c);
@@ -252,7 +254,7 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         // When the kept knots alone are already too long for the gap (CT_s closer than the p - 1 spans
         // its support reaches), CT_s steps back (at most p points): this lengthens the transition
         // beyond eq. 4-25's M..1.5M, which is measured between control points, not curve points.
-        const double v = CurveLengths<Dim>(c).total() / (c.domainEnd() - c.domainStart());
+        const double v = speed;
         const double deltaMin = 0.5 * meanSpacing;
         auto leftGap = [&](int i) {
             return (h.front() - c.evaluate(knotAt(i + 1))).norm() / v - (knotAt(i + p) - knotAt(i + 1));

@@ -116,18 +116,23 @@ TEST(OversketchLocalC2, GivenBumpStroke_WhenOversketched_ThenUnchangedOutsideSpa
                 out.pointCount(), span.first, span.second, err);
 }
 
-TEST(OversketchLocalC2, GivenReversedStroke_WhenOversketched_ThenSameAsForward)
+class OversketchReversed : public ::testing::TestWithParam<OversketchMethod> {};
+
+TEST_P(OversketchReversed, GivenReversedStroke_WhenOversketched_ThenSameAsForward)
 {
     const Curve2d curve = wave(20);
     auto stroke = bump(curve, 0.3, 0.5, 1.5, 200);
-    const Curve2d forward = oversketch(curve, stroke);
+    const Curve2d forward = oversketch(curve, stroke, method(GetParam()));
     std::reverse(stroke.begin(), stroke.end());
 
-    const Curve2d backward = oversketch(curve, stroke);
+    const Curve2d backward = oversketch(curve, stroke, method(GetParam()));
 
     ASSERT_EQ(forward.pointCount(), backward.pointCount());
     for (int i = 0; i < forward.pointCount(); ++i) EXPECT_LT((forward.points()[i] - backward.points()[i]).norm(), 1e-9);
 }
+
+INSTANTIATE_TEST_SUITE_P(Methods, OversketchReversed,
+                         ::testing::Values(OversketchMethod::LocalC2, OversketchMethod::Blend));
 
 TEST(OversketchLocalC2, GivenTwentyEditsOfOneRegion_WhenOversketched_ThenControlPointsStayBounded)
 {
@@ -206,6 +211,22 @@ TEST(Oversketch, GivenDegenerateStrokes_WhenOversketched_ThenErrorOrValidCurveNe
         EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{}, method(m)), GeometryError);
         EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{{3, 1}, {3, 1}}, method(m)), GeometryError);
         EXPECT_THROW(oversketch(curve, std::vector<Eigen::Vector2d>{{3, 1}, {NAN, 1}}, method(m)), GeometryError);
+        // Too short: a tap of 1e-3 on a curve 14 across (below 1e-3 of its size), open or closed
+        for (const Curve2d& c : {curve, sculptline::editing_fixtures::ellipseLoop()}) {
+            try {
+                oversketch(c, std::vector<Eigen::Vector2d>{{8, 4}, {8.0005, 4.0005}, {8.001, 4.0}}, method(m));
+                ADD_FAILURE() << "a tap must be refused";
+            } catch (const GeometryError& e) {
+                EXPECT_NE(std::string(e.what()).find("too short"), std::string::npos) << e.what();
+            }
+        }
+        // Short but real (0.2 long) on the loop: a local edit, not the whole loop
+        std::vector<Eigen::Vector2d> shortStroke;
+        for (int i = 0; i <= 20; ++i) shortStroke.emplace_back(8.2 * std::cos(0.6) + 0.01 * i, 5.2 * std::sin(0.6) + 0.1);
+        std::pair<double, double> span;
+        const Curve2d loop = sculptline::editing_fixtures::ellipseLoop();
+        const Curve2d edited = oversketch(loop, shortStroke, method(m), &span);
+        EXPECT_LT(span.second - span.first, 0.5 * (edited.domainEnd() - edited.domainStart()));
         // Entirely off the curve, 20 units above it: a valid curve that follows the stroke.
         std::vector<Eigen::Vector2d> far;
         for (int i = 0; i <= 50; ++i) far.emplace_back(4.0 + 6.0 * i / 50.0, 20.0);
