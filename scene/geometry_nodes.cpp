@@ -121,8 +121,11 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
 
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style)
 {
-    const solvers::GridMesh mesh = solvers::tessellate(surface);
+    return makeSurfaceNode(surface, solvers::tessellate(surface), style);
+}
 
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style)
+{
     SoSeparator* root = surfaceRoot(style);
     auto* coords = new SoCoordinate3;
     setPoints(coords->point, mesh.vertices);

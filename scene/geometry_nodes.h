@@ -3,6 +3,7 @@
 // (solvers/bspline/tessellation.h) rather than SoNurbs*: the same polyline and mesh the tests check,
 // and SoIndexedFaceSet takes Coin's vertex-array fast path (../shared/NOTES.md).
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/bspline/tessellation.h"
 
 #include <Inventor/SbColor.h>
 
@@ -28,6 +29,8 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
 /// SoSeparator { SoMaterial SoShapeHints SoCoordinate3 SoNormal SoNormalBinding SoIndexedFaceSet }
 /// with the kernel's per-vertex normals; both sides lit. Reference count 0, as above.
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style = {});
+/// The same from a mesh of `surface` already made (solvers::tessellate or solvers::meshOnGrid).
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style = {});
 
 /// The same looks drawn by Coin's own NURBS nodes (SoNurbsCurve / SoNurbsSurface, tessellated by
 /// GLU at render time), for measuring the kernel-tessellation path against them (issue 5 §4).

@@ -169,31 +169,32 @@ void MainWindow::createActions()
 
     QMenu* modeMenu = menuBar()->addMenu(tr("&Mode"));
     modes_ = new QActionGroup(this);
-    auto modeAction = [&](const char* name, const QString& text, const QString& key, Mode m) {
-        QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, m]() { setMode(m); });
+    // Each mode: its action name, a short label for the Modes dock's button, the menu text, the hot key.
+    auto modeAction = [&](const char* name, const QString& label, const QString& text, const QString& key, Mode m,
+                          const char* surface = "") {
+        QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, m, surface]() { setMode(m, surface); });
+        a->setIconText(label);
         a->setCheckable(true);
         modes_->addAction(a);
     };
-    modeAction("mode.view", tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
-    modeAction("mode.sketch", tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
-    modeAction("mode.oversketch", tr("&Over-sketch a curve"), QStringLiteral("O"), Mode::Oversketch);
-    modeAction("mode.lift", tr("&Lift a stroke between two curves into space"), QStringLiteral("L"), Mode::Lift);
-    modeAction("mode.pull", tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
-    modeAction("mode.select", tr("S&elect"), QStringLiteral("E"), Mode::Select);
+    modeAction("mode.view", tr("View"), tr("&View (turn, pan, zoom)"), QStringLiteral("V"), Mode::View);
+    modeAction("mode.sketch", tr("Sketch"), tr("&Sketch on the active plane"), QStringLiteral("S"), Mode::Sketch);
+    modeAction("mode.oversketch", tr("Over-sketch"), tr("&Over-sketch a curve"), QStringLiteral("O"), Mode::Oversketch);
+    modeAction("mode.lift", tr("Lift"), tr("&Lift a stroke between two curves into space"), QStringLiteral("L"), Mode::Lift);
+    modeAction("mode.pull", tr("Pull"), tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
+    modeAction("mode.select", tr("Select"), tr("S&elect"), QStringLiteral("E"), Mode::Select);
     modeMenu->addSeparator();
     // The surface modes (thesis §5.1.3, §5.2; seed 000): pick the curves, the surface follows them.
-    auto surfaceAction = [&](const char* name, const QString& text, const QString& key, const char* mode) {
-        QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, mode]() { setMode(Mode::Surface, mode); });
-        a->setCheckable(true);
-        modes_->addAction(a);
+    auto surfaceAction = [&](const char* name, const QString& label, const QString& text, const QString& key, const char* mode) {
+        modeAction(name, label, text, key, Mode::Surface, mode);
     };
-    surfaceAction("mode.fill", tr("&Fill 2-4 boundary curves"), QStringLiteral("F"), "fill");
-    surfaceAction("mode.revolve", tr("&Revolve a profile about an axis line"), QStringLiteral("R"), "revolve");
-    surfaceAction("mode.extrude", tr("E&xtrude: drag a curve out"), QStringLiteral("X"), "extrude");
-    surfaceAction("mode.sweep", tr("S&weep a profile along a path"), QStringLiteral("W"), "sweep");
-    surfaceAction("mode.loft", tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
-    surfaceAction("mode.boundaryRotation", tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
-    surfaceAction("mode.railRotation", tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
+    surfaceAction("mode.fill", tr("Fill"), tr("&Fill 2-4 boundary curves"), QStringLiteral("F"), "fill");
+    surfaceAction("mode.revolve", tr("Revolve"), tr("&Revolve a profile about an axis line"), QStringLiteral("R"), "revolve");
+    surfaceAction("mode.extrude", tr("Extrude"), tr("E&xtrude: drag a curve out"), QStringLiteral("X"), "extrude");
+    surfaceAction("mode.sweep", tr("Sweep"), tr("S&weep a profile along a path"), QStringLiteral("W"), "sweep");
+    surfaceAction("mode.loft", tr("Loft / skin"), tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
+    surfaceAction("mode.boundaryRotation", tr("Boundary rot."), tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
+    surfaceAction("mode.railRotation", tr("Rail rot."), tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
     make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return),
          [this]() { document_->buildSurface(); });
     make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() { document_->cancelSurface(); });

@@ -185,6 +185,7 @@ void SketchDocument::dragStarted(scene::EntityId plane)
 void SketchDocument::dragFinished(scene::EntityId plane)
 {
     scheduler_->flush();
+    view_->refineSurfaces();  // live rebuilds reused their grids; the resting shape adapts again
     dragging_ = 0;
     const scene::Entity* e = model_.find(plane);
     if (e && e->frame != dragStart_) undo_.push(new MovePlaneCommand(*this, plane, dragStart_, e->frame));

@@ -308,6 +308,7 @@ void SketchDocument::pullTo(const Eigen::Vector3d& local)
 void SketchDocument::releaseCurve()
 {
     scheduler_->flush();
+    view_->refineSurfaces();
     const scene::Entity* curve = model_.find(pulled_);
     if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
         undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));

@@ -43,6 +43,12 @@ public:
     void setControlPolygonsVisible(bool visible);
     bool controlPolygonsVisible() const { return polygonsVisible_; }
 
+    /// Re-tessellates adaptively every surface whose node was last built on a reused grid (see
+    /// entityUpdated); call when a drag ends. Returns how many were rebuilt.
+    int refineSurfaces();
+    /// Surface nodes built on a reused parameter grid since construction.
+    int gridReuses() const { return gridReuses_; }
+
     /// Draws curve `id` highlighted (selection); 0 = none.
     void setHighlighted(EntityId id);
     /// Draws these curves marked (the inputs picked for a surface so far).
@@ -58,8 +64,17 @@ private:
     void addCurveNode(const Entity& entity);
     void rebuildCurveNode(const Entity& entity);
     SoSeparator* makeCurveWithPolygon(const Entity& entity);
-    /// A surface's node, named and registered (nodes_, builtShape_).
-    SoSeparator* makeSurfaceEntityNode(const Entity& entity);
+    /// A surface's node, named and registered (nodes_, builtShape_). `reuseGrid`: evaluate on the
+    /// last adaptive grid when the surface's knots are unchanged (a live rebuild).
+    SoSeparator* makeSurfaceEntityNode(const Entity& entity, bool reuseGrid = false);
+
+    /// The parameter grid a surface was last tessellated on, with the layout it was made for.
+    struct SurfaceGrid {
+        int degreeU = 0, degreeV = 0;
+        std::vector<double> knotsU, knotsV;
+        std::vector<double> u, v;
+        bool adaptive = true;  ///< false: the node was built on a reused grid
+    };
     CurveStyle curveStyle(EntityId id) const;
 
     Model& model_;
@@ -69,6 +84,8 @@ private:
     SoGroup* planeCurves_ = nullptr;
     std::map<EntityId, SoSeparator*> nodes_;
     std::map<EntityId, SoTransform*> frames_;
+    std::map<EntityId, SurfaceGrid> grids_;
+    int gridReuses_ = 0;
     std::map<EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
     EntityId highlighted_ = 0;
     std::vector<EntityId> marked_;

@@ -229,7 +229,14 @@ GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& toler
         const bool changedV = refiner.refine(Direction::V, mesh.v, mesh.u, minWidthV, budget);
         if (!changedU && !changedV) break;
     }
+    return meshOnGrid(surface, std::move(mesh.u), std::move(mesh.v));
+}
 
+GridMesh meshOnGrid(const Surface3d& surface, std::vector<double> u, std::vector<double> v)
+{
+    GridMesh mesh;
+    mesh.u = std::move(u);
+    mesh.v = std::move(v);
     const int rows = mesh.rows();
     const int cols = mesh.cols();
     mesh.vertices.reserve(static_cast<size_t>(rows) * cols);

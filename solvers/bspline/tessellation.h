@@ -71,6 +71,12 @@ Polyline tessellate(const Curve3d& curve, const TessellationTolerance& tolerance
 /// @note As for curves, refinement stops at maxVertices grid vertices (rows * cols).
 GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& tolerance = {});
 
+/// The grid mesh of `surface` at given parameters (rows u, columns v; increasing, inside the
+/// domain): vertices, normals and triangles as tessellate() makes them, without refinement. A
+/// surface rebuilt with the same knots during a drag is re-evaluated on its last adaptive grid:
+/// O(vertices) instead of the refinement's probes.
+GridMesh meshOnGrid(const Surface3d& surface, std::vector<double> u, std::vector<double> v);
+
 /// Distance from p to the segment [a, b] (a == b allowed).
 double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
