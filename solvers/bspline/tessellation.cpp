@@ -1,5 +1,7 @@
 #include "solvers/bspline/tessellation.h"
 
+#include "solvers/bspline/basis.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -185,6 +187,78 @@ double smallestGap(const std::vector<double>& p)
     return gap;
 }
 
+/// Values and first derivatives of the degree+1 basis functions at each parameter (A2.3 once per
+/// grid line, not once per vertex).
+struct LineBasis {
+    int span = 0;
+    Eigen::MatrixXd d;  ///< row 0 values, row 1 first derivatives
+};
+
+std::vector<LineBasis> lineBases(int degree, const KnotVector& knots, const std::vector<double>& params)
+{
+    std::vector<LineBasis> out;
+    out.reserve(params.size());
+    for (double t : params) {
+        const int span = findSpan(degree, knots, t);
+        out.push_back({span, basisDerivatives(span, t, degree, 1, knots)});
+    }
+    return out;
+}
+
+/// Below this |Su x Sv| / (|Su||Sv|) (or a first derivative this small relative to the other) the
+/// grid's normal is left to Surface::normal(), which takes the limit at collapsed edges; above it
+/// both compute the same normalized cross product. Far above round-off, far below any real angle.
+constexpr double kFastNormalGuard = 1e-9;
+
+/// Points and normals of `mesh`'s grid by tensor contraction (The NURBS Book A3.5/A4.4 with the
+/// basis of each row and column computed once): per row the control net is contracted over u, then
+/// per vertex over v, in homogeneous coordinates; rational derivatives by A4.4's quotient rule.
+void evaluateGrid(const Surface3d& surface, GridMesh& mesh)
+{
+    const int p = surface.degreeU(), q = surface.degreeV();
+    const int countV = surface.countV();
+    const bool rational = surface.isRational();
+    const std::vector<LineBasis> bu = lineBases(p, surface.knotsU(), mesh.u);
+    const std::vector<LineBasis> bv = lineBases(q, surface.knotsV(), mesh.v);
+    std::vector<Eigen::Vector4d> net(surface.points().size());
+    for (size_t k = 0; k < net.size(); ++k) {
+        const double w = rational ? surface.weights()[k] : 1.0;
+        net[k] << w * surface.points()[k], w;
+    }
+    std::vector<Eigen::Vector4d> row(static_cast<size_t>(countV)), rowU(static_cast<size_t>(countV));
+    for (size_t r = 0; r < bu.size(); ++r) {
+        const LineBasis& a = bu[r];
+        for (int j = 0; j < countV; ++j) {
+            Eigen::Vector4d s = Eigen::Vector4d::Zero(), su = Eigen::Vector4d::Zero();
+            for (int k = 0; k <= p; ++k) {
+                const Eigen::Vector4d& x = net[static_cast<size_t>(a.span - p + k) * countV + j];
+                s += a.d(0, k) * x;
+                su += a.d(1, k) * x;
+            }
+            row[j] = s;
+            rowU[j] = su;
+        }
+        for (size_t c = 0; c < bv.size(); ++c) {
+            const LineBasis& b = bv[c];
+            Eigen::Vector4d s = Eigen::Vector4d::Zero(), su = Eigen::Vector4d::Zero(), sv = Eigen::Vector4d::Zero();
+            for (int l = 0; l <= q; ++l) {
+                const size_t j = static_cast<size_t>(b.span - q + l);
+                s += b.d(0, l) * row[j];
+                su += b.d(0, l) * rowU[j];
+                sv += b.d(1, l) * row[j];
+            }
+            const Eigen::Vector3d x = s.head<3>() / s.w();
+            const Eigen::Vector3d du = (su.head<3>() - su.w() * x) / s.w();
+            const Eigen::Vector3d dv = (sv.head<3>() - sv.w() * x) / s.w();
+            const Eigen::Vector3d n = du.cross(dv);
+            const double lu = du.norm(), lv = dv.norm();
+            const bool regular = lu > kFastNormalGuard * lv && lv > kFastNormalGuard * lu && n.norm() > kFastNormalGuard * lu * lv;
+            mesh.vertices.push_back(x);
+            mesh.normals.push_back(regular ? Eigen::Vector3d(n.normalized()) : surface.normal(mesh.u[r], mesh.v[c]));
+        }
+    }
+}
+
 }  // namespace
 
 double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
@@ -241,12 +315,7 @@ GridMesh meshOnGrid(const Surface3d& surface, std::vector<double> u, std::vector
     const int cols = mesh.cols();
     mesh.vertices.reserve(static_cast<size_t>(rows) * cols);
     mesh.normals.reserve(static_cast<size_t>(rows) * cols);
-    for (double u : mesh.u) {
-        for (double v : mesh.v) {
-            mesh.vertices.push_back(surface.evaluate(u, v));
-            mesh.normals.push_back(surface.normal(u, v));
-        }
-    }
+    evaluateGrid(surface, mesh);
     // Two triangles per cell; (p00, p10, p11) has face normal ~ Su x Sv, the kernel's normal side.
     std::vector<Eigen::Vector3d> faceSum(mesh.vertices.size(), Eigen::Vector3d::Zero());
     for (int r = 0; r + 1 < rows; ++r) {

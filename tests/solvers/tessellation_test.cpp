@@ -177,6 +177,49 @@ TEST(SurfaceTessellation, GridVerticesLieOnTheSurfaceWithUnitNormals)
     }
 }
 
+/// A rational cone: apex row collapsed at u = 0 (all nine points at the apex), the base an exact
+/// rational circle of radius 40 (The NURBS Book §7.5, nine points, weights 1 and sqrt(2)/2).
+Surface3d rationalCone()
+{
+    const double w = std::sqrt(0.5);
+    const std::vector<Eigen::Vector2d> square{{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    std::vector<Eigen::Vector3d> p;
+    std::vector<double> weights;
+    for (int i = 0; i < 2; ++i) {
+        for (size_t j = 0; j < square.size(); ++j) {
+            p.push_back(i == 0 ? Eigen::Vector3d(0, 0, 60) : Eigen::Vector3d(40 * square[j].x(), 40 * square[j].y(), 0));
+            weights.push_back(j % 2 == 1 ? w : 1.0);
+        }
+    }
+    return Surface3d(1, 2, {0, 0, 1, 1}, {0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1, 1, 1}, 2, 9, p, weights);
+}
+
+TEST(SurfaceTessellation, MeshOnAGivenGridMatchesTheKernelIncludingRationalAndCollapsedEdges)
+{
+    // Given grids over a polynomial patch and over a rational cone whose apex edge is collapsed
+    for (const Surface3d& s : {bumpySurface(), rationalCone()}) {
+        std::vector<double> u, v;
+        for (int k = 0; k <= 12; ++k) u.push_back(s.domainStart(Direction::U) + (s.domainEnd(Direction::U) - s.domainStart(Direction::U)) * k / 12.0);
+        for (int k = 0; k <= 17; ++k) v.push_back(s.domainStart(Direction::V) + (s.domainEnd(Direction::V) - s.domainStart(Direction::V)) * k / 17.0);
+        // When the mesh is evaluated on the grid (tensor contraction, no refinement)
+        const GridMesh mesh = meshOnGrid(s, u, v);
+        // Then every vertex and normal is the kernel's (evaluate, normal with its collapsed-edge limit)
+        ASSERT_EQ(mesh.vertices.size(), u.size() * v.size());
+        for (size_t r = 0; r < u.size(); ++r) {
+            for (size_t c = 0; c < v.size(); ++c) {
+                const size_t i = r * v.size() + c;
+                EXPECT_LT((mesh.vertices[i] - s.evaluate(u[r], v[c])).norm(), kOnGeometry) << r << "," << c;
+                EXPECT_LT((mesh.normals[i] - s.normal(u[r], v[c])).norm(), kUnit) << r << "," << c;
+            }
+        }
+        // And the adaptive tessellation is this mesh on its own grid
+        const GridMesh adaptive = tessellate(s);
+        const GridMesh again = meshOnGrid(s, adaptive.u, adaptive.v);
+        EXPECT_EQ(again.vertices, adaptive.vertices);
+        EXPECT_EQ(again.triangles, adaptive.triangles);
+    }
+}
+
 TEST(SurfaceTessellation, NormalsAgreeWithTriangleWinding)
 {
     const GridMesh mesh = tessellate(bumpySurface());
