@@ -55,7 +55,7 @@ constexpr int kCurvePickSamples = 128;
 
 }  // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
+MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
 {
     auto* central = new QWidget(this);
     central->setMinimumSize(kMinViewportWidth, kMinViewportHeight);
@@ -65,14 +65,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
         resize(static_cast<int>(available.width() * kDefaultScreenShare),
                static_cast<int>(available.height() * kDefaultScreenShare));
     }
-    viewer_ = new SoQtExaminerViewer(central);
-    viewer_->setBackgroundColor(kBackground);
-    // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
-    viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
-    viewer_->setFeedbackVisibility(FALSE);
-    viewer_->setEventCallback(&MainWindow::viewerEvent, this);
     document_ = new SketchDocument(this);
-    document_->setCamera([this]() { return viewer_->getCamera(); });
+    if (withViewer) {
+        viewer_ = new SoQtExaminerViewer(central);
+        viewer_->setBackgroundColor(kBackground);
+        // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
+        viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
+        viewer_->setFeedbackVisibility(FALSE);
+        viewer_->setEventCallback(&MainWindow::viewerEvent, this);
+        document_->setCamera([this]() { return viewer_->getCamera(); });
+    }
     createActions();
     createDocks();
     connect(document_, &SketchDocument::entitiesChanged, this, [this]() {
@@ -106,7 +108,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent)
 MainWindow::~MainWindow()
 {
     // The viewer holds a ref on the graph: detach it before the document frees its nodes.
-    viewer_->setSceneGraph(nullptr);
+    if (viewer_) viewer_->setSceneGraph(nullptr);
     delete document_;
     document_ = nullptr;
     delete viewer_;
@@ -234,7 +236,7 @@ void MainWindow::setMode(Mode mode, const std::string& surfaceMode)
     document_->setSurfaceMode(surfaceMode_);
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
-    viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
+    if (viewer_) viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
     document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift);
     document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == "extrude");
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch

@@ -35,7 +35,9 @@ class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
-    explicit MainWindow(QWidget* parent = nullptr);
+    /// @param withViewer false: no 3D viewer (and no OpenGL), only the menus, actions and docks, as
+    ///        `--list-actions` needs without a display; nothing that draws may be called then.
+    explicit MainWindow(QWidget* parent = nullptr, bool withViewer = true);
     ~MainWindow() override;
 
     /// Replaces the document by `doc` and frames it (a three-quarter view from the front right).

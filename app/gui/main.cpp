@@ -108,6 +108,10 @@ int main(int argc, char** argv)
         return 2;
     }
 
+    // Listing the actions draws nothing: without a display it runs on Qt's offscreen platform,
+    // with a window that has no 3D viewer.
+    const bool listOnly = options.listActions && !haveDisplay();
+    if (listOnly) qputenv("QT_QPA_PLATFORM", "offscreen");
     if (!haveDisplay()) {
         std::cerr << "sculptline: no display (DISPLAY is not set); run it in a desktop session or under xvfb-run\n";
         return 1;
@@ -122,7 +126,7 @@ int main(int argc, char** argv)
     SoQt::init(static_cast<QWidget*>(nullptr));
     SoQt::setFatalErrorHandler(&onSoQtFatalError, nullptr);
 
-    ui::MainWindow window;
+    ui::MainWindow window(nullptr, !listOnly);
     window.setAutomated(session.has_value());
     if (options.nurbsNodes) window.document().setNurbsNodes(true);
     if (options.listActions) {

@@ -47,6 +47,18 @@ TEST(GuiArguments, HelpListsTheFlags)
     }
 }
 
+TEST(GuiArguments, ActionsAreListedWithoutADisplay)
+{
+    // Given no display at all, when the actions are listed
+    const ProgramRun run = runSculptline("--list-actions");
+    // Then every command is there by name, with its hot key
+    EXPECT_EQ(run.status, 0) << run.output;
+    for (const char* line : {"mode.sketch\tS\t", "mode.revolve\tR\t", "mode.railRotation\tG\t", "edit.undo\tCtrl+Z\t",
+                             "file.exportIv\t", "surface.build\tReturn\t"}) {
+        EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
+    }
+}
+
 TEST(GuiArguments, BadSizesAreRefused)
 {
     expectError("--size banana", "--size: expected WxH");
