@@ -3,6 +3,8 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace sculptline::solvers::stroke {
 namespace {
@@ -292,6 +294,56 @@ Curve3d makeArc(const StrokeGeometry& g, const Point2& c, double r, double a0, d
     return Curve3d(2, knots, pts, weights);
 }
 
+/// The regularized curve of `kind` for a recognized stroke (rec.polygon is set for polygon kinds).
+/// `kind` must be one of rec's candidates: each candidate's fit (line, circle, ellipse, vertices)
+/// was computed when it was scored.
+static Curve3d regularize(Recognition& rec, const FitResult& fit, ShapeKind kind)
+{
+    const StrokeGeometry& g = rec.geometry;
+    switch (kind) {
+    case ShapeKind::Line: {
+        const Point2 p = rec.line.point, d = rec.line.direction;
+        rec.polygon = {p + d * (g.points.front() - p).dot(d), p + d * (g.points.back() - p).dot(d)};
+        return polylineCurve(g, rec.polygon, false);
+    }
+    case ShapeKind::Arc: {
+        const double a0 = angleOf(g.points.front() - rec.circle.center);
+        return makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + sweep(g.points, rec.circle.center));
+    }
+    case ShapeKind::Circle: {
+        const double a0 = angleOf(g.points.front() - rec.circle.center);
+        const double dir = sweep(g.points, rec.circle.center) >= 0 ? 1.0 : -1.0;
+        return makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + dir * 2 * kPi);
+    }
+    case ShapeKind::Ellipse: {
+        // The unit circle mapped by the ellipse's affine frame: rational curves are affinely
+        // invariant, so the result is an exact ellipse (The NURBS Book §7.3).
+        StrokeGeometry unit;
+        const Curve3d circle = makeArc(unit, Point2::Zero(), 1.0, 0.0, 2 * kPi);
+        const Point2 ua(std::cos(rec.ellipse.angle), std::sin(rec.ellipse.angle)), ub(-ua.y(), ua.x());
+        std::vector<Eigen::Vector3d> pts;
+        for (const auto& p : circle.points()) {
+            pts.push_back(lift(g, Point2(rec.ellipse.center + rec.ellipse.a * p.x() * ua + rec.ellipse.b * p.y() * ub)));
+        }
+        return Curve3d(2, circle.knots(), pts, circle.weights(), true);  // closed like the circle
+    }
+    case ShapeKind::Square:
+    case ShapeKind::Rectangle:
+        rec.polygon = regularRectangle(g.vertices, kind == ShapeKind::Square);
+        return polylineCurve(g, rec.polygon, true);
+    case ShapeKind::Diamond:
+        rec.polygon = regularDiamond(g.vertices);
+        return polylineCurve(g, rec.polygon, true);
+    case ShapeKind::Triangle:
+    case ShapeKind::Polyline:
+        rec.polygon = g.vertices;
+        return polylineCurve(g, rec.polygon, g.closed);
+    case ShapeKind::Freeform:
+        return fit.curve;
+    }
+    return fit.curve;
+}
+
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 {
     Recognition rec;
@@ -351,56 +403,21 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         rec.regularized = fit.curve;
         return rec;
     }
-    switch (rec.kind) {
-    case ShapeKind::Line: {
-        const Point2 p = rec.line.point, d = rec.line.direction;
-        rec.polygon = {p + d * (g.points.front() - p).dot(d), p + d * (g.points.back() - p).dot(d)};
-        rec.regularized = polylineCurve(g, rec.polygon, false);
-        break;
-    }
-    case ShapeKind::Arc: {
-        const double a0 = angleOf(g.points.front() - rec.circle.center);
-        rec.regularized = makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + sweep(g.points, rec.circle.center));
-        break;
-    }
-    case ShapeKind::Circle: {
-        const double a0 = angleOf(g.points.front() - rec.circle.center);
-        const double dir = sweep(g.points, rec.circle.center) >= 0 ? 1.0 : -1.0;
-        rec.regularized = makeArc(g, rec.circle.center, rec.circle.radius, a0, a0 + dir * 2 * kPi);
-        break;
-    }
-    case ShapeKind::Ellipse: {
-        // The unit circle mapped by the ellipse's affine frame: rational curves are affinely
-        // invariant, so the result is an exact ellipse (The NURBS Book §7.3).
-        StrokeGeometry unit;
-        const Curve3d circle = makeArc(unit, Point2::Zero(), 1.0, 0.0, 2 * kPi);
-        const Point2 ua(std::cos(rec.ellipse.angle), std::sin(rec.ellipse.angle)), ub(-ua.y(), ua.x());
-        std::vector<Eigen::Vector3d> pts;
-        for (const auto& p : circle.points()) {
-            pts.push_back(lift(g, Point2(rec.ellipse.center + rec.ellipse.a * p.x() * ua + rec.ellipse.b * p.y() * ub)));
-        }
-        rec.regularized = Curve3d(2, circle.knots(), pts, circle.weights(), true);  // closed like the circle
-        break;
-    }
-    case ShapeKind::Square:
-    case ShapeKind::Rectangle:
-        rec.polygon = regularRectangle(g.vertices, rec.kind == ShapeKind::Square);
-        rec.regularized = polylineCurve(g, rec.polygon, true);
-        break;
-    case ShapeKind::Diamond:
-        rec.polygon = regularDiamond(g.vertices);
-        rec.regularized = polylineCurve(g, rec.polygon, true);
-        break;
-    case ShapeKind::Triangle:
-    case ShapeKind::Polyline:
-        rec.polygon = g.vertices;
-        rec.regularized = polylineCurve(g, rec.polygon, g.closed);
-        break;
-    case ShapeKind::Freeform:
-        rec.regularized = fit.curve;
-        break;
-    }
+    rec.regularized = regularize(rec, fit, rec.kind);
     return rec;
+}
+
+}  // namespace sculptline::solvers::stroke
+
+namespace sculptline::solvers::stroke {
+
+Curve3d regularizeAs(const Recognition& recognition, const FitResult& fit, ShapeKind kind)
+{
+    const bool candidate = std::any_of(recognition.candidates.begin(), recognition.candidates.end(),
+                                       [kind](const ShapeCandidate& c) { return c.kind == kind; });
+    if (!candidate) throw std::invalid_argument(std::string("shape: ") + shapeName(kind) + " is not a candidate of this stroke");
+    Recognition copy = recognition;
+    return regularize(copy, fit, kind);
 }
 
 }  // namespace sculptline::solvers::stroke

@@ -82,6 +82,11 @@ struct Recognition {
 /// Classifies one fitted stroke and regularizes it.
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& options = {});
 
+/// The stroke regularized as another of its candidates (the designer picks the second-best, say):
+/// `recognition` is recognizeShape(fit)'s result. Freeform gives the fitted curve.
+/// @throws std::invalid_argument when `kind` is not among recognition.candidates.
+Curve3d regularizeAs(const Recognition& recognition, const FitResult& fit, ShapeKind kind);
+
 /// An exact circular arc as a rational quadratic B-spline (The NURBS Book A7.1): centre, radius
 /// and angles in the plane frame of `g`; a full turn gives the 9-point circle as a closed (periodic)
 /// curve: 8 distinct points, the first two repeated (isClosed() true).

@@ -120,6 +120,32 @@ TEST(ShapeRecognition, GivenSquareStroke_WhenRegularized_ThenEqualSidesAndRightA
     }
 }
 
+TEST(ShapeRecognition, GivenASquareishStroke_WhenTheDesignerPicksAnotherCandidate_ThenThatShapeIsRegularized)
+{
+    // Given a square-ish stroke, recognized as a square with a rectangle among the candidates
+    DrawOptions d;
+    d.noise = 0.25;
+    const FitResult fit = fitStroke(draw(polygonShape({{0, 0, 0}, {100, 3, 0}, {97, 104, 0}, {-2, 99, 0}}, true), d));
+    const Recognition r = recognizeShape(fit);
+    ASSERT_EQ(r.kind, ShapeKind::Square);
+    // When the rectangle (not the best) is picked
+    const solvers::Curve3d rectangle = regularizeAs(r, fit, ShapeKind::Rectangle);
+    // Then it is a closed degree-1 quadrilateral with right angles (sides as drawn, not forced equal)
+    EXPECT_EQ(rectangle.degree(), 1);
+    EXPECT_TRUE(rectangle.isClosed());
+    ASSERT_GE(rectangle.points().size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        const auto& q = rectangle.points();
+        const Vec3 e0 = q[(i + 1) % 4] - q[i], e1 = q[(i + 2) % 4] - q[(i + 1) % 4];
+        EXPECT_NEAR(e0.dot(e1), 0.0, 1e-9 * e0.norm() * e1.norm()) << i;
+    }
+    // And the best candidate regularizes as recognizeShape did, freeform gives the fit back
+    EXPECT_EQ(regularizeAs(r, fit, ShapeKind::Square).points(), r.regularized.points());
+    EXPECT_EQ(regularizeAs(r, fit, ShapeKind::Freeform).points(), fit.curve.points());
+    // And a shape that was not a candidate is refused
+    EXPECT_THROW(regularizeAs(r, fit, ShapeKind::Arc), std::invalid_argument);
+}
+
 TEST(ShapeRecognition, GivenClosedPrimitives_WhenRegularized_ThenClosedCurvesThatWrap)
 {
     std::mt19937 rng(7);
