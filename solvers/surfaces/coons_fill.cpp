@@ -157,6 +157,25 @@ FillBuilder::FillBuilder(const std::vector<Curve3d>& curves, const FillOptions& 
 const Surface3d& FillBuilder::reset(const std::vector<Curve3d>& curves)
 {
     loop_ = chainBoundaries(curves, options_);
+    if (loop_.order.size() == 3 && !options_.tangents.empty()) {
+        // A 3-sided patch collapses the corner where loop side 0 starts (sides 0 and 2 meet): its
+        // normal there is a limit the G1 rows do not control, so the loop is turned to keep G1
+        // sides off that corner where it can be.
+        const auto isG1 = [&](int curve) {
+            return std::any_of(options_.tangents.begin(), options_.tangents.end(),
+                               [&](const FillTangent& t) { return t.curve == curve; });
+        };
+        int best = 0, fewest = 3;
+        for (int r = 0; r < 3; ++r) {
+            const int count = (isG1(loop_.order[r]) ? 1 : 0) + (isG1(loop_.order[(r + 2) % 3]) ? 1 : 0);
+            if (count < fewest) {
+                fewest = count;
+                best = r;
+            }
+        }
+        std::rotate(loop_.order.begin(), loop_.order.begin() + best, loop_.order.end());
+        std::rotate(loop_.reversed.begin(), loop_.reversed.begin() + best, loop_.reversed.end());
+    }
     const std::optional<std::vector<Curve3d>> ls = loopSides(curves, loop_);
     if (!ls) throw GeometryError("curves: the boundary curves do not meet end to end");
     setupTangents(*ls);

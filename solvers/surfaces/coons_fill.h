@@ -65,7 +65,9 @@ FillLoop chainBoundaries(const std::vector<Curve3d>& curves, const FillOptions& 
 /// With tangents the patch is at least bicubic and the control points next to each G1 boundary
 /// are moved by the least change that puts the cross-boundary derivative into the reference's
 /// tangent plane (fill_tangents.h); boundaries stay exact. FillBuilder::maxTangentAngleDegrees()
-/// reports the angle reached.
+/// reports the angle reached. A 3-sided fill with tangents starts its loop so that the collapsed
+/// corner lies off the G1 sides where it can (the normal at a collapsed corner is a limit the
+/// conditions do not control).
 /// @throws GeometryError "tangents[k]: ..." for a curve index out of range or used twice, a curve
 ///         not on its reference, or a neighbouring boundary that leaves a corner off the
 ///         reference's tangent plane (no G1 surface exists there).

@@ -157,6 +157,15 @@ TEST(FillTangents, GivenThreeSidedFillWithOneG1Side_WhenFilled_ThenThatSideIsTan
     for (const Curve3d& c : b) EXPECT_LT(boundaryDeviation(s, c), kExact);
     EXPECT_LT(g1AngleDegrees(s, h, edge), kAngleDegrees);
     EXPECT_GT(g1AngleDegrees(fill(b), h, edge), kVisibleCrease);
+
+    // And: the same with the G1 side listed first (where a 3-sided fill would collapse its start):
+    // the fill turns its loop so that the collapsed corner stays off the G1 side.
+    FillOptions first;
+    first.tangents.push_back({0, h});
+    const std::vector<Curve3d> rotated{edge, fromEdge, toEdge};
+    const Surface3d r = fill(rotated, first);
+    for (const Curve3d& c : rotated) EXPECT_LT(boundaryDeviation(r, c), kExact);
+    EXPECT_LT(g1AngleDegrees(r, h, edge), kAngleDegrees);
 }
 
 TEST(FillTangents, GivenBuilder_WhenFarSideDragged_ThenUpdateStaysG1)
