@@ -163,6 +163,8 @@ void MainWindow::createActions()
 
     make(edit, "stroke.useRecognized", tr("Use the recognized shape for the last stroke"), QKeySequence(),
          [this]() { document_->chooseRecognized(true); });
+    make(edit, "stroke.nextCandidate", tr("Use the next recognition candidate for the last stroke"),
+         QKeySequence(QStringLiteral("N")), [this]() { document_->chooseNextCandidate(); });
     make(edit, "stroke.useFreeform", tr("Use the freeform curve for the last stroke"), QKeySequence(),
          [this]() { document_->chooseRecognized(false); });
 

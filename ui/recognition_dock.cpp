@@ -21,6 +21,9 @@ RecognitionDock::RecognitionDock(SketchDocument& document, QAction* useShape, QA
     layout->addWidget(summary_);
     candidates_ = new QListWidget(box);
     candidates_->setSelectionMode(QAbstractItemView::NoSelection);
+    candidates_->setToolTip(tr("Click a candidate to use that shape for the last stroke"));
+    connect(candidates_, &QListWidget::itemClicked, this,
+            [this](QListWidgetItem* item) { document_.chooseCandidate(candidates_->row(item)); });
     layout->addWidget(candidates_, 1);
     for (QAction* action : {useShape_, useFreeform_}) {
         auto* button = new QToolButton(box);

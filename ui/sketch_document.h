@@ -9,6 +9,7 @@
 #include "scene/scene_document.h"
 #include "scene/stroke_feedback.h"
 #include "solvers/editing/curve_manipulation.h"
+#include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
 
 #include <QObject>
@@ -92,6 +93,12 @@ public:
     /// (false); undoable. Available while that curve exists and the shape is not freeform.
     void chooseRecognized(bool regularized);
     bool recognitionChoiceAvailable() const;
+    /// The last sketched curve regularized as candidate `index` of lastStroke().candidates (0 = the
+    /// best; a freeform candidate gives the fitted curve); undoable. Ignored when out of range or
+    /// when that curve is gone.
+    void chooseCandidate(int index);
+    /// The next-ranked candidate after the one in use (wrapping), for the hot key / replays.
+    void chooseNextCandidate();
 
     /// Undoable edits.
     void addPlane(const scene::PlaneFrame& frame);
@@ -142,6 +149,8 @@ private:
     /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
     void recognize(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
+    /// The last sketched curve replaced by `target` (undoable), when it differs.
+    void replaceRecognizedCurve(const solvers::Curve3d& target);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     void pullTo(const Eigen::Vector3d& local);
@@ -179,6 +188,11 @@ private:
     StrokeReport lastStroke_;
     scene::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
+    /// The last stroke's fit and recognition (for picking another candidate), and the candidate
+    /// in use (-1: the freeform fit as made).
+    std::optional<solvers::stroke::FitResult> lastFit_;
+    std::optional<solvers::stroke::Recognition> recognition_;
+    int candidateInUse_ = -1;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     scene::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with

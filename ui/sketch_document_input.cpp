@@ -165,11 +165,15 @@ void SketchDocument::recognize(const solvers::stroke::FitResult& fit)
 {
     freeformFit_ = fit.curve;
     regularizedFit_.reset();
+    recognition_.reset();
+    lastFit_ = fit;
+    candidateInUse_ = -1;
     recognizedCurve_ = 0;
     try {
         // The recognizer of the stroke issue; the freeform fit stays the default curve, the
-        // regularized primitive is one click away (RecognitionDock).
+        // regularized primitive is one click away (RecognitionDock), and so is every other candidate.
         const solvers::stroke::Recognition r = solvers::stroke::recognizeShape(fit);
+        recognition_ = r;
         lastStroke_.recognized = QString::fromLatin1(solvers::stroke::shapeName(r.kind));
         for (const solvers::stroke::ShapeCandidate& c : r.candidates) {
             lastStroke_.candidates.emplace_back(QString::fromLatin1(solvers::stroke::shapeName(c.kind)), c.score);
@@ -189,11 +193,33 @@ bool SketchDocument::recognitionChoiceAvailable() const
 void SketchDocument::chooseRecognized(bool regularized)
 {
     if (!recognitionChoiceAvailable()) return;
-    const solvers::Curve3d& target = regularized ? *regularizedFit_ : *freeformFit_;
+    candidateInUse_ = regularized ? 0 : -1;
+    replaceRecognizedCurve(regularized ? *regularizedFit_ : *freeformFit_);
+}
+
+void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
+{
     const scene::Entity* curve = model_.find(recognizedCurve_);
     if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
     undo_.push(new ReplaceCurveCommand(*this, recognizedCurve_, *curve->local, target));
     Q_EMIT strokeFinished();
+}
+
+void SketchDocument::chooseCandidate(int index)
+{
+    const scene::Entity* curve = model_.find(recognizedCurve_);
+    if (!curve || !recognition_ || !lastFit_ || index < 0 || index >= static_cast<int>(recognition_->candidates.size())) return;
+    const solvers::Curve3d target =
+        solvers::stroke::regularizeAs(*recognition_, *lastFit_, recognition_->candidates[static_cast<size_t>(index)].kind);
+    candidateInUse_ = index;
+    lastStroke_.message = tr("Curve %1 is now the %2").arg(recognizedCurve_).arg(lastStroke_.candidates[static_cast<size_t>(index)].first);
+    replaceRecognizedCurve(target);
+}
+
+void SketchDocument::chooseNextCandidate()
+{
+    if (!recognition_ || recognition_->candidates.empty()) return;
+    chooseCandidate((candidateInUse_ + 1) % static_cast<int>(recognition_->candidates.size()));
 }
 
 void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke)

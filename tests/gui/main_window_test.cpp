@@ -2,6 +2,7 @@
 // is named, the entity list and the inspector show the selected entity, the curvature plot samples
 // the selected curve, and modes switch the viewer between viewing and interaction. Writes the whole
 // window to $SCULPTLINE_WINDOW_SHOT (when set) so a person can look at the docks.
+#include "manipulators/stroke_input.h"
 #include "scene/scene_document.h"
 #include "ui/curvature_plot.h"
 #include "ui/inspector_dock.h"
@@ -20,6 +21,8 @@
 #include <QUndoStack>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 namespace sculptline::ui {
@@ -103,6 +106,47 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     window.action(QStringLiteral("mode.view"))->trigger();
 
     if (const char* shot = std::getenv("SCULPTLINE_WINDOW_SHOT")) window.grab().save(QString::fromLocal8Bit(shot));
+}
+
+TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
+{
+    startApplication();
+    MainWindow window;
+    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    SketchDocument& doc = window.document();
+    // Given an arc stroke on the default plane (id 1), as the stroke input would deliver it
+    const scene::PlaneFrame frame = doc.model().find(1)->frame;
+    manipulators::FinishedStroke stroke;
+    stroke.frame = frame;
+    for (int i = 0; i < 40; ++i) {
+        const double a = 3.14159265358979 * i / 39.0;
+        stroke.points.emplace_back(30.0 * std::cos(a), 30.0 * std::sin(a), 0.0);
+        stroke.times.push_back(0.01 * i);
+        stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
+        stroke.rayDirections.push_back(-frame.normal());
+    }
+    doc.select(1);
+    doc.addStroke(stroke);
+    const scene::EntityId curve = doc.selection();
+    ASSERT_NE(curve, 0u);
+    const std::vector<std::pair<QString, double>> candidates = doc.lastStroke().candidates;
+    ASSERT_GE(candidates.size(), 2u);
+    const solvers::Curve3d made = *doc.model().find(curve)->local;
+    EXPECT_EQ(candidates.front().first, QStringLiteral("arc"));
+    // When a lower-ranked candidate, the line, is picked
+    const auto line = std::find_if(candidates.begin(), candidates.end(), [](const auto& c) { return c.first == "line"; });
+    ASSERT_NE(line, candidates.end());
+    doc.chooseCandidate(static_cast<int>(line - candidates.begin()));
+    // Then the curve is that line (degree 1 through two points), in one undoable step
+    const solvers::Curve3d picked = *doc.model().find(curve)->local;
+    EXPECT_EQ(picked.degree(), 1);
+    EXPECT_EQ(picked.points().size(), 2u);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("line"))) << doc.lastStroke().message.toStdString();
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.model().find(curve)->local->points(), made.points());
+    // And the recognized shape is the exact (rational) arc
+    window.action(QStringLiteral("stroke.useRecognized"))->trigger();
+    EXPECT_TRUE(doc.model().find(curve)->local->isRational());
 }
 
 /// Answers the next modal question box with `button` once it is shown; true through `answered`.
