@@ -147,6 +147,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     }
     std::vector<double> err(S.size());
     std::vector<double> lastInserted;
+    bool polished = false;
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
         solve(s, X, S, u, opt.fairing);
         const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
@@ -193,6 +194,19 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             if (e > offErr[j] && !std::binary_search(S.begin(), S.end(), pick)) {
                 offErr[j] = e;
                 offender[j] = pick;
+            }
+        }
+        if (opt.polishParameters && !polished && !in.closed && res.maxError > opt.tolerance) {
+            polished = true;  // SplineFitOptions::polishParameters: once, with the same knots
+            std::vector<double> foot(u.size());
+            bool increasing = true;
+            for (size_t k = 0; k < S.size(); ++k) {
+                foot[k] = k == 0 || k + 1 == S.size() ? u[k] : cu[S[k]];
+                increasing = increasing && (k == 0 || foot[k] > foot[k - 1]);
+            }
+            if (increasing) {
+                u = std::move(foot);
+                continue;
             }
         }
         bool added = false;

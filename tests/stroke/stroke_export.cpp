@@ -23,6 +23,11 @@ int main()
         {"ellipse", draw(ellipseShape({0, 0, 0}, 120, 60, 0.3), d)},
         {"zigzag", draw(polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false), d)},
         {"square", draw(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true), d)},
+        {"fig43-hairpin", [&] {  // thesis Fig. 4-3's kind of stroke (stroke_fit_test, BM_StrokeFig43)
+             DrawOptions slow = d;
+             slow.cornerSlowdown = 0.05;
+             return drawWithSamples(hairpinShape(200, 3, 25), 600, slow);
+         }()},
     };
     nlohmann::json out = nlohmann::json::array();
     for (const auto& [name, s] : strokes) out.push_back({{"name", name}, {"stroke", toJson(s)}});
