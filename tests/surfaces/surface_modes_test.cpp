@@ -150,3 +150,20 @@ TEST(SurfaceBuilder, GivenEveryMode_WhenACurveMovesAndTheDragEnds_ThenUpdateFoll
         EXPECT_LT(gap, kExact) << surfaceModeName(m);
     }
 }
+
+TEST(SurfaceBuilder, GivenAnUpdateThatCannotBeBuilt_WhenUpdated_ThenThrowsAndKeepsTheLastGoodSurface)
+{
+    // Given: a fill, a sweep and a revolution built from good curves.
+    for (SurfaceMode m : {SurfaceMode::Fill, SurfaceMode::Sweep, SurfaceMode::Revolve}) {
+        std::vector<Curve3d> c = curvesFor(m);
+        SurfaceBuilder builder(m, c, optionsFor(m));
+        const Vec3 before = builder.build().surface.evaluate(0.5, 0.5);
+        // When: a boundary pulled away (fill), a path with a cusp (sweep), a point profile (revolve).
+        if (m == SurfaceMode::Fill) c[1] = cubic({{5, 0, 0}, {5, 1, 0}, {5, 2, 0}, {5, 3, 0}});
+        if (m == SurfaceMode::Sweep) c[1] = cubic({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 0, 0}});
+        if (m == SurfaceMode::Revolve) c[0] = cubic({{1, 0, 1}, {1, 0, 1}, {1, 0, 1}, {1, 0, 1}});
+        // Then
+        EXPECT_THROW(builder.update(c), std::invalid_argument) << surfaceModeName(m);
+        EXPECT_EQ(builder.build().surface.evaluate(0.5, 0.5), before) << surfaceModeName(m);
+    }
+}
