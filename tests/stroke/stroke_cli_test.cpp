@@ -125,5 +125,23 @@ TEST(StrokeCli, GivenStrokeSequenceAndModelFile_ThenNewPairLearnedOnceAndSaved)
     EXPECT_EQ(saved.nodes().size(), UserModel::predefined().nodes().size() + 1);
 }
 
+TEST(StrokeCli, GivenProfileEdgeAndTopFace_WhenRecognizedAsSequence_ThenPolygonVolumeChainedToTheExtrusion)
+{
+    const std::string input =
+        "{\"strokes\": [" + strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)) + ", " +
+        strokeJson(lineShape({100, 100, 0}, {160, 160, 0})) + ", " +
+        strokeJson(polygonShape({{60, 60, 0}, {160, 60, 0}, {160, 160, 0}, {60, 160, 0}}, true)) + "]}";
+
+    const CliRun r = cli("recognize", input);
+
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json o = json::parse(r.out);
+    EXPECT_EQ(o["strokes"][1]["composite"], "extrusion");
+    EXPECT_EQ(o["strokes"][2]["composite"], "polygon_volume");
+    EXPECT_EQ(o["composite"], "polygon_volume");
+    EXPECT_EQ(o["strokes"][2]["pre_node"], o["strokes"][1]["composite_node"]);  // Table 3-2 chain
+    EXPECT_EQ(o["strokes"][1]["pre_node"], o["strokes"][0]["node"]);
+}
+
 }  // namespace
 }  // namespace sculptline::stroketest
