@@ -59,6 +59,9 @@ constexpr double kGrowthMargin = 1.25;
 // has moved rigidly (round-off of a plane's transform is ~1e-16).
 constexpr double kRigidRelative = 1e-10;
 constexpr double kSinglePointRelative = 1e-12;
+// The left-hand tangent at a knot, from this fraction of the domain before it (a polynomial piece's
+// derivative is continuous inside its span, so the angle is off by about this much).
+constexpr double kLeftOfKnot = 1e-9;
 
 // A path closes smoothly when its ends coincide to round-off and its end tangents agree to this
 // angle (radians): a periodic curve's seam is C^(p-1), so its tangents agree to round-off.
@@ -241,6 +244,30 @@ SweepResult sweepResult(const Curve3d& profile, Assembly&& A, int sections, doub
                        A.deviation, sections, tolerance};
 }
 
+// At a corner of the path (a knot where the tangent turns) the exact sweep is torn: the section
+// turns at once with the frame, so points at distance ρ from the path jump by up to 2ρ·sin(α/2).
+// Within tolerance the interpolation absorbs it; beyond, no surface follows the construction.
+void requireNoTear(const CurveJet& jet, const Curve3d& path, const Curve3d& profile, double tolerance)
+{
+    const double a = path.domainStart(), b = path.domainEnd();
+    Vec3 x0, d1, d2;
+    jet.evaluate(a, x0, d1, d2);
+    double reach = 0.0;  // bound on the profile's distance from the path's start (convex hull)
+    for (const Vec3& p : profile.points()) reach = std::max(reach, (p - x0).norm());
+    for (double k : interiorBreakpoints(path.degree(), path.knots())) {
+        Vec3 x, right, left;
+        jet.evaluate(k, x, right, d2);  // right-hand derivative at a knot
+        jet.evaluate(k - kLeftOfKnot * (b - a), x, left, d2);
+        const double angle = std::acos(std::clamp(left.normalized().dot(right.normalized()), -1.0, 1.0));
+        const double tear = 2.0 * reach * std::sin(0.5 * angle);
+        if (tear > tolerance)
+            throw GeometryError("path: corner at u = " + std::to_string(k) + " (the tangent turns by " +
+                                std::to_string(angle * 180.0 / 3.14159265358979323846) +
+                                " degrees): the swept profile would tear there by up to " + std::to_string(tear) +
+                                " (tolerance " + std::to_string(tolerance) + "); round the corner or sweep each side separately");
+    }
+}
+
 SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options,
                        std::shared_ptr<SweepPathSamples>& samples)
 {
@@ -250,6 +277,7 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
         throw GeometryError("curves: the profile is a single point, sweeping it gives no surface");
     const double tolerance = sweepTolerance(profile, path, options);
     const CurveJet jet(path);
+    requireNoTear(jet, path, profile, tolerance);
     // Sections at equally spaced parameters per path knot span, so every path knot (where the
     // exact sweep is only C1) is a section: C1 in v, error O(h^4) on each piece instead of the
     // O(h^2) a C2 interpolant gets across the C1 knots.

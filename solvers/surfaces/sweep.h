@@ -38,8 +38,9 @@ struct SweepResult {
 /// and end tangents that coincide) gets its frames' holonomy spread evenly along it, so the last
 /// section is the first and the surface closes at the path's seam; a closed profile closes the
 /// surface along u (its seam stays where the profile's domain starts).
-/// @throws GeometryError "path: ..." for a path with a cusp or no length, "curves: ..." for a
-///         profile that is a single point.
+/// @throws GeometryError "path: ..." for a path with a cusp or no length, or with a corner (a knot
+///         where the tangent turns) at which the swept profile would tear by more than the
+///         tolerance; "curves: ..." for a profile that is a single point.
 SweepResult sweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options = {});
 
 struct SweepPathSamples;  // sweep.cpp: frames and derivatives of the path at the sections and probes

@@ -218,3 +218,23 @@ TEST(Sweep, GivenPointProfile_WhenSwept_ThenClearError)
         EXPECT_NE(std::string(e.what()).find("single point"), std::string::npos) << e.what();
     }
 }
+
+TEST(Sweep, GivenPathWithCorner_WhenSwept_ThenRefusedUnlessTheTearIsWithinTolerance)
+{
+    // Given: a profile of radius 0.3 and two-segment paths turning by 45 degrees and by 0.001 degree.
+    const Curve3d profile = fullCircle(Vec3::Zero(), kRadius, Vec3::UnitY(), Vec3::UnitZ());
+    const auto corner = [](double degrees) {
+        const double a = degrees * M_PI / 180.0;
+        return Curve3d(1, {0, 0, 0.5, 1, 1}, {{0, 0, 0}, {2, 0, 0}, {2 + 2 * std::cos(a), 2 * std::sin(a), 0}});
+    };
+    // When / Then: 45 degrees tears the tube by 2·0.3·sin(22.5°) = 0.23 >> 1e-4: refused, naming
+    // the corner; 0.001 degree tears it by 5e-6 < 1e-4: swept within tolerance.
+    try {
+        sweep(profile, corner(45.0), SweepOptions{1e-4, 513});
+        FAIL() << "expected GeometryError";
+    } catch (const GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("path: corner at u = 0.5"), std::string::npos) << e.what();
+    }
+    const SweepResult r = sweep(profile, corner(0.001), SweepOptions{1e-4, 513});
+    EXPECT_LE(r.maxDeviation, 1e-4);
+}
