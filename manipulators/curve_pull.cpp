@@ -69,10 +69,14 @@ void CurvePull::onEvent(SoEventCallback* node)
     Eigen::Vector3d from, direction;
     if (!pointerRay(node, camera_ ? camera_() : nullptr, from, direction)) return;
     if (SO_MOUSE_PRESS_EVENT(event, BUTTON1)) {
-        const StrokeHit hit = pickCurve(node, direction);
+        StrokeHit hit = pickCurve(node, direction);
         if (hit.curve == 0 || !grab_) return;
+        hit.shift = event->wasShiftDown();
         const std::optional<scene::PlaneFrame> frame = grab_(hit);
-        if (!frame) return;
+        if (!frame) {
+            node->setHandled();  // the press was taken (a pin added) or refused: not a stroke either
+            return;
+        }
         frame_ = *frame;
         pulling_ = true;
         showHandle(hit.point);

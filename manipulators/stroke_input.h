@@ -27,6 +27,7 @@ struct StrokeHit {
     std::uint32_t curve = 0;  ///< entity id; 0 = the stroke end is in the air
     Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< picked point, world
     Eigen::Vector3d view = -Eigen::Vector3d::UnitZ();  ///< eye -> point direction, unit
+    bool shift = false;  ///< Shift was held at the press (pull mode: pin instead of pull)
 };
 
 /// The plane a stroke is previewed on, chosen when the pen goes down (knowing whether it went

@@ -70,6 +70,7 @@ SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
             node = makeCurveNode(e.world ? *e.world : *e.local);
             curves->addChild(node);
             break;
+        case EntityKind::Constraint: continue;  // an editing aid, not geometry
         case EntityKind::Plane: {
             node = new SoSeparator;
             auto* placement = new SoTransform;

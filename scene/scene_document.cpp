@@ -184,6 +184,14 @@ SceneDocument documentFromJson(const json& j)
             }
         }
         doc.curvePlanes.push_back(plane);
+        std::vector<int> fixed;
+        if (const auto it = curves[i].find("fixed"); it != curves[i].end()) {
+            if (!it->is_array()) throw io::InputError(path + ".fixed: expected an array of control point indices");
+            const int count = static_cast<int>(doc.curves.back().points().size());
+            for (size_t k = 0; k < it->size(); ++k)
+                fixed.push_back(io::integerFromJson((*it)[k], path + ".fixed[" + std::to_string(k) + "]", 0, count - 1));
+        }
+        doc.curveFixed.push_back(std::move(fixed));
         doc.curveIds.push_back(entityId(curves[i], path, planeIds));
         if (doc.curveIds.back() != 0 && plane != 0 && doc.curveIds.back() < plane) {
             throw io::InputError(path + ".id: must be greater than its plane's id");
@@ -200,6 +208,23 @@ SceneDocument documentFromJson(const json& j)
         doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
         checkExtent(doc.surfaces.back().points(), path);
         doc.surfaceIds.push_back(id);
+    }
+    const json& constraints = optionalArray(j, "constraints");
+    for (size_t i = 0; i < constraints.size(); ++i) {
+        const std::string path = "constraints[" + std::to_string(i) + "]";
+        const json& c = constraints[i];
+        if (!c.is_object()) throw io::InputError(path + ": must be an object");
+        SceneDocument::ConstraintSpec spec;
+        spec.id = entityId(c, path, planeIds);
+        spec.curve = io::integerFromJson(io::member(c, "curve", path), path + ".curve", 1, 1 << 30);
+        if (std::find(doc.curveIds.begin(), doc.curveIds.end(), spec.curve) == doc.curveIds.end())
+            throw io::InputError(path + ".curve: no curve has id " + std::to_string(spec.curve));
+        if (spec.id != 0 && spec.id <= spec.curve) throw io::InputError(path + ".id: must be greater than its curve's id");
+        const json& type = io::member(c, "type", path);
+        spec.type = type.is_string() ? type.get<std::string>() : "";
+        if (spec.type != "position" && spec.type != "tangent") throw io::InputError(path + ".type: must be \"position\" or \"tangent\"");
+        spec.u = io::numberFromJson(io::member(c, "u", path), path + ".u");
+        doc.constraints.push_back(spec);
     }
     return doc;
 }

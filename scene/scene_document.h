@@ -52,6 +52,16 @@ struct SceneDocument {
         std::optional<solvers::Surface3d> saved;  ///< the geometry as saved, if it was
     };
     std::vector<ConstructedSurface> constructed;
+    /// Per curve: the control points held fixed when it is pulled ("fixed": [indices]).
+    std::vector<std::vector<int>> curveFixed;
+    /// Constraints on curves: {"id", "curve": curve id, "type": "position"|"tangent", "u"}.
+    struct ConstraintSpec {
+        int id = 0;
+        int curve = 0;
+        std::string type;
+        double u = 0.0;
+    };
+    std::vector<ConstraintSpec> constraints;
 };
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every

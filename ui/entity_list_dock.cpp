@@ -23,12 +23,13 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
         auto* item = new QListWidgetItem(text, list_);
         item->setData(Qt::UserRole, e.id);
     };
-    // Planes with their curves under them, then curves on no plane, then surfaces.
+    // Planes with their curves under them, then curves on no plane, surfaces and constraints.
     for (const auto& [id, e] : model.entities()) {
         if (e.kind != scene::EntityKind::Plane) continue;
         add(e, tr("Plane %1").arg(id));
         for (scene::EntityId c : model.dependents(id)) {
             const scene::Entity* curve = model.find(c);
+            if (curve->kind != scene::EntityKind::Curve) continue;
             add(*curve, tr("    Curve %1 (degree %2, %3 points)").arg(c).arg(curve->local->degree()).arg(curve->local->pointCount()));
         }
     }
@@ -36,6 +37,9 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
         if (e.kind == scene::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
         if (e.kind == scene::EntityKind::Surface) {
             add(e, e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id));
+        }
+        if (e.kind == scene::EntityKind::Constraint) {
+            add(e, tr("Constraint %1 (%2 on curve %3)").arg(id).arg(QString::fromStdString(e.constraintType)).arg(e.inputs.front()));
         }
     }
     updating_ = false;

@@ -2,9 +2,12 @@
 
 #include "ui/curvature_plot.h"
 
+#include <QListWidget>
 #include <QPlainTextEdit>
 #include <QVBoxLayout>
 #include <QTextStream>
+
+#include <algorithm>
 
 namespace sculptline::ui {
 namespace {
@@ -29,6 +32,17 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
     text_ = new QPlainTextEdit(box);
     text_->setReadOnly(true);
     layout->addWidget(text_, 1);
+    points_ = new QListWidget(box);
+    points_->setToolTip(tr("Checked control points stay fixed when the curve is pulled"));
+    layout->addWidget(points_, 1);
+    connect(points_, &QListWidget::itemChanged, this, [this]() {
+        if (filling_ || curve_ == 0) return;
+        std::vector<int> fixed;
+        for (int row = 0; row < points_->count(); ++row) {
+            if (points_->item(row)->checkState() == Qt::Checked) fixed.push_back(row);
+        }
+        Q_EMIT fixedPointsEdited(curve_, fixed);
+    });
     plot_ = new CurvaturePlot(box);
     layout->addWidget(plot_);
     setWidget(box);
@@ -40,6 +54,22 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
 {
     const scene::Entity* e = model.find(id);
     plot_->setCurve(e && e->kind == scene::EntityKind::Curve ? e->world : std::nullopt);
+    filling_ = true;
+    points_->clear();
+    curve_ = e && e->kind == scene::EntityKind::Curve ? id : 0;
+    points_->setVisible(curve_ != 0);
+    if (curve_ != 0) {
+        const solvers::Curve3d& c = *e->local;
+        // A closed curve's last `degree` points repeat its first: one box per unique point.
+        const int unique = c.isClosed() ? c.pointCount() - c.degree() : c.pointCount();
+        for (int i = 0; i < unique; ++i) {
+            const bool fixed = std::binary_search(e->fixedPoints.begin(), e->fixedPoints.end(), i);
+            auto* item = new QListWidgetItem(QStringLiteral("%1: %2").arg(i).arg(point(c.points()[i])), points_);
+            item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+            item->setCheckState(fixed ? Qt::Checked : Qt::Unchecked);
+        }
+    }
+    filling_ = false;
     if (!e) {
         text_->setPlainText(tr("Nothing selected.\nPick an entity in the list, or click a curve in select mode."));
         return;
@@ -58,8 +88,16 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
         s << (e->plane() != 0 ? tr("On plane %1 (control points in its frame)").arg(e->plane()) : tr("In space")) << "\n";
         s << tr("Degree: %1%2%3").arg(c.degree()).arg(c.isRational() ? tr(", rational") : QString()).arg(c.isClosed() ? tr(", closed") : QString()) << "\n";
         s << tr("Knots (%1): %2").arg(c.knots().size()).arg(knots(c.knots())) << "\n";
-        s << tr("Control points (%1):").arg(c.pointCount()) << "\n";
-        for (int i = 0; i < c.pointCount(); ++i) s << "  " << i << ": " << point(c.points()[i]) << "\n";
+        s << tr("Control points (%1), %2 fixed, the rest free (check boxes below):").arg(c.pointCount()).arg(e->fixedPoints.size()) << "\n";
+        for (scene::EntityId d : model.dependents(id)) {
+            const scene::Entity* k = model.find(d);
+            if (k && k->kind == scene::EntityKind::Constraint)
+                s << tr("Constraint %1: %2 at u = %3").arg(d).arg(QString::fromStdString(k->constraintType)).arg(k->parameter, 0, 'g', 5) << "\n";
+        }
+    } else if (e->kind == scene::EntityKind::Constraint) {
+        s << tr("Keeps the %1 of curve %2 at u = %3 while it is pulled").arg(QString::fromStdString(e->constraintType == "position" ? "point" : "tangent"))
+                 .arg(e->inputs.front()).arg(e->parameter, 0, 'g', 6) << "\n";
+        s << tr("At %1").arg(point(e->anchor)) << "\n";
     } else {
         const solvers::Surface3d& f = *e->surface;
         if (e->recipe) {

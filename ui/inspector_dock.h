@@ -1,10 +1,14 @@
 #pragma once
 // The selected entity in detail: type, plane, degree, control points, knots (curves and surfaces),
-// origin and axes (planes); below, a selected curve's curvature plot.
+// origin and axes (planes); a curve's control points with a check box each, checked = fixed when
+// the curve is pulled; below, a selected curve's curvature plot.
 #include "scene/model/model.h"
 
 #include <QDockWidget>
 
+#include <vector>
+
+class QListWidget;
 class QPlainTextEdit;
 
 namespace sculptline::ui {
@@ -21,9 +25,18 @@ public:
     void show(const scene::Model& model, scene::EntityId id);
     /// The text shown (tests read it).
     QString text() const;
+    /// The control point list (one checkable item per unique point of the selected curve).
+    QListWidget* pointList() const { return points_; }
+
+Q_SIGNALS:
+    /// The designer checked or unchecked a control point of `curve`: `fixed` is the new set.
+    void fixedPointsEdited(scene::EntityId curve, std::vector<int> fixed);
 
 private:
     QPlainTextEdit* text_ = nullptr;
+    QListWidget* points_ = nullptr;
+    scene::EntityId curve_ = 0;  ///< the curve whose points the list shows
+    bool filling_ = false;
     CurvaturePlot* plot_ = nullptr;
 };
 

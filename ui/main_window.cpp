@@ -228,6 +228,8 @@ void MainWindow::createDocks()
     recognition_ = new RecognitionDock(*document_, action(QStringLiteral("stroke.useRecognized")),
                                        action(QStringLiteral("stroke.useFreeform")), this);
     addDockWidget(Qt::LeftDockWidgetArea, recognition_);
+    connect(inspector_, &InspectorDock::fixedPointsEdited, this,
+            [this](scene::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
     connect(entities_, &EntityListDock::entityPicked, this, [this](scene::EntityId id) { document_->select(id); });
 }
 
@@ -264,7 +266,10 @@ void MainWindow::updateStatus()
         text = tr("Over-sketch: draw over a curve (start on it, or near a curve of plane %1) to redraw that part of it.").arg(plane);
         break;
     case Mode::Lift: text = tr("Lift: draw from a point of one curve to a point of another; the stroke becomes a space curve of least curvature between them."); break;
-    case Mode::Pull: text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point."); break;
+    case Mode::Pull:
+        text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point, keeping its pins "
+                  "and fixed points. Shift+click pins a point.");
+        break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
     case Mode::Surface: text = surfaceGuidance(); break;
     }

@@ -131,6 +131,18 @@ void SketchDocument::addPlane(const scene::PlaneFrame& frame)
     undo_.push(new AddEntitiesCommand(*this, {plane}, tr("Add plane")));
 }
 
+void SketchDocument::setFixedPoints(scene::EntityId curve, std::vector<int> fixed)
+{
+    const scene::Entity* e = model_.find(curve);
+    if (!e || e->kind != scene::EntityKind::Curve || e->fixedPoints == fixed) return;
+    undo_.push(new SetFixedPointsCommand(*this, curve, e->fixedPoints, std::move(fixed)));
+}
+
+void SketchDocument::notifyChanged()
+{
+    QMetaObject::invokeMethod(this, [this]() { Q_EMIT entitiesChanged(); }, Qt::QueuedConnection);
+}
+
 void SketchDocument::deleteSelection()
 {
     if (selection_ == 0) return;

@@ -102,6 +102,11 @@ public:
 
     /// Undoable edits.
     void addPlane(const scene::PlaneFrame& frame);
+    /// Which control points of `curve` stay fixed when it is pulled.
+    void setFixedPoints(scene::EntityId curve, std::vector<int> fixed);
+    /// Tells the docks the model's data changed (after the current event: an inspector edit may be
+    /// what is running).
+    void notifyChanged();
     void deleteSelection();
     void addStroke(const manipulators::FinishedStroke& stroke);
 
@@ -173,6 +178,8 @@ private:
     std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> pullSolver_;
     scene::EntityId pulled_ = 0;
     std::optional<solvers::Curve3d> pullStart_;
+    std::vector<Eigen::Vector3d> pullHeld_;  ///< values the curve's constraints keep during a pull
+    QString pullMessage_;  ///< the solver's last remark during a pull (compromise, too few points)
     std::map<scene::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;

@@ -306,12 +306,35 @@ std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
     const scene::Entity* curve = model_.find(hit.curve);
     if (!curve || curve->kind != scene::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
     const scene::PlaneFrame& frame = model_.find(curve->plane())->frame;
+    const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
+    if (hit.shift) {
+        // Shift+press pins the curve there: a position constraint kept by every later pull.
+        scene::Entity pin;
+        pin.kind = scene::EntityKind::Constraint;
+        pin.inputs = {curve->id};
+        pin.constraintType = "position";
+        pin.parameter = u;
+        undo_.push(new AddEntitiesCommand(*this, {pin}, tr("Pin curve %1").arg(curve->id)));
+        return std::nullopt;
+    }
     try {
-        // One position constraint at the grabbed parameter; the factorization is done here, once
+        // A position constraint at the grabbed parameter, plus the curve's own constraints held at
+        // their present values, with its fixed points blocked; the factorization is done here, once
         // per pull, and each pointer event is one product (curve_manipulation.h).
         solvers::editing::CurveConstraint<3> grip;
-        grip.u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
-        pullSolver_ = std::make_unique<solvers::editing::CurveManipulationSolver<3>>(*curve->local, std::vector{grip});
+        grip.u = u;
+        std::vector<solvers::editing::CurveConstraint<3>> constraints{grip};
+        pullHeld_.clear();
+        for (scene::EntityId d : model_.dependents(curve->id)) {
+            const scene::Entity* k = model_.find(d);
+            if (!k || k->kind != scene::EntityKind::Constraint) continue;
+            solvers::editing::CurveConstraint<3> kept;
+            kept.type = k->constraintType == "tangent" ? solvers::editing::ConstraintType::Tangent : solvers::editing::ConstraintType::Position;
+            kept.u = k->parameter;
+            constraints.push_back(kept);
+            pullHeld_.push_back(curve->local->derivatives(k->parameter, 1)[k->constraintType == "tangent" ? 1 : 0]);
+        }
+        pullSolver_ = std::make_unique<solvers::editing::CurveManipulationSolver<3>>(*curve->local, constraints, curve->fixedPoints);
     } catch (const std::exception& e) {
         lastStroke_ = {};
         lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(curve->id).arg(QString::fromStdString(e.what()));
@@ -327,8 +350,12 @@ std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
 void SketchDocument::pullTo(const Eigen::Vector3d& local)
 {
     if (!pullSolver_) return;
+    std::vector<Eigen::Vector3d> targets{local};
+    targets.insert(targets.end(), pullHeld_.begin(), pullHeld_.end());
     // Marks the curve dirty only: the scheduler re-tessellates it once per frame.
-    model_.setCurveShape(pulled_, pullSolver_->solve({local}));
+    solvers::editing::ManipulationReport report;
+    model_.setCurveShape(pulled_, pullSolver_->solve(targets, &report));
+    if (!report.message.empty()) pullMessage_ = QString::fromStdString(report.message);
 }
 
 void SketchDocument::releaseCurve()
@@ -342,6 +369,13 @@ void SketchDocument::releaseCurve()
     pullSolver_.reset();
     pullStart_.reset();
     pulled_ = 0;
+    if (!pullMessage_.isEmpty()) {
+        // Too few free points for the constraints, or contradictory ones (thesis §7.5): say so.
+        lastStroke_ = {};
+        lastStroke_.message = tr("Pull: %1").arg(pullMessage_);
+        pullMessage_.clear();
+        Q_EMIT strokeFinished();
+    }
     Q_EMIT entitiesChanged();
 }
 

@@ -8,7 +8,12 @@ scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
 {
     switch (e.kind) {
     case scene::EntityKind::Plane: return model.addPlane(e.frame, e.id);
-    case scene::EntityKind::Curve: return model.addCurve(e.plane(), *e.local, e.id);
+    case scene::EntityKind::Curve: {
+        const scene::EntityId id = model.addCurve(e.plane(), *e.local, e.id);
+        if (!e.fixedPoints.empty()) model.setFixedPoints(id, e.fixedPoints);
+        return id;
+    }
+    case scene::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
     case scene::EntityKind::Surface:
         return e.recipe ? model.addSurface(e.inputs, *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);
     }
@@ -106,6 +111,28 @@ void ReplaceCurveCommand::undo()
     doc_.model().setCurveShape(curve_, before_);
     doc_.scheduler().flush();
     doc_.select(curve_);
+}
+
+}  // namespace sculptline::ui
+
+namespace sculptline::ui {
+
+SetFixedPointsCommand::SetFixedPointsCommand(SketchDocument& doc, scene::EntityId curve, std::vector<int> before, std::vector<int> after)
+    : doc_(doc), curve_(curve), before_(std::move(before)), after_(std::move(after))
+{
+    setText(QStringLiteral("Fix control points of curve %1").arg(curve));
+}
+
+void SetFixedPointsCommand::redo()
+{
+    doc_.model().setFixedPoints(curve_, after_);
+    doc_.notifyChanged();
+}
+
+void SetFixedPointsCommand::undo()
+{
+    doc_.model().setFixedPoints(curve_, before_);
+    doc_.notifyChanged();
 }
 
 }  // namespace sculptline::ui

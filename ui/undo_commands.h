@@ -73,6 +73,19 @@ private:
     solvers::Curve3d before_, after_;
 };
 
+/// Which control points of a curve stay fixed when it is pulled (the inspector's check boxes).
+class SetFixedPointsCommand : public QUndoCommand {
+public:
+    SetFixedPointsCommand(SketchDocument& doc, scene::EntityId curve, std::vector<int> before, std::vector<int> after);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    scene::EntityId curve_;
+    std::vector<int> before_, after_;
+};
+
 /// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.
 scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e);
 

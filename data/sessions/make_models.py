@@ -243,7 +243,24 @@ def extrude():
     s.write("extrude.json")
 
 
+def pin_pull():
+    """A stroke on the default plane, pinned with Shift+click at a quarter of its length, then
+    pulled 15 mm up at three quarters: the pin holds, the pulled point follows (thesis §6.1)."""
+    s = Session()
+    s.action("mode.sketch")
+    wave = [r([-40 + 80 * i / 39, 95, 50 + 10 * math.sin(2 * math.pi * i / 39)]) for i in range(40)]
+    s.stroke(wave)
+    s.action("mode.pull")
+    s.events.append({"type": "press", "at": wave[10], "button": "left", "modifiers": ["shift"], "t": s.tick(40)})
+    s.events.append({"type": "release", "at": wave[10], "button": "left", "modifiers": ["shift"], "t": s.tick(10)})
+    grab = wave[30]
+    s.stroke([r([grab[0], grab[1], grab[2] + 15 * i / 20]) for i in range(21)], dt=10)
+    s.action("mode.view")
+    s.write("pin_pull.json")
+
+
 if __name__ == "__main__":
+    pin_pull()
     extrude()
     bottle()
     boat()

@@ -3,6 +3,7 @@
 #include "solvers/surfaces/surface_modes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace sculptline::scene {
@@ -13,6 +14,7 @@ const char* kindName(EntityKind kind)
     case EntityKind::Plane: return "plane";
     case EntityKind::Curve: return "curve";
     case EntityKind::Surface: return "surface";
+    case EntityKind::Constraint: return "constraint";
     }
     return "?";
 }
@@ -139,6 +141,36 @@ EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRec
     return insert(std::move(e), id, true);
 }
 
+EntityId Model::addConstraint(EntityId curve, const std::string& type, double u, EntityId id)
+{
+    const Entity* c = find(curve);
+    if (!c || c->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(curve) + " is not a curve");
+    if (type != "position" && type != "tangent") throw std::invalid_argument("constraint type must be \"position\" or \"tangent\"");
+    if (!std::isfinite(u)) throw std::invalid_argument("constraint parameter must be finite");
+    Entity e;
+    e.kind = EntityKind::Constraint;
+    e.inputs = {curve};
+    e.constraintType = type;
+    // Kept inside the curve's domain, where the solver reads it (closed curves wrap there too).
+    e.parameter = std::clamp(u, c->local->domainStart(), c->local->domainEnd());
+    return insert(std::move(e), id);
+}
+
+void Model::setFixedPoints(EntityId curve, std::vector<int> fixed)
+{
+    auto it = entities_.find(curve);
+    if (it == entities_.end() || it->second.kind != EntityKind::Curve) return;
+    std::sort(fixed.begin(), fixed.end());
+    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
+    const int count = it->second.local->isClosed() ? it->second.local->pointCount() - it->second.local->degree()
+                                                   : it->second.local->pointCount();
+    for (int i : fixed) {
+        if (i < 0 || i >= count) throw std::invalid_argument("fixed point " + std::to_string(i) + " is not a control point of curve " + std::to_string(curve));
+    }
+    it->second.fixedPoints = std::move(fixed);
+    for (ModelObserver* o : observers_) o->entityUpdated(it->second);
+}
+
 void Model::setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe)
 {
     auto it = entities_.find(surface);
@@ -227,6 +259,11 @@ void Model::recompute(Entity& e)
             // whose boundaries no longer meet): keep the last good surface and say why.
             e.buildError = error.what();
         }
+        return;
+    }
+    if (e.kind == EntityKind::Constraint) {
+        const solvers::Curve3d& curve = *entities_.at(e.inputs.front()).world;
+        e.anchor = curve.evaluate(std::clamp(e.parameter, curve.domainStart(), curve.domainEnd()));
         return;
     }
     if (e.kind != EntityKind::Curve) return;  // a plane holds its frame

@@ -24,7 +24,8 @@ namespace sculptline::scene {
 
 using EntityId = std::uint32_t;  ///< 0 is "none"
 
-enum class EntityKind { Plane, Curve, Surface };
+/// Constraint: a condition kept on a curve at a parameter while the curve is pulled (thesis §6.1).
+enum class EntityKind { Plane, Curve, Surface, Constraint };
 const char* kindName(EntityKind kind);
 
 struct Entity {
@@ -49,6 +50,15 @@ struct Entity {
     std::string buildError;
     /// Surface: the deviation an approximating mode reached (model units); negative for exact modes.
     double maxDeviation = -1.0;
+
+    /// Curve: control points held fixed when the curve is pulled (the "blocked" points of
+    /// thesis §6.1), ascending indices (unique points of a closed curve).
+    std::vector<int> fixedPoints;
+    /// Constraint (inputs = {curve}): "position" keeps C(u), "tangent" keeps C'(u) while the curve
+    /// is pulled; `anchor` is C(u) in world coordinates, recomputed with the curve.
+    std::string constraintType;
+    double parameter = 0.0;
+    Eigen::Vector3d anchor = Eigen::Vector3d::Zero();
 
     int recomputations = 0;  ///< times update() recomputed this entity (tests count them)
     /// Curve: bumped whenever `local` is replaced (an over-sketch), so views know to re-tessellate;
@@ -88,6 +98,13 @@ public:
     Entity makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
     /// Replaces a built surface's recipe (an extrusion following the pointer): marks it dirty.
     void setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe);
+
+    /// Adds a constraint on `curve` at parameter `u` ("position" or "tangent").
+    /// @throws std::invalid_argument for a non-curve, an unknown type or a non-finite parameter.
+    EntityId addConstraint(EntityId curve, const std::string& type, double u, EntityId id = 0);
+    /// Sets which control points of `curve` stay fixed when it is pulled (indices are checked).
+    /// @throws std::invalid_argument for an index out of range.
+    void setFixedPoints(EntityId curve, std::vector<int> fixed);
 
     /// Moves a plane: only marks it dirty (the curves follow in the next update()).
     void setPlaneFrame(EntityId plane, const PlaneFrame& frame);

@@ -22,7 +22,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface, Constructed };
+    enum class Kind { Plane, Curve, Surface, Constructed, Constraint };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -36,6 +36,10 @@ void populateModel(const SceneDocument& doc, Model& model)
         if (id != 0) byId[id] = {Kind::Surface, i};
         else unnumbered.push_back({Kind::Surface, i});
     }
+    for (size_t i = 0; i < doc.constraints.size(); ++i) {
+        if (doc.constraints[i].id != 0) byId[doc.constraints[i].id] = {Kind::Constraint, i};
+        else unnumbered.push_back({Kind::Constraint, i});
+    }
     for (size_t i = 0; i < doc.constructed.size(); ++i) {
         if (doc.constructed[i].id != 0) byId[doc.constructed[i].id] = {Kind::Constructed, i};
         else unnumbered.push_back({Kind::Constructed, i});
@@ -45,10 +49,16 @@ void populateModel(const SceneDocument& doc, Model& model)
         case Kind::Plane: model.addPlane(planeFrame(doc.planes[i]), id); break;
         case Kind::Curve: {
             const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
-            model.addCurve(static_cast<EntityId>(plane), doc.curves[i], id);
+            const EntityId curve = model.addCurve(static_cast<EntityId>(plane), doc.curves[i], id);
+            if (i < doc.curveFixed.size() && !doc.curveFixed[i].empty()) model.setFixedPoints(curve, doc.curveFixed[i]);
             break;
         }
         case Kind::Surface: model.addSurface(doc.surfaces[i], id); break;
+        case Kind::Constraint: {
+            const SceneDocument::ConstraintSpec& c = doc.constraints[i];
+            model.addConstraint(static_cast<EntityId>(c.curve), c.type, c.u, id);
+            break;
+        }
         case Kind::Constructed: {
             // Rebuilt from its curves (the build is deterministic, so this is the saved surface);
             // should it fail, the saved surface stands, with the reason on the entity.
@@ -66,7 +76,7 @@ void populateModel(const SceneDocument& doc, Model& model)
 
 json modelToJson(const Model& model, const GridSpec& grid)
 {
-    json planes = json::array(), curves = json::array(), surfaces = json::array();
+    json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array();
     for (const auto& [id, e] : model.entities()) {
         switch (e.kind) {
         case EntityKind::Plane:
@@ -85,9 +95,13 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 // Plane-local points are 2D: [x, y].
                 for (json& p : c["points"]) p.erase(2);
             }
+            if (!e.fixedPoints.empty()) c["fixed"] = e.fixedPoints;
             curves.push_back(std::move(c));
             break;
         }
+        case EntityKind::Constraint:
+            constraints.push_back({{"id", id}, {"curve", e.inputs.front()}, {"type", e.constraintType}, {"u", e.parameter}});
+            break;
         case EntityKind::Surface: {
             json s = io::toJson(*e.surface);
             s["id"] = id;
@@ -107,7 +121,8 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 {"grid", {{"size", grid.size}, {"spacing", grid.spacing}}},
                 {"planes", planes},
                 {"curves", curves},
-                {"surfaces", surfaces}};
+                {"surfaces", surfaces},
+                {"constraints", constraints}};
 }
 
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path)

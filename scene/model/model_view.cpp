@@ -1,6 +1,7 @@
 #include "scene/model/model_view.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/overlay_nodes.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -25,6 +26,9 @@ namespace {
 const std::array<SbColor, 3> kCurveColors{SbColor(1.0f, 0.5f, 0.1f), SbColor(0.95f, 0.85f, 0.2f),
                                           SbColor(0.95f, 0.3f, 0.55f)};
 const SbColor kHighlight(1.0f, 1.0f, 1.0f);
+/// Constraint pins: the pen's red, larger than the stroke feedback's corners so they read as objects.
+const SbColor kConstraintColor(1.0f, 0.25f, 0.2f);
+constexpr float kConstraintSize = 11.0f;
 /// Curves picked as the inputs of a surface being made: a cool cyan no curve colour uses.
 const SbColor kMarked(0.3f, 0.9f, 1.0f);
 /// Control polygons in a muted light grey: readable over planes and surfaces, never taken for a curve.
@@ -59,6 +63,9 @@ ModelView::ModelView(Model& model, bool nurbsNodes) : model_(model), nurbsNodes_
     planeCurves_ = new SoGroup;
     planeCurves_->setName("PlaneCurves");
     root_->addChild(planeCurves_);
+    constraints_ = makeOverlayRoot();
+    constraints_->setName("Constraints");
+    root_->addChild(constraints_);
     for (const auto& [id, e] : model_.entities()) entityAdded(e);
     model_.addObserver(this);
 }
@@ -169,6 +176,18 @@ void ModelView::entityAdded(const Entity& e)
     }
     case EntityKind::Curve: addCurveNode(e); break;
     case EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
+    case EntityKind::Constraint: {
+        // A pin at C(u), in world coordinates: it moves with the curve's updates.
+        auto* node = new SoSeparator;
+        node->setName(nodeName("Constraint", e.id).c_str());
+        SoCoordinate3* point = addStyledCoordinates(node, kConstraintColor, kConstraintSize, 0.0f);
+        point->point.setValue(toSb(e.anchor));
+        node->addChild(new SoPointSet);
+        constraints_->addChild(node);
+        nodes_[e.id] = node;
+        anchors_[e.id] = point;
+        break;
+    }
     }
 }
 
@@ -207,8 +226,9 @@ void ModelView::entityRemoved(const Entity& e)
 {
     const auto it = nodes_.find(e.id);
     if (it == nodes_.end()) return;
-    SoGroup* parent = e.kind == EntityKind::Plane     ? planeCurves_
-                      : e.kind == EntityKind::Surface ? surfaces_
+    SoGroup* parent = e.kind == EntityKind::Plane        ? planeCurves_
+                      : e.kind == EntityKind::Surface    ? surfaces_
+                      : e.kind == EntityKind::Constraint ? static_cast<SoGroup*>(constraints_)
                       : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
                                                       : curves_;
     parent->removeChild(it->second);
@@ -216,6 +236,7 @@ void ModelView::entityRemoved(const Entity& e)
     frames_.erase(e.id);
     builtShape_.erase(e.id);
     grids_.erase(e.id);
+    anchors_.erase(e.id);
     if (highlighted_ == e.id) highlighted_ = 0;
     marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
@@ -225,6 +246,7 @@ void ModelView::entityUpdated(const Entity& e)
     // A curve moved with its plane changes only its world form; its node is in plane-local
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
+    if (e.kind == EntityKind::Constraint) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
     if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
     if (e.kind == EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
         // A built surface follows its curves: re-tessellated once per update that rebuilt it.

@@ -13,6 +13,7 @@
 #include <map>
 #include <vector>
 
+class SoCoordinate3;
 class SoGroup;
 class SoSeparator;
 class SoTransform;
@@ -84,6 +85,8 @@ private:
     SoGroup* planeCurves_ = nullptr;
     std::map<EntityId, SoSeparator*> nodes_;
     std::map<EntityId, SoTransform*> frames_;
+    SoSeparator* constraints_ = nullptr;
+    std::map<EntityId, SoCoordinate3*> anchors_;  ///< a constraint's pin
     std::map<EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
     std::map<EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from

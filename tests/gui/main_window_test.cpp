@@ -15,6 +15,7 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -75,6 +76,16 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     EXPECT_FALSE(window.viewer()->isViewing());
     window.action(QStringLiteral("mode.view"))->trigger();
     EXPECT_TRUE(window.viewer()->isViewing());
+
+    // The inspector lists the curve's control points, each checkable: checked = fixed, undoable
+    QListWidget* points = inspector->pointList();
+    ASSERT_EQ(points->count(), 6);
+    points->item(0)->setCheckState(Qt::Checked);
+    EXPECT_EQ(window.document().model().find(2)->fixedPoints, std::vector<int>{0});
+    window.document().undoStack()->undo();
+    EXPECT_TRUE(window.document().model().find(2)->fixedPoints.empty());
+    QApplication::processEvents();  // the queued refresh shows the undone state
+    EXPECT_EQ(inspector->pointList()->item(0)->checkState(), Qt::Unchecked);
 
     // The surface modes each have an action with a hot key, and tell what to pick
     for (const char* mode : {"mode.fill", "mode.revolve", "mode.extrude", "mode.sweep", "mode.loft", "mode.boundaryRotation",

@@ -183,6 +183,42 @@ TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
     EXPECT_LT((e->surface->evaluate(0.3, 1.0) - (profile.evaluate(0.3) + 25.0 * normal)).norm(), kTolerance);
 }
 
+TEST(ConstraintEntity, APinFollowsItsCurveAndIsSavedWithTheFixedPoints)
+{
+    // Given a pin on the profile and two fixed control points
+    Scene s;
+    const EntityId pin = s.model.addConstraint(s.profile, "position", 0.25);
+    s.model.setFixedPoints(s.profile, {3, 0, 3});
+    EXPECT_EQ(s.model.find(s.profile)->fixedPoints, (std::vector<int>{0, 3}));
+    // When the plane moves
+    s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(10, 0, 90)));
+    s.model.update();
+    // Then the pin's anchor is the moved curve's point at its parameter
+    const Entity* p = s.model.find(pin);
+    EXPECT_LT((p->anchor - s.model.find(s.profile)->world->evaluate(0.25)).norm(), kTolerance);
+    // And a saved and reopened model has the pin and the fixed points
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(s.model, GridSpec{})), reopened);
+    ASSERT_NE(reopened.find(pin), nullptr);
+    EXPECT_EQ(reopened.find(pin)->constraintType, "position");
+    EXPECT_EQ(reopened.find(pin)->parameter, 0.25);
+    EXPECT_EQ(reopened.find(s.profile)->fixedPoints, (std::vector<int>{0, 3}));
+    // And removing the curve removes its pin (and its surface)
+    s.model.remove(s.profile);
+    EXPECT_EQ(s.model.find(pin), nullptr);
+}
+
+TEST(ConstraintEntity, BadConstraintsAreRefused)
+{
+    Scene s;
+    EXPECT_THROW(s.model.addConstraint(s.plane, "position", 0.5), std::invalid_argument);
+    EXPECT_THROW(s.model.addConstraint(s.profile, "twist", 0.5), std::invalid_argument);
+    EXPECT_THROW(s.model.addConstraint(s.profile, "position", std::nan("")), std::invalid_argument);
+    EXPECT_THROW(s.model.setFixedPoints(s.profile, {4}), std::invalid_argument);
+    const nlohmann::json doc = nlohmann::json::parse(R"({"constraints": [{"curve": 7, "type": "position", "u": 0.5}]})");
+    EXPECT_THROW(documentFromJson(doc), std::exception);
+}
+
 TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
 {
     const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"id": 5, "construction": {"mode": "loft", "curves": [1, 2]}}]})");
