@@ -268,6 +268,57 @@ void requireNoTear(const CurveJet& jet, const Curve3d& path, const Curve3d& prof
     }
 }
 
+// A polyline path: the rotation-minimizing frame is constant along each segment and turns at a
+// vertex by the least rotation R taking one direction to the next. The sections meet in mitres:
+// the section before the vertex, projected along the incoming direction onto the bisector plane
+// (normal t_in + t_out), is the section after it projected back along t_out (the reflection in the
+// bisector plane equals R on the incoming normal plane), so the sweep is exactly the ruled surface
+// through start section, mitres and end section. A closed planar polyline (the frame returns
+// unturned) is mitred at its seam too, so it closes.
+SweepResult polylineSweep(const Curve3d& profile, const Curve3d& path, double tolerance)
+{
+    const std::vector<Vec3>& Q = path.points();
+    const int m = static_cast<int>(Q.size()) - 1;  // segments
+    std::vector<Vec3> t;
+    for (int k = 0; k < m; ++k) t.push_back((Q[k + 1] - Q[k]).normalized());
+    const Vec3 x0 = Q.front();
+    const bool loop = (Q.back() - Q.front()).norm() <= kSeamGapRelative * path.controlSize() && m > 1;
+    // Relative transforms of the sections on each segment, M_k = R_k ... R_1.
+    std::vector<Eigen::Matrix3d> M{Eigen::Matrix3d::Identity()};
+    for (int k = 1; k < m; ++k) M.push_back(Eigen::Quaterniond::FromTwoVectors(t[k - 1], t[k]).toRotationMatrix() * M.back());
+    const Eigen::Matrix3d closing = Eigen::Quaterniond::FromTwoVectors(t[m - 1], t[0]).toRotationMatrix() * M.back();
+    const bool mitreSeam = loop && closing.isIdentity(1e-9);
+    const auto mitre = [](const Vec3& r, const Vec3& in, const Vec3& out) {
+        const Vec3 bisector = (in + out).normalized();
+        return Vec3(r - bisector.dot(r) / bisector.dot(in) * in);
+    };
+    const int n = profile.pointCount();
+    const int h = profile.isRational() ? 4 : 3;
+    ControlMatrix rows(m + 1, static_cast<Eigen::Index>(n) * h);
+    for (int i = 0; i < n; ++i) {
+        const Vec3 rel = profile.points()[i] - x0;
+        for (int k = 0; k <= m; ++k) {
+            Vec3 x;
+            if (k == 0 || k == m) {
+                // The ends: the profile as it lies and its copy on the last segment, or the seam's mitre.
+                x = mitreSeam ? Vec3(x0 + mitre(M.back() * rel, t[m - 1], t[0]))
+                              : Vec3(k == 0 ? profile.points()[i] : Vec3(Q[m] + M.back() * rel));
+            } else {
+                x = Q[k] + mitre(M[k - 1] * rel, t[k - 1], t[k]);
+            }
+            const double w = profile.weight(i);
+            rows.block(k, static_cast<Eigen::Index>(i) * h, 1, 3) = w * x.transpose();
+            if (h == 4) rows(k, static_cast<Eigen::Index>(i) * h + 3) = w;
+        }
+    }
+    KnotVector knotsV = path.knots();
+    const double a = path.domainStart(), b = path.domainEnd();
+    for (double& v : knotsV) v = (v - a) / (b - a);
+    return SweepResult{Surface3d::fromGroupedRows(Direction::V, profile.degree(), 1, profile.knots(), knotsV, rows,
+                                                  profile.isRational()),
+                       0.0, m + 1, tolerance};
+}
+
 SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepOptions& options,
                        std::shared_ptr<SweepPathSamples>& samples)
 {
@@ -276,6 +327,10 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
     if (!(profile.controlSize() > kSinglePointRelative * std::max(1.0, path.controlSize())))
         throw GeometryError("curves: the profile is a single point, sweeping it gives no surface");
     const double tolerance = sweepTolerance(profile, path, options);
+    if (path.degree() == 1) {
+        samples.reset();
+        return polylineSweep(profile, path, tolerance);
+    }
     const CurveJet jet(path);
     requireNoTear(jet, path, profile, tolerance);
     // Sections at equally spaced parameters per path knot span, so every path knot (where the
@@ -367,7 +422,7 @@ const SweepResult& SweepBuilder::update(const Curve3d& inputProfile, const Curve
 {
     const Curve3d path = inputPath.clamped();
     const std::optional<std::pair<Eigen::Matrix3d, Vec3>> motion = rigidMotion(*path_, path);
-    if (!motion) return reset(inputProfile, inputPath);
+    if (!motion || !samples_) return reset(inputProfile, inputPath);  // (polyline sweeps keep no samples)
     if (!motion->first.isIdentity(0.0) || !motion->second.isZero(0.0)) {
         samples_->transform(motion->first, motion->second);
         *path_ = path;

@@ -37,7 +37,9 @@ struct SweepResult {
 /// until every span is within tolerance or maxSections is reached. A closed path (periodic, or ends
 /// and end tangents that coincide) gets its frames' holonomy spread evenly along it, so the last
 /// section is the first and the surface closes at the path's seam; a closed profile closes the
-/// surface along u (its seam stays where the profile's domain starts).
+/// surface along u (its seam stays where the profile's domain starts). A polyline path (degree 1)
+/// gives the exact mitred sweep instead: straight tubes joined in the bisector planes of its
+/// vertices (degree 1 in v, maxDeviation 0; a closed planar polyline is mitred at its seam too).
 /// @throws GeometryError "path: ..." for a path with a cusp or no length, or with a corner (a knot
 ///         where the tangent turns) at which the swept profile would tear by more than the
 ///         tolerance; "curves: ..." for a profile that is a single point.

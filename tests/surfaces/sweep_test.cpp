@@ -219,16 +219,20 @@ TEST(Sweep, GivenPointProfile_WhenSwept_ThenClearError)
     }
 }
 
-TEST(Sweep, GivenPathWithCorner_WhenSwept_ThenRefusedUnlessTheTearIsWithinTolerance)
+TEST(Sweep, GivenCurvedPathWithCorner_WhenSwept_ThenRefusedUnlessTheTearIsWithinTolerance)
 {
-    // Given: a profile of radius 0.3 and two-segment paths turning by 45 degrees and by 0.001 degree.
+    // Given: a profile of radius 0.3 and cubic paths with a C0 knot (triple knot at 1/2) where the
+    // tangent turns by 45 degrees, and by 0.001 degree.
     const Curve3d profile = fullCircle(Vec3::Zero(), kRadius, Vec3::UnitY(), Vec3::UnitZ());
     const auto corner = [](double degrees) {
         const double a = degrees * M_PI / 180.0;
-        return Curve3d(1, {0, 0, 0.5, 1, 1}, {{0, 0, 0}, {2, 0, 0}, {2 + 2 * std::cos(a), 2 * std::sin(a), 0}});
+        const Vec3 d(std::cos(a), std::sin(a), 0);
+        return Curve3d(3, {0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1},
+                       {{0, 0, 0}, {0.7, 0.1, 0}, {1.4, 0, 0}, {2, 0, 0}, Vec3(2, 0, 0) + 0.6 * d,
+                        Vec3(2, 0, 0) + 1.2 * d + Vec3(0, 0, 0.1), Vec3(2, 0, 0) + 2 * d});
     };
-    // When / Then: 45 degrees tears the tube by 2·0.3·sin(22.5°) = 0.23 >> 1e-4: refused, naming
-    // the corner; 0.001 degree tears it by 5e-6 < 1e-4: swept within tolerance.
+    // When / Then: 45 degrees tears the tube by about 2·0.3·sin(22.5°) = 0.23 >> 1e-4: refused,
+    // naming the corner; 0.001 degree tears it by about 5e-6 < 1e-4: swept within tolerance.
     try {
         sweep(profile, corner(45.0), SweepOptions{1e-4, 513});
         FAIL() << "expected GeometryError";
@@ -237,4 +241,38 @@ TEST(Sweep, GivenPathWithCorner_WhenSwept_ThenRefusedUnlessTheTearIsWithinTolera
     }
     const SweepResult r = sweep(profile, corner(0.001), SweepOptions{1e-4, 513});
     EXPECT_LE(r.maxDeviation, 1e-4);
+}
+
+TEST(Sweep, GivenPolylinePath_WhenSwept_ThenMitredTubeExact)
+{
+    // Given: a circle along an open polyline turning by 60 degrees twice (once out of plane), and
+    // along a closed square.
+    const Curve3d profile = fullCircle(Vec3::Zero(), kRadius, Vec3::UnitY(), Vec3::UnitZ());
+    const std::vector<Vec3> q{{0, 0, 0}, {2, 0, 0}, {3, std::sqrt(3.0), 0}, {3, std::sqrt(3.0) + 1, std::sqrt(3.0)}};
+    const Curve3d polyline = makeClampedUniform<3>(1, q);
+
+    // When
+    const SweepResult r = sweep(profile, polyline);
+
+    // Then: exact (no deviation), starts with the profile, and every point of segment k's part
+    // lies at the radius from that segment's line (the mitres join the straight tubes exactly).
+    EXPECT_EQ(r.maxDeviation, 0.0);
+    EXPECT_LT(isoDeviation(r.surface, true, 0.0, profile), kExact);
+    for (int k = 0; k < 3; ++k) {
+        const Vec3 t = (q[k + 1] - q[k]).normalized();
+        for (int j = 0; j <= 10; ++j)
+            for (int i = 0; i <= 16; ++i) {
+                const Vec3 x = r.surface.evaluate(i / 16.0, (k + j / 10.0) / 3.0);
+                const Vec3 d = x - q[k];
+                EXPECT_NEAR((d - d.dot(t) * t).norm(), kRadius, kExact) << "segment " << k;
+            }
+    }
+    EXPECT_GT(minNeighbourNormalDot(r.surface), 0.0);
+
+    // And: a closed square path is mitred at its seam too: the tube closes.
+    const Curve3d square = makeClosedUniform<3>(1, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}});
+    const Curve3d ring = fullCircle(Vec3::Zero(), kRadius, Vec3::UnitY(), Vec3::UnitZ());
+    const SweepResult closed = sweep(ring, square);
+    for (int i = 0; i <= 20; ++i)
+        EXPECT_LT((closed.surface.evaluate(i / 20.0, 0.0) - closed.surface.evaluate(i / 20.0, 1.0)).norm(), kExact);
 }
