@@ -81,6 +81,38 @@ void cubicBasis(const KnotVector& U, int span, double u, double N[4])
     }
 }
 
+// A2.2's six denominators on `span` are knot differences, U[span+r+1] - U[span+1-j+r] (j = 1..3,
+// r < j), independent of u: their reciprocals are computed once per span (0 for repeated knots, as
+// in cubicBasis), which takes the divisions out of the per-sample loop of the least squares.
+void cubicBasisReciprocals(const KnotVector& U, int span, double inv[6])
+{
+    int k = 0;
+    for (int j = 1; j <= kDegree; ++j) {
+        for (int r = 0; r < j; ++r) {
+            const double den = U[span + r + 1] - U[span + 1 - j + r];
+            inv[k++] = den != 0.0 ? 1.0 / den : 0.0;
+        }
+    }
+}
+
+void cubicBasis(const KnotVector& U, int span, double u, const double inv[6], double N[4])
+{
+    double left[4], right[4];
+    N[0] = 1.0;
+    int k = 0;
+    for (int j = 1; j <= kDegree; ++j) {
+        left[j] = u - U[span + 1 - j];
+        right[j] = U[span + j] - u;
+        double saved = 0.0;
+        for (int r = 0; r < j; ++r) {
+            const double temp = N[r] * inv[k++];
+            N[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        N[j] = saved;
+    }
+}
+
 // One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi)
 {
@@ -145,12 +177,16 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
     const Vec3 first = X[S.front()], last = X[S.back()];
     BandMatrix a(nFree, kDegree);
     std::vector<Vec3> b(static_cast<size_t>(nFree), Vec3::Zero());
-    double basis[kDegree + 1];
+    double basis[kDegree + 1], inv[6];
     int span = kDegree;
+    cubicBasisReciprocals(s.knots, span, inv);
     for (size_t k = 1; k + 1 < S.size(); ++k) {
         // Samples come in increasing parameter: walk the span instead of searching for it.
-        while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
-        cubicBasis(s.knots, span, u[k], basis);
+        if (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) {
+            while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
+            cubicBasisReciprocals(s.knots, span, inv);
+        }
+        cubicBasis(s.knots, span, u[k], inv, basis);
         const int i0 = span - kDegree;  // control point of basis[0]
         Vec3 rhs = X[S[k]];
         if (i0 == 0) rhs -= basis[0] * first;

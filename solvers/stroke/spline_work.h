@@ -112,6 +112,10 @@ struct Spline {
 
 /// The four non-zero cubic B-splines on `span` at u (The NURBS Book A2.2 unrolled for p = 3).
 void cubicBasis(const KnotVector& U, int span, double u, double N[4]);
+/// The reciprocals of A2.2's six knot differences on `span` (0 where knots repeat), and the same
+/// basis from them: no division per evaluation (the least squares evaluates many u per span).
+void cubicBasisReciprocals(const KnotVector& U, int span, double inv[6]);
+void cubicBasis(const KnotVector& U, int span, double u, const double inv[6], double N[4]);
 /// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi);
 double distanceAt(const Spline& s, const Vec3& x, double u);
