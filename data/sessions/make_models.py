@@ -259,7 +259,24 @@ def pin_pull():
     s.write("pin_pull.json")
 
 
+def pull_circle():
+    """A circle on the default plane, regularized to the exact rational circle, then pulled 12 mm
+    outwards at its top and over-sketched at its bottom: both edits keep it rational and closed."""
+    s = Session()
+    s.action("mode.sketch")
+    centre = [0, 95, 55]
+    s.stroke(circle(centre, [1, 0, 0], [0, 0, 1], 30, 64))
+    s.action("stroke.useRecognized")
+    s.action("mode.pull")
+    s.stroke([r([0, 95, 85 + 12 * i / 20]) for i in range(21)], dt=10)
+    s.action("mode.oversketch")
+    s.stroke([r([-20 + 40 * i / 29, 95, 25 - 6 * math.sin(math.pi * i / 29)]) for i in range(30)])
+    s.action("mode.view")
+    s.write("pull_circle.json")
+
+
 if __name__ == "__main__":
+    pull_circle()
     pin_pull()
     extrude()
     bottle()

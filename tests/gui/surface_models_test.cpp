@@ -260,6 +260,29 @@ TEST(SurfaceModels, APinHoldsWhileThePullMovesTheCurve)
     EXPECT_GT(solvers::projectToCurve(curve, wave(30)).distance, 10.0);
 }
 
+TEST(SurfaceModels, ARationalCircleCanBePulledAndOversketched)
+{
+    // pull_circle.json: the recognized circle (radius 30 about (0, 95, 55)) pulled 12 mm up at its
+    // top, then over-sketched by a flatter stroke across its bottom
+    const scene::Model model = readModel("pull_circle.json");
+    const scene::Entity* c = model.find(4);
+    ASSERT_NE(c, nullptr);
+    const solvers::Curve3d& curve = *c->world;
+    // Still the exact kind of curve it was: rational and closed
+    EXPECT_TRUE(curve.isRational());
+    EXPECT_TRUE(curve.isClosed());
+    // The top followed the pointer, the bottom follows the over-stroke
+    EXPECT_LT(solvers::projectToCurve(curve, Eigen::Vector3d(0, 95, 97)).distance, kPointerSlack);
+    for (int i = 5; i <= 24; i += 3) {
+        const Eigen::Vector3d stroke(-20 + 40 * i / 29.0, 95, 25 - 6 * std::sin(3.14159265358979 * i / 29.0));
+        EXPECT_LT(solvers::projectToCurve(curve, stroke).distance, kPointerSlack) << i;
+    }
+    // And the sides, touched by neither edit, are still on the circle
+    for (const Eigen::Vector3d& side : {Eigen::Vector3d(-30, 95, 55), Eigen::Vector3d(30, 95, 55)}) {
+        EXPECT_LT(solvers::projectToCurve(curve, side).distance, kPointerSlack);
+    }
+}
+
 TEST(SurfaceModels, SavedModelsReopenToTheSameSurfaces)
 {
     // The bottle reopened and saved again (gui_replay_bottle_reopen) has the same surfaces
