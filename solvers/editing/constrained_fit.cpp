@@ -90,7 +90,9 @@ std::vector<Eigen::Matrix<double, Dim, 1>> fitFixedKnots(const FixedKnotFit<Dim>
     rhs.setZero();
     double basis[kMaxDegree + 1];
     const bool rational = !pr.weights.empty();
-    if (rational && static_cast<int>(pr.weights.size()) != n) throw GeometryError("weights: one per control point needed");
+    if (rational && static_cast<int>(pr.weights.size()) != n) {
+        throw GeometryError("weights: one per control point needed");
+    }
     for (int k = 0; k < rowsData; ++k) {
         const int span = findSpan(p, pr.knots, pr.params[k]);
         basisFunctions(span, pr.params[k], p, pr.knots, basis);

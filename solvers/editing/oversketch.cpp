@@ -59,8 +59,8 @@ StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve, const std::vector
     // curve no telling which arc it covers).
     constexpr double kMinStrokeRelative = 1e-3;
     if (s.length < kMinStrokeRelative * curve.controlSize()) {
-        throw GeometryError("stroke: too short to over-sketch (" + std::to_string(s.length) + " against a curve of size " +
-                            std::to_string(curve.controlSize()) + ")");
+        throw GeometryError("stroke: too short to over-sketch (" + std::to_string(s.length) +
+                            " against a curve of size " + std::to_string(curve.controlSize()) + ")");
     }
 
     const CurveProjector<Dim> projector(curve);

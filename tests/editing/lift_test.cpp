@@ -126,7 +126,9 @@ TEST(Lift, GivenNoisyBezierStroke_WhenLifted_ThenStillCloseToTheoremOne)
     // Given the S cubic with pen jitter of 0.002 of its chord
     const std::vector<Eigen::Vector2d> cps = {{0, 0}, {1, 9}, {9, -9}, {10, 0}};
     auto stroke = sample(makeClampedUniform<2>(3, cps), 400);
-    for (size_t i = 1; i + 1 < stroke.size(); ++i) stroke[i] += 0.02 * Eigen::Vector2d(std::sin(37.0 * i), std::cos(53.0 * i));
+    for (size_t i = 1; i + 1 < stroke.size(); ++i) {
+        stroke[i] += 0.02 * Eigen::Vector2d(std::sin(37.0 * i), std::cos(53.0 * i));
+    }
 
     // When lifted
     const LiftResult r = liftStroke(stroke, kZ0, kZ1);

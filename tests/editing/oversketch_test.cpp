@@ -222,7 +222,9 @@ TEST(Oversketch, GivenDegenerateStrokes_WhenOversketched_ThenErrorOrValidCurveNe
         }
         // Short but real (0.2 long) on the loop: a local edit, not the whole loop
         std::vector<Eigen::Vector2d> shortStroke;
-        for (int i = 0; i <= 20; ++i) shortStroke.emplace_back(8.2 * std::cos(0.6) + 0.01 * i, 5.2 * std::sin(0.6) + 0.1);
+        for (int i = 0; i <= 20; ++i) {
+            shortStroke.emplace_back(8.2 * std::cos(0.6) + 0.01 * i, 5.2 * std::sin(0.6) + 0.1);
+        }
         std::pair<double, double> span;
         const Curve2d loop = sculptline::editing_fixtures::ellipseLoop();
         const Curve2d edited = oversketch(loop, shortStroke, method(m), &span);
