@@ -108,13 +108,19 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
     }
 }
 
-Entity Model::makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
+Entity Model::unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
 {
     checkSurfaceInputs(curves, recipe);
     Entity e;
     e.kind = EntityKind::Surface;
     e.inputs = curves;
     e.recipe = recipe;
+    return e;
+}
+
+Entity Model::makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
+{
+    Entity e = unbuiltSurface(curves, recipe);
     try {
         buildSurface(e);
     } catch (const std::exception& error) {
@@ -126,11 +132,7 @@ Entity Model::makeSurface(const std::vector<EntityId>& curves, const SurfaceReci
 EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id,
                            const solvers::Surface3d* saved)
 {
-    checkSurfaceInputs(curves, recipe);
-    Entity e;
-    e.kind = EntityKind::Surface;
-    e.inputs = curves;
-    e.recipe = recipe;
+    Entity e = unbuiltSurface(curves, recipe);
     try {
         buildSurface(e);
     } catch (const std::exception& error) {

@@ -141,6 +141,8 @@ private:
     void recompute(Entity& entity);
     /// @throws std::invalid_argument when `curves` do not fit `recipe` (count, kinds).
     void checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// A surface entity over `curves` with `recipe`, checked but not built yet.
+    Entity unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
     /// Builds a surface entity's surface from its recipe and inputs. @throws on failure.
     void buildSurface(Entity& entity) const;
     void markDirty(EntityId id);

@@ -32,6 +32,9 @@ void basisFunctions(int span, double u, int degree, const KnotVector& knots, dou
 /// Basis functions and their derivatives up to order `n` (row k = k-th derivative, columns the
 /// degree+1 functions of `span`); derivatives above the degree are zero. The NURBS Book, A2.3.
 Eigen::MatrixXd basisDerivatives(int span, double u, int degree, int n, const KnotVector& knots);
+/// The same into caller storage, without allocating: ders[k * (degree + 1) + j] for k = 0..n.
+/// @note degree <= kMaxDegree; `ders` holds (n + 1) * (degree + 1) values.
+void basisDerivatives(int span, double u, int degree, int n, const KnotVector& knots, double* ders);
 
 /// Multiplicity of the knot value u (exact comparison; knots are data, not results of arithmetic).
 int knotMultiplicity(const KnotVector& knots, double u);

@@ -26,7 +26,7 @@ Eigen::Matrix3d Frame::axes() const
 }
 
 // Largest degree the fixed arrays of CurveJet hold (the kernel's basisFunctions has the same bound).
-constexpr int kMaxJetDegree = 31;
+constexpr int kMaxJetDegree = kMaxDegree;
 
 CurveJet::CurveJet(const Curve3d& curve) : degree_(curve.degree()), knots_(curve.knots())
 {
@@ -39,63 +39,17 @@ CurveJet::CurveJet(const Curve3d& curve) : degree_(curve.degree()), knots_(curve
 
 void CurveJet::evaluate(double u, Eigen::Vector3d& x, Eigen::Vector3d& d1, Eigen::Vector3d& d2) const
 {
-    // The NURBS Book A2.3 with n = 2 derivatives.
+    // The NURBS Book A2.3 with n = 2 derivatives (the kernel's allocation-free form).
     const int p = degree_;
     const KnotVector& U = knots_;
     u = std::clamp(u, U[p], U[points_.size()]);
     const int span = findSpan(p, U, u);
-    double ndu[kMaxJetDegree + 1][kMaxJetDegree + 1];
-    double left[kMaxJetDegree + 1], right[kMaxJetDegree + 1];
-    double ders[3][kMaxJetDegree + 1] = {};
-    double a[2][kMaxJetDegree + 1];
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-        left[j] = u - U[span + 1 - j];
-        right[j] = U[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
-    const int n = std::min(2, p);
-    for (int r = 0; r <= p; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (int k = 1; k <= n; ++k) {
-            double d = 0.0;
-            const int rk = r - k, pk = p - k;
-            if (r >= k) {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const int j1 = rk >= -1 ? 1 : -rk;
-            const int j2 = r - 1 <= pk ? k - 1 : p - r;
-            for (int j = j1; j <= j2; ++j) {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders[k][r] = d;
-            std::swap(s1, s2);
-        }
-    }
-    double factor = p;
-    for (int k = 1; k <= n; ++k) {
-        for (int j = 0; j <= p; ++j) ders[k][j] *= factor;
-        factor *= p - k;
-    }
+    double ders[3 * (kMaxJetDegree + 1)];
+    basisDerivatives(span, u, p, 2, U, ders);
     Eigen::Vector4d A[3] = {Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()};
     for (int j = 0; j <= p; ++j) {
         const Eigen::Vector4d& P = points_[span - p + j];
-        for (int k = 0; k < 3; ++k) A[k] += ders[k][j] * P;
+        for (int k = 0; k < 3; ++k) A[k] += ders[k * (p + 1) + j] * P;
     }
     // C = A/w: C' = (A' - w' C) / w, C'' = (A'' - 2 w' C' - w'' C) / w (The NURBS Book eq. 4.8).
     const double w = A[0].w();
