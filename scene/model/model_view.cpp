@@ -198,21 +198,25 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const Entity& e, bool reuseGrid)
     if (nurbsNodes_) {
         node = makeNurbsSurfaceNode(s);
     } else {
-        // During a drag a rebuilt surface usually keeps its knots (the curves move, their layout
-        // does not): re-evaluating it on its last adaptive grid costs one evaluation per vertex,
-        // where the adaptive refinement probes every grid line several times (about 10x more).
-        // refineSurfaces() adapts the grid again when the drag ends.
+        // During a drag a rebuilt surface keeps its parameter domain (the curves move, the
+        // construction's parameterization does not): re-evaluating it on its last adaptive grid
+        // costs one evaluation per vertex, where the adaptive refinement probes every grid line
+        // several times (about 10x more). The knots may change meanwhile (an approximating mode
+        // adds sections); the grid still samples the whole domain, and refineSurfaces() adapts it
+        // again when the drag ends.
         auto it = grids_.find(e.id);
-        const bool sameLayout = it != grids_.end() && it->second.degreeU == s.degreeU() && it->second.degreeV == s.degreeV() &&
-                                it->second.knotsU == s.knotsU() && it->second.knotsV == s.knotsV();
-        if (reuseGrid && sameLayout) {
+        const bool sameDomain = it != grids_.end() && it->second.u.front() == s.domainStart(solvers::Direction::U) &&
+                                it->second.u.back() == s.domainEnd(solvers::Direction::U) &&
+                                it->second.v.front() == s.domainStart(solvers::Direction::V) &&
+                                it->second.v.back() == s.domainEnd(solvers::Direction::V);
+        if (reuseGrid && sameDomain) {
             node = makeSurfaceNode(s, solvers::meshOnGrid(s, it->second.u, it->second.v));
             it->second.adaptive = false;
             ++gridReuses_;
         } else {
             solvers::GridMesh mesh = solvers::tessellate(s);
             node = makeSurfaceNode(s, mesh);
-            grids_[e.id] = SurfaceGrid{s.degreeU(), s.degreeV(), s.knotsU(), s.knotsV(), std::move(mesh.u), std::move(mesh.v), true};
+            grids_[e.id] = SurfaceGrid{std::move(mesh.u), std::move(mesh.v), true};
         }
     }
     ++nodeBuilds_;

@@ -66,13 +66,11 @@ private:
     void rebuildCurveNode(const Entity& entity);
     SoSeparator* makeCurveWithPolygon(const Entity& entity);
     /// A surface's node, named and registered (nodes_, builtShape_). `reuseGrid`: evaluate on the
-    /// last adaptive grid when the surface's knots are unchanged (a live rebuild).
+    /// last adaptive grid when the surface's domain is unchanged (a live rebuild).
     SoSeparator* makeSurfaceEntityNode(const Entity& entity, bool reuseGrid = false);
 
-    /// The parameter grid a surface was last tessellated on, with the layout it was made for.
+    /// The parameter grid a surface was last tessellated on.
     struct SurfaceGrid {
-        int degreeU = 0, degreeV = 0;
-        std::vector<double> knotsU, knotsV;
         std::vector<double> u, v;
         bool adaptive = true;  ///< false: the node was built on a reused grid
     };
