@@ -145,6 +145,23 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         if (!(c.recipe.angleDegrees > 0.0 && c.recipe.angleDegrees <= 360.0)) throw io::InputError(at + ".angle: must be in (0, 360]");
     }
     if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
+    if (const auto g = it->find("tangents"); g != it->end()) {
+        // G1 fill: {"curve": boundary index, "surface": id of a surface made before this one}.
+        if (!g->is_array() || c.recipe.mode != "fill") throw io::InputError(at + ".tangents: an array, for a fill only");
+        for (size_t k = 0; k < g->size(); ++k) {
+            const std::string field = at + ".tangents[" + std::to_string(k) + "]";
+            SurfaceRecipe::Tangent t;
+            t.boundary = io::integerFromJson(io::member((*g)[k], "curve", field), field + ".curve", 0, n - 1);
+            const int surface = io::integerFromJson(io::member((*g)[k], "surface", field), field + ".surface", 1, 1 << 30);
+            const bool known = std::find(doc.surfaceIds.begin(), doc.surfaceIds.end(), surface) != doc.surfaceIds.end() ||
+                               std::any_of(doc.constructed.begin(), doc.constructed.end(),
+                                           [surface](const SceneDocument::ConstructedSurface& s) { return s.id == surface; });
+            if (!known || (surfaceId != 0 && surface >= surfaceId))
+                throw io::InputError(field + ".surface: no surface with id " + std::to_string(surface) + " comes before this one");
+            t.surface = static_cast<std::uint32_t>(surface);
+            c.recipe.tangents.push_back(t);
+        }
+    }
     if (const auto t = it->find("tolerance"); t != it->end()) {
         c.recipe.tolerance = io::numberFromJson(*t, at + ".tolerance");
         if (!(c.recipe.tolerance >= 0.0)) throw io::InputError(at + ".tolerance: must not be negative");

@@ -102,8 +102,11 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
         const solvers::Surface3d& f = *e->surface;
         if (e->recipe) {
             QStringList inputs;
-            for (scene::EntityId c : e->inputs) inputs << QString::number(c);
+            for (scene::EntityId c : e->curveInputs()) inputs << QString::number(c);
             s << tr("Made by: %1 of curves %2").arg(QString::fromStdString(e->recipe->mode), inputs.join(QStringLiteral(", "))) << "\n";
+            for (const scene::SurfaceRecipe::Tangent& t : e->recipe->tangents)
+                s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
+            if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
             if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
         } else {

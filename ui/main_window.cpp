@@ -199,6 +199,10 @@ void MainWindow::createActions()
     surfaceAction("mode.loft", tr("Loft / skin"), tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
     surfaceAction("mode.boundaryRotation", tr("Boundary rot."), tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
     surfaceAction("mode.railRotation", tr("Rail rot."), tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
+    QAction* g1 = make(modeMenu, "surface.fillTangent", tr("Fill &tangent to the surfaces its boundaries come from"),
+                       QKeySequence(QStringLiteral("T")), [this](bool on) { document_->setFillTangent(on); });
+    g1->setCheckable(true);
+    g1->setChecked(document_->fillTangent());
     make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return),
          [this]() { document_->buildSurface(); });
     make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() { document_->cancelSurface(); });

@@ -123,6 +123,9 @@ public:
     /// it cannot (too few inputs, the curves do not meet, ...). The picks are cleared either way.
     bool buildSurface();
     void cancelSurface();
+    /// Fill: boundaries that other surfaces were built through are made G1 to those surfaces.
+    void setFillTangent(bool on) { fillG1_ = on; }
+    bool fillTangent() const { return fillG1_; }
     /// What the surface mode wants next, or why the last build failed.
     const QString& surfaceMessage() const { return surfaceMessage_; }
 
@@ -165,6 +168,8 @@ private:
     void extrudeTo(const Eigen::Vector3d& local);
     void releaseExtrusion();
     void setSurfaceMessage(const QString& message);
+    /// For each boundary another surface was built through: that surface (G1 fill).
+    std::vector<scene::SurfaceRecipe::Tangent> adjacentSurfaces(const std::vector<scene::EntityId>& boundaries) const;
     void dragStarted(scene::EntityId plane);
     void dragFinished(scene::EntityId plane);
 
@@ -204,6 +209,7 @@ private:
     scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     scene::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::string surfaceMode_;
+    bool fillG1_ = true;
     std::vector<scene::EntityId> surfaceInputs_;
     QString surfaceMessage_;
     /// Extrude drag: the profile, the surface shown live (in the model, not yet on the undo

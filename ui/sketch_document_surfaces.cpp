@@ -61,6 +61,7 @@ bool SketchDocument::buildSurface()
     scheduler_->flush();
     scene::SurfaceRecipe recipe;
     recipe.mode = surfaceMode_;
+    if (surfaceMode_ == "fill" && fillG1_) recipe.tangents = adjacentSurfaces(inputs);
     try {
         scene::Entity surface = model_.makeSurface(inputs, recipe);
         undo_.push(new AddEntitiesCommand(*this, {surface}, tr("Make %1 surface").arg(QString::fromStdString(surfaceMode_))));
@@ -69,10 +70,32 @@ bool SketchDocument::buildSurface()
         return false;
     }
     const scene::Entity* made = model_.find(selection_);
-    setSurfaceMessage(made && made->maxDeviation >= 0.0
-                          ? tr("Surface %1 made (within %2 of its construction).").arg(made->id).arg(made->maxDeviation, 0, 'g', 3)
-                          : tr("Surface %1 made.").arg(selection_));
+    QString text = tr("Surface %1 made").arg(selection_);
+    if (made && made->maxDeviation >= 0.0) text += tr(" (within %1 of its construction)").arg(made->maxDeviation, 0, 'g', 3);
+    if (made && made->maxTangentAngle >= 0.0) {
+        text += tr(", tangent to surface(s) along %1 boundaries within %2 degrees").arg(made->recipe->tangents.size()).arg(made->maxTangentAngle, 0, 'g', 2);
+    }
+    setSurfaceMessage(text + QStringLiteral("."));
     return true;
+}
+
+std::vector<scene::SurfaceRecipe::Tangent> SketchDocument::adjacentSurfaces(const std::vector<scene::EntityId>& boundaries) const
+{
+    // A boundary that a surface was built through (a loft's section, a revolve's profile, another
+    // fill's boundary) lies on that surface: the fill is made G1 to it there (the first such).
+    std::vector<scene::SurfaceRecipe::Tangent> out;
+    for (size_t k = 0; k < boundaries.size(); ++k) {
+        for (const auto& [id, e] : model_.entities()) {
+            if (e.kind != scene::EntityKind::Surface || !e.recipe) continue;
+            // Every curve input lies on its surface but a revolve's axis and a sweep's path.
+            std::vector<scene::EntityId> curves = e.curveInputs();
+            if (e.recipe->mode == "revolve" || e.recipe->mode == "sweep") curves.resize(1);
+            if (std::find(curves.begin(), curves.end(), boundaries[k]) == curves.end()) continue;
+            out.push_back({static_cast<int>(k), id});
+            break;
+        }
+    }
+    return out;
 }
 
 void SketchDocument::cancelSurface()

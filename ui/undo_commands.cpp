@@ -15,7 +15,7 @@ scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
     }
     case scene::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
     case scene::EntityKind::Surface:
-        return e.recipe ? model.addSurface(e.inputs, *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);
+        return e.recipe ? model.addSurface(e.curveInputs(), *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);
     }
     return 0;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 namespace sculptline::scene {
@@ -17,6 +18,14 @@ const char* kindName(EntityKind kind)
     case EntityKind::Constraint: return "constraint";
     }
     return "?";
+}
+
+size_t Entity::tangentSurfaceCount() const
+{
+    if (!recipe) return 0;
+    std::set<std::uint32_t> surfaces;
+    for (const SurfaceRecipe::Tangent& t : recipe->tangents) surfaces.insert(t.surface);
+    return surfaces.size();
 }
 
 solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame& frame)
@@ -106,6 +115,12 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
         const Entity* e = find(c);
         if (!e || e->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(c) + " is not a curve");
     }
+    for (const SurfaceRecipe::Tangent& t : recipe.tangents) {
+        const Entity* s = find(t.surface);
+        if (recipe.mode != "fill") throw std::invalid_argument("only a fill can be tangent to other surfaces");
+        if (t.boundary < 0 || t.boundary >= n) throw std::invalid_argument("tangent boundary " + std::to_string(t.boundary) + " is not a boundary");
+        if (!s || s->kind != EntityKind::Surface) throw std::invalid_argument("entity " + std::to_string(t.surface) + " is not a surface");
+    }
 }
 
 Entity Model::unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
@@ -114,6 +129,11 @@ Entity Model::unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceR
     Entity e;
     e.kind = EntityKind::Surface;
     e.inputs = curves;
+    // The surfaces a G1 fill is tangent to are inputs too: it follows them when they change.
+    for (const SurfaceRecipe::Tangent& t : recipe.tangents) {
+        if (std::find(e.inputs.begin() + static_cast<long>(curves.size()), e.inputs.end(), t.surface) == e.inputs.end())
+            e.inputs.push_back(t.surface);
+    }
     e.recipe = recipe;
     return e;
 }
@@ -186,9 +206,13 @@ void Model::buildSurface(Entity& e) const
     namespace surf = solvers::surfaces;
     const SurfaceRecipe& r = *e.recipe;
     std::vector<solvers::Curve3d> curves;
-    for (EntityId input : e.inputs) curves.push_back(*entities_.at(input).world);
+    for (EntityId input : e.inputs) {
+        const Entity& in = entities_.at(input);
+        if (in.kind == EntityKind::Curve) curves.push_back(*in.world);
+    }
     surf::SurfaceOptions options;
     options.tolerance = r.tolerance;
+    for (const SurfaceRecipe::Tangent& t : r.tangents) options.fillTangents.push_back({t.boundary, *entities_.at(t.surface).surface});
     const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
     if (mode == surf::SurfaceMode::Revolve) {
         // The axis is the line the designer drew: the last input's ends, start to end.
@@ -206,6 +230,7 @@ void Model::buildSurface(Entity& e) const
     surf::SurfaceBuild build = surf::buildSurface(mode, curves, options);
     e.surface = std::move(build.surface);
     e.maxDeviation = build.maxDeviation;
+    e.maxTangentAngle = build.maxTangentAngleDegrees;
     e.buildError.clear();
     ++e.shapeVersion;
 }

@@ -50,6 +50,16 @@ struct Entity {
     std::string buildError;
     /// Surface: the deviation an approximating mode reached (model units); negative for exact modes.
     double maxDeviation = -1.0;
+    /// Surface: a G1 fill's largest angle (degrees) between its normals and those of the surfaces
+    /// it is tangent to, across those boundaries; negative otherwise.
+    double maxTangentAngle = -1.0;
+    /// Surface: its curve inputs (the inputs that follow are the surfaces a G1 fill is tangent to).
+    std::vector<std::uint32_t> curveInputs() const
+    {
+        return std::vector<std::uint32_t>(inputs.begin(), inputs.end() - static_cast<long>(tangentSurfaceCount()));
+    }
+    /// Surface: how many of its inputs are surfaces it is tangent to (at the end of `inputs`).
+    size_t tangentSurfaceCount() const;
 
     /// Curve: control points held fixed when the curve is pulled (the "blocked" points of
     /// thesis §6.1), ascending indices (unique points of a closed curve).

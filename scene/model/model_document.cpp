@@ -106,7 +106,12 @@ json modelToJson(const Model& model, const GridSpec& grid)
             json s = io::toJson(*e.surface);
             s["id"] = id;
             if (e.recipe) {
-                json c{{"mode", e.recipe->mode}, {"curves", e.inputs}};
+                json c{{"mode", e.recipe->mode}, {"curves", e.curveInputs()}};
+                if (!e.recipe->tangents.empty()) {
+                    json tangents = json::array();
+                    for (const SurfaceRecipe::Tangent& t : e.recipe->tangents) tangents.push_back({{"curve", t.boundary}, {"surface", t.surface}});
+                    c["tangents"] = std::move(tangents);
+                }
                 if (e.recipe->mode == "revolve") c["angle"] = e.recipe->angleDegrees;
                 if (e.recipe->mode == "extrude") c["direction"] = io::toJson(e.recipe->direction);
                 if (e.recipe->tolerance > 0.0) c["tolerance"] = e.recipe->tolerance;

@@ -5,7 +5,9 @@
 // ends), and an extrusion's direction lives in the frame of the profile's plane.
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace sculptline::scene {
 
@@ -21,6 +23,13 @@ struct SurfaceRecipe {
     /// Approximating modes (sweep, boundary- and rail-rotation): model units; 0 = the solver's
     /// default, relative to the curves' size.
     double tolerance = 0.0;
+    /// fill: boundaries made G1 (tangent-continuous) to an adjacent surface: boundary index (into
+    /// the curve inputs) and that surface's entity id. The fill then depends on those surfaces too.
+    struct Tangent {
+        int boundary = 0;
+        std::uint32_t surface = 0;
+    };
+    std::vector<Tangent> tangents;
 };
 
 /// Input curves each mode takes, in order: [min, max]. Revolve's last input is its axis (a line

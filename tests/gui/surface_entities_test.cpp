@@ -219,6 +219,67 @@ TEST(ConstraintEntity, BadConstraintsAreRefused)
     EXPECT_THROW(documentFromJson(doc), std::exception);
 }
 
+/// Largest angle (degrees) between the normals of `a` and `b` (either orientation) at 21 points of
+/// `curve`, which lies on both.
+double normalAngleAlong(const solvers::Curve3d& curve, const solvers::Surface3d& a, const solvers::Surface3d& b)
+{
+    const solvers::SurfaceProjector pa(a), pb(b);
+    double worst = 0.0;
+    for (int k = 0; k <= 20; ++k) {
+        const Eigen::Vector3d x = curve.evaluate(curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 20.0);
+        const auto fa = pa.project(x), fb = pb.project(x);
+        const double c = std::abs(a.normal(fa.u, fa.v).dot(b.normal(fb.u, fb.v)));
+        worst = std::max(worst, std::acos(std::min(1.0, c)) * 180.0 / 3.14159265358979);
+    }
+    return worst;
+}
+
+TEST(SurfaceEntity, AFillTangentToALoftFollowsItAndIsSaved)
+{
+    // Given a cylinder-like loft through two quarter arcs (x = 0 and x = 10), and three more curves
+    // that close a loop with the second arc, leaving its ends in the loft's tangent planes
+    Model model;
+    const auto arc = [](double x) { return cubic({{x, 20, 0}, {x, 20, 11}, {x, 11, 20}, {x, 0, 20}}); };
+    const EntityId a = model.addCurve(0, arc(0)), b = model.addCurve(0, arc(10));
+    SurfaceRecipe loft;
+    loft.mode = "loft";
+    const EntityId hull = model.addSurface({a, b}, loft);
+    const EntityId c = model.addCurve(0, cubic({{10, 20, 0}, {17, 20, 0}, {23, 20, 0}, {30, 20, 0}}));
+    const EntityId d = model.addCurve(0, cubic({{30, 20, 0}, {30, 13, 7}, {30, 7, 13}, {30, 0, 20}}));
+    const EntityId e = model.addCurve(0, cubic({{30, 0, 20}, {23, 0, 20}, {17, 0, 20}, {10, 0, 20}}));
+    // When one fill is G1 to the loft along the arc and another is not
+    SurfaceRecipe plain;
+    plain.mode = "fill";
+    SurfaceRecipe g1 = plain;
+    g1.tangents = {{0, hull}};
+    const EntityId creased = model.addSurface({b, c, d, e}, plain);
+    const EntityId smooth = model.addSurface({b, c, d, e}, g1);
+    // Then only the G1 fill continues the loft's tangent plane (0.1 degree, coons_fill.h's default)
+    const solvers::Curve3d& arcB = *model.find(b)->world;
+    EXPECT_GT(normalAngleAlong(arcB, *model.find(hull)->surface, *model.find(creased)->surface), 1.0);
+    EXPECT_LT(normalAngleAlong(arcB, *model.find(hull)->surface, *model.find(smooth)->surface), 0.15);
+    EXPECT_LT(curveToSurface(arcB, *model.find(smooth)->surface), kTolerance);
+    // And it depends on the loft: moving the first arc rebuilds the loft and then the fill, once
+    EXPECT_EQ(model.find(smooth)->inputs.back(), hull);
+    model.setCurveShape(a, arc(-10));
+    model.update();
+    EXPECT_EQ(model.find(smooth)->recomputations, 1);
+    EXPECT_TRUE(model.find(smooth)->buildError.empty()) << model.find(smooth)->buildError;
+    EXPECT_LT(normalAngleAlong(arcB, *model.find(hull)->surface, *model.find(smooth)->surface), 0.15);
+    // And when the loft turns so that no G1 fill can exist (the other boundaries leave the arc's
+    // ends outside its new tangent planes), the fill keeps its last surface and says why
+    model.setCurveShape(a, cubic({{0, 30, 0}, {0, 30, 16}, {0, 16, 30}, {0, 0, 30}}));
+    model.update();
+    EXPECT_FALSE(model.find(smooth)->buildError.empty());
+    // And a saved and reopened model rebuilds the same G1 fill
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    ASSERT_NE(reopened.find(smooth), nullptr);
+    ASSERT_EQ(reopened.find(smooth)->recipe->tangents.size(), 1u);
+    EXPECT_EQ(reopened.find(smooth)->curveInputs(), (std::vector<EntityId>{b, c, d, e}));
+    EXPECT_EQ(reopened.find(smooth)->surface->points(), model.find(smooth)->surface->points());
+}
+
 TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
 {
     const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"id": 5, "construction": {"mode": "loft", "curves": [1, 2]}}]})");
