@@ -126,13 +126,21 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
 
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style)
 {
+    SoSeparator* root = makeMeshNode(mesh.vertices, mesh.normals, mesh.triangles, style);
+    root->addChild(makeIsoLines(surface, mesh, style.color));
+    return root;
+}
+
+SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3d>& normals,
+                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style)
+{
     SoSeparator* root = surfaceRoot(style);
     auto* coords = new SoCoordinate3;
-    setPoints(coords->point, mesh.vertices);
+    setPoints(coords->point, vertices);
     root->addChild(coords);
-    auto* normals = new SoNormal;
-    setPoints(normals->vector, mesh.normals);
-    root->addChild(normals);
+    auto* normalNode = new SoNormal;
+    setPoints(normalNode->vector, normals);
+    root->addChild(normalNode);
     auto* binding = new SoNormalBinding;
     // With normalIndex left at its default, PER_VERTEX_INDEXED reuses coordIndex for the normals.
     binding->value = SoNormalBinding::PER_VERTEX_INDEXED;
@@ -140,9 +148,9 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::G
     // Pushes the faces back in depth so the iso-lines drawn on them are not half hidden.
     root->addChild(new SoPolygonOffset);
     auto* faces = new SoIndexedFaceSet;
-    faces->coordIndex.setNum(static_cast<int>(mesh.triangles.size() * 4));
+    faces->coordIndex.setNum(static_cast<int>(triangles.size() * 4));
     int32_t* index = faces->coordIndex.startEditing();
-    for (const Eigen::Vector3i& t : mesh.triangles) {
+    for (const Eigen::Vector3i& t : triangles) {
         *index++ = t[0];
         *index++ = t[1];
         *index++ = t[2];
@@ -150,7 +158,6 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::G
     }
     faces->coordIndex.finishEditing();
     root->addChild(faces);
-    root->addChild(makeIsoLines(surface, mesh, style.color));
     return root;
 }
 

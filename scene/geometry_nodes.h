@@ -31,6 +31,10 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style = {});
 /// The same from a mesh of `surface` already made (solvers::tessellate or solvers::meshOnGrid).
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style = {});
+/// A shaded triangle mesh (per-vertex normals, counter-clockwise triangles): the faces of a surface
+/// node without its iso-lines, or a curve network's mesh.
+SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3d>& normals,
+                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style = {});
 
 /// The same looks drawn by Coin's own NURBS nodes (SoNurbsCurve / SoNurbsSurface, tessellated by
 /// GLU at render time), for measuring the kernel-tessellation path against them (issue 5 §4).

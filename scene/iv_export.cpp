@@ -71,6 +71,10 @@ SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
             curves->addChild(node);
             break;
         case EntityKind::Constraint: continue;  // an editing aid, not geometry
+        case EntityKind::Mesh:
+            node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
+            surfaces->addChild(node);
+            break;
         case EntityKind::Plane: {
             node = new SoSeparator;
             auto* placement = new SoTransform;

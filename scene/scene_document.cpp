@@ -145,6 +145,7 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         if (!(c.recipe.angleDegrees > 0.0 && c.recipe.angleDegrees <= 360.0)) throw io::InputError(at + ".angle: must be in (0, 360]");
     }
     if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
+    if (c.recipe.mode == "gordon") c.recipe.uCurves = io::integerFromJson(io::member(*it, "u_curves", at), at + ".u_curves", 2, n - 2);
     if (const auto g = it->find("tangents"); g != it->end()) {
         // G1 fill: {"curve": boundary index, "surface": id of a surface made before this one}.
         if (!g->is_array() || c.recipe.mode != "fill") throw io::InputError(at + ".tangents: an array, for a fill only");
@@ -225,6 +226,24 @@ SceneDocument documentFromJson(const json& j)
         doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
         checkExtent(doc.surfaces.back().points(), path);
         doc.surfaceIds.push_back(id);
+    }
+    const json& meshes = optionalArray(j, "meshes");
+    for (size_t i = 0; i < meshes.size(); ++i) {
+        const std::string path = "meshes[" + std::to_string(i) + "]";
+        if (!meshes[i].is_object()) throw io::InputError(path + ": must be an object");
+        SceneDocument::MeshSpec spec;
+        spec.id = entityId(meshes[i], path, planeIds);
+        const json& curves = io::member(meshes[i], "curves", path);
+        if (!curves.is_array() || curves.empty()) throw io::InputError(path + ".curves: expected a loop of curve ids");
+        for (size_t k = 0; k < curves.size(); ++k) {
+            const std::string field = path + ".curves[" + std::to_string(k) + "]";
+            const int id = io::integerFromJson(curves[k], field, 1, 1 << 30);
+            if (std::find(doc.curveIds.begin(), doc.curveIds.end(), id) == doc.curveIds.end())
+                throw io::InputError(field + ": no curve has id " + std::to_string(id));
+            if (spec.id != 0 && id >= spec.id) throw io::InputError(field + ": must be smaller than the mesh's id");
+            spec.curves.push_back(id);
+        }
+        doc.meshes.push_back(std::move(spec));
     }
     const json& constraints = optionalArray(j, "constraints");
     for (size_t i = 0; i < constraints.size(); ++i) {

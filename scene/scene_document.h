@@ -62,6 +62,13 @@ struct SceneDocument {
         double u = 0.0;
     };
     std::vector<ConstraintSpec> constraints;
+    /// Curve-network meshes: {"id", "curves": [curve ids of one closed loop, in order]}; the mesh
+    /// itself is rebuilt from the curves on opening.
+    struct MeshSpec {
+        int id = 0;
+        std::vector<int> curves;
+    };
+    std::vector<MeshSpec> meshes;
 };
 
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every

@@ -38,6 +38,7 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
         if (e.kind == scene::EntityKind::Surface) {
             add(e, e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id));
         }
+        if (e.kind == scene::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
         if (e.kind == scene::EntityKind::Constraint) {
             add(e, tr("Constraint %1 (%2 on curve %3)").arg(id).arg(QString::fromStdString(e.constraintType)).arg(e.inputs.front()));
         }

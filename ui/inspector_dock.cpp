@@ -94,6 +94,12 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
             if (k && k->kind == scene::EntityKind::Constraint)
                 s << tr("Constraint %1: %2 at u = %3").arg(d).arg(QString::fromStdString(k->constraintType)).arg(k->parameter, 0, 'g', 5) << "\n";
         }
+    } else if (e->kind == scene::EntityKind::Mesh) {
+        QStringList curves;
+        for (scene::EntityId c : e->inputs) curves << QString::number(c);
+        s << tr("Curve network loop: curves %1").arg(curves.join(QStringLiteral(", "))) << "\n";
+        s << tr("Vertices: %1, triangles: %2").arg(e->mesh->vertices.size()).arg(e->mesh->triangles.size()) << "\n";
+        if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
     } else if (e->kind == scene::EntityKind::Constraint) {
         s << tr("Keeps the %1 of curve %2 at u = %3 while it is pulled").arg(QString::fromStdString(e->constraintType == "position" ? "point" : "tangent"))
                  .arg(e->inputs.front()).arg(e->parameter, 0, 'g', 6) << "\n";

@@ -199,6 +199,8 @@ void MainWindow::createActions()
     surfaceAction("mode.loft", tr("Loft / skin"), tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
     surfaceAction("mode.boundaryRotation", tr("Boundary rot."), tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
     surfaceAction("mode.railRotation", tr("Rail rot."), tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
+    surfaceAction("mode.gordon", tr("Gordon"), tr("Gordon s&urface through a grid of curves"), QStringLiteral("U"), "gordon");
+    surfaceAction("mode.network", tr("Network mesh"), tr("&Mesh a closed loop of curves"), QStringLiteral("M"), "network");
     QAction* g1 = make(modeMenu, "surface.fillTangent", tr("Fill &tangent to the surfaces its boundaries come from"),
                        QKeySequence(QStringLiteral("T")), [this](bool on) { document_->setFillTangent(on); });
     g1->setCheckable(true);
@@ -222,6 +224,7 @@ void MainWindow::createDocks()
                                  action(QStringLiteral("mode.revolve")), action(QStringLiteral("mode.extrude")),
                                  action(QStringLiteral("mode.sweep")), action(QStringLiteral("mode.loft")),
                                  action(QStringLiteral("mode.boundaryRotation")), action(QStringLiteral("mode.railRotation")),
+                                 action(QStringLiteral("mode.gordon")), action(QStringLiteral("mode.network")),
                                  action(QStringLiteral("plane.add"))},
                                 this);
     addDockWidget(Qt::LeftDockWidgetArea, modes);
@@ -310,6 +313,14 @@ QString MainWindow::surfaceGuidance() const
     const QString mode = QString::fromStdString(surfaceMode_);
     if (!document_->surfaceMessage().isEmpty()) return document_->surfaceMessage();
     if (surfaceMode_ == "extrude") return tr("Extrude: press on a curve and drag; the surface follows the pointer.");
+    if (surfaceMode_ == "gordon") {
+        return tr("Gordon: click two or more curves of one family, Enter, then the curves crossing them, Enter (%1 picked). Esc forgets.")
+            .arg(document_->surfaceInputs().size());
+    }
+    if (surfaceMode_ == "network") {
+        return tr("Network: click the curves of a closed loop in order (or one closed curve), then Enter (%1 picked). Esc forgets.")
+            .arg(document_->surfaceInputs().size());
+    }
     const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
     const int picked = static_cast<int>(document_->surfaceInputs().size());
     QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(scene::surfaceInputRole(surfaceMode_, picked)));

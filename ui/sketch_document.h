@@ -119,8 +119,9 @@ public:
     /// Adds `curve` to the picked inputs (a second pick of the last one takes it back).
     void pickSurfaceInput(scene::EntityId curve);
     const std::vector<scene::EntityId>& surfaceInputs() const { return surfaceInputs_; }
-    /// Builds the surface from the picked inputs (undoable); false with `surfaceMessage()` when
-    /// it cannot (too few inputs, the curves do not meet, ...). The picks are cleared either way.
+    /// Builds the surface (network: the mesh) from the picked inputs (undoable); false with
+    /// `surfaceMessage()` when it cannot (too few inputs, the curves do not meet, ...); the picks
+    /// are cleared then. Gordon: the first call closes the first family of curves instead.
     bool buildSurface();
     void cancelSurface();
     /// Fill: boundaries that other surfaces were built through are made G1 to those surfaces.
@@ -210,6 +211,7 @@ private:
     scene::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::string surfaceMode_;
     bool fillG1_ = true;
+    int gordonFirstFamily_ = -1;  ///< gordon: picks in the first family once Enter closed it
     std::vector<scene::EntityId> surfaceInputs_;
     QString surfaceMessage_;
     /// Extrude drag: the profile, the surface shown live (in the model, not yet on the undo

@@ -21,6 +21,7 @@ void SketchDocument::setSurfaceMode(const std::string& mode)
     if (mode == surfaceMode_) return;
     surfaceMode_ = mode;
     surfaceInputs_.clear();
+    gordonFirstFamily_ = -1;
     view_->setMarked({});
     setSurfaceMessage(QString());
 }
@@ -45,7 +46,7 @@ void SketchDocument::pickSurfaceInput(scene::EntityId curve)
     }
     view_->setMarked(surfaceInputs_);
     const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
-    if (static_cast<int>(surfaceInputs_.size()) >= count.max) {
+    if (static_cast<int>(surfaceInputs_.size()) >= count.max && surfaceMode_ != "gordon") {
         buildSurface();
         return;
     }
@@ -55,12 +56,37 @@ void SketchDocument::pickSurfaceInput(scene::EntityId curve)
 bool SketchDocument::buildSurface()
 {
     if (surfaceMode_.empty()) return false;
+    if (surfaceMode_ == "gordon" && gordonFirstFamily_ < 0) {
+        // The first Enter closes the first family; the curves picked next are the other one.
+        if (surfaceInputs_.size() < 2) {
+            setSurfaceMessage(tr("Gordon: pick at least two curves of the first family before Enter."));
+            return false;
+        }
+        gordonFirstFamily_ = static_cast<int>(surfaceInputs_.size());
+        setSurfaceMessage(tr("Gordon: %1 curves in the first family; now click the curves that cross them, then Enter.")
+                              .arg(gordonFirstFamily_));
+        return false;
+    }
     const std::vector<scene::EntityId> inputs = surfaceInputs_;
+    const int firstFamily = gordonFirstFamily_;
     surfaceInputs_.clear();
+    gordonFirstFamily_ = -1;
     view_->setMarked({});
     scheduler_->flush();
+    if (surfaceMode_ == "network") {
+        try {
+            undo_.push(new AddEntitiesCommand(*this, {model_.makeMesh(inputs)}, tr("Mesh a curve network loop")));
+        } catch (const std::exception& error) {
+            setSurfaceMessage(tr("No mesh: %1").arg(QString::fromStdString(error.what())));
+            return false;
+        }
+        const scene::Entity* made = model_.find(selection_);
+        setSurfaceMessage(tr("Mesh %1 made: %2 triangles.").arg(selection_).arg(made ? made->mesh->triangles.size() : 0));
+        return true;
+    }
     scene::SurfaceRecipe recipe;
     recipe.mode = surfaceMode_;
+    recipe.uCurves = firstFamily;
     if (surfaceMode_ == "fill" && fillG1_) recipe.tangents = adjacentSurfaces(inputs);
     try {
         scene::Entity surface = model_.makeSurface(inputs, recipe);
@@ -101,6 +127,7 @@ std::vector<scene::SurfaceRecipe::Tangent> SketchDocument::adjacentSurfaces(cons
 void SketchDocument::cancelSurface()
 {
     surfaceInputs_.clear();
+    gordonFirstFamily_ = -1;
     view_->setMarked({});
     setSurfaceMessage(QString());
 }

@@ -13,6 +13,7 @@ scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
         if (!e.fixedPoints.empty()) model.setFixedPoints(id, e.fixedPoints);
         return id;
     }
+    case scene::EntityKind::Mesh: return model.addMesh(e.inputs, e.id, true);
     case scene::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
     case scene::EntityKind::Surface:
         return e.recipe ? model.addSurface(e.curveInputs(), *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);

@@ -275,7 +275,35 @@ def pull_circle():
     s.write("pull_circle.json")
 
 
+def networks():
+    """Curve networks on the default plane (y = 95): a Gordon surface through two waves and two
+    strokes crossing them (U: one family, Enter, the other, Enter), and a mesh filling one closed
+    stroke (M: the loop, Enter)."""
+    s = Session()
+    s.action("mode.sketch")
+    # Kept left of the plane's jack (at its centre, (0, 95, 60)): a press there would drag the plane.
+    waves = [[r([-55 + 40 * i / 29, 95, z + 3 * math.sin(2 * math.pi * i / 29)]) for i in range(30)] for z in (70, 95)]
+    lines = [[r([x + 2 * math.sin(math.pi * i / 29), 95, 105 - 43 * i / 29]) for i in range(30)] for x in (-50, -25)]
+    for stroke in waves + lines:
+        s.stroke(stroke)
+    loop = circle([30, 95, 45], [1, 0, 0], [0, 0, 1], 15, 48)
+    s.stroke(loop)
+    s.action("mode.gordon")
+    for stroke in waves:
+        s.click(stroke[12])
+    s.key("Return")
+    for stroke in lines:
+        s.click(stroke[20])
+    s.key("Return")
+    s.action("mode.network")
+    s.click(loop[10])
+    s.key("Return")
+    s.action("mode.view")
+    s.write("networks.json")
+
+
 if __name__ == "__main__":
+    networks()
     pull_circle()
     pin_pull()
     extrude()

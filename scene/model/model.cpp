@@ -1,5 +1,6 @@
 #include "scene/model/model.h"
 
+#include "solvers/surfaces/gordon.h"
 #include "solvers/surfaces/surface_modes.h"
 
 #include <algorithm>
@@ -16,6 +17,7 @@ const char* kindName(EntityKind kind)
     case EntityKind::Curve: return "curve";
     case EntityKind::Surface: return "surface";
     case EntityKind::Constraint: return "constraint";
+    case EntityKind::Mesh: return "mesh";
     }
     return "?";
 }
@@ -163,6 +165,59 @@ EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRec
     return insert(std::move(e), id, true);
 }
 
+Entity Model::makeMesh(const std::vector<EntityId>& curves) const
+{
+    if (curves.empty()) throw std::invalid_argument("a mesh needs a loop of curves");
+    for (EntityId c : curves) {
+        const Entity* e = find(c);
+        if (!e || e->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(c) + " is not a curve");
+    }
+    Entity e;
+    e.kind = EntityKind::Mesh;
+    e.inputs = curves;
+    try {
+        buildMesh(e);
+    } catch (const std::exception& error) {
+        throw std::invalid_argument(error.what());
+    }
+    return e;
+}
+
+EntityId Model::addMesh(const std::vector<EntityId>& curves, EntityId id, bool keepOnFailure)
+{
+    Entity e;
+    try {
+        e = makeMesh(curves);
+    } catch (const std::invalid_argument& error) {
+        // A document or an undo restores a mesh whose curves may no longer close: keep it, empty,
+        // with the reason, so that nothing else of the document is lost (its curves must exist).
+        if (!keepOnFailure || curves.empty() || std::any_of(curves.begin(), curves.end(), [this](EntityId c) {
+                const Entity* k = find(c);
+                return !k || k->kind != EntityKind::Curve;
+            })) {
+            throw;
+        }
+        e.kind = EntityKind::Mesh;
+        e.inputs = curves;
+        e.mesh = solvers::surfaces::NetworkMesh{};
+        e.buildError = error.what();
+    }
+    return insert(std::move(e), id, true);
+}
+
+void Model::buildMesh(Entity& e) const
+{
+    std::vector<solvers::Curve3d> curves;
+    std::vector<int> loop;
+    for (EntityId input : e.inputs) {
+        loop.push_back(static_cast<int>(curves.size()));
+        curves.push_back(*entities_.at(input).world);
+    }
+    e.mesh = solvers::surfaces::meshNetwork(curves, {loop});
+    e.buildError.clear();
+    ++e.shapeVersion;
+}
+
 EntityId Model::addConstraint(EntityId curve, const std::string& type, double u, EntityId id)
 {
     const Entity* c = find(curve);
@@ -209,6 +264,18 @@ void Model::buildSurface(Entity& e) const
     for (EntityId input : e.inputs) {
         const Entity& in = entities_.at(input);
         if (in.kind == EntityKind::Curve) curves.push_back(*in.world);
+    }
+    if (r.mode == "gordon") {
+        // A grid-like network (seed 004 §4, The NURBS Book §10.5): the first `uCurves` inputs are
+        // one family, the rest the other; every curve of one meets every curve of the other.
+        const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
+        const surf::GordonResult g = surf::gordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
+        e.surface = g.surface;
+        e.maxDeviation = g.maxGap;
+        e.maxTangentAngle = -1.0;
+        e.buildError.clear();
+        ++e.shapeVersion;
+        return;
     }
     surf::SurfaceOptions options;
     options.tolerance = r.tolerance;
@@ -285,6 +352,14 @@ void Model::recompute(Entity& e)
             // Mid-drag the curves may pass through a configuration the mode cannot build (a fill
             // whose boundaries no longer meet): keep the last good surface and say why.
             e.buildError = error.what();
+        }
+        return;
+    }
+    if (e.kind == EntityKind::Mesh) {
+        try {
+            buildMesh(e);
+        } catch (const std::exception& error) {
+            e.buildError = error.what();  // the curves pulled apart mid-drag: keep the last mesh
         }
         return;
     }

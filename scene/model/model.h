@@ -11,6 +11,7 @@
 #include "scene/model/plane_frame.h"
 #include "scene/model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/surfaces/network_mesh.h"
 
 #include <cstdint>
 #include <functional>
@@ -25,7 +26,8 @@ namespace sculptline::scene {
 using EntityId = std::uint32_t;  ///< 0 is "none"
 
 /// Constraint: a condition kept on a curve at a parameter while the curve is pulled (thesis §6.1).
-enum class EntityKind { Plane, Curve, Surface, Constraint };
+/// Mesh: a closed loop of curves filled by a triangle mesh (seed 004 §4, curve networks).
+enum class EntityKind { Plane, Curve, Surface, Constraint, Mesh };
 const char* kindName(EntityKind kind);
 
 struct Entity {
@@ -45,11 +47,13 @@ struct Entity {
     /// Surface: how it is built from its input curves (`inputs`, in the mode's order); absent = a
     /// static surface as read from a document.
     std::optional<SurfaceRecipe> recipe;
-    /// Surface: why the last rebuild failed (the curves no longer meet, ...), empty when it
+    /// Surface, mesh: why the last rebuild failed (the curves no longer meet, ...), empty when it
     /// succeeded; the last good surface is kept meanwhile.
     std::string buildError;
     /// Surface: the deviation an approximating mode reached (model units); negative for exact modes.
     double maxDeviation = -1.0;
+    /// Mesh: the triangulated loop of its input curves (in loop order), rebuilt with them.
+    std::optional<solvers::surfaces::NetworkMesh> mesh;
     /// Surface: a G1 fill's largest angle (degrees) between its normals and those of the surfaces
     /// it is tangent to, across those boundaries; negative otherwise.
     double maxTangentAngle = -1.0;
@@ -106,6 +110,14 @@ public:
     /// The surface entity `addSurface(curves, recipe)` would add (built, id 0), without adding it.
     /// @throws std::invalid_argument as addSurface does.
     Entity makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// Adds a mesh filling the closed loop of `curves` (chained end to end, in this order; one
+    /// closed curve is a loop too), rebuilt whenever one of them changes. `keepOnFailure`: when
+    /// they make no loop, add it empty with buildError set (documents, undo) instead of throwing.
+    /// @throws std::invalid_argument when an input is not a curve or the curves make no loop.
+    EntityId addMesh(const std::vector<EntityId>& curves, EntityId id = 0, bool keepOnFailure = false);
+    /// The mesh entity addMesh(curves) would add (built, id 0), without adding it.
+    /// @throws std::invalid_argument as addMesh does.
+    Entity makeMesh(const std::vector<EntityId>& curves) const;
     /// Replaces a built surface's recipe (an extrusion following the pointer): marks it dirty.
     void setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe);
 
@@ -153,6 +165,8 @@ private:
     void checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
     /// A surface entity over `curves` with `recipe`, checked but not built yet.
     Entity unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// Builds a mesh entity's mesh from its curves. @throws on failure.
+    void buildMesh(Entity& entity) const;
     /// Builds a surface entity's surface from its recipe and inputs. @throws on failure.
     void buildSurface(Entity& entity) const;
     void markDirty(EntityId id);

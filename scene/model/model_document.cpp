@@ -22,7 +22,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface, Constructed, Constraint };
+    enum class Kind { Plane, Curve, Surface, Constructed, Constraint, Mesh };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -35,6 +35,10 @@ void populateModel(const SceneDocument& doc, Model& model)
         const int id = i < doc.surfaceIds.size() ? doc.surfaceIds[i] : 0;
         if (id != 0) byId[id] = {Kind::Surface, i};
         else unnumbered.push_back({Kind::Surface, i});
+    }
+    for (size_t i = 0; i < doc.meshes.size(); ++i) {
+        if (doc.meshes[i].id != 0) byId[doc.meshes[i].id] = {Kind::Mesh, i};
+        else unnumbered.push_back({Kind::Mesh, i});
     }
     for (size_t i = 0; i < doc.constraints.size(); ++i) {
         if (doc.constraints[i].id != 0) byId[doc.constraints[i].id] = {Kind::Constraint, i};
@@ -54,6 +58,11 @@ void populateModel(const SceneDocument& doc, Model& model)
             break;
         }
         case Kind::Surface: model.addSurface(doc.surfaces[i], id); break;
+        case Kind::Mesh: {
+            const std::vector<EntityId> curves(doc.meshes[i].curves.begin(), doc.meshes[i].curves.end());
+            model.addMesh(curves, id, true);
+            break;
+        }
         case Kind::Constraint: {
             const SceneDocument::ConstraintSpec& c = doc.constraints[i];
             model.addConstraint(static_cast<EntityId>(c.curve), c.type, c.u, id);
@@ -76,7 +85,8 @@ void populateModel(const SceneDocument& doc, Model& model)
 
 json modelToJson(const Model& model, const GridSpec& grid)
 {
-    json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array();
+    json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array(),
+         meshes = json::array();
     for (const auto& [id, e] : model.entities()) {
         switch (e.kind) {
         case EntityKind::Plane:
@@ -99,6 +109,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
             curves.push_back(std::move(c));
             break;
         }
+        case EntityKind::Mesh: meshes.push_back({{"id", id}, {"curves", e.inputs}}); break;
         case EntityKind::Constraint:
             constraints.push_back({{"id", id}, {"curve", e.inputs.front()}, {"type", e.constraintType}, {"u", e.parameter}});
             break;
@@ -115,6 +126,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 if (e.recipe->mode == "revolve") c["angle"] = e.recipe->angleDegrees;
                 if (e.recipe->mode == "extrude") c["direction"] = io::toJson(e.recipe->direction);
                 if (e.recipe->tolerance > 0.0) c["tolerance"] = e.recipe->tolerance;
+                if (e.recipe->mode == "gordon") c["u_curves"] = e.recipe->uCurves;
                 s["construction"] = std::move(c);
             }
             surfaces.push_back(std::move(s));
@@ -127,7 +139,8 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 {"planes", planes},
                 {"curves", curves},
                 {"surfaces", surfaces},
-                {"constraints", constraints}};
+                {"constraints", constraints},
+                {"meshes", meshes}};
 }
 
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path)

@@ -176,6 +176,7 @@ void ModelView::entityAdded(const Entity& e)
     }
     case EntityKind::Curve: addCurveNode(e); break;
     case EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
+    case EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
     case EntityKind::Constraint: {
         // A pin at C(u), in world coordinates: it moves with the curve's updates.
         auto* node = new SoSeparator;
@@ -231,7 +232,7 @@ void ModelView::entityRemoved(const Entity& e)
     const auto it = nodes_.find(e.id);
     if (it == nodes_.end()) return;
     SoGroup* parent = e.kind == EntityKind::Plane        ? planeCurves_
-                      : e.kind == EntityKind::Surface    ? surfaces_
+                      : e.kind == EntityKind::Surface || e.kind == EntityKind::Mesh ? surfaces_
                       : e.kind == EntityKind::Constraint ? static_cast<SoGroup*>(constraints_)
                       : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
                                                       : curves_;
@@ -252,6 +253,10 @@ void ModelView::entityUpdated(const Entity& e)
     // update is one transform write.
     if (e.kind == EntityKind::Constraint) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
     if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
+    if (e.kind == EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
+        SoSeparator* old = nodes_.at(e.id);
+        surfaces_->replaceChild(surfaces_->findChild(old), makeMeshEntityNode(e));
+    }
     if (e.kind == EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
         // A built surface follows its curves: re-tessellated once per update that rebuilt it.
         SoSeparator* old = nodes_.at(e.id);
@@ -260,6 +265,16 @@ void ModelView::entityUpdated(const Entity& e)
     if (e.kind != EntityKind::Plane) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
+}
+
+SoSeparator* ModelView::makeMeshEntityNode(const Entity& e)
+{
+    SoSeparator* node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
+    ++nodeBuilds_;
+    node->setName(nodeName("Mesh", e.id).c_str());
+    nodes_[e.id] = node;
+    builtShape_[e.id] = e.shapeVersion;
+    return node;
 }
 
 int ModelView::refineSurfaces()

@@ -68,6 +68,8 @@ private:
     /// A surface's node, named and registered (nodes_, builtShape_). `reuseGrid`: evaluate on the
     /// last adaptive grid when the surface's domain is unchanged (a live rebuild).
     SoSeparator* makeSurfaceEntityNode(const Entity& entity, bool reuseGrid = false);
+    /// A curve network mesh's node, named and registered.
+    SoSeparator* makeMeshEntityNode(const Entity& entity);
 
     /// The parameter grid a surface was last tessellated on.
     struct SurfaceGrid {

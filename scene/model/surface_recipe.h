@@ -13,7 +13,7 @@ namespace sculptline::scene {
 
 struct SurfaceRecipe {
     /// A mode name of solvers/surfaces (fill, revolve, extrude, sweep, loft, boundary-rotation,
-    /// rail-rotation).
+    /// rail-rotation, gordon).
     std::string mode;
     /// revolve: sweep angle in degrees, (0, 360].
     double angleDegrees = 360.0;
@@ -30,6 +30,8 @@ struct SurfaceRecipe {
         std::uint32_t surface = 0;
     };
     std::vector<Tangent> tangents;
+    /// gordon: how many of the curve inputs (the first ones) are the u family; the rest are v.
+    int uCurves = 0;
 };
 
 /// Input curves each mode takes, in order: [min, max]. Revolve's last input is its axis (a line

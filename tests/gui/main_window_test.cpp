@@ -89,7 +89,7 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
 
     // The surface modes each have an action with a hot key, and tell what to pick
     for (const char* mode : {"mode.fill", "mode.revolve", "mode.extrude", "mode.sweep", "mode.loft", "mode.boundaryRotation",
-                             "mode.railRotation"}) {
+                             "mode.railRotation", "mode.gordon", "mode.network", "surface.fillTangent"}) {
         QAction* a = window.action(QString::fromLatin1(mode));
         ASSERT_NE(a, nullptr) << mode;
         EXPECT_FALSE(a->shortcut().isEmpty()) << mode;

@@ -280,6 +280,72 @@ TEST(SurfaceEntity, AFillTangentToALoftFollowsItAndIsSaved)
     EXPECT_EQ(reopened.find(smooth)->surface->points(), model.find(smooth)->surface->points());
 }
 
+TEST(MeshEntity, ANetworkLoopIsMeshedFollowsItsPlaneAndIsSaved)
+{
+    // Given a closed loop of three curves on a plane (seed 004 §4's curve network)
+    Model model;
+    const EntityId plane = model.addPlane(verticalFrame(Eigen::Vector3d(0, 0, 50)));
+    const EntityId c1 = model.addCurve(plane, cubic({{-30, -20, 0}, {-10, -25, 0}, {10, -25, 0}, {30, -20, 0}}));
+    const EntityId c2 = model.addCurve(plane, cubic({{30, -20, 0}, {35, 0, 0}, {20, 20, 0}, {0, 30, 0}}));
+    const EntityId c3 = model.addCurve(plane, cubic({{0, 30, 0}, {-20, 20, 0}, {-35, 0, 0}, {-30, -20, 0}}));
+    // When it is meshed
+    const EntityId mesh = model.addMesh({c1, c2, c3});
+    const Entity* m = model.find(mesh);
+    ASSERT_TRUE(m->mesh);
+    EXPECT_GT(m->mesh->triangles.size(), 10u);
+    // Then its boundary vertices lie on the curves, and it moves with the plane
+    const auto onCurves = [&](const Model& md, EntityId id) {
+        const Entity* e = md.find(id);
+        double worst = 0.0;
+        for (int i = 0; i < e->mesh->boundaryVertexCount; ++i) {
+            double best = 1e300;
+            for (EntityId c : e->inputs) best = std::min(best, solvers::projectToCurve(*md.find(c)->world, e->mesh->vertices[i]).distance);
+            worst = std::max(worst, best);
+        }
+        return worst;
+    };
+    EXPECT_LT(onCurves(model, mesh), kTolerance);
+    model.setPlaneFrame(plane, verticalFrame(Eigen::Vector3d(40, 10, 20)));
+    model.update();
+    EXPECT_EQ(model.find(mesh)->recomputations, 1);
+    EXPECT_LT(onCurves(model, mesh), kTolerance);
+    // And a saved and reopened model rebuilds the same mesh
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    ASSERT_NE(reopened.find(mesh), nullptr);
+    EXPECT_EQ(reopened.find(mesh)->mesh->vertices, model.find(mesh)->mesh->vertices);
+    // And curves that make no loop are refused, adding nothing
+    const size_t count = model.entities().size();
+    EXPECT_THROW(model.addMesh({c1, c2}), std::invalid_argument);
+    EXPECT_THROW(model.addMesh({plane}), std::invalid_argument);
+    EXPECT_EQ(model.entities().size(), count);
+}
+
+TEST(SurfaceEntity, AGordonSurfaceInterpolatesBothFamiliesAndIsSaved)
+{
+    // Given two u-curves and two v-curves that cross (a grid-like network on a saddle)
+    Model model;
+    const EntityId u0 = model.addCurve(0, cubic({{0, 0, 0}, {10, 0, 5}, {20, 0, 5}, {30, 0, 0}}));
+    const EntityId u1 = model.addCurve(0, cubic({{0, 30, 0}, {10, 30, 5}, {20, 30, 5}, {30, 30, 0}}));
+    const EntityId v0 = model.addCurve(0, cubic({{0, 0, 0}, {0, 10, -5}, {0, 20, -5}, {0, 30, 0}}));
+    const EntityId v1 = model.addCurve(0, cubic({{30, 0, 0}, {30, 10, -5}, {30, 20, -5}, {30, 30, 0}}));
+    SurfaceRecipe recipe;
+    recipe.mode = "gordon";
+    recipe.uCurves = 2;
+    // When the Gordon surface is built
+    const EntityId g = model.addSurface({u0, u1, v0, v1}, recipe);
+    // Then it meets all four curves (to the reported gap), and reopens the same
+    const Entity* e = model.find(g);
+    for (EntityId c : {u0, u1, v0, v1}) EXPECT_LT(curveToSurface(*model.find(c)->world, *e->surface), e->maxDeviation + kTolerance) << c;
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    EXPECT_EQ(reopened.find(g)->recipe->uCurves, 2);
+    EXPECT_EQ(reopened.find(g)->surface->points(), e->surface->points());
+    // And one family of one curve is refused
+    recipe.uCurves = 1;
+    EXPECT_THROW(model.addSurface({u0, u1, v0, v1}, recipe), std::invalid_argument);
+}
+
 TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
 {
     const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"id": 5, "construction": {"mode": "loft", "curves": [1, 2]}}]})");

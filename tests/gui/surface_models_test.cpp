@@ -283,6 +283,57 @@ TEST(SurfaceModels, ARationalCircleCanBePulledAndOversketched)
     }
 }
 
+TEST(SurfaceModels, CurveNetworksGiveAGordonSurfaceAndAMesh)
+{
+    // networks.json: two waves and two strokes crossing them made a Gordon surface (two families
+    // of two), and one closed stroke a network mesh (data/sessions/make_models.py)
+    const scene::Model model = readModel("networks.json");
+    EXPECT_EQ(modes(model), (std::map<std::string, int>{{"gordon", 1}, {"static", 1}}));  // static: the default scene's
+    for (const scene::Entity* s : surfaces(model)) {
+        if (!s->recipe) continue;
+        EXPECT_EQ(s->recipe->uCurves, 2);
+        // The curves are trimmed to their outermost crossings (solvers/surfaces/gordon.h), so with
+        // two curves per family the patch's four edges run along them: every edge point lies on
+        // one of the four curves, to the gap the construction reports
+        const solvers::Surface3d& f = *s->surface;
+        for (int k = 0; k <= 20; ++k) {
+            const double t = k / 20.0;
+            const double u = f.domainStart(solvers::Direction::U) + t * (f.domainEnd(solvers::Direction::U) - f.domainStart(solvers::Direction::U));
+            const double v = f.domainStart(solvers::Direction::V) + t * (f.domainEnd(solvers::Direction::V) - f.domainStart(solvers::Direction::V));
+            for (const Eigen::Vector3d& edge : {f.evaluate(u, f.domainStart(solvers::Direction::V)), f.evaluate(u, f.domainEnd(solvers::Direction::V)),
+                                                f.evaluate(f.domainStart(solvers::Direction::U), v), f.evaluate(f.domainEnd(solvers::Direction::U), v)}) {
+                double nearest = 1e300;
+                for (scene::EntityId c : s->inputs) nearest = std::min(nearest, solvers::projectToCurve(*model.find(c)->world, edge).distance);
+                EXPECT_LT(nearest, s->maxDeviation + kExact) << k;
+            }
+        }
+    }
+    const scene::Entity* mesh = nullptr;
+    for (const auto& [id, e] : model.entities()) {
+        if (e.kind == scene::EntityKind::Mesh) mesh = &e;
+    }
+    ASSERT_NE(mesh, nullptr);
+    ASSERT_EQ(mesh->inputs.size(), 1u);
+    EXPECT_TRUE(mesh->buildError.empty());
+    EXPECT_GT(mesh->mesh->triangles.size(), 20u);
+    // Its boundary lies on the closed curve; the exported file carries it as a shape
+    const solvers::Curve3d& loop = *model.find(mesh->inputs.front())->world;
+    for (int i = 0; i < mesh->mesh->boundaryVertexCount; ++i) {
+        EXPECT_LT(solvers::projectToCurve(loop, mesh->mesh->vertices[static_cast<size_t>(i)]).distance, kExact) << i;
+    }
+    SoDB::init();
+    SoInput in;
+    ASSERT_TRUE(in.openFile(file("networks.iv").c_str()));
+    SoSeparator* root = SoDB::readAll(&in);
+    ASSERT_NE(root, nullptr);
+    root->ref();
+    SoSearchAction search;
+    search.setName(SbName(("mesh" + std::to_string(mesh->id)).c_str()));
+    search.apply(root);
+    EXPECT_NE(search.getPath(), nullptr);
+    root->unref();
+}
+
 TEST(SurfaceModels, SavedModelsReopenToTheSameSurfaces)
 {
     // The bottle reopened and saved again (gui_replay_bottle_reopen) has the same surfaces
