@@ -6,6 +6,7 @@
 #include "scene/model/model_document.h"
 #include "scene/scene_document.h"
 #include "solvers/bspline/projection.h"
+#include "surface_test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -50,17 +51,7 @@ struct Scene {
     }
 };
 
-/// Largest distance from samples of `curve` to `surface` (the defining curve is met when ~0).
-double curveToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
-{
-    const solvers::SurfaceProjector projector(surface);
-    double worst = 0.0;
-    for (int k = 0; k <= 20; ++k) {
-        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 20.0;
-        worst = std::max(worst, projector.project(curve.evaluate(u)).distance);
-    }
-    return worst;
-}
+using guitest::curveToSurface;
 
 TEST(SurfaceEntity, ARevolvedSurfaceFollowsItsPlaneAndOnlyItIsRebuilt)
 {

@@ -8,6 +8,7 @@
 #include "scene/model/model_document.h"
 #include "scene/scene_document.h"
 #include "solvers/bspline/projection.h"
+#include "surface_test_support.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -63,17 +64,7 @@ std::vector<const scene::Entity*> surfaces(const scene::Model& model)
     return out;
 }
 
-/// Largest distance from 41 samples of `curve` to `surface`.
-double curveToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
-{
-    const solvers::SurfaceProjector projector(surface);
-    double worst = 0.0;
-    for (int k = 0; k <= 40; ++k) {
-        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 40.0;
-        worst = std::max(worst, projector.project(curve.evaluate(u)).distance);
-    }
-    return worst;
-}
+using guitest::curveToSurface;
 
 /// Every defining curve of every surface lies on it: exactly for exact modes, within the reported
 /// deviation (plus the curve's own sampling) for approximating ones.
@@ -90,15 +81,22 @@ void expectCurvesMet(const scene::Model& model, const scene::Entity& s)
     }
 }
 
-/// The exported .iv read back with Coin: each surface's vertices lie on the saved surface.
-void expectExportMatches(const std::string& iv, const scene::Model& model)
+/// An exported .iv read back with Coin (ref()ed; null when it cannot be read).
+SoSeparator* readIv(const std::string& iv)
 {
     SoDB::init();
     SoInput in;
-    ASSERT_TRUE(in.openFile(file(iv).c_str())) << iv;
+    if (!in.openFile(file(iv).c_str())) return nullptr;
     SoSeparator* root = SoDB::readAll(&in);
+    if (root) root->ref();
+    return root;
+}
+
+/// The exported .iv read back with Coin: each surface's vertices lie on the saved surface.
+void expectExportMatches(const std::string& iv, const scene::Model& model)
+{
+    SoSeparator* root = readIv(iv);
     ASSERT_NE(root, nullptr) << iv;
-    root->ref();
     const auto all = surfaces(model);
     for (const scene::Entity* s : all) {
         SoSearchAction search;
@@ -321,12 +319,8 @@ TEST(SurfaceModels, CurveNetworksGiveAGordonSurfaceAndAMesh)
     for (int i = 0; i < mesh->mesh->boundaryVertexCount; ++i) {
         EXPECT_LT(solvers::projectToCurve(loop, mesh->mesh->vertices[static_cast<size_t>(i)]).distance, kExact) << i;
     }
-    SoDB::init();
-    SoInput in;
-    ASSERT_TRUE(in.openFile(file("networks.iv").c_str()));
-    SoSeparator* root = SoDB::readAll(&in);
+    SoSeparator* root = readIv("networks.iv");
     ASSERT_NE(root, nullptr);
-    root->ref();
     SoSearchAction search;
     search.setName(SbName(("mesh" + std::to_string(mesh->id)).c_str()));
     search.apply(root);
