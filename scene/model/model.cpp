@@ -265,37 +265,35 @@ void Model::buildSurface(Entity& e) const
         const Entity& in = entities_.at(input);
         if (in.kind == EntityKind::Curve) curves.push_back(*in.world);
     }
-    if (r.mode == "gordon") {
-        // A grid-like network (seed 004 §4, The NURBS Book §10.5): the first `uCurves` inputs are
-        // one family, the rest the other; every curve of one meets every curve of the other.
-        const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
-        const surf::GordonResult g = surf::gordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
-        e.surface = g.surface;
-        e.maxDeviation = g.maxGap;
-        e.maxTangentAngle = -1.0;
-        e.buildError.clear();
-        ++e.shapeVersion;
-        return;
-    }
-    surf::SurfaceOptions options;
-    options.tolerance = r.tolerance;
-    for (const SurfaceRecipe::Tangent& t : r.tangents) options.fillTangents.push_back({t.boundary, *entities_.at(t.surface).surface});
-    const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
-    if (mode == surf::SurfaceMode::Revolve) {
-        // The axis is the line the designer drew: the last input's ends, start to end.
-        const solvers::Curve3d axis = curves.back();
-        curves.pop_back();
-        options.axisPoint = axis.evaluate(axis.domainStart());
-        options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
-        options.angleDegrees = r.angleDegrees;
-    }
-    if (mode == surf::SurfaceMode::Extrude) {
-        const Entity& profile = entities_.at(e.inputs.front());
-        options.direction = profile.plane() != 0 ? Eigen::Vector3d(entities_.at(profile.plane()).frame.rotation * r.direction)
-                                                 : r.direction;
-    }
-    surf::SurfaceBuild build = surf::buildSurface(mode, curves, options);
-    e.surface = std::move(build.surface);
+    const surf::SurfaceBuild build = [&]() -> surf::SurfaceBuild {
+        if (r.mode == "gordon") {
+            // A grid-like network (seed 004 §4, The NURBS Book §10.5): the first `uCurves` inputs are
+            // one family, the rest the other; every curve of one meets every curve of the other. The
+            // reported deviation is the largest gap between crossing curves.
+            const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
+            const surf::GordonResult g = surf::gordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
+            return {g.surface, g.maxGap};
+        }
+        surf::SurfaceOptions options;
+        options.tolerance = r.tolerance;
+        for (const SurfaceRecipe::Tangent& t : r.tangents) options.fillTangents.push_back({t.boundary, *entities_.at(t.surface).surface});
+        const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
+        if (mode == surf::SurfaceMode::Revolve) {
+            // The axis is the line the designer drew: the last input's ends, start to end.
+            const solvers::Curve3d axis = curves.back();
+            curves.pop_back();
+            options.axisPoint = axis.evaluate(axis.domainStart());
+            options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
+            options.angleDegrees = r.angleDegrees;
+        }
+        if (mode == surf::SurfaceMode::Extrude) {
+            const Entity& profile = entities_.at(e.inputs.front());
+            options.direction = profile.plane() != 0 ? Eigen::Vector3d(entities_.at(profile.plane()).frame.rotation * r.direction)
+                                                     : r.direction;
+        }
+        return surf::buildSurface(mode, curves, options);
+    }();
+    e.surface = build.surface;
     e.maxDeviation = build.maxDeviation;
     e.maxTangentAngle = build.maxTangentAngleDegrees;
     e.buildError.clear();

@@ -1,13 +1,15 @@
 // Surfaces as model entities (issue 6 §2): a surface built from curves by a recipe is rebuilt when
 // one of its curves changes (a plane drag, a new shape), only the affected surfaces are rebuilt,
 // once per update, a build that fails mid-drag keeps the last good surface, and documents save
-// the construction so reopening rebuilds the same surface. Headless (no Coin, no window).
+// the construction so reopening rebuilds the same surface. Headless (Coin nodes, no window).
 #include "scene/model/model.h"
 #include "scene/model/model_document.h"
+#include "scene/model/model_view.h"
 #include "scene/scene_document.h"
 #include "solvers/bspline/projection.h"
 #include "surface_test_support.h"
 
+#include <Inventor/SoDB.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -79,6 +81,24 @@ TEST(SurfaceEntity, ARevolvedSurfaceFollowsItsPlaneAndOnlyItIsRebuilt)
     // And the surface on the other plane was not touched
     EXPECT_EQ(s.model.find(s.rotated)->recomputations, 0);
     EXPECT_EQ(s.model.find(s.rotated)->shapeVersion, rotatedBuilds);
+}
+
+TEST(SurfaceEntity, TheViewRedrawsALiveRebuildOnItsLastGridAndAdaptsItWhenAsked)
+{
+    // Given the two surfaces drawn by the Coin view
+    SoDB::init();
+    Scene s;
+    ModelView view(s.model);
+    const int builds = view.nodeBuilds();
+    // When plane 1 moves (a drag event): only the revolve is rebuilt, on its last adaptive grid
+    s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(5, 0, 60)));
+    s.model.update();
+    EXPECT_EQ(view.nodeBuilds(), builds + 1);
+    EXPECT_EQ(view.gridReuses(), 1);
+    // Then, when the drag ends, that one surface is tessellated adaptively again, and only once
+    EXPECT_EQ(view.refineSurfaces(), 1);
+    EXPECT_EQ(view.refineSurfaces(), 0);
+    EXPECT_EQ(view.gridReuses(), 1);
 }
 
 TEST(SurfaceEntity, ANewCurveShapeRebuildsItsSurfacesOnce)

@@ -212,11 +212,6 @@ TEST(SurfaceTessellation, MeshOnAGivenGridMatchesTheKernelIncludingRationalAndCo
                 EXPECT_LT((mesh.normals[i] - s.normal(u[r], v[c])).norm(), kUnit) << r << "," << c;
             }
         }
-        // And the adaptive tessellation is this mesh on its own grid
-        const GridMesh adaptive = tessellate(s);
-        const GridMesh again = meshOnGrid(s, adaptive.u, adaptive.v);
-        EXPECT_EQ(again.vertices, adaptive.vertices);
-        EXPECT_EQ(again.triangles, adaptive.triangles);
     }
 }
 
