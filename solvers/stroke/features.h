@@ -14,6 +14,9 @@ namespace sculptline::solvers::stroke {
 struct FeatureOptions {
     int k = 2;                     ///< minimum neighbourhood in samples (thesis: 2)
     double neighbourhood = 0.015;  ///< minimum one-sided neighbourhood length / stroke extent (strokeExtent)
+    /// Angles are taken between the means of the samples within this chord distance (/ extent) of
+    /// each point, not between single samples (computeFeatures says why); 0 = single samples.
+    double denoise = 0.005;
 };
 
 struct StrokeFeatures {
