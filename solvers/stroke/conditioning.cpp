@@ -6,32 +6,71 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <type_traits>
 
 namespace sculptline::solvers::stroke {
 namespace {
 
 std::string at(const std::string& field, size_t i) { return "stroke." + field + "[" + std::to_string(i) + "]"; }
 
-void validate(const Stroke& s)
+using Vec3 = Eigen::Vector3d;
+
+// Throws for the first non-finite point (nothing if a sum of finite points merely overflowed).
+void checkFinitePoints(const std::vector<Vec3>& points)
 {
-    if (s.points.empty()) throw GeometryError("stroke.points: empty stroke, at least two distinct points are needed");
-    for (size_t i = 0; i < s.points.size(); ++i) {
-        if (!s.points[i].allFinite()) throw GeometryError(at("points", i) + ": not a finite number");
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (!points[i].allFinite()) throw GeometryError(at("points", i) + ": not a finite number");
     }
+}
+
+// A sum is finite only if every term is (infinities and NaN propagate), so a finite sum proves
+// every value finite in one add per value; a non-finite sum is followed by the exact scan.
+double sequentialSum(const std::vector<double>& v)
+{
+    double sum = 0.0;
+    for (double x : v) sum += x;
+    return sum;
+}
+
+// Validation of times and pressure (the points are checked by the caller, in one pass with the
+// centroid sum); the same messages in the same order as a field-by-field check.
+void validateTimesAndPressure(const Stroke& s)
+{
     if (!s.times.empty() && s.times.size() != s.points.size()) {
         throw GeometryError("stroke.times: " + std::to_string(s.times.size()) + " values for " +
                             std::to_string(s.points.size()) + " points");
     }
-    for (size_t i = 0; i < s.times.size(); ++i) {
-        if (!std::isfinite(s.times[i])) throw GeometryError(at("times", i) + ": not a finite number");
+    if (!std::isfinite(sequentialSum(s.times))) {
+        for (size_t i = 0; i < s.times.size(); ++i) {
+            if (!std::isfinite(s.times[i])) throw GeometryError(at("times", i) + ": not a finite number");
+        }
     }
     if (!s.pressure.empty() && s.pressure.size() != s.points.size()) {
         throw GeometryError("stroke.pressure: " + std::to_string(s.pressure.size()) + " values for " +
                             std::to_string(s.points.size()) + " points");
     }
-    for (size_t i = 0; i < s.pressure.size(); ++i) {
-        if (!std::isfinite(s.pressure[i])) throw GeometryError(at("pressure", i) + ": not a finite number");
+    if (!std::isfinite(sequentialSum(s.pressure))) {
+        for (size_t i = 0; i < s.pressure.size(); ++i) {
+            if (!std::isfinite(s.pressure[i])) throw GeometryError(at("pressure", i) + ": not a finite number");
+        }
     }
+}
+
+// Sum of the points in order (the centroid numerator of strokeExtent).
+Vec3 pointSum(const std::vector<Vec3>& points)
+{
+    Vec3 sum = Vec3::Zero();
+    for (const auto& p : points) sum += p;
+    return sum;
+}
+
+// Largest squared distance from the centroid (strokeExtent = 2 sqrt of it).
+double maxSquaredRadius(const std::vector<Vec3>& points, const Vec3& centroid)
+{
+    double r = 0.0;
+    for (const auto& p : points) r = std::max(r, (p - centroid).squaredNorm());
+    return r;
 }
 
 // Closest pair between the first and the last `window` points, searched with a stride that keeps
@@ -42,7 +81,13 @@ struct EndPair {
     double gap = std::numeric_limits<double>::infinity();
 };
 
-EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
+// The head [0, headEnd] and the tail [tailStart, n - 1] searched by closestEnds.
+struct EndWindows {
+    int headEnd = 0;
+    int tailStart = 0;
+};
+
+EndWindows endWindows(const ConditionedStroke& cs, double windowLength)
 {
     const int n = cs.size();
     const double total = cs.arc.back();
@@ -50,6 +95,33 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
     while (headEnd + 1 < n && cs.arc[headEnd + 1] <= windowLength) ++headEnd;
     int tailStart = n - 1;
     while (tailStart - 1 > headEnd && total - cs.arc[tailStart - 1] <= windowLength) --tailStart;
+    return {headEnd, tailStart};
+}
+
+// A lower bound on the distance of any head point to any tail point: the gap between the two
+// windows' bounding boxes.
+double windowGapBound(const ConditionedStroke& cs, const EndWindows& w)
+{
+    Eigen::Array3d hlo = cs.points[0].array(), hhi = hlo;
+    for (int i = 1; i <= w.headEnd; ++i) {
+        hlo = hlo.min(cs.points[i].array());
+        hhi = hhi.max(cs.points[i].array());
+    }
+    const int n = cs.size();
+    Eigen::Array3d tlo = cs.points[n - 1].array(), thi = tlo;
+    for (int j = w.tailStart; j < n - 1; ++j) {
+        tlo = tlo.min(cs.points[j].array());
+        thi = thi.max(cs.points[j].array());
+    }
+    const Eigen::Array3d d = (tlo - hhi).max(hlo - thi).max(0.0);
+    return d.matrix().norm();
+}
+
+EndPair closestEnds(const ConditionedStroke& cs, const EndWindows& w)
+{
+    const int n = cs.size();
+    const int headEnd = w.headEnd;
+    const int tailStart = w.tailStart;
     // Coarse pass with at most ~64 x 64 pairs, then the exact pairs around the coarse winner.
     const int strideH = std::max(1, (headEnd + 1) / 64);
     const int strideT = std::max(1, (n - tailStart) / 64);
@@ -69,46 +141,82 @@ EndPair closestEnds(const ConditionedStroke& cs, double windowLength)
 }
 
 // Consecutive samples within minDist of a cluster's first sample become their centroid (mean
-// time, middle source index); the first and last samples are kept exactly.
-void clusterSamples(const std::vector<Eigen::Vector3d>& pts, const std::vector<double>& times,
-                    const std::vector<int>& sources, double minDist, ConditionedStroke& cs)
+// time, middle source index); the first and last samples are kept exactly. The input is
+// pts[0..count), with the time and the raw index of sample k given by timeAt(k) and sourceAt(k).
+// Fills cs.points, cs.time, cs.source and cs.arc (the cumulative chord lengths, as updateArcLength).
+template <typename TimeAt, typename SourceAt>
+void clusterSamples(const Vec3* pts, int count, TimeAt timeAt, SourceAt sourceAt, double minDist, int maxSamples,
+                    ConditionedStroke& cs)
 {
-    cs.points.clear();
-    cs.time.clear();
-    cs.source.clear();
-    const double minDist2 = minDist * minDist;
-    const int last = static_cast<int>(pts.size()) - 1;
-    auto keep = [&](int i) {
-        cs.points.push_back(pts[i]);
-        cs.source.push_back(sources[i]);
-        cs.time.push_back(times[i]);
+    // Output buffers without the per-element initialization and growth checks of push_back: room
+    // for every sample of an ordinary stroke (a very dense one is thinned to ~maxSamples).
+    size_t cap = static_cast<size_t>(std::max(2, std::min(count + 1, 2 * std::max(16, std::min(maxSamples, 1 << 24)))));
+    std::unique_ptr<double[]> time(new double[cap]);
+    std::unique_ptr<double[]> arc(new double[cap]);
+    std::unique_ptr<int[]> source(new int[cap]);
+    cs.points.resize(cap);  // Eigen vectors: not initialized
+    Vec3* out = cs.points.data();
+    size_t k = 0;
+    auto emit = [&](const Vec3& p, int src, double t) {
+        if (k == cap) {
+            const size_t grown = 2 * cap;
+            auto regrow = [&](auto& buf) {
+                using T = std::remove_reference_t<decltype(buf[0])>;
+                std::unique_ptr<T[]> b(new T[grown]);
+                std::copy(buf.get(), buf.get() + cap, b.get());
+                buf = std::move(b);
+            };
+            regrow(time);
+            regrow(arc);
+            regrow(source);
+            cs.points.resize(grown);
+            out = cs.points.data();
+            cap = grown;
+        }
+        out[k] = p;
+        source[k] = src;
+        time[k] = t;
+        arc[k] = k == 0 ? 0.0 : arc[k - 1] + (out[k] - out[k - 1]).norm();
+        ++k;
     };
+    const double minDist2 = minDist * minDist;
+    const int last = count - 1;
     for (int i = 0; i <= last;) {
         int j = i + 1;
         while (j <= last && (pts[j] - pts[i]).squaredNorm() < minDist2) ++j;
         if (i == 0) {
-            keep(0);
+            emit(pts[0], sourceAt(0), timeAt(0));
         } else if (j > last) {
-            keep(last);
+            emit(pts[last], sourceAt(last), timeAt(last));
+        } else if (j == i + 1) {
+            // A cluster of one: its mean is the sample itself (0 + x, as the sum below starts at
+            // zero: -0 becomes +0; the division by one is exact).
+            const Vec3& p = pts[i];
+            emit(Vec3(0.0 + p.x(), 0.0 + p.y(), 0.0 + p.z()), sourceAt(i), 0.0 + timeAt(i));
         } else {
-            Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+            Vec3 sum = Vec3::Zero();
             double t = 0.0;
-            for (int k = i; k < j; ++k) {
-                sum += pts[k];
-                t += times[k];
+            for (int m = i; m < j; ++m) {
+                sum += pts[m];
+                t += timeAt(m);
             }
-            cs.points.push_back(sum / (j - i));
-            cs.source.push_back(sources[i + (j - 1 - i) / 2]);
-            cs.time.push_back(t / (j - i));
+            emit(sum / (j - i), sourceAt(i + (j - 1 - i) / 2), t / (j - i));
         }
         i = j;
     }
     // The start cluster held every sample: keep the last one too when it is a distinct point.
-    if (last > 0 && cs.source.back() != sources[last] && (pts[last] - pts[0]).squaredNorm() > 0.0) keep(last);
+    if (last > 0 && source[k - 1] != sourceAt(last) && (pts[last] - pts[0]).squaredNorm() > 0.0) {
+        emit(pts[last], sourceAt(last), timeAt(last));
+    }
+    cs.points.resize(k);
+    cs.time.assign(time.get(), time.get() + k);
+    cs.source.assign(source.get(), source.get() + k);
+    cs.arc.assign(arc.get(), arc.get() + k);
 }
 
 // [first, last] without the light-pressure hooks at the ends (ConditioningOptions::hookPressure).
-std::pair<int, int> withoutHooks(const Stroke& s, const ConditioningOptions& o)
+// `pathLength` is the sum of all sample-to-sample distances if already known (negative if not).
+std::pair<int, int> withoutHooks(const Stroke& s, const ConditioningOptions& o, double pathLength)
 {
     const int last = static_cast<int>(s.points.size()) - 1;
     if (s.pressure.empty() || last < 4) return {0, last};
@@ -116,8 +224,11 @@ std::pair<int, int> withoutHooks(const Stroke& s, const ConditioningOptions& o)
     std::nth_element(sorted.begin(), sorted.begin() + last / 2, sorted.end());
     const double light = o.hookPressure * sorted[last / 2];
     if (!(light > 0.0)) return {0, last};
-    double total = 0.0;
-    for (int i = 1; i <= last; ++i) total += (s.points[i] - s.points[i - 1]).norm();
+    double total = pathLength;
+    if (total < 0.0) {
+        total = 0.0;
+        for (int i = 1; i <= last; ++i) total += (s.points[i] - s.points[i - 1]).norm();
+    }
     const double maxLength = o.maxHookLength * total;
     int a = 0, b = last;
     double len = 0.0;
@@ -133,7 +244,8 @@ std::pair<int, int> withoutHooks(const Stroke& s, const ConditioningOptions& o)
 template <typename T>
 void keepRange(std::vector<T>& v, int first, int last)
 {
-    v = std::vector<T>(v.begin() + first, v.begin() + last + 1);
+    v.erase(v.begin() + last + 1, v.end());
+    v.erase(v.begin(), v.begin() + first);
 }
 
 }  // namespace
@@ -147,28 +259,61 @@ double ConditionedStroke::length() const
 double strokeExtent(const std::vector<Eigen::Vector3d>& points)
 {
     if (points.size() < 2) return 0.0;
-    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-    for (const auto& p : points) centroid += p;
-    centroid /= static_cast<double>(points.size());
-    double r = 0.0;
-    for (const auto& p : points) r = std::max(r, (p - centroid).squaredNorm());
-    return 2.0 * std::sqrt(r);
+    const Vec3 centroid = pointSum(points) / static_cast<double>(points.size());
+    return 2.0 * std::sqrt(maxSquaredRadius(points, centroid));
 }
 
 void updateArcLength(ConditionedStroke& cs)
 {
-    cs.arc.assign(cs.points.size(), 0.0);
-    for (size_t i = 1; i < cs.points.size(); ++i) cs.arc[i] = cs.arc[i - 1] + (cs.points[i] - cs.points[i - 1]).norm();
+    const size_t n = cs.points.size();
+    cs.arc.resize(n);
+    if (n == 0) return;
+    double* arc = cs.arc.data();
+    const Vec3* p = cs.points.data();
+    double acc = 0.0;
+    arc[0] = 0.0;
+    for (size_t i = 1; i < n; ++i) arc[i] = acc = acc + (p[i] - p[i - 1]).norm();
 }
 
 ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOptions& options)
 {
-    validate(stroke);
+    return detail::conditionStrokeWithTolerance(stroke, options, 0.0);
+}
+
+ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, const ConditioningOptions& options,
+                                                       double tolerance)
+{
+    const std::vector<Vec3>& points = stroke.points;
+    const size_t count = points.size();
+    if (points.empty()) throw GeometryError("stroke.points: empty stroke, at least two distinct points are needed");
+    // Validation and the centroid in one pass: a sum of points is finite only if every point is.
+    const Vec3 sum = pointSum(points);
+    if (!sum.allFinite()) checkFinitePoints(points);
+    validateTimesAndPressure(stroke);
+
+    // The strided path length (see below); with stride 1 it is summed in the extent's pass.
+    const size_t stride = std::max<size_t>(1, count / std::max(1, options.maxSamples));
+    double rawLength = 0.0;
+    double r = 0.0;  // largest squared distance from the centroid
+    const Vec3 centroid = sum / static_cast<double>(count);
+    if (count >= 2) {
+        if (stride == 1) {
+            r = std::max(0.0, (points[0] - centroid).squaredNorm());
+            for (size_t i = 1; i < count; ++i) {
+                r = std::max(r, (points[i] - centroid).squaredNorm());
+                rawLength += (points[i] - points[i - 1]).norm();
+            }
+        } else {
+            r = maxSquaredRadius(points, centroid);
+            for (size_t i = stride; i < count; i += stride) rawLength += (points[i] - points[i - stride]).norm();
+        }
+    }
+
     ConditionedStroke cs;
-    cs.extent = strokeExtent(stroke.points);
+    cs.extent = count < 2 ? 0.0 : 2.0 * std::sqrt(r);
     // Exact duplicates differ by rounding only; a stroke whose extent is below this fraction of its
     // largest coordinate has no shape to fit.
-    const double scale = stroke.points[0].cwiseAbs().maxCoeff() + cs.extent;
+    const double scale = points[0].cwiseAbs().maxCoeff() + cs.extent;
     if (!(cs.extent > 1e-12 * scale) || cs.extent == 0.0) {
         throw GeometryError("stroke.points: all points coincide, a curve needs at least two distinct points");
     }
@@ -193,63 +338,72 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
     // The path length is taken over every stride-th sample: summed over every sample of a very
     // dense stroke, jitter would inflate it many times over (1e6 samples with 0.1 noise: 150x),
     // and the merge distance with it.
-    const size_t stride = std::max<size_t>(1, stroke.points.size() / std::max(1, options.maxSamples));
-    double rawLength = 0.0;
-    for (size_t i = stride; i < stroke.points.size(); i += stride) {
-        rawLength += (stroke.points[i] - stroke.points[i - stride]).norm();
-    }
-    double minDist = std::max(options.minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
-    const auto [first, last] = withoutHooks(stroke, options);
+    // fitStroke's absolute tolerance caps the merge distance (see the header); the extent is the same
+    // number fitStroke would get from strokeExtent.
+    const double minSpacing =
+        tolerance > 0.0 ? std::min(options.minSpacing, 0.4 * tolerance / cs.extent) : options.minSpacing;
+    double minDist = std::max(minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
+    const auto [first, last] = withoutHooks(stroke, options, stride == 1 ? rawLength : -1.0);
     if (first > 0) cs.warnings.push_back("stroke: light-pressure hook trimmed at the start (samples 0.." + std::to_string(first - 1) + ")");
-    if (last + 1 < static_cast<int>(stroke.points.size())) {
+    if (last + 1 < static_cast<int>(count)) {
         cs.warnings.push_back("stroke: light-pressure hook trimmed at the end (samples " + std::to_string(last + 1) + ".." +
-                              std::to_string(stroke.points.size() - 1) + ")");
+                              std::to_string(count - 1) + ")");
     }
-    std::vector<double> times(static_cast<size_t>(last - first + 1));
-    std::vector<int> sources(times.size());
-    for (int i = first; i <= last; ++i) {
-        times[i - first] = timed ? stroke.times[i] : static_cast<double>(i);
-        sources[i - first] = i;
-    }
-    if (first == 0 && last + 1 == static_cast<int>(stroke.points.size())) {
-        clusterSamples(stroke.points, times, sources, minDist, cs);
-    } else {
-        clusterSamples(std::vector<Eigen::Vector3d>(stroke.points.begin() + first, stroke.points.begin() + last + 1), times,
-                       sources, minDist, cs);
+    {
+        const int kept = last - first + 1;
+        auto sourceAt = [first = first](int k) { return first + k; };
+        if (timed) {
+            const double* t = stroke.times.data() + first;
+            clusterSamples(points.data() + first, kept, [t](int k) { return t[k]; }, sourceAt, minDist, options.maxSamples, cs);
+        } else {
+            clusterSamples(points.data() + first, kept, [first = first](int k) { return static_cast<double>(first + k); },
+                           sourceAt, minDist, options.maxSamples, cs);
+        }
     }
     // The strided length can still be inflated by jitter; the clusters are averaged and nearly
     // noise-free, so a second pass over them with their own length honours the bound.
     for (int pass = 0; pass < 2 && cs.size() > options.maxSamples; ++pass) {
-        updateArcLength(cs);
         minDist = std::max(minDist, cs.arc.back() / options.maxSamples);
-        const std::vector<Eigen::Vector3d> pts = cs.points;
-        const std::vector<double> ts = cs.time;
-        const std::vector<int> src = cs.source;
-        clusterSamples(pts, ts, src, minDist, cs);
+        std::vector<Vec3> pts;
+        std::vector<double> ts;
+        std::vector<int> src;
+        pts.swap(cs.points);
+        ts.swap(cs.time);
+        src.swap(cs.source);
+        clusterSamples(pts.data(), static_cast<int>(pts.size()), [&ts](int k) { return ts[k]; },
+                       [&src](int k) { return src[k]; }, minDist, options.maxSamples, cs);
     }
     if (cs.points.size() < 2) {
         throw GeometryError("stroke.points: fewer than two distinct points after removing duplicates");
     }
-    updateArcLength(cs);
+    // cs.arc is up to date (clusterSamples).
 
     // Closure: the two ends meet (or overshoot) within closeGap of the length. An overshoot past
     // the start is trimmed at the closest pair of points between the head and the tail.
     if (options.closure != Closure::Open && cs.size() >= 6) {
         const double total = cs.arc.back();
-        const EndPair c = closestEnds(cs, 0.15 * total);
-        // A loop must also enclose area: a stroke drawn out and straight back has close ends but is
-        // a doubled line. Vector area of the closed polygon (half the sum of p_i x p_{i+1}) against
-        // minLoopArea * L^2 (a circle has L^2 / 4 pi = 0.08 L^2, a 10:1 rectangle 0.02 L^2).
-        Eigen::Vector3d area = Eigen::Vector3d::Zero();
-        for (int i = c.head; i < c.tail; ++i) area += cs.points[i].cross(cs.points[i + 1]);
-        area += cs.points[c.tail].cross(cs.points[c.head]);
-        const bool encloses = 0.5 * area.norm() >= options.minLoopArea * total * total;
         // The gap is measured against the perimeter of the stroke's extent (pi * extent, a circle's)
         // when that is shorter than the stroke: a long stroke (a spiral, a scribble) passing near
         // its start is not a loop because its length dwarfs the miss.
         const double perimeter = std::min(total, 3.14159265358979 * cs.extent);
-        const bool meets =
-            encloses && c.gap <= options.closeGap * perimeter && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
+        const double maxGap = options.closeGap * perimeter;
+        const EndWindows w = endWindows(cs, 0.15 * total);
+        // Ends whose windows lie farther apart than maxGap cannot meet, whatever the closest pair
+        // (the margin covers the rounding of the bound): the search below is then skipped.
+        const bool farApart = windowGapBound(cs, w) > maxGap * (1.0 + 1e-9) + 1e-300;
+        bool meets = false;
+        EndPair c;
+        if (!farApart) {
+            c = closestEnds(cs, w);
+            // A loop must also enclose area: a stroke drawn out and straight back has close ends but is
+            // a doubled line. Vector area of the closed polygon (half the sum of p_i x p_{i+1}) against
+            // minLoopArea * L^2 (a circle has L^2 / 4 pi = 0.08 L^2, a 10:1 rectangle 0.02 L^2).
+            Vec3 area = Vec3::Zero();
+            for (int i = c.head; i < c.tail; ++i) area += cs.points[i].cross(cs.points[i + 1]);
+            area += cs.points[c.tail].cross(cs.points[c.head]);
+            const bool encloses = 0.5 * area.norm() >= options.minLoopArea * total * total;
+            meets = encloses && c.gap <= maxGap && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
+        }
         if (meets || options.closure == Closure::Closed) {
             cs.closed = true;
             const EndPair cut = meets ? c : EndPair{0, cs.size() - 1, 0.0};
@@ -281,18 +435,17 @@ void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixe
     std::vector<char> hold(n, 0);
     for (int f : fixed) hold[f] = 1;
     if (!cs.closed) hold[0] = hold[n - 1] = 1;
-    std::vector<Eigen::Vector3d> next(n);
+    Vec3* p = cs.points.data();
     for (int pass = 0; pass < passes; ++pass) {
-        for (int i = 0; i < n; ++i) {
-            if (hold[i]) {
-                next[i] = cs.points[i];
-                continue;
-            }
-            const int a = i == 0 ? n - 1 : i - 1;
-            const int b = i == n - 1 ? 0 : i + 1;
-            next[i] = (cs.points[a] + cs.points[i] + cs.points[b]) / 3.0;
+        // In place: `before` is the previous point's value before this pass, `start` the first's.
+        const Vec3 start = p[0];
+        Vec3 before = p[n - 1];
+        for (int i = 0; i < n - 1; ++i) {
+            const Vec3 here = p[i];
+            if (!hold[i]) p[i] = (before + here + p[i + 1]) / 3.0;
+            before = here;
         }
-        cs.points.swap(next);
+        if (!hold[n - 1]) p[n - 1] = (before + p[n - 1] + start) / 3.0;
     }
     updateArcLength(cs);
 }

@@ -24,6 +24,13 @@ void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixe
 /// Recomputes cs.arc from cs.points.
 void updateArcLength(ConditionedStroke& cs);
 
+namespace detail {
+/// conditionStroke for fitStroke with an absolute tolerance > 0 (0: plain conditionStroke): the same
+/// as conditionStroke with options.minSpacing lowered to min(minSpacing, 0.4 * tolerance / extent),
+/// without computing the extent a second time.
+ConditionedStroke conditionStrokeWithTolerance(const Stroke& stroke, const ConditioningOptions& options, double tolerance);
+}  // namespace detail
+
 /// The size every relative tolerance refers to: twice the largest distance from the centroid (0 for
 /// fewer than two points). Unlike a bounding-box diagonal it does not change when the stroke is
 /// rotated; for a segment it is its length, for a square its diagonal.

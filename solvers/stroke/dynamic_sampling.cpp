@@ -24,12 +24,13 @@ std::vector<int> dynamicThresholdSamples(const ConditionedStroke& cs, const Stro
     const double unit = std::max(cs.length() / std::max(1, rawCount - 1), o.minUnit * cs.extent);
 
     std::vector<int> out;
+    out.reserve(static_cast<size_t>(n));
     out.push_back(0);
     double since = 0.0;  // path length since the last sample taken
     for (int i = 1; i < n; ++i) {
         since += cs.arc[i] - cs.arc[i - 1];
-        const double m = samplingThreshold(f.speed[i], f.averageSpeed, unit, o);
-        if (forced[i] || since >= m) {
+        // The threshold matters only where no sample is forced.
+        if (forced[i] || since >= samplingThreshold(f.speed[i], f.averageSpeed, unit, o)) {
             // A forced sample (a corner, the end) replaces a sample taken just before it if the two
             // would be closer than one unit: the corner matters more than the regular sample.
             if (forced[i] && !forced[out.back()] && since < unit && out.size() > 1) out.pop_back();

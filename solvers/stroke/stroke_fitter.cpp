@@ -85,13 +85,10 @@ Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q)
 FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
 {
     FitResult res;
-    ConditioningOptions copt = options.conditioning;
-    // The extent is needed here only to relate an absolute tolerance to the merge distance.
-    const double extent = options.tolerance > 0.0 ? strokeExtent(stroke.points) : 0.0;
-    if (options.tolerance > 0.0 && extent > 0.0) {
-        copt.minSpacing = std::min(copt.minSpacing, 0.4 * options.tolerance / extent);
-    }
-    ConditionedStroke cs = conditionStroke(stroke, copt);
+    const ConditioningOptions& copt = options.conditioning;
+    // An absolute tolerance caps the merge distance at 0.4 * tolerance (minSpacing relative to the
+    // stroke's extent, which conditioning computes anyway).
+    ConditionedStroke cs = detail::conditionStrokeWithTolerance(stroke, copt, options.tolerance > 0.0 ? options.tolerance : 0.0);
     res.tolerance = options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * cs.extent;
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
