@@ -11,12 +11,10 @@ Which fit is compared. sculptline-cli fit has two knot-removal modes (SplineFitO
   default   after the error-driven insertion, only the knots of the last insertion round are tried
             for removal (KnotRemoval::LastRound). This is what `fit`, `recognize` and the GUI use:
             the 1,000-sample stroke fits within the 0.2 ms budget (bench BM_StrokeFit).
-  minimize  `"minimize_control_points": true`: every interior knot is tried for removal
-            (KnotRemoval::AllKnots), ~1.7x the fitting time (bench BM_StrokeFitFewest).
+  minimize  `"minimize_control_points": true`: every interior knot is tried for removal, cheapest
+            first (KnotRemoval::AllKnots), ~1.7x the fitting time (bench BM_StrokeFitFewest).
 Both are printed; the last column says whether ours needs no more control points than splprep.
-The default loses by one control point on a few strokes (see the table); the goal "no more than
-splprep" is asserted for the minimize mode, which exists for exactly this trade of time for
-control points.
+ctest runs both modes with --check: the goal "no more than splprep" holds for each.
 
 How. For each stroke: `sculptline-cli fit` with its default tolerance gives a curve; both curves are
 measured the same way, as the largest distance from a raw stroke sample to a dense polyline of the

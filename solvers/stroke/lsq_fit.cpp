@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sculptline::solvers::stroke {
 namespace {
@@ -36,28 +37,42 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
                 std::vector<double>& inserted)
 {
     const int spans = static_cast<int>(s.closed ? s.breaks.size() : s.breaks.size() - 1);
-    // Only the spans deviating most get a knot this round: a knot changes the fit of its
-    // neighbours too, and splitting every span above the tolerance at once overshoots.
-    tol = std::max(tol, share * *std::max_element(err.begin(), err.end()));
+    // Only the spans deviating most get knots this round: a knot changes the fit of its
+    // neighbours too, and splitting every span above the tolerance at once overshoots. The
+    // round's threshold is the tolerance plus a share of the worst excess over it.
+    const double target = tol;
+    const double threshold = tol + share * std::max(0.0, *std::max_element(err.begin(), err.end()) - tol);
     std::vector<double> wsum(spans, 0.0), wmax(spans, 0.0);
     for (size_t k = 0; k < u.size(); ++k) {
         const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
-        if (err[k] > tol) wsum[j] += err[k];
+        if (err[k] > threshold) wsum[j] += err[k];
         wmax[j] = std::max(wmax[j], err[k]);
     }
+    // How many pieces a span needs: a cubic least-squares error falls as h^4 with the span length
+    // h (de Boor, A Practical Guide to Splines, ch. XII), so a span deviating by E needs about
+    // (E / tol)^(1/4) pieces; at most kMaxPieces per round, for the estimate is rough.
+    constexpr int kMaxPieces = 4;
+    std::vector<int> pieces(spans, 0);
+    for (int j = 0; j < spans; ++j) {
+        if (wmax[j] > threshold)
+            pieces[j] = std::clamp(static_cast<int>(std::ceil(std::pow(wmax[j] / target, 0.25))), 2, kMaxPieces);
+    }
     std::vector<double> acc(spans, 0.0), newKnots;
-    std::vector<char> done(spans, 0);
+    std::vector<int> placed(spans, 0);
     for (size_t k = 0; k < u.size(); ++k) {
         const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
-        if (wmax[j] <= tol || done[j] || err[k] <= tol) continue;
+        if (pieces[j] == 0 || placed[j] + 1 >= pieces[j] || err[k] <= threshold) continue;
         acc[j] += err[k];
-        if (acc[j] < 0.5 * wsum[j]) continue;
-        done[j] = 1;
+        // Knots at the error-weighted quantiles 1/n .. (n-1)/n of the span's offending samples.
+        if (acc[j] < (placed[j] + 1.0) / pieces[j] * wsum[j]) continue;
+        ++placed[j];
         const double lo = s.breaks[j];
         const double hi = j + 1 < static_cast<int>(s.breaks.size()) ? s.breaks[j + 1] : 1.0;
         const double h = hi - lo;
         if (h < 1e-9) continue;  // spans below 1e-9 of the piece cannot be resolved in double precision
-        newKnots.push_back(std::clamp(s.wrap(u[k]), lo + 0.2 * h, hi - 0.2 * h));
+        const double knot = std::clamp(s.wrap(u[k]), lo + 0.2 * h, hi - 0.2 * h);
+        if (!newKnots.empty() && std::abs(newKnots.back() - knot) < 1e-9 * h) continue;
+        newKnots.push_back(knot);
     }
     s.breaks.insert(s.breaks.end(), newKnots.begin(), newKnots.end());
     std::sort(s.breaks.begin(), s.breaks.end());
@@ -65,24 +80,259 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     return static_cast<int>(newKnots.size());
 }
 
-// Max deviation over every point (foot-point distance) and every chord between neighbours.
+// Upper bounds on the speed |C'(u)| per span, from the power form C = a0 + a1 t + a2 t^2 + a3 t^3 on
+// t in [0, h]: |a1| + 2 |a2| h + 3 |a3| h^2.
+std::vector<double> speedBounds(const Spline& s)
+{
+    std::vector<double> L(static_cast<size_t>(s.spanCount()));
+    for (int j = 0; j < s.spanCount(); ++j) {
+        const double h = s.spanEnd(j) - s.breaks[j];
+        const auto& c = s.coef[j];
+        L[j] = c[1].norm() + h * (2.0 * c[2].norm() + 3.0 * h * c[3].norm());
+    }
+    return L;
+}
+
+// chordGap(s, X_i, X_next, mid) needs no evaluation when a bound already settles it. X_i lies on
+// the segment, so the gap is at most |C(mid) - X_i| <= |C(mid) - C(u_i)| + |C(u_i) - X_i|
+// <= L (mid - u_i) + e_i, with L bounding the speed between u_i and mid and e_i the distance
+// already measured at u_i (likewise from the other end; mid is the middle, so the two first terms
+// are equal). Spans other than the two ends' own are not covered by L: no bound then (infinity).
+struct ChordGapBound {
+    const Spline& s;
+    std::vector<double> L;
+    explicit ChordGapBound(const Spline& sp) : s(sp), L(speedBounds(sp)) {}
+    double operator()(int spanI, int spanNext, double halfStep, double eI, double eNext) const
+    {
+        const int spans = s.spanCount();
+        if (spanNext != spanI && spanNext != (spanI + 1) % spans) return std::numeric_limits<double>::infinity();
+        // (1 + 1e-12): the bound must stay above the evaluated gap despite rounding.
+        return (std::max(L[spanI], L[spanNext]) * halfStep + std::min(eI, eNext)) * (1.0 + 1e-12);
+    }
+};
+
+// Distance from C(u) to the segment [a, b] (chordGap without its quarter-segment threshold).
+double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
+{
+    const Vec3 c = s.point(u);
+    const Vec3 ab = b - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0.0 ? std::clamp((c - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    return (a + t * ab - c).norm();
+}
+
+// What a check of every point found on one spline: per point its foot parameter, an upper bound on
+// its distance to the curve point there and that parameter's span; per chord to the next point an
+// upper bound on the curve's distance from the chord at the middle parameter. The removal pass
+// checks a trial spline from these bounds where it differs little (checkTrial).
+struct PointCheck {
+    std::vector<double> cu, e, gap;
+    std::vector<int> span;
+    double worst = 0.0;
+    // Per span (when the points' spans do not decrease along the stroke, as on a fitted open
+    // curve): its points are first[i]..first[i+1]-1, the largest e and gap among them.
+    bool ordered = false;
+    std::vector<int> first;
+    std::vector<double> maxE, maxGap;
+
+    void summarize(int spans)
+    {
+        const int m = static_cast<int>(e.size());
+        ordered = std::is_sorted(span.begin(), span.end());
+        if (!ordered) return;
+        first.assign(static_cast<size_t>(spans) + 1, m);
+        maxE.assign(static_cast<size_t>(spans), 0.0);
+        maxGap.assign(static_cast<size_t>(spans), 0.0);
+        for (int i = m - 1; i >= 0; --i) first[span[i]] = i;
+        for (int i = spans - 1; i >= 0; --i) first[i] = std::min(first[i], first[i + 1]);
+        for (int i = 0; i < m; ++i) {
+            maxE[span[i]] = std::max(maxE[span[i]], e[i]);
+            if (i + 1 < m) maxGap[span[i]] = std::max(maxGap[span[i]], gap[i]);
+        }
+    }
+};
+
+// Max deviation over every point (foot-point distance) and every chord between neighbours; stops
+// early, returning a value above `bail`, once one exceeds `bail` (infinity: never). Fills `pc`
+// when given (open curves).
 double measureAll(const Spline& s, const SplineFitInput& in, const std::vector<int>& S, const std::vector<double>& u,
-                  double tol)
+                  double tol, double bail = std::numeric_limits<double>::infinity(), PointCheck* pc = nullptr)
 {
     const auto& X = *in.points;
     const int m = static_cast<int>(X.size());
-    std::vector<double> cu = checkParameters(in, S, u);
+    PointCheck local;
+    PointCheck& r = pc ? *pc : local;
+    r.cu = checkParameters(in, S, u);
+    r.e.assign(m, 0.0);
+    r.span.assign(m, 0);
+    r.gap.assign(m, std::numeric_limits<double>::infinity());
+    auto& cu = r.cu;
     double worst = 0.0;
     for (int i = 0; i < m; ++i) {
         const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
-        worst = std::max(worst, footDistance(s, X[i], cu[i], lo, hi, tol, &cu[i]));
+        r.e[i] = footDistance(s, X[i], cu[i], lo, hi, tol, &cu[i]);
+        r.span[i] = s.spanOf(s.wrap(cu[i]));
+        worst = std::max(worst, r.e[i]);
+        if (worst > bail) return worst;
     }
+    const ChordGapBound bound(s);
     for (int i = 0; i + 1 < m || (in.closed && i < m); ++i) {
         const int next = (i + 1) % m;
         const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
-        if (u1 > cu[i]) worst = std::max(worst, chordGap(s, X[i], X[next], 0.5 * (cu[i] + u1)));
+        if (!(u1 > cu[i])) continue;
+        const double b = bound(r.span[i], r.span[next], 0.5 * (u1 - cu[i]), r.e[i], r.e[next]);
+        const double quarter = 0.25 * (X[next] - X[i]).norm();
+        if (!pc && (b <= worst || b <= quarter)) continue;  // cannot raise the max
+        r.gap[i] = rawChordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
+        if (r.gap[i] > quarter) worst = std::max(worst, r.gap[i]);
+        if (worst > bail) return worst;
     }
+    r.worst = worst;
+    if (pc && !in.closed) r.summarize(s.spanCount());
     return worst;
+}
+
+// Bounds on |C_t(u) - C_s(u)| over each span of s, for t = s without its break j, refitted. On
+// every span of s both curves are single cubics: t's re-expanded about the span's start, the
+// difference's Taylor coefficients d_k give |d_0| + |d_1| h + |d_2| h^2 + |d_3| h^3. Away from the
+// break t has s's basis functions (a span depends on the breaks b_{i-2}..b_{i+3}), where the
+// largest move of the span's four control points is also a bound; the smaller one is kept.
+std::vector<double> spanChange(const Spline& s, const Spline& t, int j)
+{
+    const int spans = s.spanCount();
+    std::vector<double> delta(static_cast<size_t>(spans));
+    for (int i = 0; i < spans; ++i) {
+        const int k = i < j ? i : i - 1;  // t's span holding s's span i
+        const double d = s.breaks[i] - t.breaks[k], h = s.spanEnd(i) - s.breaks[i];
+        const auto& c = t.coef[k];
+        const auto& e = s.coef[i];
+        const Vec3 d0 = ((c[3] * d + c[2]) * d + c[1]) * d + c[0] - e[0];
+        const Vec3 d1 = (3.0 * c[3] * d + 2.0 * c[2]) * d + c[1] - e[1];
+        const Vec3 d2 = 3.0 * c[3] * d + c[2] - e[2];
+        const Vec3 d3 = c[3] - e[3];
+        double bound = d0.norm() + h * (d1.norm() + h * (d2.norm() + h * d3.norm()));
+        if (i < j - 3 || i > j + 2) {
+            double m2 = 0.0;
+            for (int q = 0; q <= kDegree; ++q) m2 = std::max(m2, (t.ctrl[k + q] - s.ctrl[i + q]).squaredNorm());
+            bound = std::min(bound, std::sqrt(m2));
+        }
+        delta[i] = bound * (1.0 + 1e-9) + 1e-12;  // rounding in the re-expansion must not undercut the bound
+    }
+    return delta;
+}
+
+// Whether t (s without its break j, refitted) is within tol at every point and chord, given pc,
+// the check of s; fills out, the check of t. pc's distances plus spanChange bound t's, so a span
+// whose largest distance and gap stay within tol after adding its bound passes as a whole, and in
+// the others only the points and chords whose bound exceeds tol are measured again, spans that
+// changed most first (a removal that fails, fails there). A trial costs what the removal changed,
+// not a pass over the stroke (apart from writing out, once a removal is kept).
+bool checkTrial(const Spline& s, const PointCheck& pc, const Spline& t, int j, const SplineFitInput& in, double tol,
+                PointCheck& out)
+{
+    const auto& X = *in.points;
+    const int m = static_cast<int>(X.size());
+    const int spans = s.spanCount();
+    constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+    const std::vector<double> delta = spanChange(s, t, j);
+    const auto tSpan = [&](int sSpan) { return sSpan < j ? sSpan : sSpan - 1; };  // t's span of s's span
+    const auto limit = [&](int i) { return std::max(tol, 0.25 * (X[i + 1] - X[i]).norm()); };
+    const auto gapDelta = [&](int i) { return std::max(delta[pc.span[i]], delta[pc.span[i + 1]]); };
+    struct Point {
+        int i;
+        double e, cu;
+    };
+    std::vector<Point> points;  // measured again on t
+    std::vector<std::pair<int, double>> gaps;
+    std::vector<char> redo(m, 0);
+    const auto remeasure = [&](int i) {
+        double foot = pc.cu[i];
+        const double e = footDistance(t, X[i], pc.cu[i], 0.0, 1.0, tol, &foot);
+        points.push_back({i, e, foot});
+        redo[i] = 1;
+        return e <= tol;
+    };
+    // Point ranges [begin, end) to look at point by point: the spans not passing on their bounds
+    // (with the chord arriving from the span before), most changed first; everything when the
+    // spans are not ordered along the stroke.
+    std::vector<std::pair<int, int>> ranges;
+    if (pc.ordered) {
+        std::vector<int> open;
+        for (int a = 0; a < spans; ++a) {
+            const double dNext = a + 1 < spans ? delta[a + 1] : 0.0;
+            const bool bounded = pc.maxE[a] + delta[a] <= tol && pc.maxGap[a] + std::max(delta[a], dNext) <= tol;
+            if (!bounded && pc.first[a] < pc.first[a + 1]) open.push_back(a);
+        }
+        std::sort(open.begin(), open.end(), [&](int a, int b) { return delta[a] > delta[b]; });
+        for (int a : open) ranges.emplace_back(std::max(0, pc.first[a] - 1), pc.first[a + 1]);
+    } else {
+        ranges.emplace_back(0, m);
+    }
+    for (const auto& [b, e] : ranges) {
+        for (int i = b; i < e; ++i) {
+            if (!redo[i] && pc.e[i] + delta[pc.span[i]] > tol && !remeasure(i)) return false;
+        }
+    }
+    std::sort(points.begin(), points.end(), [](const Point& a, const Point& b) { return a.i < b.i; });
+    const auto foot = [&](int i) {
+        if (!redo[i]) return pc.cu[i];
+        return std::lower_bound(points.begin(), points.end(), i, [](const Point& a, int k) { return a.i < k; })->cu;
+    };
+    for (const auto& [b, e] : ranges) {
+        for (int i = b; i < e && i + 1 < m; ++i) {
+            if (!redo[i] && !redo[i + 1] && pc.span[i + 1] - pc.span[i] <= 1 && pc.gap[i] + gapDelta(i) <= limit(i)) continue;
+            const double c0 = foot(i), c1 = foot(i + 1);
+            if (!(c1 > c0)) continue;
+            const double g = rawChordGap(t, X[i], X[i + 1], 0.5 * (c0 + c1));
+            if (g > limit(i)) return false;
+            gaps.emplace_back(i, g);
+        }
+    }
+    // Kept: t's check, from pc's values plus their bounds where nothing was measured again.
+    out.cu = pc.cu;
+    out.e.resize(m);
+    out.span.resize(m);
+    out.gap.resize(m);
+    for (int i = 0; i < m; ++i) {
+        out.e[i] = pc.e[i] + delta[pc.span[i]];
+        out.span[i] = tSpan(pc.span[i]);
+        out.gap[i] = i + 1 < m && pc.span[i + 1] - pc.span[i] <= 1 ? pc.gap[i] + gapDelta(i) : kUnbounded;
+    }
+    for (const Point& p : points) {
+        out.e[p.i] = p.e;
+        out.cu[p.i] = p.cu;
+        out.span[p.i] = t.spanOf(p.cu);
+        if (p.i > 0) out.gap[p.i - 1] = kUnbounded;
+        out.gap[p.i] = kUnbounded;
+    }
+    for (const auto& [i, g] : gaps) out.gap[i] = g;
+    out.worst = 0.0;
+    for (int i = 0; i < m; ++i) {
+        out.worst = std::max(out.worst, out.e[i]);
+        if (i + 1 < m && std::isfinite(out.gap[i]) && out.gap[i] > 0.25 * (X[i + 1] - X[i]).norm())
+            out.worst = std::max(out.worst, out.gap[i]);
+    }
+    out.summarize(t.spanCount());
+    return true;
+}
+
+// How far the control polygon must move to remove the simple interior break b_r of an open spline
+// without refitting: The NURBS Book A5.8 with p = 3 and one removal (the left and right estimates
+// of the middle control point P_{r+1} differ by this much; the curve moves by at most as much).
+// Breaks that come out cheap are the likeliest to survive the least-squares refit without them.
+double removalDistance(const Spline& s, int r)
+{
+    const KnotVector& U = s.knots;
+    const auto& P = s.ctrl;
+    const int i = r;  // first affected control point; the break is knot r + 3
+    const double t = U[r + 3];
+    const double alfi = (t - U[i]) / (U[i + 4] - U[i]);
+    const double alfj = (t - U[i + 2]) / (U[i + 6] - U[i + 2]);
+    if (!(alfi > 0.0) || !(alfj < 1.0)) return std::numeric_limits<double>::infinity();
+    const Vec3 left = (P[i] - (1.0 - alfi) * P[i - 1]) / alfi;
+    const Vec3 right = (P[i + 2] - alfj * P[i + 3]) / (1.0 - alfj);
+    const double alfm = (t - U[i + 1]) / (U[i + 5] - U[i + 1]);
+    return (P[i + 1] - (alfm * right + (1.0 - alfm) * left)).norm();
 }
 
 }  // namespace
@@ -147,6 +397,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     }
     std::vector<double> err(S.size());
     std::vector<double> lastInserted;
+    PointCheck checked;  // the last check of every point (of s when the loop ends converged)
+    const bool recordGaps = opt.removal == KnotRemoval::AllKnots && !in.closed;
     bool polished = false;
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
         solve(s, X, S, u, opt.fairing);
@@ -165,21 +417,30 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         // All samples fit (or no more knots help): verify every point, and add the worst offender of
         // each span to the samples so that the next solve sees it.
-        std::vector<double> cu = checkParameters(in, S, u);
+        checked.cu = checkParameters(in, S, u);
+        std::vector<double>& cu = checked.cu;
         const int spans = static_cast<int>(s.breaks.size());
         std::vector<int> offender(spans, -1);
         std::vector<double> offErr(spans, opt.tolerance);
         res.maxError = 0.0;
+        std::vector<double>& pointErr = checked.e;
+        std::vector<int>& pointSpan = checked.span;
+        pointErr.resize(m);
+        pointSpan.resize(m);
+        checked.gap.assign(m, std::numeric_limits<double>::infinity());
         for (int i = 0; i < m; ++i) {
             const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
             const double e = footDistance(s, X[i], cu[i], lo, hi, opt.tolerance, &cu[i]);
             res.maxError = std::max(res.maxError, e);
             const int j = s.spanOf(s.wrap(cu[i]));
+            pointErr[i] = e;
+            pointSpan[i] = j;
             if (e > offErr[j]) {
                 offErr[j] = e;
                 offender[j] = i;
             }
         }
+        const ChordGapBound gapBound(s);
         // The other direction (curve to data): between two consecutive points the curve must stay
         // near the chord joining them, or it loops where no sample holds it. The offender is the
         // neighbour not yet sampled.
@@ -187,7 +448,15 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             const int next = (i + 1) % m;
             const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
             if (!(u1 > cu[i])) continue;
-            const double e = chordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
+            // A gap within the bound can neither raise the max nor be an offender (offErr >= tol).
+            const double b = gapBound(pointSpan[i], pointSpan[next], 0.5 * (u1 - cu[i]), pointErr[i], pointErr[next]);
+            const double quarter = 0.25 * (X[next] - X[i]).norm();
+            const bool settled = b <= quarter || (b <= opt.tolerance && b <= res.maxError);
+            if (settled && !recordGaps) continue;
+            // (Recorded even so for the removal pass, which bounds its trials from it.)
+            checked.gap[i] = rawChordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
+            if (settled) continue;
+            const double e = checked.gap[i] > quarter ? checked.gap[i] : 0.0;
             res.maxError = std::max(res.maxError, e);
             const int j = s.spanOf(s.wrap(0.5 * (cu[i] + u1)));
             const int pick = std::binary_search(S.begin(), S.end(), next) ? i : next;
@@ -230,30 +499,72 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     if (res.iterations > opt.maxIterations) res.maxError = measureAll(s, in, S, u, opt.tolerance);
     // The last round of insertions may have overshot (a knot fixes its neighbours' spans too), and
     // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal),
-    // keeping a removal when the refit stays within tolerance at the samples and everywhere.
+    // keeping a removal when the refit stays within tolerance at every point and chord. Open
+    // curves rank the breaks by their knot-removal distance and check a trial from the bounds of
+    // the last accepted spline (checkTrial); closed curves try the last round's knots, each
+    // measured in full.
     if (opt.removal != KnotRemoval::None && res.maxError <= opt.tolerance) {
-        const std::vector<double> tryRemove =
-            opt.removal == KnotRemoval::AllKnots  // every break but the domain ends (closed: b_0)
-                ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end() - (in.closed ? 0 : 1))
-                : lastInserted;
-        for (double knot : tryRemove) {
-            Spline trial = s;
-            const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
-            if (it == trial.breaks.end()) continue;
-            trial.breaks.erase(it);
-            if (in.closed && trial.breaks.size() < 5) continue;  // the smallest periodic start
-            solve(trial, X, S, u, opt.fairing);
-            bool ok = true;
-            for (size_t k = 0; ok && k < S.size(); ++k) {
-                const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
-                const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
-                ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
+        if (!in.closed && opt.removal != KnotRemoval::LastRound) {
+            PointCheck pc = std::move(checked), trialCheck;
+            pc.worst = res.maxError;
+            if (res.iterations > opt.maxIterations) measureAll(s, in, S, u, opt.tolerance, std::numeric_limits<double>::infinity(), &pc);
+            else pc.summarize(s.spanCount());
+            bool removedAny = false;
+            std::vector<SpanSums> sums, trialSums;
+            spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
+            std::vector<double> tried;
+            bool removed = true;
+            while (removed) {
+                removed = false;
+                // Untried breaks, cheapest removal first (re-ranked after each removal).
+                std::vector<std::pair<double, int>> rank;
+                for (int r = 1; r + 1 < static_cast<int>(s.breaks.size()); ++r) {
+                    if (std::find(tried.begin(), tried.end(), s.breaks[r]) == tried.end())
+                        rank.emplace_back(removalDistance(s, r), r);
+                }
+                std::sort(rank.begin(), rank.end());
+                for (const auto& entry : rank) {
+                    const int r = entry.second;
+                    tried.push_back(s.breaks[r]);
+                    Spline trial = s;
+                    sumsWithoutBreak(trial, r, X, S, u, sums, trialSums);
+                    solveOpenFromSums(trial, X, S, trialSums, opt.fairing);
+                    if (!checkTrial(s, pc, trial, r, in, opt.tolerance, trialCheck)) continue;
+                    s = std::move(trial);
+                    std::swap(pc, trialCheck);
+                    std::swap(sums, trialSums);
+                    removed = removedAny = true;
+                    break;
+                }
             }
-            if (!ok) continue;
-            const double e = measureAll(trial, in, S, u, opt.tolerance);
-            if (e <= opt.tolerance) {
-                s = std::move(trial);
-                res.maxError = e;
+            // Report the measure every fit reports (the bounds above only decided); it cannot
+            // exceed the bounds unless its Newton steps missed a foot point the pass had found.
+            if (removedAny) {
+                const double e = measureAll(s, in, S, u, opt.tolerance);
+                res.maxError = e <= opt.tolerance ? e : pc.worst;
+            }
+        } else {
+            const std::vector<double> tryRemove =
+                opt.removal == KnotRemoval::AllKnots ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end()) : lastInserted;
+            for (double knot : tryRemove) {
+                Spline trial = s;
+                const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
+                if (it == trial.breaks.end()) continue;
+                trial.breaks.erase(it);
+                if (in.closed && trial.breaks.size() < 5) continue;  // the smallest periodic start
+                solve(trial, X, S, u, opt.fairing);
+                bool ok = true;
+                for (size_t k = 0; ok && k < S.size(); ++k) {
+                    const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
+                    const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+                    ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
+                }
+                if (!ok) continue;
+                const double e = measureAll(trial, in, S, u, opt.tolerance, opt.tolerance);
+                if (e <= opt.tolerance) {
+                    s = std::move(trial);
+                    res.maxError = e;
+                }
             }
         }
     }

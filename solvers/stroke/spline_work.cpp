@@ -167,37 +167,74 @@ double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
     return gap > 0.25 * std::sqrt(l2) ? gap : 0.0;
 }
 
-// Least squares with the fairing term; open curves keep P_0 = X_first and P_n = X_last fixed
-// (The NURBS Book eqs. 9.63-9.67: the fixed points move to the right-hand side).
-void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-               double fairing)
+void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+              int first, int last, std::vector<SpanSums>& sums)
+{
+    const int spans = s.spanCount();
+    if (static_cast<int>(sums.size()) < spans) sums.resize(spans);
+    for (int i = first; i <= last; ++i) sums[i] = SpanSums{};
+    // The interior samples (the end samples are the fixed P_0 and P_n) from span `first` on, in
+    // increasing parameter: walk the spans instead of searching for each.
+    const size_t kEnd = S.size() - 1;
+    size_t k = static_cast<size_t>(std::lower_bound(u.begin() + 1, u.begin() + static_cast<long>(kEnd), s.breaks[first]) - u.begin());
+    double basis[kDegree + 1], inv[6];
+    int i = first;
+    cubicBasisReciprocals(s.knots, i + kDegree, inv);
+    for (; k < kEnd; ++k) {
+        if (i < spans - 1 && u[k] >= s.breaks[i + 1]) {
+            while (i < spans - 1 && u[k] >= s.breaks[i + 1]) ++i;
+            if (i > last) break;
+            cubicBasisReciprocals(s.knots, i + kDegree, inv);
+        }
+        cubicBasis(s.knots, i + kDegree, u[k], inv, basis);
+        SpanSums& t = sums[i];
+        const Vec3& x = X[S[k]];
+        for (int q = 0; q <= kDegree; ++q) {
+            t.r[q] += basis[q] * x;
+            for (int r = 0; r <= q; ++r) t.g[q][r] += basis[q] * basis[r];
+        }
+    }
+}
+
+void sumsWithoutBreak(Spline& t, int r, const std::vector<Vec3>& X, const std::vector<int>& S,
+                      const std::vector<double>& u, const std::vector<SpanSums>& sums, std::vector<SpanSums>& out)
+{
+    t.breaks.erase(t.breaks.begin() + r);
+    t.makeKnots();
+    // Spans r-3..r+2 depend on the removed break (span i's basis functions depend on the breaks
+    // b_{i-2}..b_{i+3}, the clamped ends repeating b_0 and b_last); they become spans r-3..r+1,
+    // summed again. The others keep their sums, shifted by one past the break.
+    const int spans = t.spanCount();
+    const int lo = std::max(0, r - 3), hi = std::min(spans - 1, r + 1);
+    out.resize(static_cast<size_t>(spans));
+    std::copy(sums.begin(), sums.begin() + lo, out.begin());
+    std::copy(sums.begin() + hi + 2, sums.end(), out.begin() + hi + 1);
+    spanSums(t, X, S, u, lo, hi, out);
+}
+
+// The normal equations of the open least squares assembled span by span from the sums, with the
+// fairing term; P_0 = X_first and P_n = X_last are fixed (The NURBS Book eqs. 9.63-9.67: the
+// fixed points move to the right-hand side).
+void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
+                       const std::vector<SpanSums>& sums, double fairing)
 {
     const int nCtrl = s.unknowns();
     const int nFree = nCtrl - 2;
     const Vec3 first = X[S.front()], last = X[S.back()];
+    const auto fixedPoint = [&](int c) -> const Vec3* { return c == 0 ? &first : (c == nCtrl - 1 ? &last : nullptr); };
     BandMatrix a(nFree, kDegree);
     std::vector<Vec3> b(static_cast<size_t>(nFree), Vec3::Zero());
-    double basis[kDegree + 1], inv[6];
-    int span = kDegree;
-    cubicBasisReciprocals(s.knots, span, inv);
-    for (size_t k = 1; k + 1 < S.size(); ++k) {
-        // Samples come in increasing parameter: walk the span instead of searching for it.
-        if (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) {
-            while (span < nCtrl - 1 && u[k] >= s.knots[span + 1]) ++span;
-            cubicBasisReciprocals(s.knots, span, inv);
-        }
-        cubicBasis(s.knots, span, u[k], inv, basis);
-        const int i0 = span - kDegree;  // control point of basis[0]
-        Vec3 rhs = X[S[k]];
-        if (i0 == 0) rhs -= basis[0] * first;
-        if (i0 + kDegree == nCtrl - 1) rhs -= basis[kDegree] * last;
-        // Rows and columns of the free unknowns only (unknown index = control index - 1).
-        const int q0 = i0 == 0 ? 1 : 0;
-        const int q1 = i0 + kDegree == nCtrl - 1 ? kDegree - 1 : kDegree;
-        for (int q = q0; q <= q1; ++q) {
-            const int i = i0 + q - 1;
-            b[i] += basis[q] * rhs;
-            for (int r = q0; r <= q; ++r) a.at(i, i0 + r - 1) += basis[q] * basis[r];
+    for (int i = 0; i < s.spanCount(); ++i) {
+        const SpanSums& t = sums[i];
+        for (int q = 0; q <= kDegree; ++q) {
+            const int cq = i + q;  // control point of basis q on span i
+            if (fixedPoint(cq)) continue;
+            b[cq - 1] += t.r[q];
+            for (int r = 0; r <= kDegree; ++r) {
+                const double g = r <= q ? t.g[q][r] : t.g[r][q];
+                if (const Vec3* fixed = fixedPoint(i + r)) b[cq - 1] -= g * *fixed;
+                else if (r <= q) a.at(cq - 1, i + r - 1) += g;
+            }
         }
     }
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / nCtrl);
@@ -225,6 +262,7 @@ void solveOpen(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
     s.ctrl.front() = first;
     s.ctrl.back() = last;
     for (int i = 0; i < nFree; ++i) s.ctrl[i + 1] = b[i];
+    s.buildPowerForm();
 }
 
 // Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal
@@ -267,9 +305,14 @@ void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, con
            double fairing)
 {
     s.makeKnots();
-    if (s.closed) solveClosed(s, X, S, u, fairing);
-    else solveOpen(s, X, S, u, fairing);
-    s.buildPowerForm();
+    if (s.closed) {
+        solveClosed(s, X, S, u, fairing);
+        s.buildPowerForm();
+        return;
+    }
+    std::vector<SpanSums> sums;
+    spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
+    solveOpenFromSums(s, X, S, sums, fairing);
 }
 
 }  // namespace detail

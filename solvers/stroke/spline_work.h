@@ -124,6 +124,26 @@ double distanceAt(const Spline& s, const Vec3& x, double u);
 double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot = nullptr);
 /// Distance of C(u) to the segment [a, b] when it exceeds a quarter of the segment, else 0.
 double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u);
+/// The least-squares sums of one span of an open spline over its interior samples (the two end
+/// samples are the fixed P_0 and P_n): the Gram block g[q][r] = sum N_q N_r (r <= q) and the
+/// moments r[q] = sum N_q X_k of the span's four basis functions. The normal equations are
+/// assembled span by span from these, so a trial that changes the basis on a few spans only (a
+/// knot removal) recomputes those spans' sums and reuses the others'.
+struct SpanSums {
+    double g[kDegree + 1][kDegree + 1] = {};
+    Vec3 r[kDegree + 1] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+};
+/// Sums of the spans first..last of s (knots made; sums grown to s.spanCount() if shorter).
+void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+              int first, int last, std::vector<SpanSums>& sums);
+/// Removes the interior break r from t (open; s's breaks, knots made) and gives the sums of the
+/// result from `sums`, s's: only the six spans around the break are summed again.
+void sumsWithoutBreak(Spline& t, int r, const std::vector<Vec3>& X, const std::vector<int>& S,
+                      const std::vector<double>& u, const std::vector<SpanSums>& sums, std::vector<SpanSums>& out);
+/// Solves the open least squares (with the fairing term) from the sums of every span and builds the
+/// power form.
+void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
+                       const std::vector<SpanSums>& sums, double fairing);
 /// Least squares with the fairing term for the spline's breaks (makes knots, solves, builds the
 /// power form). Open: P_0 and P_n fixed to the first and last sample.
 void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u, double fairing);
