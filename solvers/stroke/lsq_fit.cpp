@@ -147,7 +147,10 @@ struct PointCheck {
         for (int i = spans - 1; i >= 0; --i) first[i] = std::min(first[i], first[i + 1]);
         for (int i = 0; i < m; ++i) {
             maxE[span[i]] = std::max(maxE[span[i]], e[i]);
-            if (i + 1 < m) maxGap[span[i]] = std::max(maxGap[span[i]], gap[i]);
+            // A chord whose ends are more than a span apart has its middle where neither end's
+            // bound applies: its span is then never passed as a whole.
+            if (i + 1 < m)
+                maxGap[span[i]] = std::max(maxGap[span[i]], span[i + 1] - span[i] <= 1 ? gap[i] : std::numeric_limits<double>::infinity());
         }
     }
 };
