@@ -397,11 +397,14 @@ ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, con
             c = closestEnds(cs, w);
             // A loop must also enclose area: a stroke drawn out and straight back has close ends but is
             // a doubled line. Vector area of the closed polygon (half the sum of p_i x p_{i+1}) against
-            // minLoopArea * L^2 (a circle has L^2 / 4 pi = 0.08 L^2, a 10:1 rectangle 0.02 L^2).
+            // minLoopArea * L^2 (a circle has L^2 / 4 pi = 0.08 L^2, a 10:1 rectangle 0.02 L^2), L the
+            // perimeter above: the path length itself grows with the digitizer's jitter as the
+            // sampling gets denser (a pentagon drawn with 10,000 samples: path 3.9x its perimeter),
+            // which would make every dense loop "enclose" too little.
             Vec3 area = Vec3::Zero();
             for (int i = c.head; i < c.tail; ++i) area += cs.points[i].cross(cs.points[i + 1]);
             area += cs.points[c.tail].cross(cs.points[c.head]);
-            const bool encloses = 0.5 * area.norm() >= options.minLoopArea * total * total;
+            const bool encloses = 0.5 * area.norm() >= options.minLoopArea * perimeter * perimeter;
             meets = encloses && c.gap <= maxGap && cs.arc[c.tail] - cs.arc[c.head] > 0.5 * total;
         }
         if (meets || options.closure == Closure::Closed) {

@@ -29,7 +29,8 @@ struct ConditioningOptions {
     /// A stroke whose ends come within this fraction of its length closes on itself. Hand-drawn
     /// loops typically miss or overshoot by a few per cent of their perimeter.
     double closeGap = 0.06;
-    /// ... and enclose at least this area relative to length^2 (a circle: 0.08, a 10:1 rectangle: 0.02).
+    /// ... and enclose at least this area relative to L^2, L the shorter of the path length and
+    /// pi x extent, which jitter does not inflate (a circle: 0.08, a 10:1 rectangle: 0.02).
     double minLoopArea = 0.01;
     Closure closure = Closure::Auto;
     /// Passes of the 3-point mean filter (seed 003 §3.1 "3x3 mean filter"); corners are held fixed.
