@@ -29,10 +29,31 @@ double fastAtan2(double y, double x) { return atan2Poly(y, x); }
 
 namespace {
 
-double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+// The angle between u - o and v - w, in scalars: the same operations in the same order as Eigen's
+// (a - b).cross(c - d).norm() and .dot() evaluate them (sums left to right: (x + y) + z), so the
+// results are bit-identical, without the packet shuffles and, above all, without the out-of-line
+// call GCC chose for the Eigen form.
+// atan2 of |a x b| and a.b is accurate for small and for nearly opposite angles alike.
+[[gnu::always_inline]] inline double angleBetween(const Eigen::Vector3d& o, const Eigen::Vector3d& u,
+                                                  const Eigen::Vector3d& v, const Eigen::Vector3d& w)
 {
-    // atan2 of |a x b| and a.b is accurate for small and for nearly opposite angles alike.
-    return atan2Poly(a.cross(b).norm(), a.dot(b));
+    const double ax = o.x() - u.x(), ay = o.y() - u.y(), az = o.z() - u.z();
+    const double bx = v.x() - w.x(), by = v.y() - w.y(), bz = v.z() - w.z();
+    const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    const double cross = std::sqrt((cx * cx + cy * cy) + cz * cz);
+    const double dot = (ax * bx + ay * by) + az * bz;
+    return atan2Poly(cross, dot);
+}
+
+// (a - b).squaredNorm() as Eigen evaluates it for a Vector3d: (x^2 + y^2) + z^2.
+// Planar: z is zero throughout, and (x^2 + y^2) + 0 is x^2 + y^2.
+template <bool Planar = false>
+[[gnu::always_inline]] inline double dist2(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    const double dx = a.x() - b.x(), dy = a.y() - b.y();
+    if constexpr (Planar) return dx * dx + dy * dy;
+    const double dz = a.z() - b.z();
+    return (dx * dx + dy * dy) + dz * dz;
 }
 
 // Neighbourhood ends for every sample, with unwrapped indices (a closed stroke's may run below 0
@@ -41,14 +62,16 @@ double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 // the path without moving the pen on). Both ends only move forward as i does, so two pointers find
 // them all in O(n) (chord length is taken as monotone along the window, true up to jitter).
 // An open stroke's ends clamp to 0 and n - 1; a closed stroke's window spans at most half the loop.
+// The open case is the struct OpenWindow below, advanced inside the feature pass; this general form
+// serves closed strokes.
 void windows(const ConditionedStroke& cs, int minSteps, double minLength, std::vector<int>& lo, std::vector<int>& hi)
 {
     const int n = cs.size();
     const auto at = [&](int j) -> const Eigen::Vector3d& { return cs.points[j < 0 ? j + n : (j >= n ? j - n : j)]; };
     const int reachMax = cs.closed ? n / 2 : n;
     const double min2 = minLength * minLength;
-    lo.assign(n, 0);
-    hi.assign(n, 0);
+    lo.resize(n);
+    hi.resize(n);
     int a = cs.closed ? -reachMax : 0;
     int b = 0;
     for (int i = 0; i < n; ++i) {
@@ -60,6 +83,108 @@ void windows(const ConditionedStroke& cs, int minSteps, double minLength, std::v
         const int bMax = cs.closed ? i + reachMax : n - 1;
         b = std::clamp(std::max(b, i + minSteps), i, bMax);
         while (b < bMax && (at(b) - at(i)).squaredNorm() < min2) ++b;
+        hi[i] = b;
+    }
+}
+
+// `windows` for an open stroke, one sample at a time (no wrapping, no stored arrays): the feature
+// pass advances the narrow and the wide window together. Same ends as `windows` gives: there the
+// clamp of lo is a no-op on an open stroke (lo never exceeds the previous, smaller bound), and the
+// clamp of hi is max(hi, i + minSteps, i) capped at n - 1.
+template <bool Planar>
+struct OpenWindow {
+    int minSteps, stepsAhead, last;
+    double min2;
+    int a = 0, b = 0;
+    OpenWindow(int steps, double minLength, int n)
+        : minSteps(steps), stepsAhead(std::max(steps, 0)), last(n - 1), min2(minLength * minLength) {}
+    void advance(const Eigen::Vector3d* p, int i)
+    {
+        const Eigen::Vector3d& pi = p[i];
+        const int aMax = std::max(0, i - minSteps);
+        while (a < aMax && dist2<Planar>(p[a + 1], pi) >= min2) ++a;
+        b = std::min(std::max(b, i + stepsAhead), last);
+        while (b < last && dist2<Planar>(p[b], pi) < min2) ++b;
+    }
+};
+
+// computeFeatures for an open stroke: the window ends are indices as they are (no wrapping), and
+// the narrow and the wide window advance together in the feature pass instead of in two passes
+// through stored arrays. Planar: the points' z are all zero (see computeFeatures).
+template <bool Planar>
+void openFeatures(const ConditionedStroke& cs, const FeatureOptions& options, double minLen, StrokeFeatures& f)
+{
+    const int n = cs.size();
+    const Eigen::Vector3d* p = cs.points.data();
+    // Local means (computeFeatures says why), kept as separate coordinate arrays.
+    std::vector<double> qbuf(static_cast<size_t>(Planar ? 2 * n : 3 * n));
+    double* qx = qbuf.data();
+    double* qy = qx + n;
+    double* qz = Planar ? nullptr : qy + n;
+    {
+        const double r2 = options.denoise * cs.extent * options.denoise * cs.extent;
+        double sx = 0.0, sy = 0.0, sz = 0.0;
+        const auto add = [&](const Eigen::Vector3d& v) {
+            sx += v.x();
+            sy += v.y();
+            if constexpr (!Planar) sz += v.z();
+        };
+        const auto sub = [&](const Eigen::Vector3d& v) {
+            sx -= v.x();
+            sy -= v.y();
+            if constexpr (!Planar) sz -= v.z();
+        };
+        int s = 0, e = -1;
+        for (int i = 0; i < n; ++i) {
+            const Eigen::Vector3d& pi = p[i];
+            while (e < i) add(p[++e]);
+            while (e + 1 < n && dist2<Planar>(p[e + 1], pi) < r2) add(p[++e]);
+            while (s < i && dist2<Planar>(p[s], pi) >= r2) sub(p[s++]);
+            const double inv = 1.0 / double(e - s + 1);
+            qx[i] = sx * inv;
+            qy[i] = sy * inv;
+            if constexpr (!Planar) qz[i] = sz * inv;
+        }
+    }
+    // The angle between q_o - q_u and q_v - q_w (angleBetween's arithmetic).
+    const auto angle = [&](int o, int u, int v, int w) {
+        const double ax = qx[o] - qx[u], ay = qy[o] - qy[u];
+        const double bx = qx[v] - qx[w], by = qy[v] - qy[w];
+        if constexpr (Planar) {
+            const double cz = ax * by - ay * bx;
+            return atan2Poly(std::sqrt(cz * cz), ax * bx + ay * by);
+        } else {
+            const double az = qz[o] - qz[u], bz = qz[v] - qz[w];
+            const double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+            return atan2Poly(std::sqrt((cx * cx + cy * cy) + cz * cz), (ax * bx + ay * by) + az * bz);
+        }
+    };
+    f.lo.resize(n);
+    f.hi.resize(n);
+    OpenWindow<Planar> narrow(options.k, minLen, n), wide(2 * options.k, 2.0 * minLen, n);
+    const double* arc = cs.arc.data();
+    const double* time = cs.time.data();
+    const double averageSpeed = f.averageSpeed;
+    double* direction = f.direction.data();
+    double* turningOut = f.turning.data();
+    double* wideTurning = f.wideTurning.data();
+    double* curvature = f.curvature.data();
+    double* speed = f.speed.data();
+    int* lo = f.lo.data();
+    int* hi = f.hi.data();
+    for (int i = 0; i < n; ++i) {
+        narrow.advance(p, i);
+        wide.advance(p, i);
+        const int a = narrow.a, b = narrow.b;
+        direction[i] = atan2Poly(qy[b] - qy[a], qx[b] - qx[a]);
+        const double turning = angle(i, a, b, i);
+        turningOut[i] = turning;
+        const double path = arc[b] - arc[a];
+        curvature[i] = path > 0.0 ? turning / path : 0.0;
+        wideTurning[i] = angle(i, wide.a, wide.b, i);
+        const double dt = time[b] - time[a];
+        speed[i] = dt > 0.0 ? path / dt : averageSpeed;
+        lo[i] = a;
         hi[i] = b;
     }
 }
@@ -78,15 +203,22 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     const double minLen = options.neighbourhood * cs.extent;
     const double duration = cs.time.back() - cs.time.front();
     f.averageSpeed = duration > 0.0 ? cs.arc.back() / duration : 0.0;
-    std::vector<int> wideLo, wideHi;
-    windows(cs, options.k, minLen, f.lo, f.hi);
-    windows(cs, 2 * options.k, 2.0 * minLen, wideLo, wideHi);
     const double total = cs.length();
     // Unwrapped path position of index j (a closed stroke's seam gap counts as path). Window ends lie
     // within half a loop of their centre, so j is in (-n, 2n): one comparison instead of an integer
     // division (which took a fifth of this pass).
     const auto wrap = [&](int j) { return j < 0 ? j + n : (j >= n ? j - n : j); };
     const auto arcAt = [&](int j) { return cs.arc[wrap(j)] + (j < 0 ? -total : (j >= n ? total : 0.0)); };
+    if (!cs.closed) {
+        // Planar strokes (every z zero, as 2D input is stored) take the same arithmetic without the
+        // z terms, which are exact zeros there: (x^2 + y^2) + 0 is x^2 + y^2, and the cross product's
+        // x and y components are zeros whose squares add nothing; the dot product can at most
+        // change the sign of a zero, which atan2Poly maps to the same angle.
+        const bool planar = std::all_of(cs.points.begin(), cs.points.end(), [](const Eigen::Vector3d& p) { return p.z() == 0.0; });
+        if (planar) openFeatures<true>(cs, options, minLen, f);
+        else openFeatures<false>(cs, options, minLen, f);
+        return f;
+    }
     // The angles are measured between local means, not single samples: q_i is the mean of the
     // samples within chord distance `denoise` of sample i (at least sample i itself). Why: with
     // single samples the angle's noise is that of one sample (sigma / neighbourhood) however dense
@@ -106,15 +238,7 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
         // The samples [s, e] around i (unwrapped on a loop) are those within the radius, taken as a
         // contiguous run (chord grows along the run, true up to jitter); both ends only move forward.
         Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        if (!cs.closed) {
-            int s = 0, e = -1;
-            for (int i = 0; i < n; ++i) {
-                while (e < i) sum += p[++e];
-                while (e + 1 < n && (p[e + 1] - p[i]).squaredNorm() < r2) sum += p[++e];
-                while (s < i && (p[s] - p[i]).squaredNorm() >= r2) sum -= p[s++];
-                q[i] = sum * (1.0 / double(e - s + 1));
-            }
-        } else {
+        {
             const int reach = n / 2;
             int s = -reach, e = s - 1;
             for (int i = 0; i < n; ++i) {
@@ -126,16 +250,23 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
             }
         }
     }
+    f.lo.resize(n);
+    f.hi.resize(n);
+    const Eigen::Vector3d* qd = q.data();
+    std::vector<int> wideLo, wideHi;
+    windows(cs, options.k, minLen, f.lo, f.hi);
+    windows(cs, 2 * options.k, 2.0 * minLen, wideLo, wideHi);
     for (int i = 0; i < n; ++i) {
         const int a = f.lo[i], b = f.hi[i];
-        const Eigen::Vector3d& pa = q[wrap(a)];
-        const Eigen::Vector3d& pb = q[wrap(b)];
+        const Eigen::Vector3d& pa = qd[wrap(a)];
+        const Eigen::Vector3d& pb = qd[wrap(b)];
         const Eigen::Vector3d chord = pb - pa;
         f.direction[i] = atan2Poly(chord.y(), chord.x());
-        f.turning[i] = angleBetween(q[i] - pa, pb - q[i]);
+        const double turning = angleBetween(qd[i], pa, pb, qd[i]);
+        f.turning[i] = turning;
         const double path = arcAt(b) - arcAt(a);
-        f.curvature[i] = path > 0.0 ? f.turning[i] / path : 0.0;
-        f.wideTurning[i] = angleBetween(q[i] - q[wrap(wideLo[i])], q[wrap(wideHi[i])] - q[i]);
+        f.curvature[i] = path > 0.0 ? turning / path : 0.0;
+        f.wideTurning[i] = angleBetween(qd[i], qd[wrap(wideLo[i])], qd[wrap(wideHi[i])], qd[i]);
         // Elapsed time over the neighbourhood; a window across a loop's seam, where time restarts,
         // gets the average speed.
         const double dt = (a >= 0 && b < n) ? cs.time[b] - cs.time[a] : 0.0;
@@ -150,13 +281,25 @@ std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures
 {
     const int n = cs.size();
     std::vector<char> candidate(n, 0);
+    // Both cues need t >= min(strongAngle, slowAngle) (false for NaN either way): most samples stop
+    // at that one comparison. Loop invariants in locals (the char stores may alias anything).
+    const double minAngle = std::min(o.strongAngle, o.slowAngle);
+    const double strongAngle = o.strongAngle, slowAngle = o.slowAngle;
+    const double sharpnessFast = o.sharpnessFast, sharpness = o.sharpness;
+    const double averageSpeed = f.averageSpeed, slowSpeed = o.slowFraction * f.averageSpeed;
+    const double* turning = f.turning.data();
+    const double* wideTurning = f.wideTurning.data();
+    const double* speed = f.speed.data();
+    const int* lo = f.lo.data();
+    const int* hi = f.hi.data();
+    const bool closed = cs.closed;
     for (int i = 0; i < n; ++i) {
-        if (!cs.closed && (i == 0 || i == n - 1 || f.lo[i] == 0 || f.hi[i] == n - 1)) continue;
-        const double t = f.turning[i];
-        const bool slow = f.averageSpeed > 0.0 && f.speed[i] < o.slowFraction * f.averageSpeed;
-        const double ratio = f.wideTurning[i] > 0.0 ? t / f.wideTurning[i] : 1.0;
-        candidate[i] = (t >= o.strongAngle && ratio >= o.sharpnessFast) ||
-                       (slow && t >= o.slowAngle && ratio >= o.sharpness);
+        const double t = turning[i];
+        if (t < minAngle) continue;
+        if (!closed && (i == 0 || i == n - 1 || lo[i] == 0 || hi[i] == n - 1)) continue;
+        const bool slow = averageSpeed > 0.0 && speed[i] < slowSpeed;
+        const double ratio = wideTurning[i] > 0.0 ? t / wideTurning[i] : 1.0;
+        candidate[i] = (t >= strongAngle && ratio >= sharpnessFast) || (slow && t >= slowAngle && ratio >= sharpness);
     }
     // Non-maximum suppression: keep a candidate only if no sample in its neighbourhood turns more
     // (ties broken towards the lower index so that a plateau yields one corner).
