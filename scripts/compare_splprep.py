@@ -12,7 +12,7 @@ Which fit is compared. sculptline-cli fit has two knot-removal modes (SplineFitO
             for removal (KnotRemoval::LastRound). This is what `fit`, `recognize` and the GUI use:
             the 1,000-sample stroke fits within the 0.2 ms budget (bench BM_StrokeFit).
   minimize  `"minimize_control_points": true`: every interior knot is tried for removal, cheapest
-            first (KnotRemoval::AllKnots), ~1.7x the fitting time (bench BM_StrokeFitFewest).
+            first (KnotRemoval::AllKnots), ~2x the fitting time (bench BM_StrokeFitFewest).
 Both are printed; the last column says whether ours needs no more control points than splprep.
 ctest runs both modes with --check: the goal "no more than splprep" holds for each.
 

@@ -7,7 +7,7 @@
 //
 // tolerance is optional (default 0.5 % of the stroke's extent); corners and samples are indices
 // into the input stroke's points. minimize_control_points (default false) tries to remove every
-// knot after the fit, not only the last round's: fewer control points, ~1.7x the time.
+// knot after the fit, not only the last round's: fewer control points, ~2x the time.
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 #include "solvers/stroke/stroke_json.h"

@@ -40,8 +40,8 @@ struct SplineFitOptions {
     /// it), tries them cheapest first, re-ranking after each removal; a trial re-solves only the
     /// least-squares sums of the six spans around the break and re-measures only the points whose
     /// bound (last distance plus the curve's change on their span) exceeds the tolerance. On the
-    /// benchmark strokes 10-20 % fewer control points than LastRound for about 1.7x the fitting time
-    /// (scripts/compare_splprep.py, bench BM_StrokeFitFewest).
+    /// benchmark strokes 10-20 % fewer control points than LastRound for about twice the fitting
+    /// time (scripts/compare_splprep.py, bench BM_StrokeFitFewest).
     KnotRemoval removal = KnotRemoval::LastRound;
     /// Parameter correction (Hoschek 1988, "Intrinsic parametrization for approximation"): one
     /// Newton step per sample and iteration moves its parameter toward the foot point on the curve.
