@@ -403,8 +403,22 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     PointCheck checked;  // the last check of every point (of s when the loop ends converged)
     const bool recordGaps = opt.removal == KnotRemoval::AllKnots && !in.closed;
     bool polished = false;
+    // Open curves keep the least-squares sums of each span between rounds: only the spans around
+    // the knots a round inserted are summed again, as long as the samples and their parameters
+    // stay (adding samples, polishing or correcting parameters starts the sums afresh).
+    std::vector<SpanSums> sums, nextSums;
+    std::vector<double> sumsBreaks;  // the breaks `sums` belong to; empty: none valid
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
-        solve(s, X, S, u, opt.fairing);
+        if (in.closed) {
+            solve(s, X, S, u, opt.fairing);
+        } else {
+            s.makeKnots();
+            if (sumsBreaks.empty()) spanSums(s, X, S, u, 0, s.spanCount() - 1, nextSums);
+            else updateSpanSums(s, sumsBreaks, sums, X, S, u, nextSums);
+            std::swap(sums, nextSums);
+            sumsBreaks = opt.correctParameters ? std::vector<double>{} : s.breaks;
+            solveOpenFromSums(s, X, S, sums, opt.fairing);
+        }
         const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
         std::fill(err.begin(), err.end(), 0.0);
         for (size_t k = first; k < last; ++k) {
@@ -478,6 +492,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             }
             if (increasing) {
                 u = std::move(foot);
+                sumsBreaks.clear();
                 continue;
             }
         }
@@ -490,6 +505,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 if (pos != S.end() && *pos == i) continue;
                 const size_t at = static_cast<size_t>(pos - S.begin());
                 S.insert(pos, i);
+                sumsBreaks.clear();
                 const double lo = u[at - 1], hi = at < u.size() ? u[at] : (in.closed ? u[0] + 1.0 : 1.0);
                 const double ui = opt.correctParameters ? cu[i] : in.chord[i];
                 u.insert(u.begin() + static_cast<long>(at), std::clamp(ui, lo, hi));

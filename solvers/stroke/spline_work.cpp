@@ -196,6 +196,36 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
     }
 }
 
+void updateSpanSums(const Spline& s, const std::vector<double>& oldBreaks, const std::vector<SpanSums>& oldSums,
+                    const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                    std::vector<SpanSums>& sums)
+{
+    const int spans = s.spanCount();
+    sums.resize(static_cast<size_t>(spans));
+    const int oldSpans = static_cast<int>(oldBreaks.size()) - 1;
+    // Span i's basis functions depend on the breaks b_{i-2}..b_{i+3} (the clamped ends repeat b_0 and
+    // b_last): a span whose six breaks were six consecutive breaks before has the same sums.
+    const auto br = [](const std::vector<double>& b, int k) { return b[static_cast<size_t>(std::clamp(k, 0, static_cast<int>(b.size()) - 1))]; };
+    int j = 0;  // old span starting at s.breaks[i], if any
+    int runStart = -1;
+    for (int i = 0; i <= spans; ++i) {
+        bool same = false;
+        if (i < spans) {
+            while (j < oldSpans && oldBreaks[static_cast<size_t>(j)] < s.breaks[static_cast<size_t>(i)]) ++j;
+            if (j < oldSpans && oldBreaks[static_cast<size_t>(j)] == s.breaks[static_cast<size_t>(i)]) {
+                same = true;
+                for (int q = -2; same && q <= 3; ++q) same = br(oldBreaks, j + q) == br(s.breaks, i + q);
+                if (same) sums[static_cast<size_t>(i)] = oldSums[static_cast<size_t>(j)];
+            }
+        }
+        if (!same && i < spans && runStart < 0) runStart = i;
+        if ((same || i == spans) && runStart >= 0) {
+            spanSums(s, X, S, u, runStart, i - 1, sums);
+            runStart = -1;
+        }
+    }
+}
+
 void sumsWithoutBreak(Spline& t, int r, const std::vector<Vec3>& X, const std::vector<int>& S,
                       const std::vector<double>& u, const std::vector<SpanSums>& sums, std::vector<SpanSums>& out)
 {

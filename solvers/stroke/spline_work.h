@@ -136,6 +136,12 @@ struct SpanSums {
 /// Sums of the spans first..last of s (knots made; sums grown to s.spanCount() if shorter).
 void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
               int first, int last, std::vector<SpanSums>& sums);
+/// The sums of s (open, knots made) from oldSums, the sums over the same samples and parameters
+/// for the breaks oldBreaks: spans whose six breaks are unchanged keep theirs, the others (around
+/// inserted knots) are summed again.
+void updateSpanSums(const Spline& s, const std::vector<double>& oldBreaks, const std::vector<SpanSums>& oldSums,
+                    const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                    std::vector<SpanSums>& sums);
 /// Removes the interior break r from t (open; s's breaks, knots made) and gives the sums of the
 /// result from `sums`, s's: only the six spans around the break are summed again.
 void sumsWithoutBreak(Spline& t, int r, const std::vector<Vec3>& X, const std::vector<int>& S,

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -194,6 +195,40 @@ TEST(SpanSums, GivenABreakRemoved_WhenOnlyTheSpansAroundItAreSummedAgain_ThenSam
             // Same sums in the same order: equal to round-off (in practice bit for bit).
             EXPECT_LE((incremental.ctrl[i] - fresh.ctrl[i]).norm(), 1e-12) << "break " << r << ", point " << i;
         }
+    }
+}
+
+// Between insertion rounds the spans untouched by the new knots keep their sums: the solution must
+// be the one a solve from scratch gives, whatever breaks were inserted (ends included).
+TEST(SpanSums, GivenKnotsInserted_WhenOnlyTheChangedSpansAreSummedAgain_ThenSameSolutionAsAFullSolve)
+{
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<int> S;
+    std::vector<double> u;
+    for (int i = 0; i <= 200; ++i) {
+        const double t = i / 200.0;
+        pts.emplace_back(std::cos(4 * t), std::sin(7 * t), t);
+        S.push_back(i);
+        u.push_back(t);
+    }
+    detail::Spline s;
+    s.breaks = {0.0, 0.2, 0.45, 0.7, 1.0};
+    detail::solve(s, pts, S, u, 1e-6);
+    std::vector<detail::SpanSums> sums;
+    detail::spanSums(s, pts, S, u, 0, s.spanCount() - 1, sums);
+    for (const std::vector<double>& inserted : {std::vector<double>{0.05}, {0.5}, {0.95}, {0.1, 0.3, 0.85}}) {
+        detail::Spline incremental = s;
+        incremental.breaks.insert(incremental.breaks.end(), inserted.begin(), inserted.end());
+        std::sort(incremental.breaks.begin(), incremental.breaks.end());
+        detail::Spline fresh = incremental;
+        incremental.makeKnots();
+        std::vector<detail::SpanSums> out;
+        detail::updateSpanSums(incremental, s.breaks, sums, pts, S, u, out);
+        detail::solveOpenFromSums(incremental, pts, S, out, 1e-6);
+        detail::solve(fresh, pts, S, u, 1e-6);
+        ASSERT_EQ(incremental.ctrl.size(), fresh.ctrl.size());
+        for (size_t i = 0; i < fresh.ctrl.size(); ++i)
+            EXPECT_LE((incremental.ctrl[i] - fresh.ctrl[i]).norm(), 1e-12) << "first inserted " << inserted.front() << ", point " << i;
     }
 }
 
