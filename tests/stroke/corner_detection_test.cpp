@@ -44,6 +44,20 @@ void score(const Shape& shape, const Stroke& s, const FitResult& r, Counts& c)
     }
 }
 
+// Scores every shape drawn with seeds 1..seeds, with `samples` samples (0: at the digitizer's rate).
+void scoreShapes(const std::vector<Shape>& shapes, unsigned seeds, int samples, Counts& c)
+{
+    for (const Shape& shape : shapes) {
+        for (unsigned seed = 1; seed <= seeds; ++seed) {
+            DrawOptions d;
+            d.noise = kNoiseSigma;
+            d.seed = seed;
+            const Stroke s = samples > 0 ? drawWithSamples(shape, samples, d) : draw(shape, d);
+            score(shape, s, fitStroke(s), c);
+        }
+    }
+}
+
 TEST(CornerDetection, GivenPolygonsWithSlowVertices_WhenFitted_ThenPrecisionAndRecallAreHigh)
 {
     const std::vector<Shape> shapes = {
@@ -55,15 +69,7 @@ TEST(CornerDetection, GivenPolygonsWithSlowVertices_WhenFitted_ThenPrecisionAndR
         polygonShape({{0, 0, 0}, {80, 0, 0}, {105, 75, 0}, {40, 120, 0}, {-25, 75, 0}}, true),
     };
     Counts c;
-    for (const Shape& shape : shapes) {
-        for (unsigned seed = 1; seed <= 5; ++seed) {
-            DrawOptions d;
-            d.noise = kNoiseSigma;
-            d.seed = seed;
-            const Stroke s = draw(shape, d);
-            score(shape, s, fitStroke(s), c);
-        }
-    }
+    scoreShapes(shapes, 5, 0, c);
     const double precision = double(c.truePositive) / std::max(1, c.detected);
     const double recall = double(c.truePositive) / c.expected;
     std::printf("corners: expected %d detected %d matched %d precision %.3f recall %.3f\n", c.expected, c.detected,
@@ -122,15 +128,7 @@ TEST(CornerDetection, GivenPolygonsAtAnySamplingDensity_WhenFitted_ThenPrecision
     };
     for (int samples : {200, 1000, 2000, 5000, 10000}) {
         Counts c;
-        for (const Shape& shape : shapes) {
-            for (unsigned seed = 1; seed <= 3; ++seed) {
-                DrawOptions d;
-                d.noise = kNoiseSigma;
-                d.seed = seed;
-                const Stroke s = drawWithSamples(shape, samples, d);
-                score(shape, s, fitStroke(s), c);
-            }
-        }
+        scoreShapes(shapes, 3, samples, c);
         const double precision = double(c.truePositive) / std::max(1, c.detected);
         const double recall = double(c.truePositive) / c.expected;
         std::printf("%d samples: expected %d detected %d matched %d\n", samples, c.expected, c.detected, c.truePositive);
