@@ -93,7 +93,7 @@ std::vector<double> speedBounds(const Spline& s)
     return L;
 }
 
-// chordGap(s, X_i, X_next, mid) needs no evaluation when a bound already settles it. X_i lies on
+// A chord gap (rawChordGap at the middle parameter) needs no evaluation when a bound settles it. X_i lies on
 // the segment, so the gap is at most |C(mid) - X_i| <= |C(mid) - C(u_i)| + |C(u_i) - X_i|
 // <= L (mid - u_i) + e_i, with L bounding the speed between u_i and mid and e_i the distance
 // already measured at u_i (likewise from the other end; mid is the middle, so the two first terms
@@ -110,16 +110,6 @@ struct ChordGapBound {
         return (std::max(L[spanI], L[spanNext]) * halfStep + std::min(eI, eNext)) * (1.0 + 1e-12);
     }
 };
-
-// Distance from C(u) to the segment [a, b] (chordGap without its quarter-segment threshold).
-double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
-{
-    const Vec3 c = s.point(u);
-    const Vec3 ab = b - a;
-    const double l2 = ab.squaredNorm();
-    const double t = l2 > 0.0 ? std::clamp((c - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    return (a + t * ab - c).norm();
-}
 
 // What a check of every point found on one spline: per point its foot parameter, an upper bound on
 // its distance to the curve point there and that parameter's span; per chord to the next point an

@@ -154,17 +154,16 @@ double footDistance(const Spline& s, const Vec3& x, double u, double lo, double 
     return best;
 }
 
-// Distance from C(u) to the segment [a, b] when the curve leaves it by more than a quarter of the
-// segment's length (an excursion where no data holds the curve), else 0: a smooth curve through
-// a and b bulges from their chord by its sagitta, which is geometry, not error.
-double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
+// Distance from C(u) to the segment [a, b]. The fit counts it as an error only beyond a quarter of
+// the segment's length (an excursion where no data holds the curve): a smooth curve through a and
+// b bulges from their chord by its sagitta, which is geometry, not error.
+double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
 {
     const Vec3 c = s.point(u);
     const Vec3 ab = b - a;
     const double l2 = ab.squaredNorm();
     const double t = l2 > 0.0 ? std::clamp((c - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-    const double gap = (a + t * ab - c).norm();
-    return gap > 0.25 * std::sqrt(l2) ? gap : 0.0;
+    return (a + t * ab - c).norm();
 }
 
 void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,

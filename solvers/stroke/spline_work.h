@@ -122,8 +122,8 @@ double distanceAt(const Spline& s, const Vec3& x, double u);
 /// |C(u) - x| when within tol, else the best of up to two Newton steps (an upper bound on the
 /// true distance either way); *foot receives the parameter used.
 double footDistance(const Spline& s, const Vec3& x, double u, double lo, double hi, double tol, double* foot = nullptr);
-/// Distance of C(u) to the segment [a, b] when it exceeds a quarter of the segment, else 0.
-double chordGap(const Spline& s, const Vec3& a, const Vec3& b, double u);
+/// Distance of C(u) to the segment [a, b] (an error only beyond a quarter of the segment).
+double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u);
 /// The least-squares sums of one span of an open spline over its interior samples (the two end
 /// samples are the fixed P_0 and P_n): the Gram block g[q][r] = sum N_q N_r (r <= q) and the
 /// moments r[q] = sum N_q X_k of the span's four basis functions. The normal equations are
