@@ -23,16 +23,6 @@ std::vector<Curve3d> saddleBoundary()
     return {bottom, right, top, left};
 }
 
-// Distance from S(u, v) to a boundary: each input curve must be one of the four iso-edges.
-double boundaryDeviation(const Surface3d& s, const Curve3d& c)
-{
-    double best = 1e300;
-    for (bool vFixed : {true, false})
-        for (double value : {0.0, 1.0})
-            for (bool rev : {false, true}) best = std::min(best, isoDeviation(s, vFixed, value, c, rev));
-    return best;
-}
-
 }  // namespace
 
 TEST(Fill, GivenFourBoundariesShuffledAndReversed_WhenFilled_ThenEachBoundaryMet)

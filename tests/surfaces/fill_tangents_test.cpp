@@ -57,15 +57,6 @@ double g1AngleDegrees(const Surface3d& fill, const Surface3d& reference, const C
     return worst;
 }
 
-double boundaryDeviation(const Surface3d& s, const Curve3d& c)
-{
-    double best = 1e300;
-    for (bool vFixed : {true, false})
-        for (double value : {0.0, 1.0})
-            for (bool rev : {false, true}) best = std::min(best, isoDeviation(s, vFixed, value, c, rev));
-    return best;
-}
-
 // A patch hanging off the hill's edge v = 0 (y = 0) towards y < 0: the edge itself, two sides that
 // leave its ends inside the hill's tangent plane (direction -S_v, tilted by `tiltDegrees` out of
 // the plane at the first corner), and a far side. Returned as [edge, right, far, left].

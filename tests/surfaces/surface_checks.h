@@ -34,6 +34,17 @@ inline double isoDeviation(const Surface3d& s, bool vFixed, double value, const 
     return worst;
 }
 
+/// Distance from S(u, v) to a boundary curve: the smallest isoDeviation over the four iso-edges in
+/// either direction (each input curve of a fill must be one of them).
+inline double boundaryDeviation(const Surface3d& s, const Curve3d& c)
+{
+    double best = 1e300;
+    for (bool vFixed : {true, false})
+        for (double value : {0.0, 1.0})
+            for (bool rev : {false, true}) best = std::min(best, isoDeviation(s, vFixed, value, c, rev));
+    return best;
+}
+
 /// Unit normal with the limit at collapsed edges (poles). Surface3d::normal tests degeneracy by
 /// |Su x Sv| relative to |Su||Sv|, which does not catch a derivative that is round-off noise
 /// (~1e-15) rather than exactly zero at a pole, and its limit Su x Suv has the wrong sign at an
