@@ -13,8 +13,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-
 // A fish-like body seen from the side (xz plane): two outlines meeting at nose and tail.
 Curve3d upper() { return cubic({{0, 0, 0}, {1, 0, 1.2}, {3, 0, 1.5}, {5, 0, 0.8}, {6, 0, 0}}); }
 Curve3d lower() { return cubic({{0, 0, 0}, {1.5, 0, -0.8}, {3.5, 0, -1.0}, {5, 0, -0.4}, {6, 0, 0}}); }

@@ -19,8 +19,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-constexpr double kPi = 3.14159265358979323846;
 // Across a seam the normals of a closed surface agree; a fold or a flipped side would make them
 // opposite. The seam of a periodic profile is smooth, so they agree closely.
 constexpr double kSeamNormalDot = 0.9;

@@ -11,8 +11,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-
 // Four curves around a saddle-like patch: corners (0,0,0), (4,0,1), (4,3,0), (0,3,1).
 std::vector<Curve3d> saddleBoundary()
 {

@@ -9,10 +9,6 @@ using namespace sculptline::solvers;
 using namespace sculptline::solvers::surfaces;
 using namespace sculptline::surfaces_test;
 
-namespace {
-constexpr double kExact = 1e-9;
-}
-
 TEST(Extrude, GivenDirection_WhenExtruded_ThenProfileTranslated)
 {
     const Curve3d profile = cubic({{0, 0, 0}, {1, 2, 0}, {2, -1, 0}, {3, 0, 0}, {4, 1, 0}});

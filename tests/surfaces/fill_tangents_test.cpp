@@ -17,8 +17,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-constexpr double kPi = 3.14159265358979323846;
 // The G1 tolerance the fill is asked for (the default, kDefaultFillAngleDegrees: the usual CAD
 // tangent-continuity tolerance), checked at samples independent of the solver's own.
 constexpr double kAngleDegrees = kDefaultFillAngleDegrees;

@@ -14,8 +14,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-
 // Largest distance from points of `c` to the iso-curve of s at `value` (v fixed if vFixed).
 double distanceToIso(const Surface3d& s, bool vFixed, double value, const Curve3d& c)
 {

@@ -11,9 +11,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-// Issue 6 §3: exact modes interpolate their defining curves to 1e-9.
-constexpr double kExact = 1e-9;
-
 // Boat-like sections: a quadratic and cubics with different knots at increasing x.
 std::vector<Curve3d> hullSections()
 {

@@ -13,8 +13,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-
 Curve3d ellipse(double a, double b, double z)
 {
     // An ellipse is an affine image of the rational circle (weights unchanged).

@@ -11,8 +11,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
-
 // A bottle-like profile in the xz plane, off a tilted axis to test the general case.
 Curve3d bottleProfile()
 {

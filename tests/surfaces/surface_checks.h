@@ -14,6 +14,12 @@ using solvers::Curve3d;
 using solvers::Surface3d;
 using Vec3 = Eigen::Vector3d;
 
+/// What "exact" means for the modes that pass through their defining curves (loft, revolve,
+/// extrude, Coons fill, Gordon, ...): 1e-9 on models of size ~1-10, a thousand times the round-off
+/// the kernel's own invariant tests allow (1e-12) and far below any drawing tolerance.
+constexpr double kExact = 1e-9;
+constexpr double kPi = 3.14159265358979323846;
+
 /// Cubic clamped uniform curve through (not interpolating) the given control points.
 inline Curve3d cubic(const std::vector<Vec3>& pts) { return solvers::makeClampedUniform<3>(3, pts); }
 

@@ -15,7 +15,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
 constexpr SurfaceMode kModes[] = {SurfaceMode::Fill, SurfaceMode::Revolve,          SurfaceMode::Extrude,
                                   SurfaceMode::Sweep, SurfaceMode::Loft,            SurfaceMode::BoundaryRotation,
                                   SurfaceMode::RailRotation};

@@ -14,7 +14,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr double kExact = 1e-9;
 constexpr double kRadius = 0.3;
 
 Curve3d planarPath() { return cubic({{0, 0, 0}, {2, 0, 0}, {3, 2, 0}, {5, 3, 0}, {7, 3, 0}, {8, 1, 0}}); }
