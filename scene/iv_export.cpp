@@ -58,10 +58,12 @@ SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
     root->addChild(curves);
     root->addChild(planes);
     for (const auto& [id, e] : model.entities()) {
+        if (!hasFiniteGeometry(e)) continue;  // as the view: a NaN never reaches Coin
         const std::string name = std::string(kindName(e.kind)) + std::to_string(id);
         SoSeparator* node = nullptr;
         switch (e.kind) {
         case EntityKind::Surface:
+            if (!e.surface) continue;  // a construction that failed to build: nothing to draw
             node = makeSurfaceNode(*e.surface);
             surfaces->addChild(node);
             break;

@@ -36,7 +36,9 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
     for (const auto& [id, e] : model.entities()) {
         if (e.kind == scene::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
         if (e.kind == scene::EntityKind::Surface) {
-            add(e, e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id));
+            QString text = e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id);
+            if (e.failed()) text += e.surface ? tr(" - not rebuilt") : tr(" - failed");
+            add(e, text);
         }
         if (e.kind == scene::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
         if (e.kind == scene::EntityKind::Constraint) {

@@ -105,7 +105,6 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
                  .arg(e->inputs.front()).arg(e->parameter, 0, 'g', 6) << "\n";
         s << tr("At %1").arg(point(e->anchor)) << "\n";
     } else {
-        const solvers::Surface3d& f = *e->surface;
         if (e->recipe) {
             QStringList inputs;
             for (scene::EntityId c : e->curveInputs()) inputs << QString::number(c);
@@ -114,10 +113,17 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
-            if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
+            if (e->failed() && e->surface) s << tr("Not rebuilt (the last surface is shown): %1").arg(QString::fromStdString(e->buildError)) << "\n";
+            if (e->failed() && !e->surface) s << tr("Failed: %1").arg(QString::fromStdString(e->buildError)) << "\n";
         } else {
             s << tr("Geometry only (not built from curves)") << "\n";
         }
+        if (!e->surface) {
+            s << tr("No geometry: it is rebuilt when its curves allow") << "\n";
+            text_->setPlainText(out);
+            return;
+        }
+        const solvers::Surface3d& f = *e->surface;
         s << tr("Degree: %1 x %2").arg(f.degreeU()).arg(f.degreeV()) << "\n";
         s << tr("Control points: %1 x %2").arg(f.countU()).arg(f.countV()) << "\n";
         s << tr("Knots U: %1").arg(knots(f.knotsU())) << "\n";

@@ -16,7 +16,7 @@ scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
     case scene::EntityKind::Mesh: return model.addMesh(e.inputs, e.id, true);
     case scene::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
     case scene::EntityKind::Surface:
-        return e.recipe ? model.addSurface(e.curveInputs(), *e.recipe, e.id, &*e.surface) : model.addSurface(*e.surface, e.id);
+        return e.recipe ? model.restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : model.addSurface(*e.surface, e.id);
     }
     return 0;
 }

@@ -40,6 +40,35 @@ solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame&
 
 namespace {
 
+template <typename Points>
+bool allFinite(const Points& points)
+{
+    return std::all_of(points.begin(), points.end(), [](const auto& p) { return p.allFinite(); });
+}
+
+template <typename Geometry>
+bool finiteSpline(const Geometry& g)
+{
+    return allFinite(g.points()) && std::all_of(g.weights().begin(), g.weights().end(), [](double w) { return std::isfinite(w); });
+}
+
+}  // namespace
+
+bool hasFiniteGeometry(const Entity& e)
+{
+    switch (e.kind) {
+    case EntityKind::Plane:
+        return e.frame.origin.allFinite() && e.frame.rotation.coeffs().allFinite() && std::isfinite(e.frame.size);
+    case EntityKind::Curve: return (!e.local || finiteSpline(*e.local)) && (!e.world || finiteSpline(*e.world));
+    case EntityKind::Surface: return !e.surface || finiteSpline(*e.surface);
+    case EntityKind::Mesh: return !e.mesh || (allFinite(e.mesh->vertices) && allFinite(e.mesh->normals));
+    case EntityKind::Constraint: return e.anchor.allFinite();
+    }
+    return false;
+}
+
+namespace {
+
 /// On a plane a curve is planar by construction; z is exactly 0 so the document's 2D points
 /// restore it bit for bit.
 solvers::Curve3d flatten(const solvers::Curve3d& local)
@@ -165,6 +194,19 @@ EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRec
     return insert(std::move(e), id, true);
 }
 
+EntityId Model::restoreSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id,
+                               const std::optional<solvers::Surface3d>& saved)
+{
+    Entity e = unbuiltSurface(curves, recipe);
+    try {
+        buildSurface(e);
+    } catch (const std::exception& error) {
+        e.surface = saved;
+        e.buildError = error.what();
+    }
+    return insert(std::move(e), id, true);
+}
+
 Entity Model::makeMesh(const std::vector<EntityId>& curves) const
 {
     if (curves.empty()) throw std::invalid_argument("a mesh needs a loop of curves");
@@ -276,7 +318,12 @@ void Model::buildSurface(Entity& e) const
         }
         surf::SurfaceOptions options;
         options.tolerance = r.tolerance;
-        for (const SurfaceRecipe::Tangent& t : r.tangents) options.fillTangents.push_back({t.boundary, *entities_.at(t.surface).surface});
+        for (const SurfaceRecipe::Tangent& t : r.tangents) {
+            const Entity& adjacent = entities_.at(t.surface);
+            if (!adjacent.surface) throw std::invalid_argument("surface " + std::to_string(t.surface) + ", which it is tangent to, has not been built");
+            options.fillTangents.push_back({t.boundary, *adjacent.surface});
+        }
+        if (r.mode == "network") throw std::invalid_argument("\"network\" makes a mesh entity from a loop of curves, not a surface");
         const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
         if (mode == surf::SurfaceMode::Revolve) {
             // The axis is the line the designer drew: the last input's ends, start to end.
@@ -305,6 +352,8 @@ void Model::setPlaneFrame(EntityId plane, const PlaneFrame& frame)
     auto it = entities_.find(plane);
     if (it == entities_.end() || it->second.kind != EntityKind::Plane) return;
     if (it->second.frame == frame) return;
+    // A degenerate manipulation (a dragger scaled to nothing) can hand over NaN: the plane stays.
+    if (!frame.origin.allFinite() || !frame.rotation.coeffs().allFinite()) return;
     it->second.frame = frame;
     markDirty(plane);
 }
@@ -368,7 +417,12 @@ void Model::recompute(Entity& e)
     }
     if (e.kind != EntityKind::Curve) return;  // a plane holds its frame
     const EntityId plane = e.plane();
-    e.world = plane != 0 ? transformCurve(*e.local, entities_.at(plane).frame) : *e.local;
+    try {
+        e.world = plane != 0 ? transformCurve(*e.local, entities_.at(plane).frame) : *e.local;
+        e.buildError.clear();
+    } catch (const std::exception& error) {
+        e.buildError = error.what();  // coordinates beyond double range: the last world form stays
+    }
 }
 
 std::vector<Entity> Model::remove(EntityId id)

@@ -48,8 +48,10 @@ struct Entity {
     /// static surface as read from a document.
     std::optional<SurfaceRecipe> recipe;
     /// Surface, mesh: why the last rebuild failed (the curves no longer meet, ...), empty when it
-    /// succeeded; the last good surface is kept meanwhile.
+    /// succeeded; the last good surface is kept meanwhile. A surface whose build never succeeded
+    /// (a document whose construction cannot be rebuilt) has no `surface` at all.
     std::string buildError;
+    bool failed() const { return !buildError.empty(); }
     /// Surface: the deviation an approximating mode reached (model units); negative for exact modes.
     double maxDeviation = -1.0;
     /// Mesh: the triangulated loop of its input curves (in loop order), rebuilt with them.
@@ -107,6 +109,13 @@ public:
     ///         or the build fails and there is no `saved` surface (the message says why).
     EntityId addSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id = 0,
                         const solvers::Surface3d* saved = nullptr);
+    /// Restores a surface built from `curves` by `recipe` (a document being opened, an undo) that
+    /// may not build any more: a failed build keeps the entity, with `saved` as its last surface
+    /// (or no surface at all) and buildError saying why, so nothing else is lost and it rebuilds
+    /// once its curves allow.
+    /// @throws std::invalid_argument only when `recipe` does not fit `curves` (count, kinds).
+    EntityId restoreSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe, EntityId id,
+                            const std::optional<solvers::Surface3d>& saved);
     /// The surface entity `addSurface(curves, recipe)` would add (built, id 0), without adding it.
     /// @throws std::invalid_argument as addSurface does.
     Entity makeSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
@@ -178,6 +187,11 @@ private:
     std::vector<ModelObserver*> observers_;
     std::function<void()> dirtyCallback_;
 };
+
+/// True when every coordinate the entity would hand to a view (plane frame, curve control points and
+/// weights, surface, mesh, constraint anchor) is finite. Views check it before drawing: a NaN or an
+/// infinity never reaches Coin, whose bounding boxes and OpenGL would turn it into garbage.
+bool hasFiniteGeometry(const Entity& entity);
 
 /// The curve with every control point mapped by the frame (rational weights unchanged: an affine
 /// map of the control points maps the curve, The NURBS Book §4.4 "affine invariance").

@@ -70,10 +70,11 @@ void populateModel(const SceneDocument& doc, Model& model)
         }
         case Kind::Constructed: {
             // Rebuilt from its curves (the build is deterministic, so this is the saved surface);
-            // should it fail, the saved surface stands, with the reason on the entity.
+            // should it fail, the saved surface (or none) stands, marked failed with the reason:
+            // the document opens with everything else intact.
             const SceneDocument::ConstructedSurface& c = doc.constructed[i];
             const std::vector<EntityId> curves(c.curves.begin(), c.curves.end());
-            model.addSurface(curves, c.recipe, id, c.saved ? &*c.saved : nullptr);
+            model.restoreSurface(curves, c.recipe, id, c.saved);
             break;
         }
         }
@@ -114,7 +115,8 @@ json modelToJson(const Model& model, const GridSpec& grid)
             constraints.push_back({{"id", id}, {"curve", e.inputs.front()}, {"type", e.constraintType}, {"u", e.parameter}});
             break;
         case EntityKind::Surface: {
-            json s = io::toJson(*e.surface);
+            // A construction that never built has no geometry: the construction alone is saved.
+            json s = e.surface ? io::toJson(*e.surface) : json::object();
             s["id"] = id;
             if (e.recipe) {
                 json c{{"mode", e.recipe->mode}, {"curves", e.curveInputs()}};

@@ -100,8 +100,16 @@ CurveStyle ModelView::curveStyle(EntityId id) const
 
 SoSeparator* ModelView::planeGroup(EntityId plane) { return nodes_.at(plane); }
 
+bool ModelView::drawable(const Entity& e)
+{
+    if (hasFiniteGeometry(e)) return true;
+    ++nonFiniteRejections_;
+    return false;
+}
+
 SoSeparator* ModelView::makeCurveWithPolygon(const Entity& e)
 {
+    if (!drawable(e)) return new SoSeparator;
     SoSeparator* node = nurbsNodes_ ? makeNurbsCurveNode(*e.local, curveStyle(e.id)) : makeCurveNode(*e.local, curveStyle(e.id));
     // The control polygon under a switch, so that showing it is a field change, not a rebuild.
     auto* polygon = new SoSwitch;
@@ -167,7 +175,7 @@ void ModelView::entityAdded(const Entity& e)
         auto* group = new SoSeparator;
         group->setName(nodeName("Plane", e.id, "Curves").c_str());
         auto* frame = new SoTransform;
-        setFrame(frame, e.frame);
+        if (drawable(e)) setFrame(frame, e.frame);
         group->addChild(frame);
         planeCurves_->addChild(group);
         nodes_[e.id] = group;
@@ -182,7 +190,7 @@ void ModelView::entityAdded(const Entity& e)
         auto* node = new SoSeparator;
         node->setName(nodeName("Constraint", e.id).c_str());
         SoCoordinate3* point = addStyledCoordinates(node, kConstraintColor, kConstraintSize, 0.0f);
-        point->point.setValue(toSb(e.anchor));
+        if (drawable(e)) point->point.setValue(toSb(e.anchor));
         node->addChild(new SoPointSet);
         constraints_->addChild(node);
         nodes_[e.id] = node;
@@ -194,11 +202,15 @@ void ModelView::entityAdded(const Entity& e)
 
 SoSeparator* ModelView::makeSurfaceEntityNode(const Entity& e, bool reuseGrid)
 {
-    const solvers::Surface3d& s = *e.surface;
     SoSeparator* node = nullptr;
-    if (nurbsNodes_) {
+    if (!e.surface || !drawable(e)) {
+        node = new SoSeparator;  // a construction that never built: nothing to draw until it does
+        grids_.erase(e.id);
+    } else if (nurbsNodes_) {
+        const solvers::Surface3d& s = *e.surface;
         node = makeNurbsSurfaceNode(s);
     } else {
+        const solvers::Surface3d& s = *e.surface;
         // During a drag a rebuilt surface keeps its parameter domain (the curves move, the
         // construction's parameterization does not): re-evaluating it on its last adaptive grid
         // costs one evaluation per vertex, where the adaptive refinement probes every grid line
@@ -251,7 +263,7 @@ void ModelView::entityUpdated(const Entity& e)
     // A curve moved with its plane changes only its world form; its node is in plane-local
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
-    if (e.kind == EntityKind::Constraint) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
+    if (e.kind == EntityKind::Constraint && drawable(e)) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
     if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
     if (e.kind == EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
         SoSeparator* old = nodes_.at(e.id);
@@ -262,14 +274,14 @@ void ModelView::entityUpdated(const Entity& e)
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(e, true));
     }
-    if (e.kind != EntityKind::Plane) return;
+    if (e.kind != EntityKind::Plane || !drawable(e)) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
 }
 
 SoSeparator* ModelView::makeMeshEntityNode(const Entity& e)
 {
-    SoSeparator* node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
+    SoSeparator* node = drawable(e) ? makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles) : new SoSeparator;
     ++nodeBuilds_;
     node->setName(nodeName("Mesh", e.id).c_str());
     nodes_[e.id] = node;

@@ -49,6 +49,8 @@ public:
     int refineSurfaces();
     /// Surface nodes built on a reused parameter grid since construction.
     int gridReuses() const { return gridReuses_; }
+    /// Entities not drawn (or not moved) because a coordinate was not finite (hasFiniteGeometry).
+    int nonFiniteRejections() const { return nonFiniteRejections_; }
 
     /// Draws curve `id` highlighted (selection); 0 = none.
     void setHighlighted(EntityId id);
@@ -61,6 +63,9 @@ public:
     void entityUpdated(const Entity& entity) override;
 
 private:
+    /// The one gate between the model's geometry and Coin: false (and counted) when a coordinate
+    /// of `entity` is not finite; its node is then left empty or unmoved.
+    bool drawable(const Entity& entity);
     SoSeparator* planeGroup(EntityId plane);
     void addCurveNode(const Entity& entity);
     void rebuildCurveNode(const Entity& entity);
@@ -89,6 +94,7 @@ private:
     std::map<EntityId, SoCoordinate3*> anchors_;  ///< a constraint's pin
     std::map<EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
+    int nonFiniteRejections_ = 0;
     std::map<EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
     EntityId highlighted_ = 0;
     std::vector<EntityId> marked_;
