@@ -13,6 +13,7 @@
 #include <QTimer>
 
 #include <chrono>
+#include <iostream>
 
 namespace sculptline::ui {
 namespace {
@@ -127,7 +128,18 @@ void Replayer::sendMouse(const ReplayEvent& e)
         held_ &= ~Qt::MouseButtons(e.button);
     }
     QMouseEvent event(type, local, local, global, button, held_, e.modifiers);
+    // A right click opens the viewer's pop-up menu, whose nested event loop would wait for a
+    // click the session does not have: dismiss it as a person would (Esc) once it is up.
+    if (e.type == ReplayEvent::Type::Press) QTimer::singleShot(0, this, []() { dismissPopups(); });
     QApplication::sendEvent(target, &event);
+}
+
+void Replayer::dismissPopups()
+{
+    while (QWidget* popup = QApplication::activePopupWidget()) {
+        std::cerr << "sculptline: replay: closed the pop-up menu a click opened\n";
+        popup->close();
+    }
 }
 
 void Replayer::sendKey(const ReplayEvent& e)

@@ -34,6 +34,8 @@ private:
     void dispatch(const ReplayEvent& e);
     void sendMouse(const ReplayEvent& e);
     void sendKey(const ReplayEvent& e);
+    /// Closes pop-up menus (the viewer's right-click menu) that would wait for a click forever.
+    static void dismissPopups();
 
     MainWindow& window_;
     ReplaySession session_;

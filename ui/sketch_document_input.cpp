@@ -127,6 +127,7 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and
         // least squares, in the plane's local frame and model units.
         const solvers::stroke::FitResult fit = solvers::stroke::fitStroke(input);
+        scene::requireCurveExtent(fit.curve);
         scene::Entity curve;
         curve.kind = scene::EntityKind::Curve;
         curve.inputs = {plane};
@@ -201,6 +202,13 @@ void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
 {
     const scene::Entity* curve = model_.find(recognizedCurve_);
     if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
+    try {
+        scene::requireCurveExtent(target);
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Shape not used: %1").arg(QString::fromStdString(e.what()));
+        Q_EMIT strokeFinished();
+        return;
+    }
     undo_.push(new ReplaceCurveCommand(*this, recognizedCurve_, *curve->local, target));
     Q_EMIT strokeFinished();
 }
@@ -250,6 +258,7 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
     try {
         double maxError = 0.0;
         solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke.points, {}, nullptr, &maxError);
+        scene::requireCurveExtent(changed);
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = changed.pointCount();
         lastStroke_.maxError = maxError;
@@ -287,6 +296,7 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
     view.depth = frame.normal();
     try {
         const solvers::editing::LiftResult lifted = solvers::editing::liftStroke(flat, a.z(), b.z(), {}, view);
+        scene::requireCurveExtent(lifted.curve);
         scene::Entity curve;
         curve.kind = scene::EntityKind::Curve;
         curve.local = lifted.curve;
@@ -354,7 +364,14 @@ void SketchDocument::pullTo(const Eigen::Vector3d& local)
     targets.insert(targets.end(), pullHeld_.begin(), pullHeld_.end());
     // Marks the curve dirty only: the scheduler re-tessellates it once per frame.
     solvers::editing::ManipulationReport report;
-    model_.setCurveShape(pulled_, pullSolver_->solve(targets, &report));
+    solvers::Curve3d pulled = pullSolver_->solve(targets, &report);
+    try {
+        scene::requireCurveExtent(pulled);
+    } catch (const std::exception& e) {
+        pullMessage_ = QString::fromStdString(e.what());  // the curve keeps its last shape
+        return;
+    }
+    model_.setCurveShape(pulled_, std::move(pulled));
     if (!report.message.empty()) pullMessage_ = QString::fromStdString(report.message);
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <stdexcept>
 
@@ -53,6 +54,21 @@ bool finiteSpline(const Geometry& g)
 }
 
 }  // namespace
+
+void requireCurveExtent(const solvers::Curve3d& curve)
+{
+    Eigen::Vector3d lo = curve.points().front(), hi = lo;
+    for (const Eigen::Vector3d& p : curve.points()) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const double extent = (hi - lo).norm();
+    if (!(extent >= kMinCurveExtent)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "the curve would span %.3g mm, below the %.0e mm a curve must span to be edited", extent, kMinCurveExtent);
+        throw std::invalid_argument(text);
+    }
+}
 
 bool hasFiniteGeometry(const Entity& e)
 {

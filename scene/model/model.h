@@ -188,6 +188,16 @@ private:
     std::function<void()> dirtyCallback_;
 };
 
+/// Smallest extent (diagonal of the control points' bounding box, model units) of a curve that is
+/// drawn, reshaped or lifted: a nanometre in millimetres. Documents hold coordinates up to 1e6,
+/// where a double resolves 1e6 x 2.2e-16 = 2.2e-10; a curve thousands of times larger than that
+/// keeps its shape through plane transforms, and the arc lengths, projections and fits that edit
+/// it stay well conditioned. A smaller one (a stroke drawn with the camera almost on its plane)
+/// would be a point to the designer and to the solvers alike.
+constexpr double kMinCurveExtent = 1e-6;
+/// @throws std::invalid_argument, saying how small it is, when `curve` is below kMinCurveExtent.
+void requireCurveExtent(const solvers::Curve3d& curve);
+
 /// True when every coordinate the entity would hand to a view (plane frame, curve control points and
 /// weights, surface, mesh, constraint anchor) is finite. Views check it before drawing: a NaN or an
 /// infinity never reaches Coin, whose bounding boxes and OpenGL would turn it into garbage.

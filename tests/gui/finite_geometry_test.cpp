@@ -83,3 +83,40 @@ TEST_F(FiniteGeometry, APlaneIgnoresANonFiniteFrameAndKeepsItsCurves)
 
 }  // namespace
 }  // namespace sculptline::scene
+
+namespace sculptline::scene {
+namespace {
+
+solvers::Curve3d cubicAround(const Eigen::Vector3d& centre, double spread)
+{
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 4; ++i) points.push_back(centre + spread * Eigen::Vector3d(i, (i * i) % 3, 0));
+    return solvers::Curve3d(3, {0, 0, 0, 0, 1, 1, 1, 1}, points);
+}
+
+TEST(CurveExtent, ACurveOfRoundOffSizeIsRefusedWithItsSize)
+{
+    // Given a curve whose control points lie within 1e-14 of each other (a stroke drawn with the
+    // camera almost on its plane), and one exactly collapsed
+    const solvers::Curve3d tiny = cubicAround(Eigen::Vector3d(12, 34, 0), 1e-14);
+    const solvers::Curve3d point = cubicAround(Eigen::Vector3d(12, 34, 0), 0.0);
+
+    // Then both are refused, and the message says how small
+    try {
+        requireCurveExtent(tiny);
+        FAIL() << "a 1e-14 curve was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("mm"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(requireCurveExtent(point), std::invalid_argument);
+}
+
+TEST(CurveExtent, ASmallButRealCurveIsAccepted)
+{
+    // A tenth of a millimetre at a kilometre from the origin: well within what doubles resolve.
+    EXPECT_NO_THROW(requireCurveExtent(cubicAround(Eigen::Vector3d(1e6, -1e6, 0), 1e-4)));
+    EXPECT_NO_THROW(requireCurveExtent(cubicAround(Eigen::Vector3d::Zero(), kMinCurveExtent)));
+}
+
+}  // namespace
+}  // namespace sculptline::scene
