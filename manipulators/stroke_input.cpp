@@ -1,5 +1,7 @@
 #include "manipulators/stroke_input.h"
 
+#include <algorithm>
+
 #include "scene/eigen_coin.h"
 #include "scene/overlay_nodes.h"
 
@@ -30,6 +32,10 @@ constexpr float kPreviewWidth = 2.0f;
 /// Rays closer to parallel with the plane than this (cosine) miss it: the point would fly off to
 /// where the plane is seen edge-on.
 constexpr double kMinRayCosine = 1e-3;
+/// A press and release whose pointer stayed within this many pixels (in x and in y) is a click,
+/// however much the hand trembled: a mouse or a pen on a tablet wanders a pixel or two while it
+/// clicks, and a curve drawn from that would be a dot of a pixel's size (at a high zoom, microns).
+constexpr int kClickPixels = 3;
 /// Pixels around the pointer within which a stroke's end counts as on a curve.
 constexpr float kCurvePickRadius = 5.0f;
 
@@ -176,6 +182,9 @@ void StrokeInput::onEvent(SoEventCallback* node)
         stroke_ = {};
         stroke_.frame = *plane;
         stroke_.start = start;
+        const SbVec2s at = event->getPosition();
+        pixelBox_[0] = pixelBox_[2] = at[0];
+        pixelBox_[1] = pixelBox_[3] = at[1];
         addSample(node, 0.0);
         node->setHandled();
     } else if (drawing_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
@@ -192,6 +201,11 @@ void StrokeInput::onEvent(SoEventCallback* node)
 
 void StrokeInput::addSample(SoEventCallback* node, double time)
 {
+    const SbVec2s at = node->getEvent()->getPosition();
+    pixelBox_[0] = std::min<int>(pixelBox_[0], at[0]);
+    pixelBox_[1] = std::min<int>(pixelBox_[1], at[1]);
+    pixelBox_[2] = std::max<int>(pixelBox_[2], at[0]);
+    pixelBox_[3] = std::max<int>(pixelBox_[3], at[1]);
     Eigen::Vector3d from, direction;
     if (!ray(node, from, direction)) return;
     // Times must not decrease (replayed events may carry equal stamps).
@@ -216,7 +230,8 @@ void StrokeInput::endStroke(bool keep)
     stroke_ = {};
     previewPoints_->point.setNum(0);
     previewLine_->numVertices.setNum(0);
-    if (keep && finished_ && stroke.rayOrigins.size() >= 2) finished_(stroke);
+    const bool click = pixelBox_[2] - pixelBox_[0] < kClickPixels && pixelBox_[3] - pixelBox_[1] < kClickPixels;
+    if (keep && finished_ && stroke.rayOrigins.size() >= 2 && !click) finished_(stroke);
 }
 
 }  // namespace sculptline::manipulators

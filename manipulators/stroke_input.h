@@ -99,6 +99,8 @@ private:
     bool enabled_ = false;
     bool drawing_ = false;
     double startTime_ = 0.0;
+    /// The pointer's pixel bounding box over the stroke (x0, y0, x1, y1): a click that jittered.
+    int pixelBox_[4] = {0, 0, 0, 0};
     FinishedStroke stroke_;
     std::function<SoCamera*()> camera_;
     ActivePlane plane_;

@@ -22,6 +22,10 @@ namespace {
 /// Edge limits of an auxiliary plane, model units: big enough to grab, never a sky-sized sheet.
 constexpr double kMinAuxiliarySize = 40.0;
 constexpr double kMaxAuxiliarySize = 1000.0;
+/// A recognition candidate smaller than this fraction of the freeform curve of its stroke is not
+/// used: a regularized shape keeps the size of what was drawn (a circle, a line across it), and one
+/// that collapses it (the line between the ends of a loop) is not what the stroke showed.
+constexpr double kMinCandidateFraction = 0.05;
 
 }  // namespace
 
@@ -203,7 +207,10 @@ void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
     const scene::Entity* curve = model_.find(recognizedCurve_);
     if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
     try {
-        scene::requireCurveExtent(target);
+        // A candidate must keep the stroke's size: the line through the ends of a stroke drawn as
+        // a loop is a point, which nobody asked for and no solver can edit.
+        const double stroke = freeformFit_ ? scene::curveExtent(*freeformFit_) : 0.0;
+        scene::requireCurveExtent(target, std::max(scene::kMinCurveExtent, kMinCandidateFraction * stroke));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Shape not used: %1").arg(QString::fromStdString(e.what()));
         Q_EMIT strokeFinished();

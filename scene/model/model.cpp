@@ -55,17 +55,22 @@ bool finiteSpline(const Geometry& g)
 
 }  // namespace
 
-void requireCurveExtent(const solvers::Curve3d& curve)
+double curveExtent(const solvers::Curve3d& curve)
 {
     Eigen::Vector3d lo = curve.points().front(), hi = lo;
     for (const Eigen::Vector3d& p : curve.points()) {
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
     }
-    const double extent = (hi - lo).norm();
-    if (!(extent >= kMinCurveExtent)) {
+    return (hi - lo).norm();
+}
+
+void requireCurveExtent(const solvers::Curve3d& curve, double minimum)
+{
+    const double extent = curveExtent(curve);
+    if (!(extent >= minimum)) {
         char text[160];
-        std::snprintf(text, sizeof text, "the curve would span %.3g mm, below the %.0e mm a curve must span to be edited", extent, kMinCurveExtent);
+        std::snprintf(text, sizeof text, "the curve would span %.3g mm, less than the %.3g mm it must span", extent, minimum);
         throw std::invalid_argument(text);
     }
 }

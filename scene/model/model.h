@@ -195,8 +195,10 @@ private:
 /// it stay well conditioned. A smaller one (a stroke drawn with the camera almost on its plane)
 /// would be a point to the designer and to the solvers alike.
 constexpr double kMinCurveExtent = 1e-6;
-/// @throws std::invalid_argument, saying how small it is, when `curve` is below kMinCurveExtent.
-void requireCurveExtent(const solvers::Curve3d& curve);
+/// The diagonal of the bounding box of the curve's control points (model units).
+double curveExtent(const solvers::Curve3d& curve);
+/// @throws std::invalid_argument, saying how small it is, when curveExtent(curve) < `minimum`.
+void requireCurveExtent(const solvers::Curve3d& curve, double minimum = kMinCurveExtent);
 
 /// True when every coordinate the entity would hand to a view (plane frame, curve control points and
 /// weights, surface, mesh, constraint anchor) is finite. Views check it before drawing: a NaN or an

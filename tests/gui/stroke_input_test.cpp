@@ -103,6 +103,17 @@ TEST_F(StrokeInputTest, TallViewportsAreNotSqueezed)
     EXPECT_LT((strokes_[0].points.back() - Eigen::Vector3d(100.0 / 6, -10, 0)).norm(), kTolerance);
 }
 
+TEST_F(StrokeInputTest, AClickThatTremblesAPixelOrTwoDrawsNothing)
+{
+    // Given a press and release two pixels apart, with a move in between (a hand clicking)
+    drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(402, 301), 2);
+    // Then no stroke arrives: it would be a curve the size of a dot
+    EXPECT_TRUE(strokes_.empty());
+    // But three pixels are a (short) stroke
+    drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(403, 300), 3);
+    EXPECT_EQ(strokes_.size(), 1u);
+}
+
 TEST_F(StrokeInputTest, DisabledInputDrawsNothing)
 {
     input_->setEnabled(false);
