@@ -3,11 +3,13 @@
 #include "manipulators/curve_pull.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
+#include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
+#include "ui/undo_history.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbViewVolume.h>
@@ -66,6 +68,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
                static_cast<int>(available.height() * kDefaultScreenShare));
     }
     document_ = new SketchDocument(this);
+    history_ = new UndoHistory(*document_, this);
     if (withViewer) {
         viewer_ = new SoQtExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
@@ -109,6 +112,9 @@ MainWindow::~MainWindow()
 {
     // The viewer holds a ref on the graph: detach it before the document frees its nodes.
     if (viewer_) viewer_->setSceneGraph(nullptr);
+    // A normal end: the recovery file goes; the history must not follow the stack being emptied.
+    delete autosaver_;
+    delete history_;
     delete document_;
     document_ = nullptr;
     delete viewer_;
