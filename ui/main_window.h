@@ -68,6 +68,10 @@ public:
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
 
+    /// Tells a person in a dialog why the document they asked for is not the one open (the
+    /// default scene is shown instead).
+    void reportOpenFailure(const QString& reason);
+
     /// Writes the unsaved work to a recovery file in `folder` every `seconds` (ui/autosave.h);
     /// failures go to the status bar (and stderr in an automated run).
     void enableAutosave(const QString& folder, int seconds);

@@ -54,11 +54,12 @@ bool MainWindow::offerRecovery(const QString& folder, bool ask)
         return false;
     }
     const QString name = data.document.isEmpty() ? tr("an untitled document") : QFileInfo(data.document).fileName();
+    const int count = static_cast<int>(data.history.texts.size());
+    const QString steps = count == 1 ? tr("1 step") : tr("%1 steps").arg(count);
     if (ask) {
         QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"),
-                        tr("Sculptline ended without saving the work on %1 (%n step(s), autosaved %2).", nullptr,
-                           static_cast<int>(data.history.texts.size()))
-                            .arg(name, QLocale::system().toString(QFileInfo(orphan->path).lastModified(), QLocale::ShortFormat)),
+                        tr("Sculptline ended without saving the work on %1 (%2, autosaved %3).")
+                            .arg(name, steps, QLocale::system().toString(QFileInfo(orphan->path).lastModified(), QLocale::ShortFormat)),
                         QMessageBox::NoButton, this);
         box.setInformativeText(tr("Recover it, or discard it for good?"));
         QPushButton* recover = box.addButton(tr("Recover"), QMessageBox::AcceptRole);

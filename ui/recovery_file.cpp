@@ -91,7 +91,7 @@ RecoveryData readRecoveryFile(const QString& path)
 
 std::optional<OrphanedRecovery> claimOrphanedRecovery(const QString& folder)
 {
-    const QFileInfoList files = QDir(folder).entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Time);
+    const QFileInfoList files = QDir(folder).entryInfoList({QStringLiteral("session-*.json")}, QDir::Files, QDir::Time);
     for (const QFileInfo& file : files) {
         auto lock = std::make_unique<QLockFile>(recoveryLockPath(file.absoluteFilePath()));
         // Only a dead owner makes a lock stale: a live session may go hours without autosaving.

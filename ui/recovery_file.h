@@ -1,7 +1,7 @@
 #pragma once
 // Recovery files: the unsaved work of a running session, written by the autosave
-// (ui/autosave.h) to $XDG_DATA_HOME/sculptline/recovery/<session>.json beside a lock file
-// <session>.lock that the session holds while it lives. A recovery file whose lock is not held
+// (ui/autosave.h) to $XDG_DATA_HOME/sculptline/recovery/session-<time>-<pid>.json beside a lock
+// file session-<time>-<pid>.lock that the session holds while it lives. A recovery file whose lock is not held
 // (its session was killed or crashed) is an orphan, and the next start offers it.
 //
 // Format: {"format": "sculptline-recovery", "version": 1, "document": path or null (untitled),
@@ -41,7 +41,7 @@ struct OrphanedRecovery {
     std::unique_ptr<QLockFile> lock;
 };
 
-/// The newest recovery file in `folder` whose session is no longer alive, locked; nullopt when
+/// The newest recovery file (session-*.json) in `folder` whose session is no longer alive, locked; nullopt when
 /// there is none. A file whose lock a live process holds is never returned.
 std::optional<OrphanedRecovery> claimOrphanedRecovery(const QString& folder);
 

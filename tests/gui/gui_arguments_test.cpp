@@ -42,7 +42,8 @@ TEST(GuiArguments, HelpListsTheFlags)
 {
     const ProgramRun run = runSculptline("--help");
     EXPECT_EQ(run.status, 0);
-    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions"}) {
+    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions",
+                             "--autosave-interval", "--recover"}) {
         EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
     }
 }
@@ -105,6 +106,20 @@ TEST(GuiArguments, UnreadableDocumentsAreRefused)
     std::ofstream(broken) << "{\"planes\": [";
     expectError("'" + broken + "'", "malformed JSON");
     std::remove(broken.c_str());
+}
+
+TEST(GuiArguments, NewerDocumentsAreRefusedByVersion)
+{
+    const std::string newer = testing::TempDir() + "sculptline_gui_newer_scene.json";
+    std::ofstream(newer) << R"({"format": "sculptline", "version": 2, "planes": "in a form to come"})";
+    expectError("'" + newer + "'", newer + ": made by a newer Sculptline (version 2); this one reads up to 1");
+    std::remove(newer.c_str());
+}
+
+TEST(GuiArguments, BadAutosaveIntervalsAreRefused)
+{
+    expectError("--autosave-interval -5", "--autosave-interval");
+    expectError("--autosave-interval soon", "--autosave-interval");
 }
 
 TEST(GuiArguments, MissingDefaultDataDirectoryIsAnError)
