@@ -153,6 +153,7 @@ void MainWindow::createActions()
     make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
+    make(file, "file.recover", tr("Recover &Unsaved Work..."), QKeySequence(), [this]() { recoverFromMenu(); });
     file->addSeparator();
     make(file, "file.quit", tr("&Quit"), QKeySequence::Quit, [this]() { close(); });
 

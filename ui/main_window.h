@@ -81,6 +81,9 @@ public:
     /// Recover / Discard; closing it keeps the file for the next start), or with `ask` false
     /// recovers it at once: the document, its undo history and its path. True when recovered.
     bool offerRecovery(const QString& folder, bool ask);
+    /// File > Recover Unsaved Work: offerRecovery() in the autosave's folder, for work whose
+    /// start-up question was closed unanswered (or that another session left since).
+    void recoverFromMenu();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -127,6 +130,7 @@ private:
     QMenu* recentMenu_ = nullptr;
     UndoHistory* history_ = nullptr;
     Autosaver* autosaver_ = nullptr;
+    QString recoveryFolder_;  ///< where autosaves go and orphans are looked for
 };
 
 }  // namespace sculptline::ui

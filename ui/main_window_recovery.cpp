@@ -23,6 +23,7 @@ namespace sculptline::ui {
 void MainWindow::enableAutosave(const QString& folder, int seconds)
 {
     delete autosaver_;
+    recoveryFolder_ = folder;
     autosaver_ = new Autosaver(*document_, *history_, folder, seconds, this);
     if (!autosaver_->error().isEmpty()) std::cerr << "sculptline: " << autosaver_->error().toStdString() << "\n";
     connect(autosaver_, &Autosaver::failed, this, [this](const QString& message) {
@@ -71,6 +72,7 @@ bool MainWindow::offerRecovery(const QString& folder, bool ask)
             return false;
         }
         if (box.clickedButton() != recover) return false;  // closed: asked again next time
+        if (!maybeSave()) return false;  // the work open now comes first
     }
     try {
         const scene::SceneDocument state =
@@ -88,8 +90,19 @@ bool MainWindow::offerRecovery(const QString& folder, bool ask)
     if (autosaver_) autosaver_->autosave(true);
     removeOrphan(*orphan);
     statusBar()->showMessage(tr("Recovered the unsaved work on %1").arg(name));
-    std::cerr << "sculptline: recovered " << data.history.texts.size() << " step(s) of unsaved work on " << name.toStdString() << "\n";
+    std::cerr << "sculptline: recovered " << steps.toStdString() << " of unsaved work on " << name.toStdString() << "\n";
     return true;
+}
+
+void MainWindow::recoverFromMenu()
+{
+    if (refuseDialog("file.recover")) return;
+    const QString folder = recoveryFolder_.isEmpty() ? recoveryFolder() : recoveryFolder_;
+    if (!claimOrphanedRecovery(folder)) {
+        statusBar()->showMessage(tr("No unsaved work of an earlier session to recover"));
+        return;
+    }
+    offerRecovery(folder, true);
 }
 
 }  // namespace sculptline::ui
