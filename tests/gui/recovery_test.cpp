@@ -1,7 +1,8 @@
 // Recovery after a real kill -9: the test (run under Xvfb by ctest) starts sculptline with a short
 // autosave interval and a private XDG_DATA_HOME, replays edits, waits until the recovery file holds
 // them, kills the program with SIGKILL, and starts it again with --recover. Also: a live session's
-// recovery file is never taken by another, and a normal exit leaves nothing behind.
+// recovery file is never taken by another, and a normal exit leaves nothing behind. And saving
+// through the real program when the disk refuses the write.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -50,29 +51,31 @@ protected:
     std::string folder() const { return home_ + "/sculptline/recovery"; }
     std::string file(const std::string& name) const { return home_ + "/" + name; }
 
-    /// Starts sculptline with `arguments`; its stderr goes to `log`.
-    pid_t start(const std::vector<std::string>& arguments, const std::string& log) const
+    /// Starts sculptline with `arguments` (or, with `program`, the program arguments[0] with the
+    /// rest); its stderr goes to `log`.
+    pid_t start(const std::vector<std::string>& arguments, const std::string& log, bool program = false) const
     {
         const pid_t pid = fork();
         if (pid == 0) {
             setenv("XDG_DATA_HOME", home_.c_str(), 1);
             const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
             dup2(fd, 2);
-            std::vector<char*> argv{const_cast<char*>(SCULPTLINE_EXE)};
+            std::vector<char*> argv;
+            if (!program) argv.push_back(const_cast<char*>(SCULPTLINE_EXE));
             for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
             argv.push_back(nullptr);
-            execv(SCULPTLINE_EXE, argv.data());
+            execv(argv.front(), argv.data());
             _exit(127);
         }
         return pid;
     }
 
     /// Runs sculptline to its end; returns its exit status (-1: killed by a signal) and stderr.
-    int run(const std::vector<std::string>& arguments, std::string* output = nullptr) const
+    int run(const std::vector<std::string>& arguments, std::string* output = nullptr, bool program = false) const
     {
         const std::string log = file("run.log");
         int status = 0;
-        waitpid(start(arguments, log), &status, 0);
+        waitpid(start(arguments, log, program), &status, 0);
         if (output) *output = readFile(log);
         return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
@@ -193,6 +196,29 @@ TEST_F(Recovery, ANormalExitLeavesNoRecoveryFile)
     EXPECT_NE(log.find("autosaved"), std::string::npos) << log;
     EXPECT_TRUE(filesIn(folder(), ".json").empty());
     EXPECT_TRUE(filesIn(folder(), ".lock").empty());
+}
+
+/// Saving through the real program (the same private folder set-up).
+class Saving : public Recovery {};
+
+TEST_F(Saving, ASaveThatHitsAFileSizeLimitLeavesTheDocumentWholeAndSaysWhy)
+{
+    // Given a saved document, then a session that edits it and may write at most 1000 bytes per
+    // file (as on a full disk)
+    ASSERT_EQ(run({"--save", file("doc.json"), "--quit"}), 0);
+    const std::string before = readFile(file("doc.json"));
+    ASSERT_GT(before.size(), 1000u);
+    std::string log;
+    const int status = run({"/usr/bin/prlimit", "--fsize=1000", "--", SCULPTLINE_EXE, file("doc.json"), "--replay",
+                            SCULPTLINE_DATA_DIR "/sessions/sketch_two_strokes.json", "--save", file("doc.json"), "--quit"},
+                           &log, true);
+    // Then the program was not killed by the limit: it said why in one line and exits with 1
+    EXPECT_EQ(status, 1) << log;
+    EXPECT_NE(log.find("sculptline: --save: " + file("doc.json") + ": cannot save (File too large)\n"), std::string::npos) << log;
+    // And the document is the old one, whole, with no temporary file beside it
+    EXPECT_EQ(readFile(file("doc.json")), before);
+    EXPECT_EQ(filesIn(home_, ".json").size(), 1u);
+    EXPECT_TRUE(filesIn(home_, ".bak").empty());
 }
 
 TEST_F(Recovery, ABadDocumentEndsAScriptedRunWithStatus2EvenWithADisplay)
