@@ -42,7 +42,14 @@ Autosaver::Autosaver(SketchDocument& doc, UndoHistory& history, const QString& f
     });
     connect(&doc, &SketchDocument::replaced, this, [this]() { discard(); });
     connect(&timer_, &QTimer::timeout, this, [this]() { autosave(); });
-    if (intervalSeconds > 0) timer_.start(intervalSeconds * 1000);
+    setInterval(intervalSeconds);
+}
+
+void Autosaver::setInterval(int seconds)
+{
+    interval_ = seconds;
+    timer_.stop();
+    if (seconds > 0 && lock_) timer_.start(seconds * 1000);
 }
 
 Autosaver::~Autosaver()

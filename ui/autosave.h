@@ -33,6 +33,9 @@ public:
 
     /// This session's recovery file (it exists only while there is unsaved work).
     const QString& recoveryPath() const { return path_; }
+    /// Seconds between autosaves; 0 = only when asked.
+    int interval() const { return interval_; }
+    void setInterval(int seconds);
     /// Why autosaving is off, or empty.
     const QString& error() const { return error_; }
 
@@ -58,6 +61,7 @@ private:
     /// One thread, so that writes happen in the order they were queued.
     QThreadPool writer_;
     bool pending_ = false;  ///< changes since the last write
+    int interval_ = 0;
 };
 
 }  // namespace sculptline::ui

@@ -154,6 +154,7 @@ void MainWindow::createActions()
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
     make(file, "file.recover", tr("Recover &Unsaved Work..."), QKeySequence(), [this]() { recoverFromMenu(); });
+    make(file, "file.autosaveInterval", tr("Autosave &Interval..."), QKeySequence(), [this]() { chooseAutosaveInterval(); });
     file->addSeparator();
     make(file, "file.quit", tr("&Quit"), QKeySequence::Quit, [this]() { close(); });
 

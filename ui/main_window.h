@@ -76,6 +76,11 @@ public:
     /// failures go to the status bar (and stderr in an automated run).
     void enableAutosave(const QString& folder, int seconds);
     Autosaver* autosaver() const { return autosaver_; }
+    /// File > Autosave Interval: asks for the seconds between autosaves (0 = off), applies them
+    /// and keeps them (QSettings "autosaveInterval") for the next start.
+    void chooseAutosaveInterval();
+    /// The interval File > Autosave Interval kept, or `fallback` when none was.
+    static int autosaveIntervalSetting(int fallback);
     UndoHistory& history() { return *history_; }
     /// When a session that ended without saving left its work in `folder`, offers it (a dialog:
     /// Recover / Discard; closing it keeps the file for the next start), or with `ask` false

@@ -12,13 +12,21 @@
 #include <QLocale>
 #include <QFileInfo>
 #include <QMessageBox>
+#include <QInputDialog>
 #include <QPushButton>
+#include <QSettings>
 #include <QStatusBar>
 
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 namespace sculptline::ui {
+namespace {
+
+/// The longest autosave interval accepted, as for --autosave-interval: a day.
+constexpr int kMaxAutosaveInterval = 24 * 3600;
+
+}  // namespace
 
 void MainWindow::enableAutosave(const QString& folder, int seconds)
 {
@@ -103,6 +111,25 @@ void MainWindow::recoverFromMenu()
         return;
     }
     offerRecovery(folder, true);
+}
+
+void MainWindow::chooseAutosaveInterval()
+{
+    if (!autosaver_ || refuseDialog("file.autosaveInterval")) return;
+    bool ok = false;
+    const int seconds = QInputDialog::getInt(this, tr("Autosave interval"), tr("Seconds between autosaves of unsaved work (0 = off):"),
+                                             autosaver_->interval(), 0, kMaxAutosaveInterval, 30, &ok);
+    if (!ok) return;
+    autosaver_->setInterval(seconds);
+    QSettings().setValue(QStringLiteral("autosaveInterval"), seconds);
+    statusBar()->showMessage(seconds > 0 ? tr("Autosave every %1 s").arg(seconds) : tr("Autosave off"));
+}
+
+int MainWindow::autosaveIntervalSetting(int fallback)
+{
+    bool ok = false;
+    const int seconds = QSettings().value(QStringLiteral("autosaveInterval")).toInt(&ok);
+    return ok && seconds >= 0 && seconds <= kMaxAutosaveInterval ? seconds : fallback;
 }
 
 }  // namespace sculptline::ui

@@ -72,6 +72,7 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
         }
     }
     options.documentGiven = !options.document.empty();
+    options.autosaveIntervalGiven = cli.count("--autosave-interval") > 0;
     if (options.document.empty()) options.document = defaultDocumentPath();
     result.options = options;
     return result;

@@ -17,7 +17,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QElapsedTimer>
-#include <QMessageBox>
 #include <QTimer>
 #include <QWindow>
 
@@ -149,7 +148,10 @@ int main(int argc, char** argv)
     // The default scene opens untitled, so that File > Save asks where instead of overwriting it.
     window.showDocument(start.document, QString::fromStdString(start.path));
     const QString recovery = ui::recoveryFolder();
-    window.enableAutosave(recovery, options.autosaveInterval);
+    // A script gets the flag or the default, never a person's setting: its runs must repeat.
+    const int interval = options.autosaveIntervalGiven || options.scripted() ? options.autosaveInterval
+                                                                             : ui::MainWindow::autosaveIntervalSetting(options.autosaveInterval);
+    window.enableAutosave(recovery, interval);
     std::unique_ptr<ui::Replayer> replayer;
     if (session) {
         replayer = std::make_unique<ui::Replayer>(window, *session);
@@ -167,10 +169,7 @@ int main(int argc, char** argv)
             std::cerr << "sculptline: unsaved work of an earlier session is in " << orphan->path.toStdString()
                       << "; start with --recover to reopen it\n";
     } else {
-        if (!start.error.empty()) {
-            QMessageBox::warning(&window, QObject::tr("Cannot open document"),
-                                 QObject::tr("%1\nThe default scene is open instead.").arg(QString::fromStdString(start.error)));
-        }
+        if (!start.error.empty()) window.reportOpenFailure(QString::fromStdString(start.error));
         window.offerRecovery(recovery, true);
     }
     const int width = options.width > 0 ? options.width : session ? session->width : 0;

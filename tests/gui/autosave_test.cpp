@@ -18,6 +18,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QInputDialog>
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QAction>
@@ -41,6 +42,8 @@ void startApplication()
     static char* argv[] = {name, nullptr};
     static QApplication* app = nullptr;
     if (app) return;
+    // The settings File > Autosave Interval writes go to a private folder, not the user's.
+    qputenv("XDG_CONFIG_HOME", QByteArray::fromStdString(testing::TempDir() + "sculptline_autosave_config"));
     app = new QApplication(argc, argv);
     SoQt::init(static_cast<QWidget*>(nullptr));
 }
@@ -296,6 +299,26 @@ TEST(Autosave, TheFileMenuRecoversWorkWhoseQuestionWasClosed)
     // And with nothing left, the menu says so instead of asking
     window.action(QStringLiteral("file.recover"))->trigger();
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("No unsaved work")));
+}
+
+TEST(Autosave, TheIntervalIsASettingOfTheWindow)
+{
+    startApplication();
+    MainWindow window;
+    window.showDocument(defaultScene(), QString());
+    window.enableAutosave(freshFolder("interval"), 120);
+    window.show();
+    // When File > Autosave Interval is answered with 45 seconds
+    QTimer::singleShot(50, []() {
+        auto* dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+        ASSERT_NE(dialog, nullptr);
+        dialog->setIntValue(45);
+        dialog->accept();
+    });
+    window.action(QStringLiteral("file.autosaveInterval"))->trigger();
+    // Then the autosave runs every 45 s, and the next start will too
+    EXPECT_EQ(window.autosaver()->interval(), 45);
+    EXPECT_EQ(MainWindow::autosaveIntervalSetting(120), 45);
 }
 
 TEST(Autosave, ADocumentThatCannotBeOpenedIsExplainedInADialog)

@@ -55,7 +55,7 @@ TEST(GuiArguments, ActionsAreListedWithoutADisplay)
     // Then every command is there by name, with its hot key
     EXPECT_EQ(run.status, 0) << run.output;
     for (const char* line : {"mode.sketch\tS\t", "mode.revolve\tR\t", "mode.railRotation\tG\t", "edit.undo\tCtrl+Z\t",
-                             "file.exportIv\t", "file.recover\t", "surface.build\tReturn\t"}) {
+                             "file.exportIv\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t"}) {
         EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
     }
 }
