@@ -33,7 +33,10 @@ void MainWindow::enableAutosave(const QString& folder, int seconds)
     delete autosaver_;
     recoveryFolder_ = folder;
     autosaver_ = new Autosaver(*document_, *history_, folder, seconds, this);
-    if (!autosaver_->error().isEmpty()) std::cerr << "sculptline: " << autosaver_->error().toStdString() << "\n";
+    if (!autosaver_->error().isEmpty()) {
+        statusBar()->showMessage(autosaver_->error());
+        std::cerr << "sculptline: " << autosaver_->error().toStdString() << "\n";
+    }
     connect(autosaver_, &Autosaver::failed, this, [this](const QString& message) {
         statusBar()->showMessage(message);
         std::cerr << "sculptline: " << message.toStdString() << "\n";
