@@ -170,11 +170,28 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     return c;
 }
 
+/// The format and version fields, checked first: a newer document must be refused by its version,
+/// not by whatever field of it this program does not know.
+void checkFormat(const json& j)
+{
+    if (const auto it = j.find("format"); it != j.end() && *it != kDocumentFormat) {
+        throw io::InputError(std::string("format: not a Sculptline document (expected \"") + kDocumentFormat + "\")");
+    }
+    if (const auto it = j.find("version"); it != j.end()) {
+        const int version = io::integerFromJson(*it, "version", 1, 1 << 30);
+        if (version > kDocumentVersion) {
+            throw io::InputError("made by a newer Sculptline (version " + std::to_string(version) + "); this one reads up to " +
+                                 std::to_string(kDocumentVersion));
+        }
+    }
+}
+
 }  // namespace
 
 SceneDocument documentFromJson(const json& j)
 {
     if (!j.is_object()) throw io::InputError("document: must be a JSON object");
+    checkFormat(j);
     SceneDocument doc;
     if (const auto it = j.find("grid"); it != j.end()) doc.grid = gridFromJson(*it);
     const json& planes = optionalArray(j, "planes");

@@ -71,6 +71,11 @@ struct SceneDocument {
     std::vector<MeshSpec> meshes;
 };
 
+/// The document format this program writes: "format": "sculptline", "version": kDocumentVersion.
+/// Documents without a version (written before it existed) read as version 1.
+constexpr const char* kDocumentFormat = "sculptline";
+constexpr int kDocumentVersion = 1;
+
 /// Reads a document object: {"grid": {..}, "planes": [..], "curves": [..], "surfaces": [..]}; every
 /// member is optional (absent = default grid / none), curves and surfaces use the JSON geometry of
 /// ../shared/interfaces.md. A plane may carry "id" (positive, unique) and "xAxis"; a curve may carry
@@ -78,6 +83,8 @@ struct SceneDocument {
 /// Curves and surfaces may carry "id" too; ids are unique across the document, and a curve's id is
 /// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes must lie within 1e6 model units (Coin draws in
 /// float).
+/// A "version" above kDocumentVersion is refused ("made by a newer Sculptline (version 2); this
+/// one reads up to 1"), as is a "format" other than kDocumentFormat.
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
 SceneDocument documentFromJson(const nlohmann::json& j);
 

@@ -3,11 +3,13 @@
 #include "manipulators/curve_pull.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
+#include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
+#include "ui/undo_history.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbViewVolume.h>
@@ -66,6 +68,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
                static_cast<int>(available.height() * kDefaultScreenShare));
     }
     document_ = new SketchDocument(this);
+    history_ = new UndoHistory(*document_, this);
     if (withViewer) {
         viewer_ = new SoQtExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
@@ -109,6 +112,9 @@ MainWindow::~MainWindow()
 {
     // The viewer holds a ref on the graph: detach it before the document frees its nodes.
     if (viewer_) viewer_->setSceneGraph(nullptr);
+    // A normal end: the recovery file goes; the history must not follow the stack being emptied.
+    delete autosaver_;
+    delete history_;
     delete document_;
     document_ = nullptr;
     delete viewer_;
@@ -147,6 +153,8 @@ void MainWindow::createActions()
     make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
+    make(file, "file.recover", tr("Recover &Unsaved Work..."), QKeySequence(), [this]() { recoverFromMenu(); });
+    make(file, "file.autosaveInterval", tr("Autosave &Interval..."), QKeySequence(), [this]() { chooseAutosaveInterval(); });
     file->addSeparator();
     make(file, "file.quit", tr("&Quit"), QKeySequence::Quit, [this]() { close(); });
 

@@ -22,10 +22,12 @@ class SoSeparator;
 
 namespace sculptline::ui {
 
+class Autosaver;
 class EntityListDock;
 class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
+class UndoHistory;
 
 /// Surface: one of the surface modes (MainWindow::surfaceMode() says which).
 enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface };
@@ -65,6 +67,28 @@ public:
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
+
+    /// Tells a person in a dialog why the document they asked for is not the one open (the
+    /// default scene is shown instead).
+    void reportOpenFailure(const QString& reason);
+
+    /// Writes the unsaved work to a recovery file in `folder` every `seconds` (ui/autosave.h);
+    /// failures go to the status bar (and stderr in an automated run).
+    void enableAutosave(const QString& folder, int seconds);
+    Autosaver* autosaver() const { return autosaver_; }
+    /// File > Autosave Interval: asks for the seconds between autosaves (0 = off), applies them
+    /// and keeps them (QSettings "autosaveInterval") for the next start.
+    void chooseAutosaveInterval();
+    /// The interval File > Autosave Interval kept, or `fallback` when none was.
+    static int autosaveIntervalSetting(int fallback);
+    UndoHistory& history() { return *history_; }
+    /// When a session that ended without saving left its work in `folder`, offers it (a dialog:
+    /// Recover / Discard; closing it keeps the file for the next start), or with `ask` false
+    /// recovers it at once: the document, its undo history and its path. True when recovered.
+    bool offerRecovery(const QString& folder, bool ask);
+    /// File > Recover Unsaved Work: offerRecovery() in the autosave's folder, for work whose
+    /// start-up question was closed unanswered (or that another session left since).
+    void recoverFromMenu();
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -109,6 +133,9 @@ private:
     std::string surfaceMode_;
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
+    UndoHistory* history_ = nullptr;
+    Autosaver* autosaver_ = nullptr;
+    QString recoveryFolder_;  ///< where autosaves go and orphans are looked for
 };
 
 }  // namespace sculptline::ui

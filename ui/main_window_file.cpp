@@ -102,12 +102,22 @@ void MainWindow::openDocument()
     }
 }
 
+void MainWindow::reportOpenFailure(const QString& reason)
+{
+    QMessageBox box(QMessageBox::Warning, tr("Cannot open document"), reason, QMessageBox::Ok, this);
+    box.setInformativeText(tr("The default scene is open instead."));
+    box.exec();
+}
+
 bool MainWindow::saveTo(const QString& path)
 {
     try {
         document_->save(path);
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot save"), QString::fromStdString(e.what()));
+        // The save is atomic (scene/model/atomic_file.h): whatever failed, the old file is whole.
+        QMessageBox box(QMessageBox::Warning, tr("Cannot save"), QString::fromStdString(e.what()), QMessageBox::Ok, this);
+        box.setInformativeText(tr("The file on disk is unchanged; the work is still open here."));
+        box.exec();
         return false;
     }
     updateTitle();

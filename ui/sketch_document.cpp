@@ -72,6 +72,13 @@ void SketchDocument::setNurbsNodes(bool nurbs)
 void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
 {
     undo_.clear();
+    restoreModel(doc);
+    path_ = path;
+    Q_EMIT replaced();
+}
+
+void SketchDocument::restoreModel(const scene::SceneDocument& doc)
+{
     selection_ = 0;
     lastPlane_ = 0;
     grid_ = doc.grid;
@@ -79,7 +86,7 @@ void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
     root_->replaceChild(gridNode_, grid);
     gridNode_ = grid;
     scene::populateModel(doc, model_);
-    path_ = path;
+    view_->setHighlighted(0);
     Q_EMIT entitiesChanged();
     Q_EMIT selectionChanged(0);
 }

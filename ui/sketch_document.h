@@ -57,7 +57,10 @@ public:
 
     /// Replaces everything by `doc` (the undo history is cleared); `path` empty = untitled.
     void load(const scene::SceneDocument& doc, const QString& path);
-    /// Writes the document; the undo stack becomes clean. @throws solvers::io::InputError.
+    /// The model becomes `doc` (grid, entities with their ids); the undo stack and the path stay.
+    void restoreModel(const scene::SceneDocument& doc);
+    /// Writes the document atomically, keeping the previous version as "<path>.bak"; the undo
+    /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
 
@@ -142,6 +145,8 @@ public:
     void entityUpdated(const scene::Entity& entity) override;
 
 Q_SIGNALS:
+    /// load() replaced the document (and cleared the undo stack).
+    void replaced();
     /// The set of entities or their data changed (lists, inspector).
     void entitiesChanged();
     void selectionChanged(scene::EntityId id);

@@ -1,6 +1,10 @@
 #include "ui/undo_commands.h"
 
+#include "scene/scene_document.h"
+#include "solvers/io/geometry_json.h"
 #include "ui/sketch_document.h"
+
+#include <nlohmann/json.hpp>
 
 namespace sculptline::ui {
 
@@ -134,6 +138,30 @@ void SetFixedPointsCommand::undo()
 {
     doc_.model().setFixedPoints(curve_, before_);
     doc_.notifyChanged();
+}
+
+RestoreStateCommand::RestoreStateCommand(SketchDocument& doc, std::shared_ptr<const std::string> before,
+                                         std::shared_ptr<const std::string> after, const QString& text, const bool& suspended)
+    : doc_(doc), before_(std::move(before)), after_(std::move(after)), suspended_(suspended)
+{
+    setText(text);
+}
+
+void RestoreStateCommand::redo()
+{
+    if (!suspended_) apply(*after_);
+}
+
+void RestoreStateCommand::undo()
+{
+    if (!suspended_) apply(*before_);
+}
+
+void RestoreStateCommand::apply(const std::string& state)
+{
+    // The states were written by this program and read back once already (on recovery): a
+    // failure here is a bug, not bad input.
+    doc_.restoreModel(scene::documentFromJson(solvers::io::parseJson(state)));
 }
 
 }  // namespace sculptline::ui

@@ -6,6 +6,8 @@
 
 #include <QUndoCommand>
 
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace sculptline::ui {
@@ -84,6 +86,24 @@ private:
     SketchDocument& doc_;
     scene::EntityId curve_;
     std::vector<int> before_, after_;
+};
+
+/// A step of a recovered session's history: the whole document before and after it (JSON text, as
+/// ui/undo_history.h keeps it). While `suspended` is true, redo and undo do nothing (the history
+/// is being rebuilt around a model that already shows the right state).
+class RestoreStateCommand : public QUndoCommand {
+public:
+    RestoreStateCommand(SketchDocument& doc, std::shared_ptr<const std::string> before, std::shared_ptr<const std::string> after,
+                        const QString& text, const bool& suspended);
+    void redo() override;
+    void undo() override;
+
+private:
+    void apply(const std::string& state);
+
+    SketchDocument& doc_;
+    std::shared_ptr<const std::string> before_, after_;
+    const bool& suspended_;
 };
 
 /// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.

@@ -43,6 +43,11 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
     cli.add_option("--stats", options.stats, "Write the replay's update latencies (JSON: count, p50, p99, max)");
+    cli.add_option("--autosave-interval", options.autosaveInterval,
+                   "Seconds between autosaves of unsaved work to the recovery file (default 120; 0 = off)")
+        ->check(CLI::Range(0, 24 * 3600));
+    cli.add_flag("--recover", options.recover,
+                 "Reopen the unsaved work of a session that ended without saving, without asking");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
     cli.add_flag("--nurbs-nodes", options.nurbsNodes,
                  "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "
@@ -67,6 +72,7 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
         }
     }
     options.documentGiven = !options.document.empty();
+    options.autosaveIntervalGiven = cli.count("--autosave-interval") > 0;
     if (options.document.empty()) options.document = defaultDocumentPath();
     result.options = options;
     return result;

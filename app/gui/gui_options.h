@@ -19,6 +19,15 @@ struct GuiOptions {
     bool listActions = false;  ///< print every action name and leave
     bool nurbsNodes = false;  ///< draw with SoNurbsCurve/SoNurbsSurface (frame-time comparison only)
     bool documentGiven = false;  ///< DOCUMENT was on the command line (else the default scene)
+    int autosaveInterval = 120;  ///< seconds between autosaves to the recovery file; 0 = off
+    bool autosaveIntervalGiven = false;  ///< on the command line (else File > Autosave Interval's setting)
+    bool recover = false;  ///< reopen the unsaved work of a session that died, without asking
+
+    /// Run by a script (a replay, an output flag or --quit): nobody is there to answer a dialog.
+    bool scripted() const
+    {
+        return quit || !replay.empty() || !save.empty() || !exportIv.empty() || !screenshot.empty() || !stats.empty();
+    }
 };
 
 /// The outcome of parsing: options to run with, or an exit status (0 after --help, 2 after an

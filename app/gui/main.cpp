@@ -1,10 +1,13 @@
-// sculptline: the GUI. Flags act in the order of ../shared/interfaces.md: open the document, replay,
-// save/export, screenshot, stats, quit. Everything that can fail on input (arguments, the document,
-// the session) is checked before Qt starts, so errors exit with status 2 and a message even without
-// a display.
+// sculptline: the GUI. Flags act in the order of ../shared/interfaces.md: open the document (or
+// recover unsaved work), replay, save/export, screenshot, stats, quit. Everything that can fail on
+// input (arguments, the document, the session) is checked before Qt starts, so errors exit with
+// status 2 and a message even without a display; only a person at a desktop gets the default
+// scene and a dialog instead of a bad document (app/gui/start_document.h).
 #include "app/gui/gui_options.h"
+#include "app/gui/start_document.h"
 #include "scene/scene_document.h"
 #include "ui/main_window.h"
+#include "ui/recovery_file.h"
 #include "ui/replay_session.h"
 #include "ui/replayer.h"
 #include "ui/sketch_document.h"
@@ -17,6 +20,7 @@
 #include <QTimer>
 #include <QWindow>
 
+#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
@@ -98,10 +102,14 @@ int main(int argc, char** argv)
     if (!parsed.options) return parsed.exitStatus;
     const app::GuiOptions& options = *parsed.options;
 
-    scene::SceneDocument document;
+    // A file size limit must make a save fail with a message, not kill the program and the work
+    // with it (the save is atomic: the old document stays).
+    std::signal(SIGXFSZ, SIG_IGN);
+
+    const app::StartDocument start = app::openStartDocument(options, haveDisplay() && !options.scripted() && !options.listActions);
+    if (start.exitStatus != 0) return start.exitStatus;
     std::optional<ui::ReplaySession> session;
     try {
-        document = scene::loadDocument(options.document);
         if (!options.replay.empty()) session = ui::loadReplaySession(options.replay);
     } catch (const std::exception& e) {
         std::cerr << "sculptline: " << e.what() << "\n";
@@ -138,7 +146,12 @@ int main(int argc, char** argv)
         return 0;
     }
     // The default scene opens untitled, so that File > Save asks where instead of overwriting it.
-    window.showDocument(document, options.documentGiven ? QString::fromStdString(options.document) : QString());
+    window.showDocument(start.document, QString::fromStdString(start.path));
+    const QString recovery = ui::recoveryFolder();
+    // A script gets the flag or the default, never a person's setting: its runs must repeat.
+    const int interval = options.autosaveIntervalGiven || options.scripted() ? options.autosaveInterval
+                                                                             : ui::MainWindow::autosaveIntervalSetting(options.autosaveInterval);
+    window.enableAutosave(recovery, interval);
     std::unique_ptr<ui::Replayer> replayer;
     if (session) {
         replayer = std::make_unique<ui::Replayer>(window, *session);
@@ -148,6 +161,17 @@ int main(int argc, char** argv)
         }
     }
     window.show();
+    // Before the replay, so that a script may continue recovered work.
+    if (options.recover) {
+        window.offerRecovery(recovery, false);
+    } else if (options.scripted()) {
+        if (std::optional<ui::OrphanedRecovery> orphan = ui::claimOrphanedRecovery(recovery))
+            std::cerr << "sculptline: unsaved work of an earlier session is in " << orphan->path.toStdString()
+                      << "; start with --recover to reopen it\n";
+    } else {
+        if (!start.error.empty()) window.reportOpenFailure(QString::fromStdString(start.error));
+        window.offerRecovery(recovery, true);
+    }
     const int width = options.width > 0 ? options.width : session ? session->width : 0;
     const int height = options.width > 0 ? options.height : session ? session->height : 0;
 

@@ -7,6 +7,7 @@ import math
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+HUNDRED_EDIT_ROUNDS = 28
 
 
 def stroke(points, t0, dt=8):
@@ -104,6 +105,23 @@ def main():
     p = [{"type": "action", "name": "mode.sketch", "t": 0}, {"type": "action", "name": "plane.add", "t": 10}]
     s, t = stroke(wave(250, 550, 300, 40), 60)
     write("add_plane_and_sketch.json", p + s + [{"type": "wait", "ms": 50}])
+
+    # A long history of four kinds of edit, 28 rounds of: an arc stroke (a new curve), the
+    # recognized arc instead (a new shape), Delete (the curve removed), a 5-pixel drag of the
+    # plane's jack, down in even rounds and back up in odd ones (the jack stays under the
+    # pointer). 112 edits; then 112 undos.
+    h = [{"type": "action", "name": "mode.sketch", "t": 0}]
+    th = 50
+    for i in range(HUNDRED_EDIT_ROUNDS):
+        s, th = stroke(arc(490, 330, 70), th + 50)
+        h += s
+        h += [{"type": "action", "name": "stroke.useRecognized", "t": th + 20}, {"type": "key", "key": "Del", "t": th + 30}]
+        down = i % 2 == 0
+        d, th = drag((463, 246 if down else 251), (463, 251 if down else 246), th + 50, steps=5, dt=10)
+        h += d
+    write("hundred_edits.json", h + [{"type": "wait", "ms": 50}])
+    undos = [{"type": "key", "key": "Ctrl+Z", "t": th + 50 + 5 * k} for k in range(4 * HUNDRED_EDIT_ROUNDS)]
+    write("hundred_edits_undone.json", h + undos + [{"type": "wait", "ms": 50}])
 
     # The --stats goal: drag the default plane of ../bench_20_curves_5_planes.json (20 curves on 5
     # planes) for 120 pointer events at 125 Hz, to and fro.

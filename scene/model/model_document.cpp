@@ -1,8 +1,8 @@
 #include "scene/model/model_document.h"
 
+#include "scene/model/atomic_file.h"
 #include "solvers/io/geometry_json.h"
 
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 
@@ -136,7 +136,9 @@ json modelToJson(const Model& model, const GridSpec& grid)
         }
         }
     }
-    return json{{"units", "mm"},
+    return json{{"format", kDocumentFormat},
+                {"version", kDocumentVersion},
+                {"units", "mm"},
                 {"grid", {{"size", grid.size}, {"spacing", grid.spacing}}},
                 {"planes", planes},
                 {"curves", curves},
@@ -147,9 +149,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
 
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path)
 {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (out) out << modelToJson(model, grid).dump(2) << "\n";
-    if (!out) throw io::InputError(path + ": cannot write file");
+    writeFileAtomically(path, modelToJson(model, grid).dump(2) + "\n", true);
 }
 
 }  // namespace sculptline::scene

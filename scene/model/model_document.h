@@ -22,7 +22,9 @@ void populateModel(const SceneDocument& doc, Model& model);
 /// xAxis, curves with "plane", surfaces).
 nlohmann::json modelToJson(const Model& model, const GridSpec& grid);
 
-/// Writes modelToJson to `path`. @throws solvers::io::InputError("path: cannot write file").
+/// Writes modelToJson to `path` atomically, the previous version kept in backupPath(path)
+/// (scene/model/atomic_file.h). @throws solvers::io::InputError("path: cannot save (reason)"); the
+/// file at `path` is then unchanged.
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path);
 
 }  // namespace sculptline::scene

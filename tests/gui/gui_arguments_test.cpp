@@ -42,7 +42,8 @@ TEST(GuiArguments, HelpListsTheFlags)
 {
     const ProgramRun run = runSculptline("--help");
     EXPECT_EQ(run.status, 0);
-    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions"}) {
+    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions",
+                             "--autosave-interval", "--recover"}) {
         EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
     }
 }
@@ -54,7 +55,7 @@ TEST(GuiArguments, ActionsAreListedWithoutADisplay)
     // Then every command is there by name, with its hot key
     EXPECT_EQ(run.status, 0) << run.output;
     for (const char* line : {"mode.sketch\tS\t", "mode.revolve\tR\t", "mode.railRotation\tG\t", "edit.undo\tCtrl+Z\t",
-                             "file.exportIv\t", "surface.build\tReturn\t"}) {
+                             "file.exportIv\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t"}) {
         EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
     }
 }
@@ -105,6 +106,20 @@ TEST(GuiArguments, UnreadableDocumentsAreRefused)
     std::ofstream(broken) << "{\"planes\": [";
     expectError("'" + broken + "'", "malformed JSON");
     std::remove(broken.c_str());
+}
+
+TEST(GuiArguments, NewerDocumentsAreRefusedByVersion)
+{
+    const std::string newer = testing::TempDir() + "sculptline_gui_newer_scene.json";
+    std::ofstream(newer) << R"({"format": "sculptline", "version": 2, "planes": "in a form to come"})";
+    expectError("'" + newer + "'", newer + ": made by a newer Sculptline (version 2); this one reads up to 1");
+    std::remove(newer.c_str());
+}
+
+TEST(GuiArguments, BadAutosaveIntervalsAreRefused)
+{
+    expectError("--autosave-interval -5", "--autosave-interval");
+    expectError("--autosave-interval soon", "--autosave-interval");
 }
 
 TEST(GuiArguments, MissingDefaultDataDirectoryIsAnError)

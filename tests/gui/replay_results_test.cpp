@@ -268,6 +268,17 @@ TEST(ReplayResults, SavingAReopenedDocumentWritesTheSameDocument)
     EXPECT_EQ(saved, resaved);
 }
 
+TEST(ReplayResults, AHundredAndTwelveEditsOfFourKindsAreAllUndone)
+{
+    // 28 rounds of a stroke, the recognized shape, Delete and a plane drag: the edits changed the
+    // document (the plane moved), and as many undos bring back the untouched default scene.
+    const nlohmann::json start = readJson("start.json"), edited = readJson("hundred_edits.json"), undone = readJson("hundred_undone.json");
+    ASSERT_FALSE(start.is_null());
+    ASSERT_FALSE(edited.is_null());
+    EXPECT_NE(edited["planes"], start["planes"]);
+    EXPECT_EQ(undone, start);
+}
+
 TEST(ReplayResults, ANewPlaneFacesTheViewerAndTakesTheStroke)
 {
     const scene::Model model = readModel("plane.json");

@@ -1,0 +1,33 @@
+#include "app/gui/start_document.h"
+
+#include <exception>
+#include <iostream>
+
+namespace sculptline::app {
+
+StartDocument openStartDocument(const GuiOptions& options, bool interactive)
+{
+    StartDocument start;
+    try {
+        start.document = scene::loadDocument(options.document);
+        if (options.documentGiven) start.path = options.document;
+        return start;
+    } catch (const std::exception& e) {
+        std::cerr << "sculptline: " << e.what() << "\n";
+        start.error = e.what();
+    }
+    // The default scene failing is an installation problem: no fallback for that.
+    if (!interactive || !options.documentGiven) {
+        start.exitStatus = 2;
+        return start;
+    }
+    try {
+        start.document = scene::loadDocument(defaultDocumentPath());
+    } catch (const std::exception& e) {
+        std::cerr << "sculptline: " << e.what() << "\n";
+        start.exitStatus = 2;
+    }
+    return start;
+}
+
+}  // namespace sculptline::app
