@@ -12,13 +12,13 @@ rm -f "$session" "$saved"
 python3 "$src/scripts/monkey_session.py" --seed "$seed" --seconds "$seconds" --output "$session" || exit 1
 # The session lasts $seconds; anything past four times that (and a minute for start-up) is a hang.
 limit=$(python3 -c "print(int(4 * $seconds + 60))")
-timeout --signal=KILL "$limit" xvfb-run -a -s "-screen 0 1280x1024x24" "$exe" --replay "$session" --save "$saved" --quit
+"$src/tests/gui/xvfb.sh" timeout --signal=KILL "$limit" "$exe" --replay "$session" --save "$saved" --quit
 status=$?
 if [[ $status -ne 0 ]]; then
   echo "monkey seed $seed: sculptline exited with status $status (137: killed after ${limit} s, a hang); reproduce with:" >&2
-  echo "  python3 scripts/monkey_session.py --seed $seed --seconds $seconds -o m.json && xvfb-run -a $exe --replay m.json --quit" >&2
+  echo "  python3 scripts/monkey_session.py --seed $seed --seconds $seconds -o m.json && tests/gui/xvfb.sh $exe --replay m.json --quit" >&2
   exit 1
 fi
 python3 "$src/tests/gui/check_saved_document.py" "$saved" || exit 1
-timeout --signal=KILL 120 xvfb-run -a -s "-screen 0 1280x1024x24" "$exe" "$saved" --quit || { echo "monkey seed $seed: the saved document does not open" >&2; exit 1; }
+"$src/tests/gui/xvfb.sh" timeout --signal=KILL 120 "$exe" "$saved" --quit || { echo "monkey seed $seed: the saved document does not open" >&2; exit 1; }
 echo "monkey seed $seed: $(python3 -c "import json; print(len(json.load(open('$session'))['events']))") events replayed, document saved and reopened"
