@@ -5,6 +5,7 @@
 #include "manipulators/stroke_input.h"
 #include "scene/scene_document.h"
 #include "ui/curvature_plot.h"
+#include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/main_window.h"
 #include "ui/sketch_document.h"
@@ -21,6 +22,7 @@
 #include <QTimer>
 #include <QUndoStack>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -117,6 +119,40 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     window.action(QStringLiteral("mode.view"))->trigger();
 
     if (const char* shot = std::getenv("SCULPTLINE_WINDOW_SHOT")) window.grab().save(QString::fromLocal8Bit(shot));
+}
+
+TEST(MainWindow, ASurfaceThatCannotBeRebuiltOpensAsFailedWithItsReason)
+{
+    // Given a document whose fill's four boundaries do not meet (and a curve on a plane besides)
+    startApplication();
+    const nlohmann::json doc = nlohmann::json::parse(R"({
+        "planes": [{"id": 1, "origin": [0, 0, 0], "normal": [0, 0, 1], "size": 120}],
+        "curves": [
+          {"id": 2, "plane": 1, "degree": 1, "knots": [0, 0, 1, 1], "points": [[-40, -40], [40, 30]]},
+          {"id": 3, "degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 0, 0], [30, 0, 0]]},
+          {"id": 4, "degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 50, 5], [30, 50, 5]]},
+          {"id": 5, "degree": 1, "knots": [0, 0, 1, 1], "points": [[60, 0, 9], [60, 30, 9]]},
+          {"id": 6, "degree": 1, "knots": [0, 0, 1, 1], "points": [[-60, 0, -9], [-60, 30, -9]]}],
+        "surfaces": [{"id": 7, "construction": {"mode": "fill", "curves": [3, 4, 5, 6]}}]})");
+    MainWindow window;
+
+    // When it is opened and the surface selected
+    window.showDocument(scene::documentFromJson(doc), QString());
+    window.show();
+    window.resize(1200, 800);
+    window.document().select(7);
+    QApplication::processEvents();
+
+    // Then the inspector says it failed and why, the list marks it, and the rest is there
+    auto* inspector = window.findChild<InspectorDock*>();
+    ASSERT_NE(inspector, nullptr);
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("Failed: "))) << inspector->text().toStdString();
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("No geometry"))) << inspector->text().toStdString();
+    QListWidget* list = window.findChild<EntityListDock*>()->findChild<QListWidget*>();
+    ASSERT_NE(list, nullptr);
+    EXPECT_FALSE(list->findItems(QStringLiteral("Surface 7 (fill) - failed"), Qt::MatchExactly).isEmpty());
+    EXPECT_EQ(window.document().model().entities().size(), 7u);
+    if (const char* dir = std::getenv("SCULPTLINE_DIALOG_SHOTS")) window.grab().save(QString::fromLocal8Bit(dir) + "/failed_surface_window.png");
 }
 
 TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
