@@ -371,6 +371,19 @@ double BSplineCurve<Dim>::controlSize() const
 }
 
 template <int Dim>
+bool BSplineCurve<Dim>::isCollapsed() const
+{
+    Point lo = points_.front(), hi = points_.front();
+    double magnitude = 0.0;
+    for (const Point& q : points_) {
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+        magnitude = std::max(magnitude, q.cwiseAbs().maxCoeff());
+    }
+    return (hi - lo).maxCoeff() <= kCollapsedRelative * magnitude;
+}
+
+template <int Dim>
 BSplineCurve<Dim> makeClosedUniform(int degree, const std::vector<typename BSplineCurve<Dim>::Point>& unique,
                                     const std::vector<double>& uniqueWeights)
 {
