@@ -44,7 +44,7 @@ void requireNoAxisCrossing(const Curve3d& profile, const Eigen::Vector3d& point,
 
 double distanceFromAxis(const Axis& axis, const Eigen::Vector3d& x)
 {
-    const Eigen::Vector3d t = axis.direction.normalized();
+    const Eigen::Vector3d t = axis.direction.stableNormalized();
     const Eigen::Vector3d d = x - axis.point;
     return (d - d.dot(t) * t).norm();
 }
@@ -53,8 +53,10 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
 {
     const Curve3d profile = input.clamped();
     const double size = std::max(1.0, profile.controlSize());
-    if (!(axis.direction.norm() > kMinAxisLength * size) || !axis.direction.allFinite())
-        throw GeometryError("axis: zero-length direction");
+    // stableNorm: a direction of length 1e300 is a direction too, but its squared norm overflows
+    // and normalized() would divide by infinity (a zero axis, every point collapsed onto it).
+    if (!axis.direction.allFinite() || !axis.point.allFinite()) throw GeometryError("axis: not a finite number");
+    if (!(axis.direction.stableNorm() > kMinAxisLength * size)) throw GeometryError("axis: zero-length direction");
     if (!(angleDegrees > 0.0 && angleDegrees <= 360.0))
         throw GeometryError("angle: must be in (0, 360] degrees, got " + std::to_string(angleDegrees));
 
@@ -68,7 +70,7 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
     knotsV.insert(knotsV.end(), 3, 1.0);
     const int countV = 2 * narcs + 1;
 
-    const Eigen::Vector3d T = axis.direction.normalized();
+    const Eigen::Vector3d T = axis.direction.stableNormalized();
     const int countU = profile.pointCount();
     std::vector<Eigen::Vector3d> pts(static_cast<size_t>(countU) * countV);
     std::vector<double> w(pts.size());
