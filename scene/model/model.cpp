@@ -1,6 +1,5 @@
 #include "scene/model/model.h"
 
-#include "solvers/surfaces/gordon.h"
 #include "solvers/surfaces/surface_modes.h"
 
 #include <algorithm>
@@ -271,7 +270,7 @@ void Model::buildSurface(Entity& e) const
             // one family, the rest the other; every curve of one meets every curve of the other. The
             // reported deviation is the largest gap between crossing curves.
             const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
-            const surf::GordonResult g = surf::gordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
+            const surf::GordonResult g = surf::buildGordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
             return {g.surface, g.maxGap};
         }
         surf::SurfaceOptions options;
