@@ -82,6 +82,26 @@ TEST(DegenerateCurve, GivenATinyButMeasurableCurve_WhenOversketchedLocalC2_ThenT
     EXPECT_LE(maxError, kStrokeTolerance);
 }
 
+TEST(DegenerateCurve, GivenACurveAHundredMillionTimesShorterThanTheStroke_WhenOversketchedBlend_ThenTheStrokeReplacesIt)
+{
+    // Arrange: control points 1e-8 apart around (1, 2) (not degenerate: 5e-9 of their magnitude);
+    // blend's density rule asked for stroke length / spacing ~ 3e8 control points.
+    const Curve2d curve = tinyCurve(1e-8);
+    OversketchOptions o;
+    o.method = OversketchMethod::Blend;
+    double maxError = -1.0;
+
+    // Act
+    const Curve2d out = oversketch(curve, stroke(), o, nullptr, &maxError);
+
+    // Assert: a curve of a few control points per stroke sample at most, following the stroke
+    // within the default tolerance (0.2 % of its length, 3.24).
+    constexpr double kStrokeTolerance = 0.002 * 3.25;
+    EXPECT_LE(out.pointCount(), static_cast<int>(stroke().size()) + 2 * 3 + 7);
+    EXPECT_LT((out.evaluate(out.domainEnd()) - stroke().back()).norm(), kStrokeTolerance);
+    EXPECT_LE(maxError, kStrokeTolerance);
+}
+
 TEST(DegenerateCurve, GivenAllControlPointsEqual_WhenPulled_ThenTheCurveReachesTheTarget)
 {
     // Pulling is linear in the control points (least change, curve_manipulation.h): a point-curve
