@@ -281,6 +281,8 @@ void Model::buildSurface(Entity& e) const
             // The axis is the line the designer drew: the last input's ends, start to end.
             const solvers::Curve3d axis = curves.back();
             curves.pop_back();
+            if (axis.isClosed())
+                throw std::invalid_argument("axis: the axis curve is closed, its ends coincide and give no direction");
             options.axisPoint = axis.evaluate(axis.domainStart());
             options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
             options.angleDegrees = r.angleDegrees;
