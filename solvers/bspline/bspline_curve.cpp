@@ -367,7 +367,8 @@ double BSplineCurve<Dim>::controlSize() const
         lo = lo.cwiseMin(q);
         hi = hi.cwiseMax(q);
     }
-    return (hi - lo).norm();
+    // stableNorm: norm() squares, and overflows to infinity for coordinates beyond ~1e154.
+    return (hi - lo).stableNorm();
 }
 
 template <int Dim>

@@ -10,7 +10,10 @@ namespace sculptline::solvers::surfaces {
 
 namespace {
 
-// An axis direction shorter than this (relative to the profile's size) has no direction.
+// An axis direction shorter than this, relative to the magnitude of the axis point's coordinates
+// (at least 1), is the round-off of two coincident points (an axis drawn from a closed curve): it
+// has no direction. Not relative to the profile: a profile of size 1e300 about a unit direction is
+// a valid revolve.
 constexpr double kMinAxisLength = 1e-12;
 // Control points closer to the axis than this fraction of the profile's size count as on it.
 constexpr double kOnAxisRelative = 1e-12;
@@ -56,7 +59,8 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
     // stableNorm: a direction of length 1e300 is a direction too, but its squared norm overflows
     // and normalized() would divide by infinity (a zero axis, every point collapsed onto it).
     if (!axis.direction.allFinite() || !axis.point.allFinite()) throw GeometryError("axis: not a finite number");
-    if (!(axis.direction.stableNorm() > kMinAxisLength * size)) throw GeometryError("axis: zero-length direction");
+    const double axisScale = std::max(1.0, axis.point.cwiseAbs().maxCoeff());
+    if (!(axis.direction.stableNorm() > kMinAxisLength * axisScale)) throw GeometryError("axis: zero-length direction");
     if (!(angleDegrees > 0.0 && angleDegrees <= 360.0))
         throw GeometryError("angle: must be in (0, 360] degrees, got " + std::to_string(angleDegrees));
 

@@ -141,6 +141,23 @@ void checkResult(const Surface3d& s, double deviation)
     if (std::isnan(deviation)) throw GeometryError("surface: the construction's deviation is not a number");
 }
 
+// The input curves are valid (finite) geometry, so a "points[i]: not a finite number" from a
+// curve or surface the mode constructs means that its arithmetic overflowed: say so, naming the
+// result rather than an input field the caller never gave.
+template <class F>
+auto overflowNamed(F&& f) -> decltype(f())
+{
+    try {
+        return f();
+    } catch (const GeometryError& e) {
+        const std::string m = e.what();
+        const bool constructed = m.rfind("points[", 0) == 0 || m.rfind("weights[", 0) == 0;
+        if (constructed && m.find(": not a finite number") != std::string::npos)
+            throw GeometryError("surface: the construction overflows double precision (coordinates too large)");
+        throw;
+    }
+}
+
 SurfaceBuild checked(SurfaceBuild b)
 {
     checkResult(b.surface, b.maxDeviation);
@@ -184,7 +201,7 @@ SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const
 {
     checkCurveCount(mode, c.size());
     checkInputs(mode, c, o);
-    SurfaceBuild b = buildUnchecked(mode, c, o);
+    SurfaceBuild b = overflowNamed([&] { return buildUnchecked(mode, c, o); });
     checkResult(b.surface, b.maxDeviation);
     return b;
 }
@@ -194,7 +211,7 @@ GordonResult buildGordon(const std::vector<Curve3d>& u, const std::vector<Curve3
     requireFinite(std::isfinite(o.meetTolerance), "tolerance");
     requireNotCollapsed(u, "curves");
     requireNotCollapsed(v, "v_curves");
-    GordonResult g = gordon(u, v, o);
+    GordonResult g = overflowNamed([&] { return gordon(u, v, o); });
     checkResult(g.surface, g.maxGap);
     return g;
 }

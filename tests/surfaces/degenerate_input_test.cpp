@@ -278,15 +278,15 @@ TEST(DegenerateInput, GivenACollapsedCurveInEitherFamily_WhenGordonBuilt_ThenRef
 
 TEST(DegenerateInput, GivenARevolveWhoseCoordinatesOverflow_WhenBuilt_ThenRefusedInsteadOfReturningInfinity)
 {
-    // Arrange: a profile near the largest double about an axis as far the other way: the radius
-    // (3e308) is not a double.
+    // Arrange: a profile near the largest double, 1.5e308 from the axis: the circle's corner
+    // control points (radius times (1, 1)) and the squared radius are not doubles.
     const Curve3d far = cubic({{1.5e308, 0, 0}, {1.5e308, 0, 1e307}, {1.5e308, 0, 2e307}, {1.5e308, 0, 3e307}});
     SurfaceOptions o;
-    o.axisPoint = Vec3(-1.5e308, 0, 0);
+    o.axisDirection = Vec3::UnitZ();
 
     // Act
     const std::string message = refusal(SurfaceMode::Revolve, {far}, o);
 
-    // Assert
-    EXPECT_FALSE(message.empty());
+    // Assert: named as the result's overflow, not as an input field ("axis", "points[0]").
+    EXPECT_EQ(message, "surface: the construction overflows double precision (coordinates too large)");
 }
