@@ -35,8 +35,9 @@ constexpr int kMaxPanelsPerSpan = 2048;
 // round-off of a few p * eps * M / du, and a panel of width h an error of about p * eps * M * h/du.
 // Summed over a span that is a few eps * M * p, whatever the refinement: asking for less than this
 // (a curve whose control points agree to 1e-14 of their magnitude, where |C'| is pure round-off)
-// can never be met, and the relative tolerance alone recursed to kMaxDepth on every panel (2^30
-// evaluations). 64 ulps leave a margin over degree 9 (kMaxDegree).
+// can never be met, and the relative tolerance alone recursed 30 levels deep on every panel (2^30
+// panels per span). 64 leaves a margin for the dozen roundings of each evaluation (de Boor's
+// triangle, the rational quotient, the norm).
 constexpr double kRoundOffUlps = 64.0;
 
 template <int Dim>
