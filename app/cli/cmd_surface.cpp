@@ -14,7 +14,6 @@
 // report "max_deviation". The modes are built by solvers/surfaces/surface_modes (shared with the GUI).
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
-#include "solvers/surfaces/gordon.h"
 #include "solvers/surfaces/surface_modes.h"
 
 #include <functional>
@@ -62,7 +61,7 @@ std::function<Outcome()> prepareGordon(const json& input, const std::vector<Curv
     for (size_t k = 0; k < vj.size(); ++k)
         v.push_back(solvers::io::curveFromJson(vj[k], "v_curves[" + std::to_string(k) + "]"));
     return [c, v, tol] {
-        const surf::GordonResult g = surf::gordon(c, v, surf::GordonOptions{tol});
+        const surf::GordonResult g = surf::buildGordon(c, v, surf::GordonOptions{tol});
         return Outcome{g.surface, -1.0, 0.0, json{{"max_gap", g.maxGap}, {"u_params", g.uParams}, {"v_params", g.vParams}}};
     };
 }

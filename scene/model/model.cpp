@@ -1,6 +1,5 @@
 #include "scene/model/model.h"
 
-#include "solvers/surfaces/gordon.h"
 #include "solvers/surfaces/surface_modes.h"
 
 #include <algorithm>
@@ -334,7 +333,7 @@ void Model::buildSurface(Entity& e) const
             // one family, the rest the other; every curve of one meets every curve of the other. The
             // reported deviation is the largest gap between crossing curves.
             const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
-            const surf::GordonResult g = surf::gordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
+            const surf::GordonResult g = surf::buildGordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
             return {g.surface, g.maxGap};
         }
         surf::SurfaceOptions options;
@@ -350,6 +349,8 @@ void Model::buildSurface(Entity& e) const
             // The axis is the line the designer drew: the last input's ends, start to end.
             const solvers::Curve3d axis = curves.back();
             curves.pop_back();
+            if (axis.isClosed())
+                throw std::invalid_argument("axis: the axis curve is closed, its ends coincide and give no direction");
             options.axisPoint = axis.evaluate(axis.domainStart());
             options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
             options.angleDegrees = r.angleDegrees;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace sculptline::solvers {
 namespace {
@@ -22,8 +23,22 @@ constexpr std::array<double, 7> kWeights = {0.4179591836734693877551020, 0.38183
                                             0.2797053914892766679014678, 0.1294849661688696932706114,
                                             0.1294849661688696932706114};
 
-// Recursion limit of the adaptive quadrature: 2^-30 of a span is below any meaningful resolution.
-constexpr int kMaxDepth = 30;
+// Recursion limit of the adaptive quadrature. With the absolute floor below, a smooth span stops
+// after a few levels; what still recurses is a span whose speed |C'| has a kink (a cusp, where C'
+// vanishes) and Gauss-Legendre converges only as h^2 there. Depth 20 resolves 1e-6 of a span, and
+// the evaluation budget bounds the work of one span whatever its shape.
+constexpr int kMaxDepth = 20;
+// At most this many Gauss-Legendre panels per knot span (7 speed evaluations each): about 1 ms.
+constexpr int kMaxPanelsPerSpan = 2048;
+// Absolute floor of the quadrature error, in ulps of the curve's coordinates: C' is a difference
+// of control points of magnitude M divided by knot spacings, so each speed sample carries a
+// round-off of a few p * eps * M / du, and a panel of width h an error of about p * eps * M * h/du.
+// Summed over a span that is a few eps * M * p, whatever the refinement: asking for less than this
+// (a curve whose control points agree to 1e-14 of their magnitude, where |C'| is pure round-off)
+// can never be met, and the relative tolerance alone recursed 30 levels deep on every panel (2^30
+// panels per span). 64 leaves a margin for the dozen roundings of each evaluation (de Boor's
+// triangle, the rational quotient, the norm).
+constexpr double kRoundOffUlps = 64.0;
 
 template <int Dim>
 double speed(const BSplineCurve<Dim>& c, double u)
@@ -40,13 +55,28 @@ double gauss(const BSplineCurve<Dim>& c, double a, double b)
     return sum * half;
 }
 
+// Adaptive Gauss-Legendre: the relative tolerance halves with each level (the error sums over
+// panels), the absolute floor does not (it is the round-off of the curve's magnitude, the same in
+// every panel); `budget` counts the panels the span may still split into.
 template <int Dim>
-double adaptive(const BSplineCurve<Dim>& c, double a, double b, double whole, double tol, int depth)
+double adaptive(const BSplineCurve<Dim>& c, double a, double b, double whole, double tol, double floor, int depth,
+                int& budget)
 {
     const double mid = 0.5 * (a + b);
     const double left = gauss(c, a, mid), right = gauss(c, mid, b);
-    if (depth >= kMaxDepth || std::abs(left + right - whole) <= tol) return left + right;
-    return adaptive(c, a, mid, left, 0.5 * tol, depth + 1) + adaptive(c, mid, b, right, 0.5 * tol, depth + 1);
+    if (depth >= kMaxDepth || budget <= 0 || std::abs(left + right - whole) <= std::max(tol, floor)) return left + right;
+    budget -= 2;
+    return adaptive(c, a, mid, left, 0.5 * tol, floor, depth + 1, budget) +
+           adaptive(c, mid, b, right, 0.5 * tol, floor, depth + 1, budget);
+}
+
+// The largest magnitude of the curve's (Cartesian) control coordinates: the scale of its round-off.
+template <int Dim>
+double coordinateMagnitude(const BSplineCurve<Dim>& c)
+{
+    double m = 0.0;
+    for (const auto& q : c.points()) m = std::max(m, q.cwiseAbs().maxCoeff());
+    return m;
 }
 
 // Breakpoints of the curve covering [u0, u1], unwrapped for closed curves.
@@ -73,10 +103,17 @@ std::vector<double> breakpoints(const BSplineCurve<Dim>& c, double u0, double u1
 }
 
 template <int Dim>
-double spanLength(const BSplineCurve<Dim>& c, double a, double b)
+double spanLength(const BSplineCurve<Dim>& c, double a, double b, double floor)
 {
     const double whole = gauss(c, a, b);
-    return adaptive(c, a, b, whole, kArcLengthRelativeTolerance * std::max(whole, 1e-300), 0);
+    int budget = kMaxPanelsPerSpan;
+    return adaptive(c, a, b, whole, kArcLengthRelativeTolerance * whole, floor, 0, budget);
+}
+
+template <int Dim>
+double roundOffFloor(const BSplineCurve<Dim>& c)
+{
+    return kRoundOffUlps * std::numeric_limits<double>::epsilon() * c.degree() * coordinateMagnitude(c);
 }
 
 }  // namespace
@@ -91,8 +128,9 @@ double arcLength(const BSplineCurve<Dim>& c, double u0, double u1)
         u1 = c.normalizeParameter(u1);
     }
     const std::vector<double> br = breakpoints(c, u0, u1);
+    const double floor = roundOffFloor(c);
     double total = 0.0;
-    for (size_t i = 0; i + 1 < br.size(); ++i) total += spanLength(c, br[i], br[i + 1]);
+    for (size_t i = 0; i + 1 < br.size(); ++i) total += spanLength(c, br[i], br[i + 1], floor);
     return total;
 }
 
@@ -103,12 +141,13 @@ double arcLength(const BSplineCurve<Dim>& c)
 }
 
 template <int Dim>
-ArcLengthParameterization<Dim>::ArcLengthParameterization(const BSplineCurve<Dim>& curve) : curve_(curve)
+ArcLengthParameterization<Dim>::ArcLengthParameterization(const BSplineCurve<Dim>& curve)
+    : curve_(curve), floor_(roundOffFloor(curve))
 {
     breaks_ = breakpoints(curve, curve.domainStart(), curve.domainEnd());
     cumulative_.assign(1, 0.0);
     for (size_t i = 0; i + 1 < breaks_.size(); ++i)
-        cumulative_.push_back(cumulative_.back() + spanLength(curve, breaks_[i], breaks_[i + 1]));
+        cumulative_.push_back(cumulative_.back() + spanLength(curve, breaks_[i], breaks_[i + 1], floor_));
 }
 
 template <int Dim>
@@ -117,7 +156,7 @@ double ArcLengthParameterization<Dim>::lengthAt(double u) const
     u = std::clamp(u, breaks_.front(), breaks_.back());
     const size_t i = std::min<size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), u) - breaks_.begin() - 1,
                                       breaks_.size() - 2);
-    return cumulative_[i] + (u > breaks_[i] ? spanLength(curve_, breaks_[i], u) : 0.0);
+    return cumulative_[i] + (u > breaks_[i] ? spanLength(curve_, breaks_[i], u, floor_) : 0.0);
 }
 
 template <int Dim>
@@ -132,9 +171,11 @@ double ArcLengthParameterization<Dim>::parameterAt(double s) const
     const double segment = cumulative_[i + 1] - cumulative_[i];
     double u = lo + (hi - lo) * (target / segment);
     // Newton on g(u) = len(breaks_[i], u) - target with a bisection fallback (g is monotone).
-    const double tol = kArcLengthRelativeTolerance * std::max(totalLength(), 1e-300) * 10;
+    // Never below the quadrature's round-off floor: on a curve whose speed is round-off noise the
+    // relative target cannot be met, and bisection then ends the loop at the resolution of u.
+    const double tol = std::max(kArcLengthRelativeTolerance * totalLength() * 10, floor_);
     for (int iter = 0; iter < 100; ++iter) {
-        const double g = spanLength(curve_, breaks_[i], u) - target;
+        const double g = spanLength(curve_, breaks_[i], u, floor_) - target;
         if (std::abs(g) <= tol) break;
         if (g > 0) hi = u;
         else lo = u;

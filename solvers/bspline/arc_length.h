@@ -5,7 +5,10 @@
 namespace sculptline::solvers {
 
 /// Relative accuracy of the arc-length quadrature: adaptive Gauss-Legendre per knot span is
-/// refined until two levels agree to this fraction of the span's length.
+/// refined until two levels agree to this fraction of the span's length, or to the round-off of the
+/// curve's coordinates (a few ulps of their magnitude, whichever is larger), with a bounded number
+/// of panels per span: a curve whose points coincide to round-off has its length measured to
+/// round-off, quickly.
 constexpr double kArcLengthRelativeTolerance = 1e-12;
 
 /// Length of C on [u0, u1] (u0 <= u1; a closed curve may run past its domain end, wrapping).
@@ -32,6 +35,7 @@ public:
 
 private:
     BSplineCurve<Dim> curve_;  // a copy: the table must not outlive its curve
+    double floor_;             // absolute round-off floor of the quadrature (arc_length.cpp)
     std::vector<double> breaks_;
     std::vector<double> cumulative_;
 };

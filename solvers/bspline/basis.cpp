@@ -49,6 +49,18 @@ void validateKnots(int degree, int pointCount, const KnotVector& knots, const st
             msg << field << ": knot " << knots[i] << " has multiplicity " << j - i << ", more than degree + 1 = " << degree + 1;
             throw GeometryError(msg.str());
         }
+        // Inside the domain a knot of multiplicity degree + 1 cuts the geometry in two pieces that
+        // need not meet (C^-1: by The NURBS Book P2.5 the basis is C^(p-k) at a knot of multiplicity k).
+        // Every algorithm of the kernel presumes at most degree inside the domain (Boehm's
+        // insertion A5.1 and refinement A5.4, knot removal A5.8, clamping and extraction index
+        // past a span of p + 1 equal knots), and a modeler's curve is connected: refuse it here.
+        const double u = knots[i];
+        if (static_cast<int>(j - i) > degree && u > knots[degree] && u < knots[pointCount]) {
+            std::ostringstream msg;
+            msg << field << ": interior knot " << u << " has multiplicity " << j - i << ", more than the degree " << degree
+                << " (the curve would break apart there)";
+            throw GeometryError(msg.str());
+        }
         i = j;
     }
 }

@@ -18,7 +18,8 @@ using ControlMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eige
 
 /// Checks a knot vector for `pointCount` control points of `degree`: degree >= 1, pointCount >
 /// degree, knots.size() == pointCount + degree + 1, all finite, non-decreasing, a non-empty domain
-/// [knots[degree], knots[pointCount]] and no interior multiplicity above degree + 1.
+/// [knots[degree], knots[pointCount]], no multiplicity above degree + 1 and, inside the domain,
+/// none above degree (the geometry stays connected).
 /// @throws GeometryError naming `field` and the problem.
 void validateKnots(int degree, int pointCount, const KnotVector& knots, const std::string& field = "knots");
 

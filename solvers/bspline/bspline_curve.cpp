@@ -367,7 +367,21 @@ double BSplineCurve<Dim>::controlSize() const
         lo = lo.cwiseMin(q);
         hi = hi.cwiseMax(q);
     }
-    return (hi - lo).norm();
+    // stableNorm: norm() squares, and overflows to infinity for coordinates beyond ~1e154.
+    return (hi - lo).stableNorm();
+}
+
+template <int Dim>
+bool BSplineCurve<Dim>::isCollapsed() const
+{
+    Point lo = points_.front(), hi = points_.front();
+    double magnitude = 0.0;
+    for (const Point& q : points_) {
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+        magnitude = std::max(magnitude, q.cwiseAbs().maxCoeff());
+    }
+    return (hi - lo).maxCoeff() <= kCollapsedRelative * magnitude;
 }
 
 template <int Dim>

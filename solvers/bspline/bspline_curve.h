@@ -81,6 +81,10 @@ public:
 
     /// Axis-aligned bounding box diagonal of the control points (a scale for relative tolerances).
     double controlSize() const;
+    /// True when the control points coincide up to round-off: their spread in every coordinate is
+    /// at most kCollapsedRelative times the largest magnitude of a coordinate (0 = all equal). Such a
+    /// curve is a point to double precision: no length, tangent or plane can be measured on it.
+    bool isCollapsed() const;
 
 private:
     BSplineCurve() = default;
@@ -93,6 +97,11 @@ private:
     std::vector<double> weights_;
     bool closed_ = false;
 };
+
+/// Spread of the control points, relative to their coordinates' magnitude, below which they are
+/// the same point up to round-off: about 4500 ulps, so that coordinates computed a few operations
+/// apart from one value (a projection, an evaluation, a transformation) still count as equal.
+constexpr double kCollapsedRelative = 1e-12;
 
 using Curve2d = BSplineCurve<2>;
 using Curve3d = BSplineCurve<3>;

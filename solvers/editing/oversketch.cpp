@@ -111,6 +111,9 @@ BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<E
     if (!(options.transitionFactor >= 0.0) || !(options.minTransition > 0.0)) {
         throw GeometryError("transition: factor must be >= 0 and minimum > 0");
     }
+    // A curve that is a point to double precision has no direction, length or parameter speed:
+    // local-c2's arc-length steps and blend's parameter speed (length / domain) would be zero.
+    if (curve.isCollapsed()) throw GeometryError("curve: degenerate, all control points coincide; nothing to over-sketch");
     const auto placed = detail::placeStroke(curve, stroke);
     std::pair<double, double> s;
     double err = 0.0;

@@ -188,7 +188,11 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     // quarter until the in-place fit meets the tolerance; at most one per four stroke samples plus
     // the transitions (beyond that it would fit pen noise).
     const auto& h = st.points;
-    const int m0 = std::max(p + 1, static_cast<int>(std::lround(st.length / M)) + 1) + p;
+    // Never more than the stroke has samples: a curve far smaller than the stroke (its points 1e-9
+    // of the stroke apart) asked for st.length / M ~ 1e9 points, which overflowed an int and
+    // exhausted memory; more unknowns than samples would leave the fit undetermined anyway.
+    const double density = std::min(st.length / M, static_cast<double>(h.size()));
+    const int m0 = std::max(p + 1, static_cast<int>(std::lround(density)) + 1) + p;
     const int mMax = std::max(m0, static_cast<int>(h.size()) / 4 + 2 * p);
     const double tol = o.tolerance * st.length;
     auto grow = [&](int m) { return std::min(mMax, m + std::max(1, m / 4)); };

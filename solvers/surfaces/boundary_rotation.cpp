@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/knot_algorithms.h"
+#include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/compatible_curves.h"
 #include "solvers/surfaces/interpolation.h"
 
@@ -88,7 +89,8 @@ ApproximatedSurface boundaryRotation(const Curve3d& left, const Curve3d& right, 
     const std::vector<Curve3d> c = makeCompatible({l, r});
     const Vec3 n = bestFitPlaneNormal(c);
     const double size = std::max(c[0].controlSize(), c[1].controlSize());
-    const double tolerance = options.tolerance > 0.0 ? options.tolerance : kDefaultApproximationRelative * size;
+    const double tolerance =
+        approximationTolerance(options.tolerance, kDefaultApproximationRelative * size, coordinateScale({&c[0], &c[1]}));
 
     const int p = c[0].degree();
     KnotVector knots = c[0].knots();

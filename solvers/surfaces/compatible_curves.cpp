@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 
 namespace sculptline::solvers::surfaces {
 
@@ -111,9 +112,13 @@ std::vector<Curve3d> makeCompatible(const std::vector<Curve3d>& curves, int minD
     const bool rational = anyRational(normalized);
     std::vector<Curve3d> out;
     out.reserve(curves.size());
-    for (const Curve3d& c : normalized) {
-        // commonLayout contains every curve's knots by construction, so this cannot fail.
-        Curve3d conformed = *conformToLayout(c, layout);
+    for (size_t k = 0; k < normalized.size(); ++k) {
+        // commonLayout contains every knot of a valid curve (interior multiplicity at most its
+        // degree, basis.h's validateKnots); never dereference an empty result regardless.
+        std::optional<Curve3d> fitted = conformToLayout(normalized[k], layout);
+        if (!fitted)
+            throw GeometryError("curves[" + std::to_string(k) + "]: its knots do not fit the common knot vector");
+        Curve3d conformed = std::move(*fitted);
         if (rational && !conformed.isRational())
             conformed = Curve3d::fromHomogeneous(layout.degree, conformed.knots(), controlRows(conformed, true), true);
         out.push_back(std::move(conformed));

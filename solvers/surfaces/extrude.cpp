@@ -3,6 +3,8 @@
 #include "solvers/bspline/geometry_error.h"
 
 #include <algorithm>
+#include <sstream>
+#include <string>
 
 namespace sculptline::solvers::surfaces {
 
@@ -10,6 +12,13 @@ namespace {
 
 // A translation shorter than this fraction of the profile's size sweeps out no surface.
 constexpr double kMinExtentRelative = 1e-12;
+
+std::string shortNumber(double x)
+{
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
 
 void requireExtent(const Curve3d& profile, double scale)
 {
@@ -23,9 +32,21 @@ Surface3d extrude(const Curve3d& input, const Eigen::Vector3d& direction)
 {
     const Curve3d profile = input.clamped();
     const double size = std::max(1.0, profile.controlSize());
-    requireExtent(profile, std::max(1.0, direction.norm()));
-    if (!direction.allFinite() || !(direction.norm() > kMinExtentRelative * size))
-        throw GeometryError("direction: zero length, nothing to extrude");
+    if (!direction.allFinite()) throw GeometryError("direction: not a finite number");
+    // stableNorm: the plain norm of a 1e300 vector overflows to infinity.
+    const double length = direction.stableNorm();
+    if (!(length > kMinExtentRelative * size)) {
+        throw GeometryError(length == 0.0 ? std::string("direction: zero length, nothing to extrude")
+                                          : "direction: length " + shortNumber(length) +
+                                                " is below round-off against the profile's size " + shortNumber(size));
+    }
+    // The profile must stay resolvable against the translation too: beyond 1e12 times its size its
+    // points would differ only in the last digits of the surface's coordinates.
+    if (profile.controlSize() > 0.0 && !(profile.controlSize() > kMinExtentRelative * length)) {
+        throw GeometryError("direction: length " + shortNumber(length) + " dwarfs the profile (size " +
+                            shortNumber(profile.controlSize()) + "), which would vanish in round-off");
+    }
+    requireExtent(profile, std::max(1.0, length));
     const int n = profile.pointCount();
     std::vector<Eigen::Vector3d> pts;
     std::vector<double> w;

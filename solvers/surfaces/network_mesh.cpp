@@ -60,9 +60,14 @@ NetworkMesh meshNetwork(const std::vector<Curve3d>& input, const std::vector<std
     for (const Curve3d& c : input) curves.push_back(c.clamped());
     for (size_t l = 0; l < loops.size(); ++l) {
         if (loops[l].empty()) throw GeometryError("loops[" + std::to_string(l) + "]: empty loop");
-        for (int i : loops[l])
+        for (int i : loops[l]) {
             if (i < 0 || i >= static_cast<int>(curves.size()))
                 throw GeometryError("loops[" + std::to_string(l) + "]: no curve " + std::to_string(i));
+            // A side that is a point has no tangent for the corner frames, and a loop of such
+            // sides encloses nothing (its normals came out NaN).
+            if (curves[i].isCollapsed())
+                throw GeometryError("curves[" + std::to_string(i) + "]: degenerate, all control points coincide");
+        }
     }
     Eigen::AlignedBox3d box;
     for (const Curve3d& c : curves)

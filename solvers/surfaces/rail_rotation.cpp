@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/projection.h"
+#include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/compatible_curves.h"
 
 #include <Eigen/Geometry>
@@ -160,7 +161,8 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
     Curve3d profile = normalizedCurve(input);
     const double size = std::max({rail1.controlSize(), rail2.controlSize(), profile.controlSize()});
     const double meet = kMeetRelative * size;
-    const double tolerance = options.tolerance > 0.0 ? options.tolerance : kDefaultApproximationRelative * size;
+    const double tolerance = approximationTolerance(options.tolerance, kDefaultApproximationRelative * size,
+                                                    coordinateScale({&rail1, &rail2, &profile}));
 
     AxisFrame axis;
     const Vec3 o1 = boxCentre(normalizedCurve(rail1));

@@ -10,7 +10,10 @@ namespace sculptline::solvers::surfaces {
 
 namespace {
 
-// An axis direction shorter than this (relative to the profile's size) has no direction.
+// An axis direction shorter than this, relative to the magnitude of the axis point's coordinates
+// (at least 1), is the round-off of two coincident points (an axis drawn from a closed curve): it
+// has no direction. Not relative to the profile: a profile of size 1e300 about a unit direction is
+// a valid revolve.
 constexpr double kMinAxisLength = 1e-12;
 // Control points closer to the axis than this fraction of the profile's size count as on it.
 constexpr double kOnAxisRelative = 1e-12;
@@ -44,7 +47,7 @@ void requireNoAxisCrossing(const Curve3d& profile, const Eigen::Vector3d& point,
 
 double distanceFromAxis(const Axis& axis, const Eigen::Vector3d& x)
 {
-    const Eigen::Vector3d t = axis.direction.normalized();
+    const Eigen::Vector3d t = axis.direction.stableNormalized();
     const Eigen::Vector3d d = x - axis.point;
     return (d - d.dot(t) * t).norm();
 }
@@ -53,8 +56,11 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
 {
     const Curve3d profile = input.clamped();
     const double size = std::max(1.0, profile.controlSize());
-    if (!(axis.direction.norm() > kMinAxisLength * size) || !axis.direction.allFinite())
-        throw GeometryError("axis: zero-length direction");
+    // stableNorm: a direction of length 1e300 is a direction too, but its squared norm overflows
+    // and normalized() would divide by infinity (a zero axis, every point collapsed onto it).
+    if (!axis.direction.allFinite() || !axis.point.allFinite()) throw GeometryError("axis: not a finite number");
+    const double axisScale = std::max(1.0, axis.point.cwiseAbs().maxCoeff());
+    if (!(axis.direction.stableNorm() > kMinAxisLength * axisScale)) throw GeometryError("axis: zero-length direction");
     if (!(angleDegrees > 0.0 && angleDegrees <= 360.0))
         throw GeometryError("angle: must be in (0, 360] degrees, got " + std::to_string(angleDegrees));
 
@@ -68,7 +74,7 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
     knotsV.insert(knotsV.end(), 3, 1.0);
     const int countV = 2 * narcs + 1;
 
-    const Eigen::Vector3d T = axis.direction.normalized();
+    const Eigen::Vector3d T = axis.direction.stableNormalized();
     const int countU = profile.pointCount();
     std::vector<Eigen::Vector3d> pts(static_cast<size_t>(countU) * countV);
     std::vector<double> w(pts.size());

@@ -10,6 +10,8 @@
 #include "solvers/surfaces/sweep.h"
 
 #include <array>
+#include <cmath>
+#include <string>
 #include <stdexcept>
 #include <utility>
 
@@ -69,6 +71,99 @@ auto renamingPath(F&& f) -> decltype(f())
 
 SurfaceBuild sweepBuild(const SweepResult& r) { return {r.surface, r.maxDeviation, r.tolerance}; }
 
+SurfaceBuild buildUnchecked(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o);
+
+// Samples at which two boundaries are compared for coincidence (evenly spaced in parameter): two
+// curves a person drew as different sides differ at most of them by far more than the meet
+// tolerance; a side that only partly retraces another is left to the fill's own loop checks.
+constexpr int kBoundarySamples = 16;
+
+void requireFinite(bool finite, const char* field)
+{
+    if (!finite) throw GeometryError(std::string(field) + ": not a finite number");
+}
+
+void requireNotCollapsed(const std::vector<Curve3d>& curves, const std::string& family)
+{
+    for (size_t k = 0; k < curves.size(); ++k)
+        if (curves[k].isCollapsed())
+            throw GeometryError(family + "[" + std::to_string(k) + "]: degenerate, all control points coincide");
+}
+
+// Two boundaries that are the same curve, in either direction, up to the fill's default meet
+// tolerance (the largest gap a fill still closes): a loop that runs back over itself encloses
+// nothing, and the fill's corner and side solves would divide by its zero width.
+void requireDistinctBoundaries(const std::vector<Curve3d>& curves)
+{
+    for (size_t j = 1; j < curves.size(); ++j) {
+        for (size_t k = 0; k < j; ++k) {
+            const Curve3d& a = curves[k];
+            const Curve3d& b = curves[j];
+            const double tol = kDefaultMeetRelative * std::max(a.controlSize(), b.controlSize());
+            const auto same = [&](bool reversed) {
+                for (int i = 0; i <= kBoundarySamples; ++i) {
+                    const double t = static_cast<double>(i) / kBoundarySamples;
+                    const double ua = a.domainStart() + t * (a.domainEnd() - a.domainStart());
+                    const double tb = reversed ? 1.0 - t : t;
+                    const double ub = b.domainStart() + tb * (b.domainEnd() - b.domainStart());
+                    if ((a.evaluate(ua) - b.evaluate(ub)).norm() > tol) return false;
+                }
+                return true;
+            };
+            if (same(false) || same(true))
+                throw GeometryError("curves[" + std::to_string(j) + "]: the same curve as curves[" + std::to_string(k) +
+                                    "]; fill boundaries must be distinct curves");
+        }
+    }
+}
+
+void checkInputs(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
+{
+    requireFinite(o.axisPoint.allFinite() && o.axisDirection.allFinite(), "axis");
+    requireFinite(std::isfinite(o.angleDegrees), "angle");
+    requireFinite(o.direction.allFinite(), "direction");
+    requireFinite(std::isfinite(o.tolerance), "tolerance");
+    requireFinite(std::isfinite(o.fillAngleToleranceDegrees), "angle_tolerance");
+    requireNotCollapsed(c, "curves");
+    if (mode == SurfaceMode::Extrude && o.extrudePath && o.extrudePath->isCollapsed())
+        throw GeometryError("path: degenerate, all control points coincide");
+    if (mode == SurfaceMode::Fill) requireDistinctBoundaries(c);
+}
+
+// The last line of defence: whatever a mode computed, a surface with a NaN or infinite number
+// never leaves the entry point (the JSON writer would print null, the GUI would draw nothing).
+void checkResult(const Surface3d& s, double deviation)
+{
+    for (const auto& q : s.points())
+        if (!q.allFinite()) throw GeometryError("surface: the construction produced a non-finite control point (input too large)");
+    for (double w : s.weights())
+        if (!std::isfinite(w)) throw GeometryError("surface: the construction produced a non-finite weight");
+    if (std::isnan(deviation)) throw GeometryError("surface: the construction's deviation is not a number");
+}
+
+// The input curves are valid (finite) geometry, so a "points[i]: not a finite number" from a
+// curve or surface the mode constructs means that its arithmetic overflowed: say so, naming the
+// result rather than an input field the caller never gave.
+template <class F>
+auto overflowNamed(F&& f) -> decltype(f())
+{
+    try {
+        return f();
+    } catch (const GeometryError& e) {
+        const std::string m = e.what();
+        const bool constructed = m.rfind("points[", 0) == 0 || m.rfind("weights[", 0) == 0;
+        if (constructed && m.find(": not a finite number") != std::string::npos)
+            throw GeometryError("surface: the construction overflows double precision (coordinates too large)");
+        throw;
+    }
+}
+
+SurfaceBuild checked(SurfaceBuild b)
+{
+    checkResult(b.surface, b.maxDeviation);
+    return b;
+}
+
 }  // namespace
 
 SurfaceMode parseSurfaceMode(const std::string& name)
@@ -105,6 +200,26 @@ void checkCurveCount(SurfaceMode mode, size_t count)
 SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
 {
     checkCurveCount(mode, c.size());
+    checkInputs(mode, c, o);
+    SurfaceBuild b = overflowNamed([&] { return buildUnchecked(mode, c, o); });
+    checkResult(b.surface, b.maxDeviation);
+    return b;
+}
+
+GordonResult buildGordon(const std::vector<Curve3d>& u, const std::vector<Curve3d>& v, const GordonOptions& o)
+{
+    requireFinite(std::isfinite(o.meetTolerance), "tolerance");
+    requireNotCollapsed(u, "curves");
+    requireNotCollapsed(v, "v_curves");
+    GordonResult g = overflowNamed([&] { return gordon(u, v, o); });
+    checkResult(g.surface, g.maxGap);
+    return g;
+}
+
+namespace {
+
+SurfaceBuild buildUnchecked(SurfaceMode mode, const std::vector<Curve3d>& c, const SurfaceOptions& o)
+{
     switch (mode) {
     case SurfaceMode::Fill: return fillBuild(FillBuilder(c, fillOptions(o)), o);
     case SurfaceMode::Revolve: return {revolve(c[0], Axis{o.axisPoint, o.axisDirection}, o.angleDegrees)};
@@ -117,6 +232,8 @@ SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& c, const
     }
     throw std::invalid_argument("mode: unknown surface mode");
 }
+
+}  // namespace
 
 SurfaceBuilder::SurfaceBuilder(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options)
     : mode_(mode), options_(options)
@@ -131,24 +248,30 @@ SurfaceBuilder& SurfaceBuilder::operator=(SurfaceBuilder&&) noexcept = default;
 const SurfaceBuild& SurfaceBuilder::reset(const std::vector<Curve3d>& c)
 {
     checkCurveCount(mode_, c.size());
+    checkInputs(mode_, c, options_);
+    // Each branch builds aside and commits only a checked result: a failed rebuild keeps the last
+    // good surface (and builder), as update() promises.
     switch (mode_) {
     case SurfaceMode::Fill: {
         auto b = std::make_unique<FillBuilder>(c, fillOptions(options_));
-        build_ = std::make_unique<SurfaceBuild>(fillBuild(*b, options_));
+        auto out = std::make_unique<SurfaceBuild>(checked(fillBuild(*b, options_)));
         fill_ = std::move(b);
+        build_ = std::move(out);
         break;
     }
     case SurfaceMode::Loft: {
         auto b = std::make_unique<LoftBuilder>(c, loftOptions(options_));
-        build_ = std::make_unique<SurfaceBuild>(SurfaceBuild{b->surface()});
+        auto out = std::make_unique<SurfaceBuild>(checked(SurfaceBuild{b->surface()}));
         loft_ = std::move(b);
+        build_ = std::move(out);
         break;
     }
     case SurfaceMode::Sweep: {
         auto b = renamingPath(
             [&] { return std::make_unique<SweepBuilder>(c[0], c[1], SweepOptions{options_.tolerance, 513}); });
-        build_ = std::make_unique<SurfaceBuild>(sweepBuild(b->result()));
+        auto out = std::make_unique<SurfaceBuild>(checked(sweepBuild(b->result())));
         sweep_ = std::move(b);
+        build_ = std::move(out);
         break;
     }
     default: build_ = std::make_unique<SurfaceBuild>(buildSurface(mode_, c, options_));
@@ -159,14 +282,16 @@ const SurfaceBuild& SurfaceBuilder::reset(const std::vector<Curve3d>& c)
 const SurfaceBuild& SurfaceBuilder::update(const std::vector<Curve3d>& c)
 {
     checkCurveCount(mode_, c.size());
+    checkInputs(mode_, c, options_);
     switch (mode_) {
     case SurfaceMode::Fill:
         fill_->update(c);
-        build_ = std::make_unique<SurfaceBuild>(fillBuild(*fill_, options_));
+        build_ = std::make_unique<SurfaceBuild>(checked(fillBuild(*fill_, options_)));
         break;
-    case SurfaceMode::Loft: build_ = std::make_unique<SurfaceBuild>(SurfaceBuild{loft_->update(c)}); break;
+    case SurfaceMode::Loft: build_ = std::make_unique<SurfaceBuild>(checked(SurfaceBuild{loft_->update(c)})); break;
     case SurfaceMode::Sweep:
-        build_ = std::make_unique<SurfaceBuild>(sweepBuild(renamingPath([&] { return sweep_->update(c[0], c[1]); })));
+        build_ = std::make_unique<SurfaceBuild>(
+            checked(sweepBuild(renamingPath([&] { return sweep_->update(c[0], c[1]); }))));
         break;
     default: build_ = std::make_unique<SurfaceBuild>(buildSurface(mode_, c, options_));
     }

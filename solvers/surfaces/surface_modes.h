@@ -3,6 +3,7 @@
 // surface entities (scene/model) build through it, so a mode behaves the same in both.
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/surfaces/coons_fill.h"
+#include "solvers/surfaces/gordon.h"
 
 #include <Eigen/Core>
 
@@ -65,11 +66,23 @@ void checkCurveCount(SurfaceMode mode, size_t count);
 /// Builds the surface of `mode` from `curves` (world coordinates, in the mode's order: fill 2-4
 /// boundaries; revolve [profile]; extrude [profile]; sweep [profile, path]; loft [sections..];
 /// boundary-rotation [left, right]; rail-rotation [rail 1, rail 2, profile]).
+/// Before any mode runs, every mode refuses: a non-finite option (axis, angle, direction,
+/// tolerance, angle tolerance, extrusion path); a collapsed curve (BSplineCurve::isCollapsed:
+/// "curves[k]: degenerate, all control points coincide"); fill boundaries that repeat one another.
+/// After it ran, a surface with a non-finite control point or weight is refused ("surface: ...")
+/// rather than returned. Approximating modes clamp a tolerance below what double precision can
+/// meet (approximation_tolerance.h) and report the one used.
 /// @throws std::invalid_argument for a wrong number of curves, GeometryError for input the mode
 ///         cannot build (the message says why: curves that do not meet, a path with a cusp, ...).
 ///         Messages start with the input they blame: "curves: ", "curves[1] (path): " (sweep),
-///         "axis: ", "angle: ", "direction: ", "path: " (extrudePath).
+///         "axis: ", "angle: ", "direction: ", "path: " (extrudePath), "tolerance: ".
 SurfaceBuild buildSurface(SurfaceMode mode, const std::vector<Curve3d>& curves, const SurfaceOptions& options = {});
+
+/// A Gordon surface (gordon.h) with the same input and result checks as buildSurface: it takes two
+/// curve families, so it is not a SurfaceMode. Collapsed curves are named "curves[k]" (u family)
+/// and "v_curves[k]" (v family); a non-finite tolerance is "tolerance: ...".
+GordonResult buildGordon(const std::vector<Curve3d>& uCurves, const std::vector<Curve3d>& vCurves,
+                         const GordonOptions& options = {});
 
 /// Incremental builds for dragging (issue 6 §2): keeps the mode's builder (fill: FillBuilder, loft:
 /// LoftBuilder, sweep: SweepBuilder), so that update() re-solves with what was set up at the first

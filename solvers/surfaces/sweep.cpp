@@ -1,6 +1,7 @@
 #include "solvers/surfaces/sweep.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/rotation_minimizing_frames.h"
 
 #include <Eigen/Geometry>
@@ -234,7 +235,7 @@ Assembly assemble(const ProfileSamples& P, const SweepPathSamples& S)
 double sweepTolerance(const Curve3d& profile, const Curve3d& path, const SweepOptions& options)
 {
     const double size = std::max(profile.controlSize(), path.controlSize());
-    return options.tolerance > 0.0 ? options.tolerance : kDefaultSweepRelative * size;
+    return approximationTolerance(options.tolerance, kDefaultSweepRelative * size, coordinateScale({&profile, &path}));
 }
 
 SweepResult sweepResult(const Curve3d& profile, Assembly&& A, int sections, double tolerance)

@@ -58,3 +58,35 @@ TEST(ArcLength, ClosedCurveLengthIsTheSameFromAnyStart)
     const double whole = arcLength(c);
     EXPECT_NEAR(arcLength(c, a + 0.37 * T, a + 1.37 * T), whole, kLengthTolerance * whole);
 }
+
+namespace {
+// A cubic whose control points agree to 1e-14 of their magnitude (1e3): its speed |C'| is
+// round-off, so no relative accuracy can be reached on it.
+Curve3d nearlyCollapsedCubic()
+{
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 7; ++i) pts.emplace_back(1e3 + 1e-11 * i, 2e3 + 1e-11 * ((i * 7) % 5), -1e3);
+    return Curve3d(3, {0, 0, 0, 0, 0.25, 0.5, 0.75, 1, 1, 1, 1}, pts);
+}
+}  // namespace
+
+TEST(ArcLength, NearlyCollapsedCurveIsMeasuredToItsRoundOffWithoutRecursingForever)
+{
+    // Arrange: the length is at most the control polygon's (convex hull property, The NURBS Book
+    // P4.9 for non-rational curves), about 1e-10; round-off in the coordinates is ~1e-13 per sample.
+    const Curve3d c = nearlyCollapsedCubic();
+    double polygon = 0.0;
+    for (size_t i = 1; i < c.points().size(); ++i) polygon += (c.points()[i] - c.points()[i - 1]).norm();
+
+    // Act: the relative tolerance alone recursed to 2^30 panels per span here (hours).
+    const double length = arcLength(c);
+    const ArcLengthParameterization<3> table(c);
+    const double u = table.parameterAt(0.5 * table.totalLength());
+
+    // Assert: a finite length within round-off of the polygon bound, and a parameter in the domain.
+    constexpr double kRoundOff = 1e-9;  // thousands of ulps of 1e3: a generous bound on noise
+    EXPECT_GE(length, 0.0);
+    EXPECT_LE(length, polygon + kRoundOff);
+    EXPECT_GE(u, 0.0);
+    EXPECT_LE(u, 1.0);
+}

@@ -141,3 +141,26 @@ TEST(Curve, NonFiniteParameterIsAnErrorNotGarbage)
     // Outside the domain an open curve clamps (documented), it does not extrapolate.
     EXPECT_EQ(c.evaluate(-7.0), c.evaluate(0.0));
 }
+
+TEST(Curve, InteriorKnotOfMultiplicityDegreePlusOneIsRefusedNamingTheKnots)
+{
+    // Two cubic pieces that need not meet (C^-1 at 0.5, The NURBS Book P2.5): the kernel's
+    // algorithms (A5.1, A5.4, A5.8, clamping, compatible layouts) presume multiplicity <= degree.
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 8; ++i) pts.emplace_back(i, i % 3, 0);
+    const KnotVector knots{0, 0, 0, 0, 0.5, 0.5, 0.5, 0.5, 1, 1, 1, 1};
+    try {
+        Curve3d(3, knots, pts);
+        FAIL() << "a curve broken at an interior knot was accepted";
+    } catch (const GeometryError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("knots: interior knot 0.5 has multiplicity 4", 0), 0u) << e.what();
+    }
+}
+
+TEST(Curve, InteriorKnotOfMultiplicityDegreeIsAValidC0Curve)
+{
+    // Multiplicity = degree: a C0 corner, the curve passes through the shared control point.
+    const std::vector<Eigen::Vector3d> pts{{0, 0, 0}, {1, 1, 0}, {2, 1, 0}, {3, 0, 0}, {4, 1, 0}, {5, 1, 0}, {6, 0, 0}};
+    const Curve3d c(3, {0, 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1, 1}, pts);
+    EXPECT_EQ(c.evaluate(0.5), pts[3]);
+}

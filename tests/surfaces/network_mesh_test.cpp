@@ -101,3 +101,15 @@ TEST(NetworkMesh, GivenOpenOrBadLoops_WhenMeshed_ThenClearErrors)
     EXPECT_THROW(meshNetwork(c, {{0, 7}}), GeometryError);     // no such curve
     EXPECT_THROW(meshNetwork(c, {{}}), GeometryError);
 }
+
+TEST(NetworkMesh, GivenALoopOfOneCollapsedCurve_WhenMeshed_ThenRefusedNamingTheCurve)
+{
+    // A closed "curve" that is a point: its normals came out NaN (reported as an overflow).
+    const Curve3d point = cubic({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}});
+    try {
+        meshNetwork({line({0, 0, 0}, {1, 0, 0}), point}, {{1}});
+        FAIL() << "meshed a point";
+    } catch (const GeometryError& e) {
+        EXPECT_STREQ(e.what(), "curves[1]: degenerate, all control points coincide");
+    }
+}
