@@ -17,6 +17,8 @@ using nlohmann::json;
 
 namespace {
 
+/// Edge of the plane of a fresh sheet: a sheet of paper at arm's length (model units, mm).
+constexpr double kFreshPlaneSize = 120.0;
 /// Largest coordinate or size the scene accepts, in model units (a kilometre in millimetres): Coin
 /// draws in float, whose resolution at 1e6 is 0.06 units, and beyond ~1e38 not at all.
 constexpr double kMaxExtent = 1e6;
@@ -294,6 +296,18 @@ SceneDocument loadDocument(const std::string& path)
     } catch (const io::InputError& e) {
         throw io::InputError(path + ": " + e.what());
     }
+}
+
+SceneDocument freshDocument()
+{
+    SceneDocument doc;
+    PlaneSpec plane;
+    plane.origin = Eigen::Vector3d(0, 0, 60);
+    plane.normal = Eigen::Vector3d(0, -1, 0);
+    plane.size = kFreshPlaneSize;
+    plane.id = 1;
+    doc.planes.push_back(plane);
+    return doc;
 }
 
 }  // namespace sculptline::scene

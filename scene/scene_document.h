@@ -92,4 +92,8 @@ SceneDocument documentFromJson(const nlohmann::json& j);
 /// @throws solvers::io::InputError whose message starts with the path ("x.json: cannot open file").
 SceneDocument loadDocument(const std::string& path);
 
+/// A fresh sheet (File > New, and what a person gets when the document asked for cannot be
+/// opened): the ground grid and one vertical plane facing the default view, nothing drawn yet.
+SceneDocument freshDocument();
+
 }  // namespace sculptline::scene

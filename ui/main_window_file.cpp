@@ -20,8 +20,6 @@ namespace {
 
 /// Length of File > Open Recent.
 constexpr int kMaxRecentFiles = 8;
-/// Edge of the plane of a new document: a sheet of paper at arm's length.
-constexpr double kNewDocumentPlaneSize = 120.0;
 
 }  // namespace
 
@@ -78,15 +76,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::newDocument()
 {
     if (!maybeSave()) return;
-    // A fresh sheet: the ground grid and one vertical plane facing the default view.
-    scene::SceneDocument doc;
-    scene::PlaneSpec plane;
-    plane.origin = Eigen::Vector3d(0, 0, 60);
-    plane.normal = Eigen::Vector3d(0, -1, 0);
-    plane.size = kNewDocumentPlaneSize;
-    plane.id = 1;
-    doc.planes.push_back(plane);
-    showDocument(doc, QString());
+    showDocument(scene::freshDocument(), QString());
 }
 
 void MainWindow::openDocument()
@@ -105,7 +95,7 @@ void MainWindow::openDocument()
 void MainWindow::reportOpenFailure(const QString& reason)
 {
     QMessageBox box(QMessageBox::Warning, tr("Cannot open document"), reason, QMessageBox::Ok, this);
-    box.setInformativeText(tr("The default scene is open instead."));
+    box.setInformativeText(tr("A new, empty sheet is open instead."));
     box.exec();
 }
 

@@ -145,7 +145,8 @@ int main(int argc, char** argv)
         }
         return 0;
     }
-    // The default scene opens untitled, so that File > Save asks where instead of overwriting it.
+    // The default scene (or the fresh sheet that replaces a document that cannot be opened) opens
+    // untitled, so that File > Save asks where instead of overwriting it.
     window.showDocument(start.document, QString::fromStdString(start.path));
     const QString recovery = ui::recoveryFolder();
     // A script gets the flag or the default, never a person's setting: its runs must repeat.

@@ -16,17 +16,12 @@ StartDocument openStartDocument(const GuiOptions& options, bool interactive)
         std::cerr << "sculptline: " << e.what() << "\n";
         start.error = e.what();
     }
-    // The default scene failing is an installation problem: no fallback for that.
+    // Without a document named, the default scene failing is an installation problem: no fallback.
     if (!interactive || !options.documentGiven) {
         start.exitStatus = 2;
         return start;
     }
-    try {
-        start.document = scene::loadDocument(defaultDocumentPath());
-    } catch (const std::exception& e) {
-        std::cerr << "sculptline: " << e.what() << "\n";
-        start.exitStatus = 2;
-    }
+    start.document = scene::freshDocument();
     return start;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // The document a session starts on. A document that cannot be opened (missing, unreadable,
 // malformed, made by a newer version) ends a scripted run with status 2, as a script needs; a
-// person who started the program from a desktop, where stderr goes nowhere, gets the default scene
-// instead and the reason in a dialog.
+// person who started the program from a desktop, where stderr goes nowhere, gets a fresh sheet
+// (File > New) instead and the reason in a dialog.
 #include "app/gui/gui_options.h"
 #include "scene/scene_document.h"
 
@@ -12,13 +12,13 @@ namespace sculptline::app {
 
 struct StartDocument {
     scene::SceneDocument document;
-    std::string path;  ///< empty: untitled (the default scene, so that Save asks where)
+    std::string path;  ///< empty: untitled (the fresh sheet, so that Save asks where)
     std::string error;  ///< why the requested document is not the one opened (for the dialog)
     int exitStatus = 0;  ///< 2: leave now (the message is printed)
 };
 
 /// Opens options.document; on failure prints "sculptline: <reason>" to stderr and, when
-/// `interactive` (a display, and not scripted()), falls back to the default scene.
+/// `interactive` (a display, and not scripted()), falls back to scene::freshDocument().
 StartDocument openStartDocument(const GuiOptions& options, bool interactive);
 
 }  // namespace sculptline::app

@@ -331,7 +331,7 @@ TEST(Autosave, ADocumentThatCannotBeOpenedIsExplainedInADialog)
     answerNextBox(QStringLiteral("OK"), QStringLiteral("open_failure_dialog"), &shown);
     window.reportOpenFailure(QStringLiteral("kettle.json: made by a newer Sculptline (version 2); this one reads up to 1"));
     EXPECT_TRUE(shown.contains(QStringLiteral("newer Sculptline (version 2)"))) << shown.toStdString();
-    EXPECT_TRUE(shown.contains(QStringLiteral("default scene"))) << shown.toStdString();
+    EXPECT_TRUE(shown.contains(QStringLiteral("empty sheet is open instead"))) << shown.toStdString();
 }
 
 }  // namespace

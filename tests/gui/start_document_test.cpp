@@ -1,5 +1,5 @@
 // The document a session starts on (app/gui/start_document.h): a person at a desktop gets the
-// default scene and the reason; a script gets status 2, as before.
+// fresh sheet (File > New) and the reason; a script gets status 2, as before.
 #include "app/gui/start_document.h"
 
 #include <gtest/gtest.h>
@@ -26,17 +26,17 @@ std::string writeDocument(const std::string& name, const std::string& text)
     return path;
 }
 
-TEST(StartDocument, APersonGetsTheDefaultSceneAndTheReason)
+TEST(StartDocument, APersonGetsAFreshSheetAndTheReason)
 {
     // Given a document from a newer version, opened from a desktop
     const std::string newer = writeDocument("sculptline_newer.json", R"({"format": "sculptline", "version": 9, "planes": []})");
     const StartDocument start = openStartDocument(optionsFor(newer), true);
-    // Then the default scene opens, untitled, with the reason for the dialog
+    // Then a fresh sheet opens (File > New's), untitled, with the reason for the dialog
     EXPECT_EQ(start.exitStatus, 0);
     EXPECT_EQ(start.error, newer + ": made by a newer Sculptline (version 9); this one reads up to 1");
     EXPECT_TRUE(start.path.empty());
-    EXPECT_EQ(start.document.planes.size(), 1u);  // the default scene's plane
-    EXPECT_EQ(start.document.curves.size(), 1u);
+    EXPECT_EQ(start.document.planes.size(), 1u);  // the sheet's plane, nothing drawn
+    EXPECT_TRUE(start.document.curves.empty());
     std::remove(newer.c_str());
 }
 
@@ -47,7 +47,8 @@ TEST(StartDocument, MalformedAndMissingDocumentsToo)
         const StartDocument start = openStartDocument(optionsFor(path), true);
         EXPECT_EQ(start.exitStatus, 0) << path;
         EXPECT_EQ(start.error.rfind(path + ": ", 0), 0u) << start.error;
-        EXPECT_EQ(start.document.curves.size(), 1u) << path;
+        EXPECT_TRUE(start.document.curves.empty()) << path;
+        EXPECT_EQ(start.document.planes.size(), 1u) << path;
     }
     std::remove(broken.c_str());
 }
