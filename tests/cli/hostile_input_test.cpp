@@ -50,3 +50,17 @@ TEST(CliHostileInput, GivenDeeplyNestedTolerance_WhenRemoveKnots_ThenRejectedNam
     expectRejected("remove-knots", R"({"curve": )" + kLine + R"(, "tolerance": )" + nested(kNestingDepth) + "}",
                    "tolerance: ");
 }
+
+TEST(CliHostileInput, GivenTinyEdgeLength_WhenNetwork_ThenRefusedNamingEdgeLength)
+{
+    // Four edges of a unit square; edge_length 1e-9 asked for 4e9 boundary vertices (the solver capped
+    // them at 4e5, which still took 9 s and 0.5 GB).
+    const std::string square = R"({"curves": [
+        {"degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 0], [1, 0]]},
+        {"degree": 1, "knots": [0, 0, 1, 1], "points": [[1, 0], [1, 1]]},
+        {"degree": 1, "knots": [0, 0, 1, 1], "points": [[1, 1], [0, 1]]},
+        {"degree": 1, "knots": [0, 0, 1, 1], "points": [[0, 1], [0, 0]]}],
+        "loops": [[0, 1, 2, 3]], "fairing": 100, "edge_length": )";
+    expectRejected("network", square + "1e-9}", "edge_length: 1e-09 would put 4000000000.0 vertices");
+    EXPECT_EQ(runCli({"network"}, square + "0.01}").status, 0);  // 400 vertices: fine
+}
