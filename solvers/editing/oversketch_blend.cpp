@@ -187,8 +187,11 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     // points per side to start with (so that repeated edits keep the count bounded), grown by a
     // quarter until the in-place fit meets the tolerance; at most one per four stroke samples plus
     // the transitions (beyond that it would fit pen noise).
+    // The density is capped at one point per stroke sample before it becomes an int: a stroke far
+    // longer than C1's polygon edges (6e9 against 15) asked for 4e8 points (a minute and 10 GB).
     const auto& h = st.points;
-    const int m0 = std::max(p + 1, static_cast<int>(std::lround(st.length / M)) + 1) + p;
+    const double density = std::min(st.length / M, static_cast<double>(h.size()));
+    const int m0 = std::max(p + 1, static_cast<int>(std::lround(density)) + 1) + p;
     const int mMax = std::max(m0, static_cast<int>(h.size()) / 4 + 2 * p);
     const double tol = o.tolerance * st.length;
     auto grow = [&](int m) { return std::min(mMax, m + std::max(1, m / 4)); };
