@@ -76,8 +76,9 @@ struct SceneDocument {
 /// ../shared/interfaces.md. A plane may carry "id" (positive, unique) and "xAxis"; a curve may carry
 /// "plane": the id of the plane it lies on, its points then 2D (or z = 0) in that plane's frame.
 /// Curves and surfaces may carry "id" too; ids are unique across the document, and a curve's id is
-/// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes must lie within 1e6 model units (Coin draws in
-/// float).
+/// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes
+/// must lie within 1e6 model units (Coin draws in float); a constructed surface's saved geometry is
+/// exempt: it is rebuilt from its curves, and may reach beyond them.
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").
 SceneDocument documentFromJson(const nlohmann::json& j);
 
