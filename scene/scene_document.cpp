@@ -115,10 +115,10 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     if (!it->is_object()) throw io::InputError(at + ": must be an object");
     SceneDocument::ConstructedSurface c;
     c.id = surfaceId;
-    if (surface.contains("points")) {
-        c.saved = io::surfaceFromJson(surface, path);
-        checkExtent(c.saved->points(), path);
-    }
+    // No extent check on the saved geometry: it is what the construction built from curves that
+    // passed theirs, and a revolution or extrusion reaches beyond its curves (a profile 1e6 from
+    // its axis sweeps a circle of that radius); refusing it made such a document fail to reopen.
+    if (surface.contains("points")) c.saved = io::surfaceFromJson(surface, path);
     const json& mode = io::member(*it, "mode", at);
     if (!mode.is_string()) throw io::InputError(at + ".mode: expected a string");
     c.recipe.mode = mode.get<std::string>();
@@ -146,7 +146,10 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         c.recipe.angleDegrees = io::numberFromJson(*a, at + ".angle");
         if (!(c.recipe.angleDegrees > 0.0 && c.recipe.angleDegrees <= 360.0)) throw io::InputError(at + ".angle: must be in (0, 360]");
     }
-    if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
+    if (const auto d = it->find("direction"); d != it->end()) {
+        c.recipe.direction = io::pointFromJson(*d, at + ".direction");
+        checkExtent(c.recipe.direction, at + ".direction");
+    }
     if (c.recipe.mode == "gordon") c.recipe.uCurves = io::integerFromJson(io::member(*it, "u_curves", at), at + ".u_curves", 2, n - 2);
     if (const auto g = it->find("tangents"); g != it->end()) {
         // G1 fill: {"curve": boundary index, "surface": id of a surface made before this one}.

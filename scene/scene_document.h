@@ -81,8 +81,9 @@ constexpr int kDocumentVersion = 1;
 /// ../shared/interfaces.md. A plane may carry "id" (positive, unique) and "xAxis"; a curve may carry
 /// "plane": the id of the plane it lies on, its points then 2D (or z = 0) in that plane's frame.
 /// Curves and surfaces may carry "id" too; ids are unique across the document, and a curve's id is
-/// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes must lie within 1e6 model units (Coin draws in
-/// float).
+/// greater than its plane's (entities are created in id order, inputs first). Coordinates and sizes
+/// must lie within 1e6 model units (Coin draws in float); a constructed surface's saved geometry is
+/// exempt: it is rebuilt from its curves, and may reach beyond them.
 /// A "version" above kDocumentVersion is refused ("made by a newer Sculptline (version 2); this
 /// one reads up to 1"), as is a "format" other than kDocumentFormat.
 /// @throws solvers::io::InputError naming the field ("planes[0].normal: must not be zero").

@@ -92,6 +92,11 @@ ReplaySession sessionFromJson(const json& j)
 
 }  // namespace
 
+ReplaySession parseReplaySession(const std::string& text)
+{
+    return sessionFromJson(io::parseJson(text));
+}
+
 ReplaySession loadReplaySession(const std::string& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -99,7 +104,7 @@ ReplaySession loadReplaySession(const std::string& path)
     std::ostringstream text;
     text << in.rdbuf();
     try {
-        return sessionFromJson(io::parseJson(text.str()));
+        return parseReplaySession(text.str());
     } catch (const io::InputError& e) {
         throw io::InputError(path + ": " + e.what());
     }

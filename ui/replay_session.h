@@ -42,4 +42,8 @@ constexpr double kMaxReplayMs = 600000.0;
 /// @throws solvers::io::InputError naming the path and field ("s.json: events[3].button: ...").
 ReplaySession loadReplaySession(const std::string& path);
 
+/// Parses a session from its JSON text (what loadReplaySession reads from the file).
+/// @throws solvers::io::InputError naming the field ("events[3].button: ...").
+ReplaySession parseReplaySession(const std::string& text);
+
 }  // namespace sculptline::ui

@@ -51,7 +51,7 @@ std::vector<CurveConstraint<3>> constraintsFromJson(const json& j, const solvers
         else if (t == "distance")
             k.type = ConstraintType::Distance;
         else
-            throw InputError(path + ".type: expected position, tangent, curvature or distance, got " + type.dump());
+            throw InputError(path + ".type: expected position, tangent, curvature or distance, got " + solvers::io::describeValue(type));
         k.u = parameter(c, "u", path, curve);
         if (k.type == ConstraintType::Distance) k.u2 = parameter(c, "u2", path, curve);
         const json& v = solvers::io::member(c, "value", path);

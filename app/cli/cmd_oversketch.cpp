@@ -25,7 +25,7 @@ json run(const json& input, const Options&)
         const json& m = input["method"];
         const auto parsed =
             m.is_string() ? solvers::editing::parseOversketchMethod(m.get<std::string>()) : std::nullopt;
-        if (!parsed) throw InputError("method: expected \"blend\" or \"local-c2\", got " + m.dump());
+        if (!parsed) throw InputError("method: expected \"blend\" or \"local-c2\", got " + solvers::io::describeValue(m));
         options.method = *parsed;
     }
     if (input.contains("scale")) options.scale = solvers::io::numberFromJson(input["scale"], "scale");

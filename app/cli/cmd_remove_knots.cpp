@@ -16,7 +16,7 @@ namespace {
 json run(const json& input, const Options&)
 {
     const double tolerance = solvers::io::numberFromJson(field(input, "tolerance"), "tolerance");
-    if (tolerance < 0) throw InputError("tolerance: must be >= 0, got " + field(input, "tolerance").dump());
+    if (tolerance < 0) throw InputError("tolerance: must be >= 0, got " + solvers::io::describeValue(field(input, "tolerance")));
     int removed = 0;
     json out = transformGeometry(
         input, [&](const solvers::Curve3d& c) { return c.removeKnots(tolerance, &removed); },

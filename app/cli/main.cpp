@@ -72,10 +72,7 @@ int runSubcommand(const sculptline::cli::Subcommand& command, const std::string&
 {
     std::string output;
     try {
-        const json input = sculptline::solvers::io::parseJson(readInput(inputPath));
-        if (!input.is_object()) throw InputError(std::string("input: must be a JSON object, got ") + input.type_name());
-        const json result = command.run(input, options);
-        sculptline::cli::requireFiniteOutput(result);
+        const json result = sculptline::cli::runOnText(command, readInput(inputPath), options);
         // nlohmann writes doubles in their shortest round-trip form, so nothing is lost.
         output = result.dump(options.pretty ? 2 : -1);
     } catch (const InputError& e) {

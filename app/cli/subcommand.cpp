@@ -1,5 +1,7 @@
 #include "app/cli/subcommand.h"
 
+#include "app/cli/cli_support.h"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -21,6 +23,22 @@ std::vector<Subcommand> subcommands()
     std::vector<Subcommand> sorted = registry();
     std::sort(sorted.begin(), sorted.end(), [](const Subcommand& a, const Subcommand& b) { return a.name < b.name; });
     return sorted;
+}
+
+json runOnText(const Subcommand& command, const std::string& text, const Options& options)
+{
+    const json input = solvers::io::parseJson(text);
+    if (!input.is_object()) throw InputError(std::string("input: must be a JSON object, got ") + input.type_name());
+    json result = command.run(input, options);
+    requireFiniteOutput(result);
+    return result;
+}
+
+const Subcommand* findSubcommand(const std::string& name)
+{
+    const auto& commands = registry();
+    const auto it = std::find_if(commands.begin(), commands.end(), [&](const Subcommand& c) { return c.name == name; });
+    return it == commands.end() ? nullptr : &*it;
 }
 
 SubcommandRegistrar::SubcommandRegistrar(Subcommand command)

@@ -31,6 +31,15 @@ struct Subcommand {
 /// All registered subcommands, sorted by name.
 std::vector<Subcommand> subcommands();
 
+/// What main() does with a subcommand's input text, minus the I/O: parses `text` as JSON, checks it is
+/// an object, runs the subcommand and checks the result is finite. The fuzz targets (fuzz/) call
+/// this, so they exercise exactly the path of the command line.
+/// @throws solvers::io::InputError or solvers::GeometryError for invalid input (exit status 2).
+nlohmann::json runOnText(const Subcommand& command, const std::string& text, const Options& options);
+
+/// The registered subcommand called `name`, or nullptr.
+const Subcommand* findSubcommand(const std::string& name);
+
 /// Registers at static-initialization time: `const SubcommandRegistrar reg{{"eval", "...", &run}};`
 struct SubcommandRegistrar {
     explicit SubcommandRegistrar(Subcommand command);

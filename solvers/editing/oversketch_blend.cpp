@@ -187,10 +187,9 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     // points per side to start with (so that repeated edits keep the count bounded), grown by a
     // quarter until the in-place fit meets the tolerance; at most one per four stroke samples plus
     // the transitions (beyond that it would fit pen noise).
+    // The density is capped at one point per stroke sample before it becomes an int: a stroke far
+    // longer than C1's polygon edges (6e9 against 15) asked for 4e8 points (a minute and 10 GB).
     const auto& h = st.points;
-    // Never more than the stroke has samples: a curve far smaller than the stroke (its points 1e-9
-    // of the stroke apart) asked for st.length / M ~ 1e9 points, which overflowed an int and
-    // exhausted memory; more unknowns than samples would leave the fit undetermined anyway.
     const double density = std::min(st.length / M, static_cast<double>(h.size()));
     const int m0 = std::max(p + 1, static_cast<int>(std::lround(density)) + 1) + p;
     const int mMax = std::max(m0, static_cast<int>(h.size()) / 4 + 2 * p);

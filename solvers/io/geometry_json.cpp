@@ -108,6 +108,20 @@ const json& member(const json& j, const std::string& key, const std::string& pat
     return *it;
 }
 
+std::string describeValue(const json& j)
+{
+    // Long enough for any valid value's name, short enough for a one-line message.
+    constexpr size_t kMaxQuotedChars = 40;
+    if (j.is_number() || j.is_boolean() || j.is_null()) return j.dump();
+    if (j.is_string()) {
+        const std::string& s = j.get_ref<const std::string&>();
+        // The cut may split a UTF-8 sequence: replace it rather than throw (dump's strict default).
+        return json(s.size() > kMaxQuotedChars ? s.substr(0, kMaxQuotedChars) + "..." : s)
+            .dump(-1, ' ', false, json::error_handler_t::replace);
+    }
+    return j.type_name();
+}
+
 double numberFromJson(const json& j, const std::string& path)
 {
     if (!j.is_number()) throw InputError(path + ": must be a number");
@@ -127,7 +141,7 @@ int integerFromJson(const json& j, const std::string& path, int lo, int hi)
     if (!std::isfinite(v)) throw InputError(path + ": not a finite number");
     if (v < lo || v > hi) {
         throw InputError(path + ": must be between " + std::to_string(lo) + " and " + std::to_string(hi) + ", got " +
-                         j.dump());
+                         describeValue(j));
     }
     return static_cast<int>(v);
 }

@@ -26,6 +26,10 @@ Eigen::Vector3d pointFromJson(const nlohmann::json& j, const std::string& path);
 double numberFromJson(const nlohmann::json& j, const std::string& path);
 /// Reads an integer within [lo, hi].
 int integerFromJson(const nlohmann::json& j, const std::string& path, int lo, int hi);
+/// A short description of an input value for a message: a number or a short string as written, a
+/// long string cut, anything else its type ("array", "object"). Never j.dump() of input: its recursion
+/// follows the nesting, and deeply nested input ([[[[...) would overflow the stack.
+std::string describeValue(const nlohmann::json& j);
 /// The member `key` of object j, or an InputError naming path.key when it is missing.
 const nlohmann::json& member(const nlohmann::json& j, const std::string& key, const std::string& path);
 

@@ -69,6 +69,9 @@ void windows(const ConditionedStroke& cs, int minSteps, double minLength, std::v
     const int n = cs.size();
     const auto at = [&](int j) -> const Eigen::Vector3d& { return cs.points[j < 0 ? j + n : (j >= n ? j - n : j)]; };
     const int reachMax = cs.closed ? n / 2 : n;
+    // On a closed stroke of fewer than 2 minSteps samples the half-loop bound wins; without this
+    // the clamp below had lo > hi (undefined; _GLIBCXX_ASSERTIONS aborts).
+    const int steps = cs.closed ? std::min(minSteps, reachMax) : minSteps;
     const double min2 = minLength * minLength;
     lo.resize(n);
     hi.resize(n);
@@ -76,12 +79,12 @@ void windows(const ConditionedStroke& cs, int minSteps, double minLength, std::v
     int b = 0;
     for (int i = 0; i < n; ++i) {
         const int aMin = cs.closed ? i - reachMax : 0;
-        const int aMax = cs.closed ? i - minSteps : std::max(0, i - minSteps);
+        const int aMax = cs.closed ? i - steps : std::max(0, i - minSteps);
         a = std::clamp(a, aMin, aMax);
         while (a + 1 <= aMax && (at(a + 1) - at(i)).squaredNorm() >= min2) ++a;
         lo[i] = a;
         const int bMax = cs.closed ? i + reachMax : n - 1;
-        b = std::clamp(std::max(b, i + minSteps), i, bMax);
+        b = std::clamp(std::max(b, i + steps), i, bMax);
         while (b < bMax && (at(b) - at(i)).squaredNorm() < min2) ++b;
         hi[i] = b;
     }

@@ -54,8 +54,9 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     constexpr int kMaxPieces = 4;
     std::vector<int> pieces(spans, 0);
     for (int j = 0; j < spans; ++j) {
+        // Clamped as a double: the ratio of a wild stroke's error to a tiny target overflows int.
         if (wmax[j] > threshold)
-            pieces[j] = std::clamp(static_cast<int>(std::ceil(std::pow(wmax[j] / target, 0.25))), 2, kMaxPieces);
+            pieces[j] = static_cast<int>(std::clamp(std::ceil(std::pow(wmax[j] / target, 0.25)), 2.0, double(kMaxPieces)));
     }
     std::vector<double> acc(spans, 0.0), newKnots;
     std::vector<int> placed(spans, 0);

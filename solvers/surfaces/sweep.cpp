@@ -353,7 +353,10 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
         for (int s = 0; s < spans; ++s)
             if (A.spanDeviation[s] > tolerance) {
                 const double factor = std::pow(kGrowthMargin * A.spanDeviation[s] / tolerance, 0.25);
-                next[s] = std::max(perSpan[s] + 1, static_cast<int>(std::ceil(perSpan[s] * factor)));
+                // Capped as a double (beyond the budget it is shared out below anyway): a profile
+                // point at 1e91 asked for 2.6e23 sections, which overflowed int.
+                const double grown = std::ceil(perSpan[s] * factor);
+                next[s] = std::max(perSpan[s] + 1, grown <= budget ? static_cast<int>(grown) : budget + 1);
             }
         int total = 0, wanted = 0;
         for (int s = 0; s < spans; ++s) {

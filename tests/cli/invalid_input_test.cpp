@@ -46,7 +46,7 @@ std::vector<Subject> subjects()
     const json surface = loadData("quarter_cylinder.json");
     const json inf = kInfMarker;
     return {
-        {"eval", {{"curve", curve}, {"params", {0.5}}}, "curve", "params", "x", {inf}, "params[0]: not a finite number"},
+        {"eval", {{"curve", curve}, {"params", {0.5}}}, "curve", "params", "x", json::array({inf}), "params[0]: not a finite number"},
         {"eval", {{"surface", surface}, {"params", {{0.5, 0.5}}}}, "surface", "params", 3, {{0.5, inf}}, "params[0][1]: not a finite number"},
         {"insert-knot", {{"curve", curve}, {"knot", 0.5}}, "curve", "knot", "x", inf, "knot: not a finite number"},
         {"insert-knot", {{"surface", surface}, {"knot", 0.5}, {"direction", "u"}}, "surface", "knot", json::array(), inf, "knot: not a finite number"},

@@ -78,12 +78,33 @@ TEST(SceneDocument, MalformedDocumentsNameTheField)
         {{{"planes", {json{{"origin", {0, 1e300, 0}}, {"normal", {0, 0, 1}}, {"size", 10}}}}}, "planes[0].origin: coordinates must lie within"},
         {{{"planes", {json{{"origin", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"size", 1e40}}}}}, "planes[0].size: must not exceed"},
         {{{"curves", {json{{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0}, {1e39, 0}}}}}}}, "curves[0].points[1]: coordinates"},
+        // An extrusion 2e11 long was accepted, built, saved, and then the saved document did not reopen.
+        {{{"curves", {{{"id", 1}, {"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0, 0}, {1, 0, 0}}}}}},
+          {"surfaces", {{{"id", 2}, {"construction", {{"mode", "extrude"}, {"curves", {1}}, {"direction", {0, 0, 2e11}}}}}}}},
+         "surfaces[0].construction.direction: coordinates must lie within"},
     };
     for (const Case& c : cases) {
         const std::string message = errorOf(c.doc);
         EXPECT_NE(message.find(c.expected), std::string::npos)
             << "document " << c.doc.dump() << "\n  gave \"" << message << "\", expected \"" << c.expected << "\"";
     }
+}
+
+// A construction reaches beyond its curves (an extrusion of a curve near the limit by a direction near
+// the limit); the document it saves must open again, so its saved geometry has no extent limit.
+TEST(SceneDocument, GivenConstructedSurfaceBeyondTheExtent_WhenRead_ThenAccepted)
+{
+    const json doc = {
+        {"curves", {{{"id", 1}, {"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{9e5, 0, 0}, {9e5, 1, 0}}}}}},
+        {"surfaces",
+         {{{"id", 2},
+           {"construction", {{"mode", "extrude"}, {"curves", {1}}, {"direction", {9e5, 0, 0}}}},
+           {"degreeU", 1}, {"degreeV", 1}, {"knotsU", {0, 0, 1, 1}}, {"knotsV", {0, 0, 1, 1}}, {"countU", 2}, {"countV", 2},
+           {"points", {{9e5, 0, 0}, {1.8e6, 0, 0}, {9e5, 1, 0}, {1.8e6, 1, 0}}}}}}};
+
+    const std::string message = errorOf(doc);
+
+    EXPECT_EQ(message, "");
 }
 
 TEST(SceneDocument, UnreadableFilesNameThePath)
