@@ -146,10 +146,9 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         c.recipe.angleDegrees = io::numberFromJson(*a, at + ".angle");
         if (!(c.recipe.angleDegrees > 0.0 && c.recipe.angleDegrees <= 360.0)) throw io::InputError(at + ".angle: must be in (0, 360]");
     }
-    if (const auto d = it->find("direction"); d != it->end()) {
-        c.recipe.direction = io::pointFromJson(*d, at + ".direction");
-        checkExtent(c.recipe.direction, at + ".direction");
-    }
+    // Any finite direction is read: one the extrusion cannot use (zero, 1e300) leaves the surface
+    // failed with the reason when the document opens, and the rest of the document intact.
+    if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
     if (c.recipe.mode == "gordon") c.recipe.uCurves = io::integerFromJson(io::member(*it, "u_curves", at), at + ".u_curves", 2, n - 2);
     if (const auto g = it->find("tangents"); g != it->end()) {
         // G1 fill: {"curve": boundary index, "surface": id of a surface made before this one}.

@@ -181,5 +181,24 @@ TEST(FailedSurface, ItBuildsOnceItsCurvesAllowAndItsDependentsFollow)
     EXPECT_TRUE(model.find(10)->surface.has_value());
 }
 
+TEST(FailedSurface, AnExtrusionFarBeyondTheSceneOpensAndWhatItSavesReopens)
+{
+    // Given an extrusion 2e11 long of a unit line (built: the direction is finite and the solver
+    // can use it; its surface reaches far beyond the 1e6 the reader allows for curves)
+    const json doc = {{"curves", {cubicJson(1, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}})}},
+                      {"surfaces", json::array({{{"id", 2}, {"construction", {{"mode", "extrude"}, {"curves", {1}}, {"direction", {0, 0, 2e11}}}}}})}};
+    Model model;
+    populateModel(documentFromJson(doc), model);
+
+    // When it is saved and opened again
+    Model reopened;
+    ASSERT_NO_THROW(populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened));
+
+    // Then it is the same surface, in the same state
+    ASSERT_NE(reopened.find(2), nullptr);
+    EXPECT_EQ(reopened.find(2)->failed(), model.find(2)->failed());
+    EXPECT_EQ(reopened.find(2)->surface.has_value(), model.find(2)->surface.has_value());
+}
+
 }  // namespace
 }  // namespace sculptline::scene
