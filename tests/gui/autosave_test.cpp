@@ -80,7 +80,7 @@ manipulators::FinishedStroke strokeOn(SketchDocument& doc, double r, bool wave)
 }
 
 /// Edits of every kind a test can make without the mouse: strokes, planes, fixed points, the
-/// recognized shape, deletes. Returns the document state after each (index 0: before any).
+/// recognized shape, lofted surfaces, deletes (the surface with its curve). Returns the document state after each (index 0: before any).
 std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
 {
     SketchDocument& doc = window.document();
@@ -97,6 +97,15 @@ std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
             doc.chooseRecognized(true);
             states.push_back(stateOf(doc));
         }
+        doc.select(1);
+        doc.addStroke(strokeOn(doc, 30.0 + i, false));  // a concentric arc: the loft is a flat band
+        const scene::EntityId outer = doc.selection();
+        states.push_back(stateOf(doc));
+        doc.setSurfaceMode("loft");
+        doc.pickSurfaceInput(curve);
+        doc.pickSurfaceInput(outer);
+        EXPECT_TRUE(doc.buildSurface()) << "the loft of round " << i;
+        states.push_back(stateOf(doc));
         doc.addPlane(doc.model().find(1)->frame);
         states.push_back(stateOf(doc));
         doc.select(curve);
