@@ -1,5 +1,7 @@
 #include "ui/curvature_plot.h"
 
+#include "solvers/bspline/curvature.h"
+
 #include <Eigen/Geometry>
 #include <QPainter>
 #include <QPainterPath>
@@ -11,7 +13,7 @@ namespace {
 
 /// Samples along the parameter: finer than a pixel at the dock's usual width.
 constexpr int kSamples = 400;
-/// Tangents shorter than this (relative to the curve's size) are corners: curvature undefined.
+/// Tangents shorter than this (model units per unit parameter) are corners: curvature undefined.
 constexpr double kMinSpeed = 1e-9;
 
 }  // namespace
@@ -21,15 +23,7 @@ CurvaturePlot::CurvaturePlot(QWidget* parent) : QWidget(parent) { setMinimumHeig
 void CurvaturePlot::setCurve(const std::optional<solvers::Curve3d>& curve)
 {
     kappa_.clear();
-    if (curve) {
-        const double u0 = curve->domainStart(), u1 = curve->domainEnd();
-        for (int i = 0; i < kSamples; ++i) {
-            const double u = u0 + (u1 - u0) * i / (kSamples - 1);
-            const std::vector<Eigen::Vector3d> d = curve->derivatives(u, 2);
-            const double speed = d[1].norm();
-            kappa_.push_back(speed > kMinSpeed ? d[1].cross(d[2]).norm() / (speed * speed * speed) : 0.0);
-        }
-    }
+    if (curve) kappa_ = solvers::sampleCurvature(*curve, curve->domainStart(), curve->domainEnd(), kSamples, kMinSpeed);
     update();
 }
 

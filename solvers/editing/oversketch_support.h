@@ -2,6 +2,7 @@
 // Internal helpers shared by the over-sketching methods: arc length with wrapping, the break
 // points of seed 001 §3 and the blended target polyline h̄. Not part of the public API.
 #include "solvers/bspline/arc_length.h"
+#include "solvers/bspline/curvature.h"
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/editing/constrained_fit.h"
 #include "solvers/editing/oversketch.h"
@@ -114,13 +115,7 @@ double curveCurvature(const BSplineCurve<Dim>& c, double u0, double u1)
 {
     constexpr int kSamples = 64;
     double worst = 0.0;
-    for (int i = 0; i <= kSamples; ++i) {
-        const auto d = c.derivatives(c.normalizeParameter(u0 + (u1 - u0) * i / kSamples), 2);
-        const double v = d[1].norm();
-        if (v == 0.0) continue;
-        const double cross2 = std::max(0.0, d[1].squaredNorm() * d[2].squaredNorm() - std::pow(d[1].dot(d[2]), 2));
-        worst = std::max(worst, std::sqrt(cross2) / (v * v * v));
-    }
+    for (int i = 0; i <= kSamples; ++i) worst = std::max(worst, curvature(c, c.normalizeParameter(u0 + (u1 - u0) * i / kSamples)));
     return worst;
 }
 
