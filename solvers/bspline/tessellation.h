@@ -2,6 +2,7 @@
 // Adaptive tessellation of B-spline curves (polylines) and surfaces (triangle grids) for display.
 // Pure math: the scene layer turns the result into Coin nodes; nothing here knows about rendering.
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Core>
 #include <vector>
@@ -14,7 +15,7 @@ constexpr double kRelativeChordTolerance = 1e-3;
 /// Largest turning angle between the tangents (curves) or normals (surfaces) at the two ends of one
 /// segment, in radians (10 degrees). Bounds the visible kinks of a polyline and the normal jumps of
 /// Gouraud shading even where the chord error is tiny (small, tightly curved features).
-constexpr double kMaxTurningAngle = 10.0 * 3.14159265358979323846 / 180.0;
+constexpr double kMaxTurningAngle = 10.0 * kPi / 180.0;
 /// Segments every knot span gets before refinement. With fewer, a span's interior could hide a
 /// feature between probes; four per span resolves every cubic piece's inflection pattern.
 constexpr int kMinSegmentsPerSpan = 4;

@@ -1,12 +1,13 @@
 #include "solvers/stroke/composite.h"
 
+#include "solvers/math_constants.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace sculptline::solvers::stroke {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // The current stroke's points in the previous stroke's plane coordinates.
 std::vector<Point2> inFrameOf(const StrokeGeometry& frame, const StrokeGeometry& g)

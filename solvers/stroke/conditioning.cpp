@@ -1,6 +1,7 @@
 #include "solvers/stroke/conditioning.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -385,7 +386,7 @@ ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, con
         // The gap is measured against the perimeter of the stroke's extent (pi * extent, a circle's)
         // when that is shorter than the stroke: a long stroke (a spiral, a scribble) passing near
         // its start is not a loop because its length dwarfs the miss.
-        const double perimeter = std::min(total, 3.14159265358979 * cs.extent);
+        const double perimeter = std::min(total, kPi * cs.extent);
         const double maxGap = options.closeGap * perimeter;
         const EndWindows w = endWindows(cs, 0.15 * total);
         // Ends whose windows lie farther apart than maxGap cannot meet, whatever the closest pair

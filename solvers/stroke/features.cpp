@@ -1,5 +1,7 @@
 #include "solvers/stroke/features.h"
 
+#include "solvers/math_constants.h"
+
 #include <algorithm>
 #include <Eigen/Geometry>
 #include <cmath>
@@ -19,7 +21,7 @@ inline double atan2Poly(double y, double x)
                0.99997726;
     r *= a;
     if (ay > ax) r = 1.57079632679489662 - r;
-    if (x < 0.0) r = 3.14159265358979324 - r;
+    if (x < 0.0) r = kPi - r;
     return y < 0.0 ? -r : r;
 }
 

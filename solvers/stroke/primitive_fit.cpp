@@ -1,5 +1,7 @@
 #include "solvers/stroke/primitive_fit.h"
 
+#include "solvers/math_constants.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -8,7 +10,6 @@
 namespace sculptline::solvers::stroke {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Point2 centroid(const std::vector<Point2>& pts)
 {

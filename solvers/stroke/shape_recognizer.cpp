@@ -1,5 +1,7 @@
 #include "solvers/stroke/shape_recognizer.h"
 
+#include "solvers/math_constants.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -9,7 +11,6 @@
 namespace sculptline::solvers::stroke {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kQuarterTurn = kPi / 2;
 
 Eigen::Vector3d lift(const StrokeGeometry& g, const Point2& p) { return g.origin + p.x() * g.axisU + p.y() * g.axisV; }

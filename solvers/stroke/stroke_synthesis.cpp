@@ -1,5 +1,7 @@
 #include "solvers/stroke/stroke_synthesis.h"
 
+#include "solvers/math_constants.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -8,7 +10,6 @@
 namespace sculptline::solvers::stroke {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kDense = 4000;  // reference resolution per shape
 
 Shape fromFunction(const std::function<Eigen::Vector3d(double)>& f, double t0, double t1, bool closed)

@@ -1,6 +1,7 @@
 #include "solvers/surfaces/coons_fill.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/math_constants.h"
 #include "solvers/surfaces/interpolation.h"
 
 #include <Eigen/Geometry>
@@ -96,7 +97,6 @@ CurveLayout refinedLayout(const CurveLayout& layout)
     return out;
 }
 
-constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 #include "solvers/surfaces/fill_tangents.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/SparseCholesky>
@@ -15,7 +16,6 @@ namespace {
 
 using Vec3 = Eigen::Vector3d;
 
-constexpr double kPi = 3.14159265358979323846;
 // Gauss-Newton steps for a point on the surface: quadratic convergence reaches round-off in 3-5.
 constexpr int kNewtonSteps = 12;
 // Relative regularization of the normal equations: small enough that the constraints are met to

@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/projection.h"
+#include "solvers/math_constants.h"
 #include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/compatible_curves.h"
 
@@ -49,8 +50,8 @@ Vec3 boxCentre(const Curve3d& c)
 
 double wrapNear(double a, double reference)
 {
-    while (a - reference > M_PI) a -= 2 * M_PI;
-    while (a - reference < -M_PI) a += 2 * M_PI;
+    while (a - reference > kPi) a -= 2 * kPi;
+    while (a - reference < -kPi) a += 2 * kPi;
     return a;
 }
 
@@ -73,7 +74,7 @@ public:
             angles_.push_back(a);
         }
         sign_ = angles_.back() > 0.0 ? 1.0 : -1.0;
-        if (std::abs(std::abs(angles_.back()) - 2 * M_PI) > kFullTurnSlack)
+        if (std::abs(std::abs(angles_.back()) - 2 * kPi) > kFullTurnSlack)
             throw GeometryError(name + ": the rail does not go once around the axis through the rails' centres");
         for (int k = 1; k <= kRailSamples; ++k)
             if (sign_ * (angles_[k] - angles_[k - 1]) < -kMonotoneSlack)
@@ -84,7 +85,7 @@ public:
     // Point of the rail at angle theta in [0, 2π] about the axis, measured from its start.
     Vec3 pointAt(double theta) const
     {
-        const double target = sign_ > 0 ? theta : theta - 2 * M_PI;
+        const double target = sign_ > 0 ? theta : theta - 2 * kPi;
         // The bracket: the last sample whose signed angle is below the target (the signed angles
         // increase, checked in the constructor), by bisection.
         int k = 0, hiK = kRailSamples - 1;
@@ -199,7 +200,7 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
         basisFunctions(uSpan.back(), u, pu, profile.knots(), uBasis.back().data());
     }
     const auto section = [&](double theta) {
-        if (theta == 0.0 || theta == 2 * M_PI) return Eigen::Affine3d(Eigen::Affine3d::Identity());
+        if (theta == 0.0 || theta == 2 * kPi) return Eigen::Affine3d(Eigen::Affine3d::Identity());
         return sectionTransform(axis, theta, p0, q0, r1.pointAt(theta), r2.pointAt(theta));
     };
 
@@ -207,7 +208,7 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
     for (;;) {
         ControlMatrix data(count, static_cast<Eigen::Index>(n) * h);
         for (int k = 0; k < count; ++k) {
-            const Eigen::Affine3d m = section(2 * M_PI * k / count);
+            const Eigen::Affine3d m = section(2 * kPi * k / count);
             for (int i = 0; i < n; ++i) {
                 const double w = profile.weight(i);
                 data.block(k, static_cast<Eigen::Index>(i) * h, 1, 3) = w * (m * profile.points()[i]).transpose();
@@ -221,7 +222,7 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
         for (int k = 0; k < count; ++k)
             for (int q = 1; q < kProbesPerInterval; ++q) {
                 const double vm = (k + static_cast<double>(q) / kProbesPerInterval) / count;
-                const Eigen::Affine3d m = section(2 * M_PI * vm);
+                const Eigen::Affine3d m = section(2 * kPi * vm);
                 // The probe's iso-curve rows (v basis applied to the net), then the fixed u bases.
                 const int vSpan = findSpan(3, knotsV, vm);
                 double nv[4];

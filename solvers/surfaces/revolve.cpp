@@ -1,6 +1,7 @@
 #include "solvers/surfaces/revolve.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Geometry>
 #include <cmath>
@@ -65,7 +66,7 @@ Surface3d revolve(const Curve3d& input, const Axis& axis, double angleDegrees)
         throw GeometryError("angle: must be in (0, 360] degrees, got " + std::to_string(angleDegrees));
 
     // A8.1: number of arcs, their knots and the middle weight cos(dtheta / 2).
-    const double theta = angleDegrees * M_PI / 180.0;
+    const double theta = angleDegrees * kPi / 180.0;
     const int narcs = angleDegrees <= 90.0 ? 1 : angleDegrees <= 180.0 ? 2 : angleDegrees <= 270.0 ? 3 : 4;
     const double dtheta = theta / narcs;
     const double wm = std::cos(dtheta / 2.0);

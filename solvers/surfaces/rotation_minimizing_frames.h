@@ -3,6 +3,7 @@
 // Y. Liu, "Computation of rotation minimizing frames", ACM TOG 27(1), 2008, Algorithm 1): frames
 // along a curve that do not twist about the tangent, so a swept profile does not flip.
 #include "solvers/bspline/bspline_curve.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Core>
 #include <vector>
@@ -58,7 +59,7 @@ void requireNoCusp(const Curve3d& path);
 /// A tangent turning by more than 90 degrees between samples 1/64 of a knot span apart is a cusp
 /// for sweeping: a smooth path cannot turn that fast at ordinary sketch scales, and a profile swept
 /// around such a turn intersects itself.
-constexpr double kCuspTurn = 0.5 * 3.14159265358979323846;
+constexpr double kCuspTurn = 0.5 * kPi;
 
 /// Unit tangent of the path at u (the one-sided limit from the right at the domain start, from the
 /// left at the end).

@@ -1,6 +1,7 @@
 #include "solvers/surfaces/sweep.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/math_constants.h"
 #include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/rotation_minimizing_frames.h"
 
@@ -263,7 +264,7 @@ void requireNoTear(const CurveJet& jet, const Curve3d& path, const Curve3d& prof
         const double tear = 2.0 * reach * std::sin(0.5 * angle);
         if (tear > tolerance)
             throw GeometryError("path: corner at u = " + std::to_string(k) + " (the tangent turns by " +
-                                std::to_string(angle * 180.0 / 3.14159265358979323846) +
+                                std::to_string(angle * 180.0 / kPi) +
                                 " degrees): the swept profile would tear there by up to " + std::to_string(tear) +
                                 " (tolerance " + std::to_string(tolerance) + "); round the corner or sweep each side separately");
     }

@@ -2,6 +2,7 @@
 // Shared checks for the surface-interpreter tests: distances between a surface's iso-curves and
 // the curves that define them, and normal consistency over a grid.
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -18,7 +19,7 @@ using Vec3 = Eigen::Vector3d;
 /// extrude, Coons fill, Gordon, ...): 1e-9 on models of size ~1-10, a thousand times the round-off
 /// the kernel's own invariant tests allow (1e-12) and far below any drawing tolerance.
 constexpr double kExact = 1e-9;
-constexpr double kPi = 3.14159265358979323846;
+using solvers::kPi;  // the solvers' one (solvers/math_constants.h)
 
 /// Cubic clamped uniform curve through (not interpolating) the given control points.
 inline Curve3d cubic(const std::vector<Vec3>& pts) { return solvers::makeClampedUniform<3>(3, pts); }
