@@ -1,5 +1,6 @@
 #include "solvers/stroke/shape_recognizer.h"
 
+#include "solvers/geometry/plane_fit.h"
 #include "solvers/math_constants.h"
 
 #include <Eigen/Dense>
@@ -244,15 +245,11 @@ StrokeGeometry strokeGeometry(const FitResult& fit)
     for (const auto& p : cs.points) planarXY = planarXY && std::abs(p.z() - cs.points[0].z()) <= 1e-9 * (1 + g.extent);
     if (planarXY) {
         g.origin = Eigen::Vector3d(0, 0, cs.points[0].z());
-    } else {  // best-fit plane: the two principal axes of the points
-        Eigen::Vector3d c = Eigen::Vector3d::Zero();
-        for (const auto& p : cs.points) c += p / static_cast<double>(cs.size());
-        Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-        for (const auto& p : cs.points) cov += (p - c) * (p - c).transpose();
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
-        g.origin = c;
-        g.axisU = eig.eigenvectors().col(2);
-        g.axisV = eig.eigenvectors().col(1);
+    } else {
+        const PlaneFit plane = bestFitPlane(cs.points);
+        g.origin = plane.centroid;
+        g.axisU = plane.axisU;
+        g.axisV = plane.axisV;
     }
     for (const auto& p : cs.points) g.points.emplace_back((p - g.origin).dot(g.axisU), (p - g.origin).dot(g.axisV));
     std::vector<int> corner;

@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/bspline/knot_algorithms.h"
+#include "solvers/geometry/plane_fit.h"
 #include "solvers/surfaces/approximation_tolerance.h"
 #include "solvers/surfaces/compatible_curves.h"
 #include "solvers/surfaces/interpolation.h"
@@ -55,15 +56,10 @@ Vec3 bestFitPlaneNormal(const std::vector<Curve3d>& curves)
         const Curve3d c = normalizedCurve(c0);
         for (double u : samples(c.knots(), c.degree())) pts.push_back(c.evaluate(u));
     }
-    Vec3 mean = Vec3::Zero();
-    for (const Vec3& p : pts) mean += p;
-    mean /= static_cast<double>(pts.size());
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (const Vec3& p : pts) cov += (p - mean) * (p - mean).transpose();
-    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);  // eigenvalues ascending
-    if (!(eig.eigenvalues()(1) > kCollinearRatio * kCollinearRatio * eig.eigenvalues()(2)))
+    const PlaneFit plane = bestFitPlane(pts);
+    if (!(plane.spread(1) > kCollinearRatio * kCollinearRatio * plane.spread(2)))
         throw GeometryError("curves: the outlines lie on one line; they define no plane to rotate out of");
-    return eig.eigenvectors().col(0);
+    return plane.normal;
 }
 
 Vec3 boundaryRotationPoint(const Curve3d& left, const Curve3d& right, const Vec3& n, double u, double theta)
