@@ -15,8 +15,8 @@ export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 # Three stroke tests hold thresholds that the fits of this build (clang, -O1) miss by one: 17 control
 # points against speed-only sampling's 16, one false corner on a smooth curve and on the flourish.
 # No sanitizer reports anything there, and they pass in the Release build (GCC, -O2) that ./test.sh
-# runs, also under valgrind's memcheck; until the fits are made insensitive to the compiler, they are
-# left to that build.
+# runs (the smooth-curve one also clean under valgrind's memcheck); until the fits are made
+# insensitive to the compiler, they are left to that build.
 compiler_sensitive='StrokeFit.GivenFig43Stroke_WhenDynamicThresholdSampling|CornerDetection.GivenSmoothCurves_WhenFitted|CornerDetection.GivenFlourishAtAnySamplingDensity'
 (cd "$root/build-asan" &&
   ctest --output-on-failure --parallel "$(nproc 2>/dev/null || echo 2)" -L 'unit|cli|fuzz' -E "$compiler_sensitive" "$@")
