@@ -7,6 +7,8 @@
 #   --jobs J       J parallel fuzzing processes per target (libFuzzer -fork=J; default 1)
 #   --rss-mb M     memory limit per process, MB (default 2048)
 #   --timeout T    an input running longer than T seconds is a hang (default 1)
+#   --seed N       libFuzzer's random seed (default: from the clock); a fixed seed makes a --runs
+#                  campaign repeat exactly
 #   --artifacts D  where findings go (default build-asan/fuzz-artifacts/<target>/)
 #   --no-build     use the programs in build-asan/fuzz as they are (e.g. two campaigns side by side)
 #   --fresh        start from the seed corpus alone (default: also the corpus earlier runs grew in
@@ -20,7 +22,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-asan"
 seeds="$root/tests/fuzz/corpus"
 
-seconds="" runs="" jobs=1 rss=2048 timeout=1 artifacts="" fresh=0 build_first=1 targets=()
+seconds="" runs="" jobs=1 rss=2048 timeout=1 seed="" artifacts="" fresh=0 build_first=1 targets=()
 while (($#)); do
   case "$1" in
     --time) seconds=$2; shift 2 ;;
@@ -28,11 +30,12 @@ while (($#)); do
     --jobs) jobs=$2; shift 2 ;;
     --rss-mb) rss=$2; shift 2 ;;
     --timeout) timeout=$2; shift 2 ;;
+    --seed) seed=$2; shift 2 ;;
     --artifacts) artifacts=$2; shift 2 ;;
     --fresh) fresh=1; shift ;;
     --no-build) build_first=0; shift ;;
     --list) ls "$seeds"; exit 0 ;;
-    -h|--help) sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -64,6 +67,7 @@ for t in "${targets[@]}"; do
   [[ -n $seconds || -z $runs ]] && limit+=(-max_total_time="${seconds:-60}")
   fork=()
   ((jobs > 1)) && fork=(-fork="$jobs")
+  [[ -n $seed ]] && fork+=(-seed="$seed")
   log="$build/fuzz-logs/$t.log"
   start=$(date +%s.%N)
   status=0
