@@ -3,7 +3,7 @@
 # clang, AddressSanitizer, UndefinedBehaviorSanitizer with -fno-sanitize-recover=all so that a report
 # fails its test, _GLIBCXX_ASSERTIONS, libFuzzer instrumentation; GUI off), then
 #   1. runs the ctest labels unit, cli and fuzz (every fuzz target over its seed corpus), and
-#   2. fuzzes every target briefly (scripts/fuzz.sh): FUZZ_RUNS (default 2000) executions each, seed 1,
+#   2. fuzzes every target briefly (scripts/fuzz.sh): FUZZ_RUNS (default 20000) executions each, seed 1,
 #      -timeout=5.
 # Arguments are passed on to ctest (e.g. scripts/sanitize.sh -R bspline); FUZZ_RUNS=0 skips step 2.
 set -euo pipefail
@@ -27,7 +27,7 @@ compiler_sensitive='StrokeFit.GivenFig43Stroke_WhenDynamicThresholdSampling|Corn
 # code at -O1 with ASan) an input is 10-30 times slower than in Release: a few legal lift and surface
 # inputs take 0.3-1.4 s here against 27-60 ms in Release, so a 1 s limit would report hangs that are
 # not there. The campaigns (scripts/fuzz.sh) keep the 1 s limit and report such inputs for a look.
-runs=${FUZZ_RUNS:-2000}
+runs=${FUZZ_RUNS:-20000}
 if ((runs > 0)); then
   "$root/scripts/fuzz.sh" --runs "$runs" --seed 1 --timeout 5 --fresh all
 fi
