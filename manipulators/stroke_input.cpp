@@ -158,7 +158,7 @@ void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame)
     for (size_t i = 0; i < stroke.rayOrigins.size(); ++i) {
         if (const auto p = intersectPlane(frame, stroke.rayOrigins[i], stroke.rayDirections[i])) {
             stroke.points.push_back(*p);
-            times.push_back(stroke.times[i]);
+            times.push_back(stroke.rayTimes[i]);
         }
     }
     stroke.times = std::move(times);
@@ -209,13 +209,15 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     Eigen::Vector3d from, direction;
     if (!ray(node, from, direction)) return;
     // Times must not decrease (replayed events may carry equal stamps).
-    if (!stroke_.times.empty()) time = std::max(time, stroke_.times.back());
+    if (!stroke_.rayTimes.empty()) time = std::max(time, stroke_.rayTimes.back());
     stroke_.rayOrigins.push_back(from);
     stroke_.rayDirections.push_back(direction);
-    stroke_.times.push_back(time);
-    // The preview shows the points on the plane chosen at the press; a ray that misses it adds none.
+    stroke_.rayTimes.push_back(time);
+    // The preview shows the points on the plane chosen at the press; a ray that misses it adds none
+    // (and no time: points and times stay pairs, or the fitter refuses the stroke).
     if (const auto local = intersectPlane(stroke_.frame, from, direction)) {
         stroke_.points.push_back(*local);
+        stroke_.times.push_back(time);
         const int n = static_cast<int>(stroke_.points.size());
         previewPoints_->point.set1Value(n - 1, scene::toSb(stroke_.frame.toWorld(*local)));
         previewLine_->numVertices.setValue(n);

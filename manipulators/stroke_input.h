@@ -41,6 +41,9 @@ struct FinishedStroke {
     /// The pointer's ray per point (world): a stroke that ends on a curve goes onto another plane
     /// (seed 000 §3.1), so its points are intersected again.
     std::vector<Eigen::Vector3d> rayOrigins, rayDirections;
+    /// Seconds since the pen went down, one per ray (a ray that misses the plane has no point, and
+    /// so no entry in `times`).
+    std::vector<double> rayTimes;
     StrokeHit start, end;
 };
 

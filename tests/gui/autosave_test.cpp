@@ -73,6 +73,7 @@ manipulators::FinishedStroke strokeOn(SketchDocument& doc, double r, bool wave)
         const double a = 3.14159265358979 * i / 39.0;
         stroke.points.emplace_back(wave ? -r + 2.0 * r * i / 39.0 : r * std::cos(a), wave ? 5.0 * std::sin(4.0 * a) : r * std::sin(a), 0.0);
         stroke.times.push_back(0.01 * i);
+        stroke.rayTimes.push_back(0.01 * i);
         stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
         stroke.rayDirections.push_back(-frame.normal());
     }

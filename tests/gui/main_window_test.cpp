@@ -169,6 +169,7 @@ TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
         const double a = 3.14159265358979 * i / 39.0;
         stroke.points.emplace_back(30.0 * std::cos(a), 30.0 * std::sin(a), 0.0);
         stroke.times.push_back(0.01 * i);
+        stroke.rayTimes.push_back(0.01 * i);
         stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
         stroke.rayDirections.push_back(-frame.normal());
     }

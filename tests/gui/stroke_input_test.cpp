@@ -10,6 +10,7 @@
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
 #include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
@@ -112,6 +113,31 @@ TEST_F(StrokeInputTest, AClickThatTremblesAPixelOrTwoDrawsNothing)
     // But three pixels are a (short) stroke
     drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(403, 300), 3);
     EXPECT_EQ(strokes_.size(), 1u);
+}
+
+TEST_F(StrokeInputTest, AStrokeThatLeavesThePlaneKeepsOneTimePerPoint)
+{
+    // Given a perspective camera at x = -10 looking down -Z, and the active plane x = 0 (seen
+    // edge-on from nearby): rays through the left of the view never meet it, those to the right do
+    auto* perspective = new SoPerspectiveCamera;
+    perspective->position.setValue(-10, 0, 100);
+    root_->replaceChild(camera_, perspective);
+    input_->setCamera([perspective]() { return perspective; });
+    input_->setActivePlane([](const StrokeHit&) {
+        return scene::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 100.0, Eigen::Vector3d::UnitY());
+    });
+
+    // When a stroke runs from the left of the view to the right
+    drawLine(SbViewportRegion(800, 600), SbVec2s(100, 300), SbVec2s(700, 320), 30);
+
+    // Then it arrives with the points that met the plane, each with its time, and every ray with its
+    // time (the fitter refused such strokes: "stroke.times: <rays> values for <points> points")
+    ASSERT_EQ(strokes_.size(), 1u);
+    const FinishedStroke& s = strokes_[0];
+    EXPECT_FALSE(s.points.empty());
+    EXPECT_LT(s.points.size(), s.rayOrigins.size());
+    EXPECT_EQ(s.times.size(), s.points.size());
+    EXPECT_EQ(s.rayTimes.size(), s.rayOrigins.size());
 }
 
 TEST_F(StrokeInputTest, DisabledInputDrawsNothing)
