@@ -2,9 +2,9 @@
 // `sculptline DOCUMENT` and File > Open do, then the round trip of File > Save: the saved text must
 // open again and save to the same JSON (scene/model/model_document.h promises an exact restore).
 //
-// A document the reader rejects (InputError) is fine. So is a std::exception from populateModel:
-// a surface whose rebuild throws std::invalid_argument when the document is opened is rejected
-// input for now (populateModel does not yet keep such a surface). Anything else is a finding.
+// A document the reader rejects (InputError) is fine. A document it accepts must open: a surface
+// whose construction cannot be rebuilt is kept, failed (Model::restoreSurface), so any exception
+// from populateModel is a finding, as is anything else that goes wrong.
 #include "fuzz/fuzz_target.h"
 #include "scene/model/model_document.h"
 
@@ -25,10 +25,8 @@ json openAndSave(const std::string& text)
     scene::Model model;
     try {
         scene::populateModel(doc, model);
-    } catch (const solvers::io::InputError&) {
-        throw;
     } catch (const std::exception& e) {
-        throw solvers::io::InputError(std::string("opening: ") + e.what());
+        fuzz::fuzzFailure("document", std::string("a document the reader accepted does not open: ") + e.what());
     }
     return scene::modelToJson(model, doc.grid);
 }
