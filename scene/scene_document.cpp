@@ -199,12 +199,14 @@ SceneDocument documentFromJson(const json& j)
     SceneDocument doc;
     if (const auto it = j.find("grid"); it != j.end()) doc.grid = gridFromJson(*it);
     const json& planes = optionalArray(j, "planes");
-    std::set<int> planeIds;
+    // Two sets: a curve's "plane" must name a plane, not merely a used id (a curve's id passed).
+    std::set<int> planeIds, usedIds;
     for (size_t i = 0; i < planes.size(); ++i) {
         const std::string path = "planes[" + std::to_string(i) + "]";
         doc.planes.push_back(planeFromJson(planes[i], path));
         if (doc.planes.back().id == 0) doc.planes.back().id = static_cast<int>(i) + 1;
         if (!planeIds.insert(doc.planes.back().id).second) throw io::InputError(path + ".id: used by another plane");
+        usedIds.insert(doc.planes.back().id);
     }
     const json& curves = optionalArray(j, "curves");
     for (size_t i = 0; i < curves.size(); ++i) {
@@ -231,7 +233,7 @@ SceneDocument documentFromJson(const json& j)
                 fixed.push_back(io::integerFromJson((*it)[k], path + ".fixed[" + std::to_string(k) + "]", 0, count - 1));
         }
         doc.curveFixed.push_back(std::move(fixed));
-        doc.curveIds.push_back(entityId(curves[i], path, planeIds));
+        doc.curveIds.push_back(entityId(curves[i], path, usedIds));
         if (doc.curveIds.back() != 0 && plane != 0 && doc.curveIds.back() < plane) {
             throw io::InputError(path + ".id: must be greater than its plane's id");
         }
@@ -239,7 +241,7 @@ SceneDocument documentFromJson(const json& j)
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {
         const std::string path = "surfaces[" + std::to_string(i) + "]";
-        const int id = entityId(surfaces[i], path, planeIds);
+        const int id = entityId(surfaces[i], path, usedIds);
         if (auto constructed = constructionFromJson(surfaces[i], path, id, doc)) {
             doc.constructed.push_back(std::move(*constructed));
             continue;
@@ -253,7 +255,7 @@ SceneDocument documentFromJson(const json& j)
         const std::string path = "meshes[" + std::to_string(i) + "]";
         if (!meshes[i].is_object()) throw io::InputError(path + ": must be an object");
         SceneDocument::MeshSpec spec;
-        spec.id = entityId(meshes[i], path, planeIds);
+        spec.id = entityId(meshes[i], path, usedIds);
         const json& curves = io::member(meshes[i], "curves", path);
         if (!curves.is_array() || curves.empty()) throw io::InputError(path + ".curves: expected a loop of curve ids");
         for (size_t k = 0; k < curves.size(); ++k) {
@@ -272,7 +274,7 @@ SceneDocument documentFromJson(const json& j)
         const json& c = constraints[i];
         if (!c.is_object()) throw io::InputError(path + ": must be an object");
         SceneDocument::ConstraintSpec spec;
-        spec.id = entityId(c, path, planeIds);
+        spec.id = entityId(c, path, usedIds);
         spec.curve = io::integerFromJson(io::member(c, "curve", path), path + ".curve", 1, 1 << 30);
         if (std::find(doc.curveIds.begin(), doc.curveIds.end(), spec.curve) == doc.curveIds.end())
             throw io::InputError(path + ".curve: no curve has id " + std::to_string(spec.curve));

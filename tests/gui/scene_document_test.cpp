@@ -78,6 +78,12 @@ TEST(SceneDocument, MalformedDocumentsNameTheField)
         {{{"planes", {json{{"origin", {0, 1e300, 0}}, {"normal", {0, 0, 1}}, {"size", 10}}}}}, "planes[0].origin: coordinates must lie within"},
         {{{"planes", {json{{"origin", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"size", 1e40}}}}}, "planes[0].size: must not exceed"},
         {{{"curves", {json{{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0}, {1e39, 0}}}}}}}, "curves[0].points[1]: coordinates"},
+        // A curve's plane naming another curve was accepted (one set held every id), and the
+        // document then failed to open. Found by fuzz-document.
+        {{{"planes", {json{{"id", 1}, {"origin", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"size", 10}}}},
+          {"curves", {json{{"id", 2}, {"plane", 1}, {"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0}, {1, 0}}}},
+                      json{{"id", 3}, {"plane", 2}, {"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0}, {1, 0}}}}}}},
+         "curves[1].plane: no plane has id 2"},
     };
     for (const Case& c : cases) {
         const std::string message = errorOf(c.doc);
