@@ -19,10 +19,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr SurfaceMode kModes[] = {SurfaceMode::Fill, SurfaceMode::Revolve,          SurfaceMode::Extrude,
-                                  SurfaceMode::Sweep, SurfaceMode::Loft,            SurfaceMode::BoundaryRotation,
-                                  SurfaceMode::RailRotation};
-
 const Curve3d& profile()
 {
     static const Curve3d c = cubic({{1, 0, 0}, {1.5, 0, 1}, {0.8, 0, 2}, {1, 0, 3}});

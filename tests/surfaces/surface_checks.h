@@ -3,6 +3,7 @@
 // the curves that define them, and normal consistency over a grid.
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/math_constants.h"
+#include "solvers/surfaces/surface_modes.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -19,6 +20,13 @@ using Vec3 = Eigen::Vector3d;
 /// extrude, Coons fill, Gordon, ...): 1e-9 on models of size ~1-10, a thousand times the round-off
 /// the kernel's own invariant tests allow (1e-12) and far below any drawing tolerance.
 constexpr double kExact = 1e-9;
+
+/// The modes of the single entry point (surfaces::buildSurface) that tests run one by one.
+constexpr solvers::surfaces::SurfaceMode kModes[] = {
+    solvers::surfaces::SurfaceMode::Fill,  solvers::surfaces::SurfaceMode::Revolve,
+    solvers::surfaces::SurfaceMode::Extrude, solvers::surfaces::SurfaceMode::Sweep,
+    solvers::surfaces::SurfaceMode::Loft,  solvers::surfaces::SurfaceMode::BoundaryRotation,
+    solvers::surfaces::SurfaceMode::RailRotation};
 using solvers::kPi;  // the solvers' one (solvers/math_constants.h)
 
 /// Cubic clamped uniform curve through (not interpolating) the given control points.

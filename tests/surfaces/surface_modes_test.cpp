@@ -15,10 +15,6 @@ using namespace sculptline::surfaces_test;
 
 namespace {
 
-constexpr SurfaceMode kModes[] = {SurfaceMode::Fill, SurfaceMode::Revolve,          SurfaceMode::Extrude,
-                                  SurfaceMode::Sweep, SurfaceMode::Loft,            SurfaceMode::BoundaryRotation,
-                                  SurfaceMode::RailRotation};
-
 // Curves for each mode, in its order.
 std::vector<Curve3d> curvesFor(SurfaceMode mode)
 {
