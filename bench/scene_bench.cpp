@@ -3,10 +3,10 @@
 // (data/models/surfaces_drag_start.json: boundary rotation, revolve, extrusion and sweep on one
 // plane's curves), the plane moved a little per iteration, the model updated. With the Coin view,
 // the rebuilt surfaces are re-tessellated too, as in the GUI.
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
-#include "scene/model/model_view.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "scene/model_view.h"
+#include "model/document.h"
 #include "solvers/bspline/tessellation.h"
 
 #include <Inventor/SoDB.h>
@@ -21,10 +21,10 @@ using namespace sculptline;
 void dragPlane(benchmark::State& state, bool withView)
 {
     SoDB::init();
-    scene::Model model;
-    scene::populateModel(scene::loadDocument(SCULPTLINE_DATA_DIR "/models/surfaces_drag_start.json"), model);
+    model::Model model;
+    model::populateModel(model::loadDocument(SCULPTLINE_DATA_DIR "/models/surfaces_drag_start.json"), model);
     std::unique_ptr<scene::ModelView> view = withView ? std::make_unique<scene::ModelView>(model) : nullptr;
-    scene::PlaneFrame frame = model.find(1)->frame;
+    model::PlaneFrame frame = model.find(1)->frame;
     int step = 0;
     for (auto _ : state) {
         // A pointer event's worth of motion, back and forth so the scene stays where it is.
@@ -34,7 +34,7 @@ void dragPlane(benchmark::State& state, bool withView)
     }
     int grid = 0, vertices = 0;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind != scene::EntityKind::Surface) continue;
+        if (e.kind != model::EntityKind::Surface) continue;
         grid += e.surface->countU() * e.surface->countV();
         vertices += static_cast<int>(solvers::tessellate(*e.surface).vertices.size());
     }
@@ -55,11 +55,11 @@ namespace {
 /// The kernel's adaptive tessellation of the four surfaces alone (what a rebuild re-tessellates).
 void BM_SceneTessellateFourSurfaces(benchmark::State& state)
 {
-    scene::Model model;
-    scene::populateModel(scene::loadDocument(SCULPTLINE_DATA_DIR "/models/surfaces_drag_start.json"), model);
+    model::Model model;
+    model::populateModel(model::loadDocument(SCULPTLINE_DATA_DIR "/models/surfaces_drag_start.json"), model);
     for (auto _ : state) {
         for (const auto& [id, e] : model.entities()) {
-            if (e.kind == scene::EntityKind::Surface) benchmark::DoNotOptimize(solvers::tessellate(*e.surface));
+            if (e.kind == model::EntityKind::Surface) benchmark::DoNotOptimize(solvers::tessellate(*e.surface));
         }
     }
 }

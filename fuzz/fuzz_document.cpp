@@ -1,12 +1,12 @@
 // The document loader: bytes -> parseJson -> documentFromJson -> populateModel -> modelToJson, what
 // `sculptline DOCUMENT` and File > Open do, then the round trip of File > Save: the saved text must
-// open again and save to the same JSON (scene/model/model_document.h promises an exact restore).
+// open again and save to the same JSON (model/model_document.h promises an exact restore).
 //
 // A document the reader rejects (InputError) is fine. A document it accepts must open: a surface
 // whose construction cannot be rebuilt is kept, failed (Model::restoreSurface), so any exception
 // from populateModel is a finding, as is anything else that goes wrong.
 #include "fuzz/fuzz_target.h"
-#include "scene/model/model_document.h"
+#include "model/model_document.h"
 
 #include "solvers/io/geometry_json.h"
 
@@ -21,14 +21,14 @@ using nlohmann::json;
 // Reads, opens and saves; exceptions propagate.
 json openAndSave(const std::string& text)
 {
-    const scene::SceneDocument doc = scene::documentFromJson(solvers::io::parseJson(text));
-    scene::Model model;
+    const model::SceneDocument doc = model::documentFromJson(solvers::io::parseJson(text));
+    model::Model model;
     try {
-        scene::populateModel(doc, model);
+        model::populateModel(doc, model);
     } catch (const std::exception& e) {
         fuzz::fuzzFailure("document", std::string("a document the reader accepted does not open: ") + e.what());
     }
-    return scene::modelToJson(model, doc.grid);
+    return model::modelToJson(model, doc.grid);
 }
 
 }  // namespace

@@ -72,7 +72,7 @@ void CurvePull::onEvent(SoEventCallback* node)
         StrokeHit hit = pickCurve(node, direction);
         if (hit.curve == 0 || !grab_) return;
         hit.shift = event->wasShiftDown();
-        const std::optional<scene::PlaneFrame> frame = grab_(hit);
+        const std::optional<model::PlaneFrame> frame = grab_(hit);
         if (!frame) {
             node->setHandled();  // the press was taken (a pin added) or refused: not a stroke either
             return;

@@ -21,7 +21,7 @@ class CurvePull {
 public:
     /// At the press on curve `hit.curve`: the frame of the curve's plane to pull in, or empty to
     /// decline (no curve, a curve in space).
-    using Grab = std::function<std::optional<scene::PlaneFrame>(const StrokeHit& hit)>;
+    using Grab = std::function<std::optional<model::PlaneFrame>(const StrokeHit& hit)>;
     /// Per pointer event while pulling: where the handle is, in the plane's local frame (z = 0).
     using Move = std::function<void(const Eigen::Vector3d& local)>;
 
@@ -47,7 +47,7 @@ private:
     SoCoordinate3* handle_ = nullptr;
     bool enabled_ = false;
     bool pulling_ = false;
-    scene::PlaneFrame frame_;
+    model::PlaneFrame frame_;
     std::function<SoCamera*()> camera_;
     Grab grab_;
     Move move_;

@@ -11,12 +11,12 @@
 
 namespace sculptline::manipulators {
 
-ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneSpec& plane)
-    : ProjectionPlaneManipulator(scene::PlaneFrame::fromNormal(plane.origin, plane.normal, plane.size, plane.xAxis))
+ProjectionPlaneManipulator::ProjectionPlaneManipulator(const model::PlaneSpec& plane)
+    : ProjectionPlaneManipulator(model::PlaneFrame::fromNormal(plane.origin, plane.normal, plane.size, plane.xAxis))
 {
 }
 
-ProjectionPlaneManipulator::ProjectionPlaneManipulator(const scene::PlaneFrame& plane)
+ProjectionPlaneManipulator::ProjectionPlaneManipulator(const model::PlaneFrame& plane)
     : size_(plane.size), draggerScale_(kDraggerScale * plane.size)
 {
     root_ = new SoSeparator;
@@ -77,7 +77,7 @@ ProjectionPlaneManipulator::~ProjectionPlaneManipulator()
     root_->unref();
 }
 
-scene::PlaneFrame ProjectionPlaneManipulator::frame() const
+model::PlaneFrame ProjectionPlaneManipulator::frame() const
 {
     // Composition of the graph above applied to a local point p: placement (R0, O0), then
     // S * motion * S^-1 = translate by s * T after the motion rotation Rm (a uniform scale commutes
@@ -85,17 +85,17 @@ scene::PlaneFrame ProjectionPlaneManipulator::frame() const
     const Eigen::Quaterniond placed = scene::toEigen(placement_->rotation.getValue());
     const Eigen::Quaterniond moved = scene::toEigen(motion_->rotation.getValue());
     const Eigen::Vector3d offset = scene::toEigen(motion_->translation.getValue()) * draggerScale_;
-    scene::PlaneFrame now;
+    model::PlaneFrame now;
     now.origin = scene::toEigen(placement_->translation.getValue()) + placed * offset;
     now.rotation = (placed * moved).normalized();
     now.size = size_;
     return now;
 }
 
-scene::PlaneSpec ProjectionPlaneManipulator::plane() const
+model::PlaneSpec ProjectionPlaneManipulator::plane() const
 {
-    const scene::PlaneFrame now = frame();
-    scene::PlaneSpec spec;
+    const model::PlaneFrame now = frame();
+    model::PlaneSpec spec;
     spec.origin = now.origin;
     spec.normal = now.normal();
     spec.xAxis = now.xAxis();
@@ -103,7 +103,7 @@ scene::PlaneSpec ProjectionPlaneManipulator::plane() const
     return spec;
 }
 
-void ProjectionPlaneManipulator::setFrame(const scene::PlaneFrame& frame)
+void ProjectionPlaneManipulator::setFrame(const model::PlaneFrame& frame)
 {
     sensor_.detach();
     placement_->translation = scene::toSb(frame.origin);

@@ -2,8 +2,8 @@
 // A projection plane the user can move: the plane's look (scene/plane_node.h) carried by a Coin
 // SoJackDragger (without its scaler: planes keep their size) whose translation and rotation fields
 // drive the plane's transform.
-#include "scene/model/plane_frame.h"
-#include "scene/scene_document.h"
+#include "model/plane_frame.h"
+#include "model/document.h"
 
 #include <Inventor/sensors/SoNodeSensor.h>
 
@@ -31,11 +31,11 @@ constexpr double kDraggerScale = 0.12;
 ///     SoSeparator { SoScale s, SoJackDragger } }
 /// Dragger fields are the public API: setting them (from code, a replay, or the mouse) moves the
 /// plane through the field connections; an immediate node sensor reports every move to the callback,
-/// which should only record it (the model coalesces, scene/model/update_scheduler.h).
+/// which should only record it (the model coalesces, scene/update_scheduler.h).
 class ProjectionPlaneManipulator {
 public:
-    explicit ProjectionPlaneManipulator(const scene::PlaneFrame& frame);
-    explicit ProjectionPlaneManipulator(const scene::PlaneSpec& plane);
+    explicit ProjectionPlaneManipulator(const model::PlaneFrame& frame);
+    explicit ProjectionPlaneManipulator(const model::PlaneSpec& plane);
     ~ProjectionPlaneManipulator();
     ProjectionPlaneManipulator(const ProjectionPlaneManipulator&) = delete;
     ProjectionPlaneManipulator& operator=(const ProjectionPlaneManipulator&) = delete;
@@ -47,13 +47,13 @@ public:
     SoTransform* motion() const { return motion_; }
 
     /// The plane where it is now, in model coordinates (origin, unit normal, edge length).
-    scene::PlaneSpec plane() const;
+    model::PlaneSpec plane() const;
 
     /// The full frame where the plane is now (origin, rotation including the turn about its normal).
-    scene::PlaneFrame frame() const;
+    model::PlaneFrame frame() const;
     /// Puts the plane at `frame` (undo, redo, a document) without calling the moved callback: the
     /// placement takes the frame and the dragger returns to its rest position.
-    void setFrame(const scene::PlaneFrame& frame);
+    void setFrame(const model::PlaneFrame& frame);
 
     /// Called immediately on every change of the dragger's motion (several times per mouse event).
     void setMovedCallback(std::function<void()> callback) { moved_ = std::move(callback); }

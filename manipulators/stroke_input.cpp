@@ -137,7 +137,7 @@ StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view)
     return result;
 }
 
-std::optional<Eigen::Vector3d> intersectPlane(const scene::PlaneFrame& frame, const Eigen::Vector3d& from,
+std::optional<Eigen::Vector3d> intersectPlane(const model::PlaneFrame& frame, const Eigen::Vector3d& from,
                                               const Eigen::Vector3d& direction)
 {
     const Eigen::Vector3d normal = frame.normal();
@@ -150,7 +150,7 @@ std::optional<Eigen::Vector3d> intersectPlane(const scene::PlaneFrame& frame, co
     return local;
 }
 
-void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame)
+void reproject(FinishedStroke& stroke, const model::PlaneFrame& frame)
 {
     stroke.frame = frame;
     stroke.points.clear();
@@ -175,7 +175,7 @@ void StrokeInput::onEvent(SoEventCallback* node)
         Eigen::Vector3d from, direction;
         if (!ray(node, from, direction)) return;
         const StrokeHit start = hit(node, direction);
-        const std::optional<scene::PlaneFrame> plane = plane_ ? plane_(start) : std::nullopt;
+        const std::optional<model::PlaneFrame> plane = plane_ ? plane_(start) : std::nullopt;
         if (!plane) return;
         drawing_ = true;
         startTime_ = now;

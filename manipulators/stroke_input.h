@@ -5,7 +5,7 @@
 // On release the stroke's points go to the finished callback in the plane's local frame.
 //
 // Presses that land on a dragger are left to the dragger, so planes stay movable while sketching.
-#include "scene/model/plane_frame.h"
+#include "model/plane_frame.h"
 
 #include <Eigen/Core>
 
@@ -32,10 +32,10 @@ struct StrokeHit {
 
 /// The plane a stroke is previewed on, chosen when the pen goes down (knowing whether it went
 /// down on a curve); empty = no stroke.
-using ActivePlane = std::function<std::optional<scene::PlaneFrame>(const StrokeHit& start)>;
+using ActivePlane = std::function<std::optional<model::PlaneFrame>(const StrokeHit& start)>;
 
 struct FinishedStroke {
-    scene::PlaneFrame frame;  ///< the plane the points are in
+    model::PlaneFrame frame;  ///< the plane the points are in
     std::vector<Eigen::Vector3d> points;  ///< in `frame`, z = 0, model units
     std::vector<double> times;  ///< seconds since the pen went down, one per point
     /// The pointer's ray per point (world): a stroke that ends on a curve goes onto another plane
@@ -54,12 +54,12 @@ bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, 
 /// through other shapes.
 StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view);
 /// Where the ray meets the frame's plane, local (z = 0); empty when parallel or behind the eye.
-std::optional<Eigen::Vector3d> intersectPlane(const scene::PlaneFrame& frame, const Eigen::Vector3d& from,
+std::optional<Eigen::Vector3d> intersectPlane(const model::PlaneFrame& frame, const Eigen::Vector3d& from,
                                               const Eigen::Vector3d& direction);
 
 /// The points where the rays meet `frame`'s plane, in its local frame (z = 0); rays that miss
 /// it (parallel, or the plane behind the eye) are skipped, with their times.
-void reproject(FinishedStroke& stroke, const scene::PlaneFrame& frame);
+void reproject(FinishedStroke& stroke, const model::PlaneFrame& frame);
 
 class StrokeInput {
 public:

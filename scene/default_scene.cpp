@@ -2,8 +2,8 @@
 
 #include "scene/geometry_nodes.h"
 #include "scene/ground_grid.h"
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
 #include "scene/plane_node.h"
 
 #include <Inventor/nodes/SoGroup.h>
@@ -30,18 +30,18 @@ SoGroup* namedGroup(const char* name)
 std::string indexedName(const char* prefix, size_t i) { return prefix + std::to_string(i); }
 
 /// Curve i in world coordinates (a curve on a plane is stored in the plane's frame).
-solvers::Curve3d worldCurve(const SceneDocument& doc, size_t i)
+solvers::Curve3d worldCurve(const model::SceneDocument& doc, size_t i)
 {
     const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
-    for (const PlaneSpec& p : doc.planes) {
-        if (plane != 0 && p.id == plane) return transformCurve(doc.curves[i], planeFrame(p));
+    for (const model::PlaneSpec& p : doc.planes) {
+        if (plane != 0 && p.id == plane) return model::transformCurve(doc.curves[i], model::planeFrame(p));
     }
     return doc.curves[i];
 }
 
 }  // namespace
 
-SoSeparator* buildSceneGraph(const SceneDocument& doc, const PlaneFactory& planes)
+SoSeparator* buildSceneGraph(const model::SceneDocument& doc, const PlaneFactory& planes)
 {
     // Built under a ref so that an exception from a factory cannot leak the partial graph.
     auto* root = new SoSeparator;
@@ -87,7 +87,7 @@ SoSeparator* buildSceneGraph(const SceneDocument& doc, const PlaneFactory& plane
 
 SoSeparator* buildSceneGraph(const std::string& path, const PlaneFactory& planes)
 {
-    return buildSceneGraph(loadDocument(path), planes);
+    return buildSceneGraph(model::loadDocument(path), planes);
 }
 
 }  // namespace sculptline::scene

@@ -1,7 +1,7 @@
 #pragma once
 // Builds the scene graph of a document (data/default_scene.json by default): ground grid, surfaces,
 // curves and projection planes, each under a named node so tools and tests can find them.
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 #include <functional>
 #include <string>
@@ -14,7 +14,7 @@ namespace sculptline::scene {
 /// Makes the node shown for plane `index`. The scene layer draws static planes; the ui passes a
 /// factory that wraps them in draggers (manipulators/ sits above scene/ and cannot be called here).
 /// The returned node must have reference count 0 (the graph takes it over).
-using PlaneFactory = std::function<SoNode*(const PlaneSpec& plane, size_t index)>;
+using PlaneFactory = std::function<SoNode*(const model::PlaneSpec& plane, size_t index)>;
 
 /// The graph of `doc`:
 ///   SoSeparator "SculptlineScene"
@@ -24,9 +24,9 @@ using PlaneFactory = std::function<SoNode*(const PlaneSpec& plane, size_t index)
 ///     SoGroup "Planes"   { plane 0, ... }    (last: translucent, drawn over what is behind it)
 /// Returned with reference count 0; the caller ref()s it (and unref()s when done).
 /// @param planes node factory for the planes; empty = static planes (makePlaneNode).
-SoSeparator* buildSceneGraph(const SceneDocument& doc, const PlaneFactory& planes = {});
+SoSeparator* buildSceneGraph(const model::SceneDocument& doc, const PlaneFactory& planes = {});
 
-/// loadDocument(path) then buildSceneGraph; throws solvers::io::InputError like loadDocument.
+/// model::loadDocument(path) then buildSceneGraph; throws solvers::io::InputError like model::loadDocument.
 SoSeparator* buildSceneGraph(const std::string& path, const PlaneFactory& planes = {});
 
 }  // namespace sculptline::scene

@@ -28,7 +28,7 @@ SoSeparator* lineGroup(const std::vector<SbVec3f>& endpoints, const SbColor& col
 
 }  // namespace
 
-SoSeparator* makeGroundGrid(const GridSpec& grid)
+SoSeparator* makeGroundGrid(const model::GridSpec& grid)
 {
     const float half = static_cast<float>(grid.size / 2.0);
     // Lines at multiples of the spacing that fit inside the grid, so the axes are always grid lines.

@@ -1,6 +1,6 @@
 #pragma once
 // The ground grid: the user's sense of scale and of "down" in the modelling space.
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 class SoSeparator;
 
@@ -11,6 +11,6 @@ constexpr int kGridMajorEvery = 5;
 
 /// Unlit lines in the plane z = 0, centred on the origin: minor lines, brighter major lines, and
 /// the X (red) and Y (green) axes. Reference count 0: the caller owns it.
-SoSeparator* makeGroundGrid(const GridSpec& grid);
+SoSeparator* makeGroundGrid(const model::GridSpec& grid);
 
 }  // namespace sculptline::scene

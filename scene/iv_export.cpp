@@ -46,7 +46,7 @@ void removePolygonOffsets(SoSeparator* root)
 
 }  // namespace
 
-SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
+SoSeparator* makeExportGraph(const model::Model& model, const model::GridSpec& grid)
 {
     auto* root = named("SculptlineExport");
     root->ref();
@@ -58,26 +58,26 @@ SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
     root->addChild(curves);
     root->addChild(planes);
     for (const auto& [id, e] : model.entities()) {
-        if (!hasFiniteGeometry(e)) continue;  // as the view: a NaN never reaches Coin
-        const std::string name = std::string(kindName(e.kind)) + std::to_string(id);
+        if (!model::hasFiniteGeometry(e)) continue;  // as the view: a NaN never reaches Coin
+        const std::string name = std::string(model::kindName(e.kind)) + std::to_string(id);
         SoSeparator* node = nullptr;
         switch (e.kind) {
-        case EntityKind::Surface:
+        case model::EntityKind::Surface:
             if (!e.surface) continue;  // a construction that failed to build: nothing to draw
             node = makeSurfaceNode(*e.surface);
             surfaces->addChild(node);
             break;
-        case EntityKind::Curve:
+        case model::EntityKind::Curve:
             // World coordinates: the exported file carries no plane hierarchy to interpret.
             node = makeCurveNode(e.world ? *e.world : *e.local);
             curves->addChild(node);
             break;
-        case EntityKind::Constraint: continue;  // an editing aid, not geometry
-        case EntityKind::Mesh:
+        case model::EntityKind::Constraint: continue;  // an editing aid, not geometry
+        case model::EntityKind::Mesh:
             node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
             surfaces->addChild(node);
             break;
-        case EntityKind::Plane: {
+        case model::EntityKind::Plane: {
             node = new SoSeparator;
             auto* placement = new SoTransform;
             placement->translation = toSb(e.frame.origin);
@@ -95,7 +95,7 @@ SoSeparator* makeExportGraph(const Model& model, const GridSpec& grid)
     return root;
 }
 
-void exportIv(const Model& model, const GridSpec& grid, const std::string& path)
+void exportIv(const model::Model& model, const model::GridSpec& grid, const std::string& path)
 {
     SoSeparator* root = makeExportGraph(model, grid);
     root->ref();

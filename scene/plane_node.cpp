@@ -93,7 +93,7 @@ SoSeparator* makePlaneGeometry(double size)
     return root;
 }
 
-SoTransform* makePlanePlacement(const PlaneSpec& plane)
+SoTransform* makePlanePlacement(const model::PlaneSpec& plane)
 {
     auto* placement = new SoTransform;
     placement->translation = toSb(plane.origin);
@@ -101,7 +101,7 @@ SoTransform* makePlanePlacement(const PlaneSpec& plane)
     return placement;
 }
 
-SoSeparator* makePlaneNode(const PlaneSpec& plane)
+SoSeparator* makePlaneNode(const model::PlaneSpec& plane)
 {
     auto* root = new SoSeparator;
     root->addChild(makePlanePlacement(plane));

@@ -1,6 +1,6 @@
 #pragma once
 // The look of a projection plane: a translucent square with a grid, modelled in its local XY plane.
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 class SoSeparator;
 class SoTransform;
@@ -17,10 +17,10 @@ SoSeparator* makePlaneGeometry(double size);
 
 /// The transform placing local XY-plane geometry at plane.origin with +Z along plane.normal.
 /// Reference count 0.
-SoTransform* makePlanePlacement(const PlaneSpec& plane);
+SoTransform* makePlanePlacement(const model::PlaneSpec& plane);
 
 /// SoSeparator { placement, geometry }: a static plane (no dragger), for scenes without
 /// manipulators. Reference count 0.
-SoSeparator* makePlaneNode(const PlaneSpec& plane);
+SoSeparator* makePlaneNode(const model::PlaneSpec& plane);
 
 }  // namespace sculptline::scene

@@ -42,7 +42,7 @@ StrokeFeedback::StrokeFeedback()
 
 StrokeFeedback::~StrokeFeedback() { root_->unref(); }
 
-void StrokeFeedback::show(const PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples,
+void StrokeFeedback::show(const model::PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples,
                           const std::vector<Eigen::Vector3d>& corners)
 {
     setFrame(frame);
@@ -50,7 +50,7 @@ void StrokeFeedback::show(const PlaneFrame& frame, const std::vector<Eigen::Vect
     setPoints(corners_->point, corners);
 }
 
-void StrokeFeedback::setFrame(const PlaneFrame& frame)
+void StrokeFeedback::setFrame(const model::PlaneFrame& frame)
 {
     frame_->translation = toSb(frame.origin);
     frame_->rotation = toSb(frame.rotation);

@@ -3,7 +3,7 @@
 // feedback): the sampling points the least squares used as small dots, the detected corners as
 // larger red ones. In the frame of the plane the stroke's curve lies on, so the dots follow that
 // plane when it is dragged; replaced by the next stroke.
-#include "scene/model/plane_frame.h"
+#include "model/plane_frame.h"
 
 #include <Eigen/Core>
 
@@ -25,10 +25,10 @@ public:
     /// SoSeparator "StrokeFeedback" (unpickable); ref()ed by this object.
     SoSeparator* root() const { return root_; }
     /// Dots at `samples` and `corners`, given in `frame`'s local coordinates.
-    void show(const PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& corners);
+    void show(const model::PlaneFrame& frame, const std::vector<Eigen::Vector3d>& samples, const std::vector<Eigen::Vector3d>& corners);
     /// Moves the dots with their plane (one transform write).
-    void setFrame(const PlaneFrame& frame);
-    void clear() { show(PlaneFrame{}, {}, {}); }
+    void setFrame(const model::PlaneFrame& frame);
+    void clear() { show(model::PlaneFrame{}, {}, {}); }
     int sampleCount() const;
     int cornerCount() const;
 

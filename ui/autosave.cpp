@@ -1,6 +1,6 @@
 #include "ui/autosave.h"
 
-#include "scene/model/atomic_file.h"
+#include "model/atomic_file.h"
 #include "ui/recovery_file.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
@@ -76,7 +76,7 @@ void Autosaver::autosave(bool wait)
     writer_.start([this, data = std::move(data), path, guiMs]() {
         try {
             const std::string text = recoveryText(data);
-            scene::writeFileAtomically(path, text, false);
+            model::writeFileAtomically(path, text, false);
             const auto bytes = static_cast<qint64>(text.size());
             QMetaObject::invokeMethod(this, [this, bytes, guiMs]() { Q_EMIT written(bytes, guiMs); }, Qt::QueuedConnection);
         } catch (const std::exception& e) {

@@ -15,33 +15,33 @@ EntityListDock::EntityListDock(QWidget* parent) : QDockWidget(tr("Entities"), pa
     });
 }
 
-void EntityListDock::refresh(const scene::Model& model, scene::EntityId selection)
+void EntityListDock::refresh(const model::Model& model, model::EntityId selection)
 {
     updating_ = true;
     list_->clear();
-    auto add = [this](const scene::Entity& e, const QString& text) {
+    auto add = [this](const model::Entity& e, const QString& text) {
         auto* item = new QListWidgetItem(text, list_);
         item->setData(Qt::UserRole, e.id);
     };
     // Planes with their curves under them, then curves on no plane, surfaces and constraints.
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind != scene::EntityKind::Plane) continue;
+        if (e.kind != model::EntityKind::Plane) continue;
         add(e, tr("Plane %1").arg(id));
-        for (scene::EntityId c : model.dependents(id)) {
-            const scene::Entity* curve = model.find(c);
-            if (curve->kind != scene::EntityKind::Curve) continue;
+        for (model::EntityId c : model.dependents(id)) {
+            const model::Entity* curve = model.find(c);
+            if (curve->kind != model::EntityKind::Curve) continue;
             add(*curve, tr("    Curve %1 (degree %2, %3 points)").arg(c).arg(curve->local->degree()).arg(curve->local->pointCount()));
         }
     }
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
-        if (e.kind == scene::EntityKind::Surface) {
+        if (e.kind == model::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
+        if (e.kind == model::EntityKind::Surface) {
             QString text = e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id);
             if (e.failed()) text += e.surface ? tr(" - not rebuilt") : tr(" - failed");
             add(e, text);
         }
-        if (e.kind == scene::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
-        if (e.kind == scene::EntityKind::Constraint) {
+        if (e.kind == model::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
+        if (e.kind == model::EntityKind::Constraint) {
             add(e, tr("Constraint %1 (%2 on curve %3)").arg(id).arg(QString::fromStdString(e.constraintType)).arg(e.inputs.front()));
         }
     }
@@ -49,7 +49,7 @@ void EntityListDock::refresh(const scene::Model& model, scene::EntityId selectio
     setSelection(selection);
 }
 
-void EntityListDock::setSelection(scene::EntityId id)
+void EntityListDock::setSelection(model::EntityId id)
 {
     updating_ = true;
     list_->setCurrentItem(nullptr);

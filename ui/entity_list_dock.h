@@ -1,7 +1,7 @@
 #pragma once
 // The scene's entities in a list (planes, their curves indented under them, surfaces); picking a
 // row selects the entity.
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include <QDockWidget>
 
@@ -14,11 +14,11 @@ class EntityListDock : public QDockWidget {
 
 public:
     explicit EntityListDock(QWidget* parent = nullptr);
-    void refresh(const scene::Model& model, scene::EntityId selection);
-    void setSelection(scene::EntityId id);
+    void refresh(const model::Model& model, model::EntityId selection);
+    void setSelection(model::EntityId id);
 
 Q_SIGNALS:
-    void entityPicked(scene::EntityId id);
+    void entityPicked(model::EntityId id);
 
 private:
     QListWidget* list_ = nullptr;

@@ -50,13 +50,13 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
 
 QString InspectorDock::text() const { return text_->toPlainText(); }
 
-void InspectorDock::show(const scene::Model& model, scene::EntityId id)
+void InspectorDock::show(const model::Model& model, model::EntityId id)
 {
-    const scene::Entity* e = model.find(id);
-    plot_->setCurve(e && e->kind == scene::EntityKind::Curve ? e->world : std::nullopt);
+    const model::Entity* e = model.find(id);
+    plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e->world : std::nullopt);
     filling_ = true;
     points_->clear();
-    curve_ = e && e->kind == scene::EntityKind::Curve ? id : 0;
+    curve_ = e && e->kind == model::EntityKind::Curve ? id : 0;
     points_->setVisible(curve_ != 0);
     if (curve_ != 0) {
         const solvers::Curve3d& c = *e->local;
@@ -76,40 +76,40 @@ void InspectorDock::show(const scene::Model& model, scene::EntityId id)
     }
     QString out;
     QTextStream s(&out);
-    s << tr("Type: %1 %2").arg(scene::kindName(e->kind)).arg(id) << "\n";
-    if (e->kind == scene::EntityKind::Plane) {
+    s << tr("Type: %1 %2").arg(model::kindName(e->kind)).arg(id) << "\n";
+    if (e->kind == model::EntityKind::Plane) {
         s << tr("Origin: %1").arg(point(e->frame.origin)) << "\n";
         s << tr("Normal: %1").arg(point(e->frame.normal())) << "\n";
         s << tr("X axis: %1").arg(point(e->frame.xAxis())) << "\n";
         s << tr("Size: %1 mm").arg(e->frame.size) << "\n";
         s << tr("Curves on it: %1").arg(model.dependents(id).size()) << "\n";
-    } else if (e->kind == scene::EntityKind::Curve) {
+    } else if (e->kind == model::EntityKind::Curve) {
         const solvers::Curve3d& c = *e->local;
         s << (e->plane() != 0 ? tr("On plane %1 (control points in its frame)").arg(e->plane()) : tr("In space")) << "\n";
         s << tr("Degree: %1%2%3").arg(c.degree()).arg(c.isRational() ? tr(", rational") : QString()).arg(c.isClosed() ? tr(", closed") : QString()) << "\n";
         s << tr("Knots (%1): %2").arg(c.knots().size()).arg(knots(c.knots())) << "\n";
         s << tr("Control points (%1), %2 fixed, the rest free (check boxes below):").arg(c.pointCount()).arg(e->fixedPoints.size()) << "\n";
-        for (scene::EntityId d : model.dependents(id)) {
-            const scene::Entity* k = model.find(d);
-            if (k && k->kind == scene::EntityKind::Constraint)
+        for (model::EntityId d : model.dependents(id)) {
+            const model::Entity* k = model.find(d);
+            if (k && k->kind == model::EntityKind::Constraint)
                 s << tr("Constraint %1: %2 at u = %3").arg(d).arg(QString::fromStdString(k->constraintType)).arg(k->parameter, 0, 'g', 5) << "\n";
         }
-    } else if (e->kind == scene::EntityKind::Mesh) {
+    } else if (e->kind == model::EntityKind::Mesh) {
         QStringList curves;
-        for (scene::EntityId c : e->inputs) curves << QString::number(c);
+        for (model::EntityId c : e->inputs) curves << QString::number(c);
         s << tr("Curve network loop: curves %1").arg(curves.join(QStringLiteral(", "))) << "\n";
         s << tr("Vertices: %1, triangles: %2").arg(e->mesh->vertices.size()).arg(e->mesh->triangles.size()) << "\n";
         if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
-    } else if (e->kind == scene::EntityKind::Constraint) {
+    } else if (e->kind == model::EntityKind::Constraint) {
         s << tr("Keeps the %1 of curve %2 at u = %3 while it is pulled").arg(QString::fromStdString(e->constraintType == "position" ? "point" : "tangent"))
                  .arg(e->inputs.front()).arg(e->parameter, 0, 'g', 6) << "\n";
         s << tr("At %1").arg(point(e->anchor)) << "\n";
     } else {
         if (e->recipe) {
             QStringList inputs;
-            for (scene::EntityId c : e->curveInputs()) inputs << QString::number(c);
+            for (model::EntityId c : e->curveInputs()) inputs << QString::number(c);
             s << tr("Made by: %1 of curves %2").arg(QString::fromStdString(e->recipe->mode), inputs.join(QStringLiteral(", "))) << "\n";
-            for (const scene::SurfaceRecipe::Tangent& t : e->recipe->tangents)
+            for (const model::SurfaceRecipe::Tangent& t : e->recipe->tangents)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";

@@ -2,7 +2,7 @@
 // The selected entity in detail: type, plane, degree, control points, knots (curves and surfaces),
 // origin and axes (planes); a curve's control points with a check box each, checked = fixed when
 // the curve is pulled; below, a selected curve's curvature plot.
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include <QDockWidget>
 
@@ -22,7 +22,7 @@ class InspectorDock : public QDockWidget {
 
 public:
     explicit InspectorDock(QWidget* parent = nullptr);
-    void show(const scene::Model& model, scene::EntityId id);
+    void show(const model::Model& model, model::EntityId id);
     /// The text shown (tests read it).
     QString text() const;
     /// The control point list (one checkable item per unique point of the selected curve).
@@ -30,12 +30,12 @@ public:
 
 Q_SIGNALS:
     /// The designer checked or unchecked a control point of `curve`: `fixed` is the new set.
-    void fixedPointsEdited(scene::EntityId curve, std::vector<int> fixed);
+    void fixedPointsEdited(model::EntityId curve, std::vector<int> fixed);
 
 private:
     QPlainTextEdit* text_ = nullptr;
     QListWidget* points_ = nullptr;
-    scene::EntityId curve_ = 0;  ///< the curve whose points the list shows
+    model::EntityId curve_ = 0;  ///< the curve whose points the list shows
     bool filling_ = false;
     CurvaturePlot* plot_ = nullptr;
 };

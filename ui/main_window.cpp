@@ -84,7 +84,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         entities_->refresh(document_->model(), document_->selection());
         inspector_->show(document_->model(), document_->selection());
     });
-    connect(document_, &SketchDocument::selectionChanged, this, [this](scene::EntityId id) {
+    connect(document_, &SketchDocument::selectionChanged, this, [this](model::EntityId id) {
         entities_->setSelection(id);
         inspector_->show(document_->model(), id);
         updateStatus();
@@ -244,8 +244,8 @@ void MainWindow::createDocks()
                                        action(QStringLiteral("stroke.useFreeform")), this);
     addDockWidget(Qt::LeftDockWidgetArea, recognition_);
     connect(inspector_, &InspectorDock::fixedPointsEdited, this,
-            [this](scene::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
-    connect(entities_, &EntityListDock::entityPicked, this, [this](scene::EntityId id) { document_->select(id); });
+            [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
+    connect(entities_, &EntityListDock::entityPicked, this, [this](model::EntityId id) { document_->select(id); });
 }
 
 void MainWindow::setMode(Mode mode, const std::string& surfaceMode)
@@ -269,7 +269,7 @@ void MainWindow::setMode(Mode mode, const std::string& surfaceMode)
 
 void MainWindow::updateStatus()
 {
-    const scene::EntityId plane = document_->activePlane();
+    const model::EntityId plane = document_->activePlane();
     QString text;
     switch (mode_) {
     case Mode::View: text = tr("View: drag to turn, middle-drag to pan, wheel to zoom. S: sketch, E: select."); break;
@@ -329,9 +329,9 @@ QString MainWindow::surfaceGuidance() const
         return tr("Network: click the curves of a closed loop in order (or one closed curve), then Enter (%1 picked). Esc forgets.")
             .arg(document_->surfaceInputs().size());
     }
-    const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
+    const model::InputCount count = model::surfaceInputCount(surfaceMode_);
     const int picked = static_cast<int>(document_->surfaceInputs().size());
-    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(scene::surfaceInputRole(surfaceMode_, picked)));
+    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(model::surfaceInputRole(surfaceMode_, picked)));
     text += count.min == count.max ? tr(" (%1 of %2).").arg(picked + 1).arg(count.max)
                                    : tr(" (%1 picked; Enter builds with %2 or more).").arg(picked).arg(count.min);
     return text + tr(" Esc forgets the picks.");
@@ -344,7 +344,7 @@ void MainWindow::updateTitle()
     setWindowModified(!document_->undoStack()->isClean());
 }
 
-void MainWindow::showDocument(const scene::SceneDocument& doc, const QString& path)
+void MainWindow::showDocument(const model::SceneDocument& doc, const QString& path)
 {
     viewer_->setSceneGraph(nullptr);
     document_->load(doc, path);
@@ -379,7 +379,7 @@ void MainWindow::addPlaneFacingViewer()
     camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), forward);
     camera->orientation.getValue().multVec(SbVec3f(1, 0, 0), right);
     const SbVec3f centre = camera->position.getValue() + forward * camera->focalDistance.getValue();
-    document_->addPlane(scene::PlaneFrame::fromNormal(scene::toEigen(centre), -scene::toEigen(forward), kNewPlaneSize,
+    document_->addPlane(model::PlaneFrame::fromNormal(scene::toEigen(centre), -scene::toEigen(forward), kNewPlaneSize,
                                                       scene::toEigen(right)));
 }
 
@@ -391,7 +391,7 @@ SbBool MainWindow::viewerEvent(void* self, QEvent* event)
     if (mouse->button() != Qt::LeftButton) return FALSE;
     if (window->mode_ == Mode::Surface && window->surfaceMode_ != "extrude") {
         // A click picks the nearest curve as the next input; nothing else sees the press.
-        if (const scene::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickSurfaceInput(curve);
+        if (const model::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickSurfaceInput(curve);
         return TRUE;
     }
     if (window->mode_ != Mode::Select) return FALSE;
@@ -409,7 +409,7 @@ bool MainWindow::pickAt(const QPoint& position)
     pick.setPoint(SbVec2s(static_cast<short>(position.x()), static_cast<short>(size[1] - 1 - position.y())));
     pick.setRadius(4);
     pick.apply(viewer_->getSceneManager()->getSceneGraph());
-    scene::EntityId picked = 0;
+    model::EntityId picked = 0;
     if (const SoPickedPoint* point = pick.getPickedPoint()) {
         const SoPath* path = point->getPath();
         for (int i = path->getLength() - 1; i >= 0 && picked == 0; --i) {
@@ -437,12 +437,12 @@ QPoint MainWindow::pixelOf(const Eigen::Vector3d& world) const
     return QPoint(static_cast<int>(std::lround(screen[0] * size[0])), static_cast<int>(std::lround(size[1] - 1 - screen[1] * size[1])));
 }
 
-scene::EntityId MainWindow::curveNear(const QPoint& position) const
+model::EntityId MainWindow::curveNear(const QPoint& position) const
 {
-    scene::EntityId best = 0;
+    model::EntityId best = 0;
     double bestDistance = kCurvePickRadius;
     for (const auto& [id, e] : document_->model().entities()) {
-        if (e.kind != scene::EntityKind::Curve || !e.world) continue;
+        if (e.kind != model::EntityKind::Curve || !e.world) continue;
         // Dense enough that the chord between samples stays within a pixel or two of the curve at
         // the sizes curves have on screen.
         const double u0 = e.world->domainStart(), u1 = e.world->domainEnd();

@@ -3,8 +3,8 @@
 // inspector, File/Edit/Plane/Mode menus whose actions all carry an object name (`file.save`,
 // `mode.sketch`, ...: the names replays and --list-actions use), and a status bar that tells the
 // user what the current mode does with the mouse.
-#include "scene/model/model.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/document.h"
 
 #include <QImage>
 #include <QMainWindow>
@@ -43,7 +43,7 @@ public:
     ~MainWindow() override;
 
     /// Replaces the document by `doc` and frames it (a three-quarter view from the front right).
-    void showDocument(const scene::SceneDocument& doc, const QString& path);
+    void showDocument(const model::SceneDocument& doc, const QString& path);
 
     /// Resizes the window so that the 3D viewport (the GL area) is width x height pixels.
     void setViewportSize(int width, int height);
@@ -121,7 +121,7 @@ private:
     bool pickAt(const QPoint& position);
     /// The curve drawn nearest to `position` (viewport pixels) within kCurvePickRadius, or 0: in
     /// the surface modes a click need not hit the thin line exactly.
-    scene::EntityId curveNear(const QPoint& position) const;
+    model::EntityId curveNear(const QPoint& position) const;
 
     SoQtExaminerViewer* viewer_ = nullptr;
     SketchDocument* document_ = nullptr;

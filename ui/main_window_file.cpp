@@ -45,7 +45,7 @@ void MainWindow::updateRecentMenu()
         recentMenu_->addAction(QFileInfo(path).fileName(), this, [this, path]() {
             if (!maybeSave()) return;
             try {
-                showDocument(scene::loadDocument(path.toStdString()), path);
+                showDocument(model::loadDocument(path.toStdString()), path);
             } catch (const std::exception& e) {
                 QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(e.what()));
             }
@@ -76,7 +76,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::newDocument()
 {
     if (!maybeSave()) return;
-    showDocument(scene::freshDocument(), QString());
+    showDocument(model::freshDocument(), QString());
 }
 
 void MainWindow::openDocument()
@@ -85,7 +85,7 @@ void MainWindow::openDocument()
     const QString path = QFileDialog::getOpenFileName(this, tr("Open document"), QString(), tr("Sculptline documents (*.json)"));
     if (path.isEmpty()) return;
     try {
-        showDocument(scene::loadDocument(path.toStdString()), path);
+        showDocument(model::loadDocument(path.toStdString()), path);
         rememberFile(path);
     } catch (const std::exception& e) {
         QMessageBox::warning(this, tr("Cannot open"), QString::fromStdString(e.what()));
@@ -104,7 +104,7 @@ bool MainWindow::saveTo(const QString& path)
     try {
         document_->save(path);
     } catch (const std::exception& e) {
-        // The save is atomic (scene/model/atomic_file.h): whatever failed, the old file is whole.
+        // The save is atomic (model/atomic_file.h): whatever failed, the old file is whole.
         QMessageBox box(QMessageBox::Warning, tr("Cannot save"), QString::fromStdString(e.what()), QMessageBox::Ok, this);
         box.setInformativeText(tr("The file on disk is unchanged; the work is still open here."));
         box.exec();

@@ -86,8 +86,8 @@ bool MainWindow::offerRecovery(const QString& folder, bool ask)
         if (!maybeSave()) return false;  // the work open now comes first
     }
     try {
-        const scene::SceneDocument state =
-            scene::documentFromJson(solvers::io::parseJson(*data.history.states[static_cast<size_t>(data.history.index)]));
+        const model::SceneDocument state =
+            model::documentFromJson(solvers::io::parseJson(*data.history.states[static_cast<size_t>(data.history.index)]));
         showDocument(state, data.document);
         history_->restore(data.history);
     } catch (const std::exception& e) {

@@ -5,7 +5,7 @@
 #include "manipulators/stroke_input.h"
 #include "scene/ground_grid.h"
 #include "scene/iv_export.h"
-#include "scene/model/model_document.h"
+#include "model/model_document.h"
 #include "ui/undo_commands.h"
 
 #include <Inventor/nodes/SoGroup.h>
@@ -69,7 +69,7 @@ void SketchDocument::setNurbsNodes(bool nurbs)
     root_->replaceChild(index, view_->root());
 }
 
-void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
+void SketchDocument::load(const model::SceneDocument& doc, const QString& path)
 {
     undo_.clear();
     restoreModel(doc);
@@ -77,7 +77,7 @@ void SketchDocument::load(const scene::SceneDocument& doc, const QString& path)
     Q_EMIT replaced();
 }
 
-void SketchDocument::restoreModel(const scene::SceneDocument& doc)
+void SketchDocument::restoreModel(const model::SceneDocument& doc)
 {
     selection_ = 0;
     lastPlane_ = 0;
@@ -85,7 +85,7 @@ void SketchDocument::restoreModel(const scene::SceneDocument& doc)
     SoSeparator* grid = scene::makeGroundGrid(grid_);
     root_->replaceChild(gridNode_, grid);
     gridNode_ = grid;
-    scene::populateModel(doc, model_);
+    model::populateModel(doc, model_);
     view_->setHighlighted(0);
     Q_EMIT entitiesChanged();
     Q_EMIT selectionChanged(0);
@@ -94,7 +94,7 @@ void SketchDocument::restoreModel(const scene::SceneDocument& doc)
 void SketchDocument::save(const QString& path)
 {
     scheduler_->flush();
-    scene::saveModel(model_, grid_, path.toStdString());
+    model::saveModel(model_, grid_, path.toStdString());
     path_ = path;
     undo_.setClean();
 }
@@ -105,43 +105,43 @@ void SketchDocument::exportIv(const QString& path)
     scene::exportIv(model_, grid_, path.toStdString());
 }
 
-scene::EntityId SketchDocument::activePlane() const
+model::EntityId SketchDocument::activePlane() const
 {
-    if (const scene::Entity* e = model_.find(selection_)) {
-        if (e->kind == scene::EntityKind::Plane) return e->id;
+    if (const model::Entity* e = model_.find(selection_)) {
+        if (e->kind == model::EntityKind::Plane) return e->id;
         if (e->plane() != 0) return e->plane();
     }
     if (model_.find(lastPlane_)) return lastPlane_;
     for (const auto& [id, e] : model_.entities()) {
-        if (e.kind == scene::EntityKind::Plane) return id;
+        if (e.kind == model::EntityKind::Plane) return id;
     }
     return 0;
 }
 
-void SketchDocument::select(scene::EntityId id)
+void SketchDocument::select(model::EntityId id)
 {
     if (id != 0 && !model_.find(id)) id = 0;
-    const scene::Entity* e = model_.find(id);
-    if (e && e->kind == scene::EntityKind::Plane) lastPlane_ = id;
+    const model::Entity* e = model_.find(id);
+    if (e && e->kind == model::EntityKind::Plane) lastPlane_ = id;
     if (e && e->plane() != 0) lastPlane_ = e->plane();
     if (id == selection_) return;
     selection_ = id;
-    view_->setHighlighted(e && e->kind == scene::EntityKind::Curve ? id : 0);
+    view_->setHighlighted(e && e->kind == model::EntityKind::Curve ? id : 0);
     Q_EMIT selectionChanged(id);
 }
 
-void SketchDocument::addPlane(const scene::PlaneFrame& frame)
+void SketchDocument::addPlane(const model::PlaneFrame& frame)
 {
-    scene::Entity plane;
-    plane.kind = scene::EntityKind::Plane;
+    model::Entity plane;
+    plane.kind = model::EntityKind::Plane;
     plane.frame = frame;
     undo_.push(new AddEntitiesCommand(*this, {plane}, tr("Add plane")));
 }
 
-void SketchDocument::setFixedPoints(scene::EntityId curve, std::vector<int> fixed)
+void SketchDocument::setFixedPoints(model::EntityId curve, std::vector<int> fixed)
 {
-    const scene::Entity* e = model_.find(curve);
-    if (!e || e->kind != scene::EntityKind::Curve || e->fixedPoints == fixed) return;
+    const model::Entity* e = model_.find(curve);
+    if (!e || e->kind != model::EntityKind::Curve || e->fixedPoints == fixed) return;
     undo_.push(new SetFixedPointsCommand(*this, curve, e->fixedPoints, std::move(fixed)));
 }
 
@@ -156,12 +156,12 @@ void SketchDocument::deleteSelection()
     undo_.push(new DeleteEntityCommand(*this, selection_));
 }
 
-void SketchDocument::entityAdded(const scene::Entity& e)
+void SketchDocument::entityAdded(const model::Entity& e)
 {
-    if (e.kind == scene::EntityKind::Plane) {
+    if (e.kind == model::EntityKind::Plane) {
         auto manipulator = std::make_unique<manipulators::ProjectionPlaneManipulator>(e.frame);
         manipulators::ProjectionPlaneManipulator* m = manipulator.get();
-        const scene::EntityId id = e.id;
+        const model::EntityId id = e.id;
         m->root()->setName(SbName(("Plane" + std::to_string(id)).c_str()));
         // Each dragger event only records the frame; the scheduler solves once per frame.
         m->setMovedCallback([this, m, id]() { model_.setPlaneFrame(id, m->frame()); });
@@ -173,7 +173,7 @@ void SketchDocument::entityAdded(const scene::Entity& e)
     Q_EMIT entitiesChanged();
 }
 
-void SketchDocument::entityRemoved(const scene::Entity& e)
+void SketchDocument::entityRemoved(const model::Entity& e)
 {
     if (const auto it = planes_.find(e.id); it != planes_.end()) {
         planeGroup_->removeChild(it->second->root());
@@ -183,17 +183,17 @@ void SketchDocument::entityRemoved(const scene::Entity& e)
     Q_EMIT entitiesChanged();
 }
 
-void SketchDocument::entityUpdated(const scene::Entity& e)
+void SketchDocument::entityUpdated(const model::Entity& e)
 {
     // During a drag the manipulator is the source of the frame; any other change (undo, redo)
     // puts the manipulator where the model says.
-    if (e.kind == scene::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
-    if (e.kind != scene::EntityKind::Plane || e.id == dragging_) return;
+    if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
+    if (e.kind != model::EntityKind::Plane || e.id == dragging_) return;
     const auto it = planes_.find(e.id);
     if (it != planes_.end() && it->second->frame() != e.frame) it->second->setFrame(e.frame);
 }
 
-void SketchDocument::dragStarted(scene::EntityId plane)
+void SketchDocument::dragStarted(model::EntityId plane)
 {
     scheduler_->flush();
     dragging_ = plane;
@@ -201,12 +201,12 @@ void SketchDocument::dragStarted(scene::EntityId plane)
     select(plane);
 }
 
-void SketchDocument::dragFinished(scene::EntityId plane)
+void SketchDocument::dragFinished(model::EntityId plane)
 {
     scheduler_->flush();
     view_->refineSurfaces();  // live rebuilds reused their grids; the resting shape adapts again
     dragging_ = 0;
-    const scene::Entity* e = model_.find(plane);
+    const model::Entity* e = model_.find(plane);
     if (e && e->frame != dragStart_) undo_.push(new MovePlaneCommand(*this, plane, dragStart_, e->frame));
     Q_EMIT entitiesChanged();
 }

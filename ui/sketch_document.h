@@ -2,11 +2,11 @@
 // The open document: the model, its Coin view, one dragger-carried manipulator per plane, the stroke
 // input, the selection and the undo stack. Every edit goes through a QUndoCommand
 // (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
-#include "scene/model/auxiliary_plane.h"
-#include "scene/model/model.h"
-#include "scene/model/model_view.h"
-#include "scene/model/update_scheduler.h"
-#include "scene/scene_document.h"
+#include "model/auxiliary_plane.h"
+#include "model/model.h"
+#include "scene/model_view.h"
+#include "scene/update_scheduler.h"
+#include "model/document.h"
 #include "scene/stroke_feedback.h"
 #include "solvers/editing/curve_manipulation.h"
 #include "solvers/stroke/shape_recognizer.h"
@@ -48,7 +48,7 @@ struct StrokeReport {
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
 };
 
-class SketchDocument : public QObject, public scene::ModelObserver {
+class SketchDocument : public QObject, public model::ModelObserver {
     Q_OBJECT
 
 public:
@@ -56,16 +56,16 @@ public:
     ~SketchDocument() override;
 
     /// Replaces everything by `doc` (the undo history is cleared); `path` empty = untitled.
-    void load(const scene::SceneDocument& doc, const QString& path);
+    void load(const model::SceneDocument& doc, const QString& path);
     /// The model becomes `doc` (grid, entities with their ids); the undo stack and the path stay.
-    void restoreModel(const scene::SceneDocument& doc);
+    void restoreModel(const model::SceneDocument& doc);
     /// Writes the document atomically, keeping the previous version as "<path>.bak"; the undo
     /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
 
-    scene::Model& model() { return model_; }
-    const scene::Model& model() const { return model_; }
+    model::Model& model() { return model_; }
+    const model::Model& model() const { return model_; }
     scene::UpdateScheduler& scheduler() { return *scheduler_; }
     scene::ModelView& view() { return *view_; }
     QUndoStack* undoStack() { return &undo_; }
@@ -74,16 +74,16 @@ public:
     scene::StrokeFeedback& strokeFeedback() { return *feedback_; }
     SoSeparator* root() const { return root_; }
     const QString& path() const { return path_; }
-    const scene::GridSpec& grid() const { return grid_; }
+    const model::GridSpec& grid() const { return grid_; }
     const StrokeReport& lastStroke() const { return lastStroke_; }
     /// True between a press on a dragger and its release.
     bool dragging() const { return dragging_ != 0; }
 
     /// The plane strokes go onto: the selected plane, the selected curve's plane, else the plane
     /// added or used last; 0 when there is none.
-    scene::EntityId activePlane() const;
-    scene::EntityId selection() const { return selection_; }
-    void select(scene::EntityId id);
+    model::EntityId activePlane() const;
+    model::EntityId selection() const { return selection_; }
+    void select(model::EntityId id);
 
     /// What a finished stroke does: becomes a new curve, or over-sketches the curve it was drawn
     /// over (solvers/editing, local-c2 by default).
@@ -104,9 +104,9 @@ public:
     void chooseNextCandidate();
 
     /// Undoable edits.
-    void addPlane(const scene::PlaneFrame& frame);
+    void addPlane(const model::PlaneFrame& frame);
     /// Which control points of `curve` stay fixed when it is pulled.
-    void setFixedPoints(scene::EntityId curve, std::vector<int> fixed);
+    void setFixedPoints(model::EntityId curve, std::vector<int> fixed);
     /// Tells the docks the model's data changed (after the current event: an inspector edit may be
     /// what is running).
     void notifyChanged();
@@ -120,8 +120,8 @@ public:
     void setSurfaceMode(const std::string& mode);
     const std::string& surfaceMode() const { return surfaceMode_; }
     /// Adds `curve` to the picked inputs (a second pick of the last one takes it back).
-    void pickSurfaceInput(scene::EntityId curve);
-    const std::vector<scene::EntityId>& surfaceInputs() const { return surfaceInputs_; }
+    void pickSurfaceInput(model::EntityId curve);
+    const std::vector<model::EntityId>& surfaceInputs() const { return surfaceInputs_; }
     /// Builds the surface (network: the mesh) from the picked inputs (undoable); false with
     /// `surfaceMessage()` when it cannot (too few inputs, the curves do not meet, ...); the picks
     /// are cleared then. Gordon: the first call closes the first family of curves instead.
@@ -140,25 +140,25 @@ public:
     /// Where the viewer's camera is (for strokes, and for new planes facing the viewer).
     void setCamera(std::function<SoCamera*()> camera);
 
-    void entityAdded(const scene::Entity& entity) override;
-    void entityRemoved(const scene::Entity& entity) override;
-    void entityUpdated(const scene::Entity& entity) override;
+    void entityAdded(const model::Entity& entity) override;
+    void entityRemoved(const model::Entity& entity) override;
+    void entityUpdated(const model::Entity& entity) override;
 
 Q_SIGNALS:
     /// load() replaced the document (and cleared the undo stack).
     void replaced();
     /// The set of entities or their data changed (lists, inspector).
     void entitiesChanged();
-    void selectionChanged(scene::EntityId id);
+    void selectionChanged(model::EntityId id);
     void strokeFinished();
     /// The surface mode's picks or message changed (status bar).
     void surfaceStateChanged();
 
 private:
     /// The plane a stroke starting at `start` is drawn on (records strokeOnPlane_).
-    std::optional<scene::PlaneFrame> strokePlane(const manipulators::StrokeHit& start);
+    std::optional<model::PlaneFrame> strokePlane(const manipulators::StrokeHit& start);
     /// The frame of the curve `hit` landed on, if it landed on one.
-    std::optional<scene::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
+    std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
     /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
     void recognize(const solvers::stroke::FitResult& fit);
@@ -166,45 +166,45 @@ private:
     /// The last sketched curve replaced by `target` (undoable), when it differs.
     void replaceRecognizedCurve(const solvers::Curve3d& target);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
-    std::optional<scene::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
+    std::optional<model::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     void pullTo(const Eigen::Vector3d& local);
     void releaseCurve();
     /// Extrude mode's drag (the pointer pulls the picked curve out into a surface).
-    std::optional<scene::PlaneFrame> grabExtrusion(const manipulators::StrokeHit& hit);
+    std::optional<model::PlaneFrame> grabExtrusion(const manipulators::StrokeHit& hit);
     void extrudeTo(const Eigen::Vector3d& local);
     void releaseExtrusion();
     void setSurfaceMessage(const QString& message);
     /// For each boundary another surface was built through: that surface (G1 fill).
-    std::vector<scene::SurfaceRecipe::Tangent> adjacentSurfaces(const std::vector<scene::EntityId>& boundaries) const;
-    void dragStarted(scene::EntityId plane);
-    void dragFinished(scene::EntityId plane);
+    std::vector<model::SurfaceRecipe::Tangent> adjacentSurfaces(const std::vector<model::EntityId>& boundaries) const;
+    void dragStarted(model::EntityId plane);
+    void dragFinished(model::EntityId plane);
 
-    scene::Model model_;
-    scene::GridSpec grid_;
+    model::Model model_;
+    model::GridSpec grid_;
     std::unique_ptr<scene::ModelView> view_;
     std::unique_ptr<scene::UpdateScheduler> scheduler_;
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
     std::unique_ptr<scene::StrokeFeedback> feedback_;
     std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> pullSolver_;
-    scene::EntityId pulled_ = 0;
+    model::EntityId pulled_ = 0;
     std::optional<solvers::Curve3d> pullStart_;
     std::vector<Eigen::Vector3d> pullHeld_;  ///< values the curve's constraints keep during a pull
     QString pullMessage_;  ///< the solver's last remark during a pull (compromise, too few points)
-    std::map<scene::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
+    std::map<model::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     SoGroup* planeGroup_ = nullptr;
     QUndoStack undo_;
     QString path_;
-    scene::EntityId selection_ = 0;
-    scene::EntityId lastPlane_ = 0;
-    scene::EntityId dragging_ = 0;
+    model::EntityId selection_ = 0;
+    model::EntityId lastPlane_ = 0;
+    model::EntityId dragging_ = 0;
     /// The existing plane the current stroke is on; 0 = an auxiliary plane made for it.
-    scene::EntityId strokeOnPlane_ = 0;
-    scene::PlaneFrame dragStart_;
+    model::EntityId strokeOnPlane_ = 0;
+    model::PlaneFrame dragStart_;
     StrokeReport lastStroke_;
-    scene::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
+    model::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
     /// The last stroke's fit and recognition (for picking another candidate), and the candidate
     /// in use (-1: the freeform fit as made).
@@ -212,17 +212,17 @@ private:
     std::optional<solvers::stroke::Recognition> recognition_;
     int candidateInUse_ = -1;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
-    scene::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
-    scene::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
+    model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
+    model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::string surfaceMode_;
     bool fillG1_ = true;
     int gordonFirstFamily_ = -1;  ///< gordon: picks in the first family once Enter closed it
-    std::vector<scene::EntityId> surfaceInputs_;
+    std::vector<model::EntityId> surfaceInputs_;
     QString surfaceMessage_;
     /// Extrude drag: the profile, the surface shown live (in the model, not yet on the undo
     /// stack), the grabbed point and the drag plane.
-    scene::EntityId extrudeProfile_ = 0, extrusion_ = 0;
-    scene::PlaneFrame extrudeFrame_;
+    model::EntityId extrudeProfile_ = 0, extrusion_ = 0;
+    model::PlaneFrame extrudeFrame_;
 };
 
 }  // namespace sculptline::ui

@@ -5,7 +5,7 @@
 
 #include "manipulators/curve_pull.h"
 #include "manipulators/stroke_input.h"
-#include "scene/model/auxiliary_plane.h"
+#include "model/auxiliary_plane.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/editing/lift.h"
 #include "solvers/editing/oversketch.h"
@@ -29,7 +29,7 @@ constexpr double kMinCandidateFraction = 0.05;
 
 }  // namespace
 
-std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
+std::optional<model::PlaneFrame> SketchDocument::strokePlane(const manipulators::StrokeHit& start)
 {
     feedback_->clear();
     strokeOnPlane_ = 0;
@@ -38,35 +38,35 @@ std::optional<scene::PlaneFrame> SketchDocument::strokePlane(const manipulators:
         // Drawn in the view plane through the starting curve point (seed 004 lifts an image-plane
         // stroke); the depths come from the curve points at its ends.
         if (!model_.find(start.curve)) return std::nullopt;
-        return scene::PlaneFrame::fromNormal(start.point, -start.view, kMinAuxiliarySize);
+        return model::PlaneFrame::fromNormal(start.point, -start.view, kMinAuxiliarySize);
     }
     if (strokeMode_ == StrokeMode::Oversketch) {
         // Over the curve the pen went down on, in its plane; else over the active plane's curves.
-        const scene::Entity* curve = model_.find(start.curve);
-        const scene::Entity* plane = model_.find(curve && curve->plane() != 0 ? curve->plane() : activePlane());
+        const model::Entity* curve = model_.find(start.curve);
+        const model::Entity* plane = model_.find(curve && curve->plane() != 0 ? curve->plane() : activePlane());
         if (!plane) return std::nullopt;
         if (curve && curve->plane() == plane->id) oversketchTarget_ = curve->id;
         strokeOnPlane_ = plane->id;
         return plane->frame;
     }
     // Seed 000 §3.1, case 1: from a curve into the air, on the plane along its tangent there.
-    if (const std::optional<scene::CurveFrameAt> at = curveFrame(start)) {
-        if (auto plane = scene::planeAlongTangent(at->point, at->tangent, start.view, kMinAuxiliarySize)) return plane;
+    if (const std::optional<model::CurveFrameAt> at = curveFrame(start)) {
+        if (auto plane = model::planeAlongTangent(at->point, at->tangent, start.view, kMinAuxiliarySize)) return plane;
     }
-    const scene::Entity* plane = model_.find(activePlane());
+    const model::Entity* plane = model_.find(activePlane());
     if (!plane) return std::nullopt;
     strokeOnPlane_ = plane->id;
     return plane->frame;
 }
 
-std::optional<scene::CurveFrameAt> SketchDocument::curveFrame(const manipulators::StrokeHit& hit) const
+std::optional<model::CurveFrameAt> SketchDocument::curveFrame(const manipulators::StrokeHit& hit) const
 {
-    const scene::Entity* curve = model_.find(hit.curve);
-    if (!curve || curve->kind != scene::EntityKind::Curve || !curve->world) return std::nullopt;
+    const model::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != model::EntityKind::Curve || !curve->world) return std::nullopt;
     // A planar curve's binormal is its plane's normal; a straight one has none of its own.
-    const scene::Entity* plane = model_.find(curve->plane());
+    const model::Entity* plane = model_.find(curve->plane());
     const Eigen::Vector3d fallback = plane ? plane->frame.normal() : -hit.view;
-    return scene::curveFrameNear(*curve->world, hit.point, fallback);
+    return model::curveFrameNear(*curve->world, hit.point, fallback);
 }
 
 void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
@@ -84,10 +84,10 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
     lastStroke_.samples = static_cast<int>(stroke.rayOrigins.size());
     // Case 2: a stroke connecting two curves lies on the plane through both points that contains
     // the first curve's binormal.
-    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
-    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    const std::optional<model::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<model::CurveFrameAt> to = curveFrame(stroke.end);
     if (from && to && stroke.end.curve != stroke.start.curve) {
-        if (auto plane = scene::planeThroughPoints(from->point, to->point, from->binormal, stroke.start.view, kMinAuxiliarySize)) {
+        if (auto plane = model::planeThroughPoints(from->point, to->point, from->binormal, stroke.start.view, kMinAuxiliarySize)) {
             manipulators::reproject(stroke, *plane);
             strokeOnPlane_ = 0;
             // The stroke connects the two curves: its ends go exactly onto them (the picked points
@@ -102,8 +102,8 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         }
     }
     if (stroke.points.size() < 2) return;
-    std::vector<scene::Entity> added;
-    scene::EntityId plane = strokeOnPlane_;
+    std::vector<model::Entity> added;
+    model::EntityId plane = strokeOnPlane_;
     if (plane == 0) {
         // An auxiliary plane made for this stroke, centred on it and large enough to show it
         // whole. Centred, not at the curve point: its dragger would sit on the curve's end and take
@@ -115,8 +115,8 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         }
         const Eigen::Vector3d centre = 0.5 * (lo + hi);
         for (Eigen::Vector3d& p : stroke.points) p -= centre;
-        scene::Entity aux;
-        aux.kind = scene::EntityKind::Plane;
+        model::Entity aux;
+        aux.kind = model::EntityKind::Plane;
         aux.frame = stroke.frame;
         aux.frame.origin = stroke.frame.toWorld(centre);
         aux.frame.size = std::clamp(1.2 * (hi - lo).head<2>().maxCoeff(), kMinAuxiliarySize, kMaxAuxiliarySize);
@@ -131,9 +131,9 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and
         // least squares, in the plane's local frame and model units.
         const solvers::stroke::FitResult fit = solvers::stroke::fitStroke(input);
-        scene::requireCurveExtent(fit.curve);
-        scene::Entity curve;
-        curve.kind = scene::EntityKind::Curve;
+        model::requireCurveExtent(fit.curve);
+        model::Entity curve;
+        curve.kind = model::EntityKind::Curve;
         curve.inputs = {plane};
         curve.local = fit.curve;
         added.push_back(curve);
@@ -149,7 +149,7 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         recognize(fit);
         // Sampling points and corners where the stroke was drawn (indices into the raw samples),
         // in the plane's frame so that they follow the plane.
-        const scene::PlaneFrame& drawn = added.size() > 1 ? added.front().frame : stroke.frame;
+        const model::PlaneFrame& drawn = added.size() > 1 ? added.front().frame : stroke.frame;
         std::vector<Eigen::Vector3d> samples, corners;
         for (int i : fit.samples) samples.push_back(stroke.points[static_cast<size_t>(i)]);
         for (int i : fit.corners) corners.push_back(stroke.points[static_cast<size_t>(i)]);
@@ -157,7 +157,7 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
         undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         recognizedCurve_ = selection_;  // the command selects the curve it added
-        const scene::Entity* made = model_.find(selection_);
+        const model::Entity* made = model_.find(selection_);
         feedbackPlane_ = made ? made->plane() : 0;
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.
@@ -204,13 +204,13 @@ void SketchDocument::chooseRecognized(bool regularized)
 
 void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
 {
-    const scene::Entity* curve = model_.find(recognizedCurve_);
+    const model::Entity* curve = model_.find(recognizedCurve_);
     if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
     try {
         // A candidate must keep the stroke's size: the line through the ends of a stroke drawn as
         // a loop is a point, which nobody asked for and no solver can edit.
-        const double stroke = freeformFit_ ? scene::curveExtent(*freeformFit_) : 0.0;
-        scene::requireCurveExtent(target, std::max(scene::kMinCurveExtent, kMinCandidateFraction * stroke));
+        const double stroke = freeformFit_ ? model::curveExtent(*freeformFit_) : 0.0;
+        model::requireCurveExtent(target, std::max(model::kMinCurveExtent, kMinCandidateFraction * stroke));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Shape not used: %1").arg(QString::fromStdString(e.what()));
         Q_EMIT strokeFinished();
@@ -222,7 +222,7 @@ void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
 
 void SketchDocument::chooseCandidate(int index)
 {
-    const scene::Entity* curve = model_.find(recognizedCurve_);
+    const model::Entity* curve = model_.find(recognizedCurve_);
     if (!curve || !recognition_ || !lastFit_ || index < 0 || index >= static_cast<int>(recognition_->candidates.size())) return;
     const solvers::Curve3d target =
         solvers::stroke::regularizeAs(*recognition_, *lastFit_, recognition_->candidates[static_cast<size_t>(index)].kind);
@@ -243,10 +243,10 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
     lastStroke_.samples = static_cast<int>(stroke.points.size());
     // The target: the curve the stroke started on, else the plane's curve nearest to the stroke
     // (mean distance of its samples, plane-local).
-    scene::EntityId target = oversketchTarget_;
+    model::EntityId target = oversketchTarget_;
     if (target == 0) {
         double best = std::numeric_limits<double>::infinity();
-        for (scene::EntityId id : model_.dependents(strokeOnPlane_)) {
+        for (model::EntityId id : model_.dependents(strokeOnPlane_)) {
             const solvers::CurveProjector<3> projector(*model_.find(id)->local);
             double sum = 0.0;
             for (const Eigen::Vector3d& p : stroke.points) sum += projector.project(p).distance;
@@ -256,7 +256,7 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
             }
         }
     }
-    const scene::Entity* curve = model_.find(target);
+    const model::Entity* curve = model_.find(target);
     if (!curve || stroke.points.size() < 2) {
         lastStroke_.message = tr("Over-sketch: no curve on plane %1 to change").arg(strokeOnPlane_);
         Q_EMIT strokeFinished();
@@ -265,7 +265,7 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
     try {
         double maxError = 0.0;
         solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke.points, {}, nullptr, &maxError);
-        scene::requireCurveExtent(changed);
+        model::requireCurveExtent(changed);
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = changed.pointCount();
         lastStroke_.maxError = maxError;
@@ -281,8 +281,8 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
 {
     lastStroke_ = {};
     lastStroke_.samples = static_cast<int>(stroke.points.size());
-    const std::optional<scene::CurveFrameAt> from = curveFrame(stroke.start);
-    const std::optional<scene::CurveFrameAt> to = curveFrame(stroke.end);
+    const std::optional<model::CurveFrameAt> from = curveFrame(stroke.start);
+    const std::optional<model::CurveFrameAt> to = curveFrame(stroke.end);
     if (!from || !to || stroke.points.size() < 2) {
         lastStroke_.message = tr("Lift: start and end the stroke on curves");
         Q_EMIT strokeFinished();
@@ -290,7 +290,7 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
     }
     // The stroke in the view plane's frame; its ends pinned to the curve points' footprints, whose
     // heights above the view plane are the depth range of the lift.
-    const scene::PlaneFrame& frame = stroke.frame;
+    const model::PlaneFrame& frame = stroke.frame;
     std::vector<Eigen::Vector2d> flat;
     for (const Eigen::Vector3d& p : stroke.points) flat.push_back(p.head<2>());
     const Eigen::Vector3d a = frame.toLocal(from->point), b = frame.toLocal(to->point);
@@ -303,9 +303,9 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
     view.depth = frame.normal();
     try {
         const solvers::editing::LiftResult lifted = solvers::editing::liftStroke(flat, a.z(), b.z(), {}, view);
-        scene::requireCurveExtent(lifted.curve);
-        scene::Entity curve;
-        curve.kind = scene::EntityKind::Curve;
+        model::requireCurveExtent(lifted.curve);
+        model::Entity curve;
+        curve.kind = model::EntityKind::Curve;
         curve.local = lifted.curve;
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = lifted.curve.pointCount();
@@ -318,16 +318,16 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
     Q_EMIT strokeFinished();
 }
 
-std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::StrokeHit& hit)
+std::optional<model::PlaneFrame> SketchDocument::grabCurve(const manipulators::StrokeHit& hit)
 {
-    const scene::Entity* curve = model_.find(hit.curve);
-    if (!curve || curve->kind != scene::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
-    const scene::PlaneFrame& frame = model_.find(curve->plane())->frame;
+    const model::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != model::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
+    const model::PlaneFrame& frame = model_.find(curve->plane())->frame;
     const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
     if (hit.shift) {
         // Shift+press pins the curve there: a position constraint kept by every later pull.
-        scene::Entity pin;
-        pin.kind = scene::EntityKind::Constraint;
+        model::Entity pin;
+        pin.kind = model::EntityKind::Constraint;
         pin.inputs = {curve->id};
         pin.constraintType = "position";
         pin.parameter = u;
@@ -342,9 +342,9 @@ std::optional<scene::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
         grip.u = u;
         std::vector<solvers::editing::CurveConstraint<3>> constraints{grip};
         pullHeld_.clear();
-        for (scene::EntityId d : model_.dependents(curve->id)) {
-            const scene::Entity* k = model_.find(d);
-            if (!k || k->kind != scene::EntityKind::Constraint) continue;
+        for (model::EntityId d : model_.dependents(curve->id)) {
+            const model::Entity* k = model_.find(d);
+            if (!k || k->kind != model::EntityKind::Constraint) continue;
             solvers::editing::CurveConstraint<3> kept;
             kept.type = k->constraintType == "tangent" ? solvers::editing::ConstraintType::Tangent : solvers::editing::ConstraintType::Position;
             kept.u = k->parameter;
@@ -373,7 +373,7 @@ void SketchDocument::pullTo(const Eigen::Vector3d& local)
     solvers::editing::ManipulationReport report;
     solvers::Curve3d pulled = pullSolver_->solve(targets, &report);
     try {
-        scene::requireCurveExtent(pulled);
+        model::requireCurveExtent(pulled);
     } catch (const std::exception& e) {
         pullMessage_ = QString::fromStdString(e.what());  // the curve keeps its last shape
         return;
@@ -386,7 +386,7 @@ void SketchDocument::releaseCurve()
 {
     scheduler_->flush();
     view_->refineSurfaces();
-    const scene::Entity* curve = model_.find(pulled_);
+    const model::Entity* curve = model_.find(pulled_);
     if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
         undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));
     }

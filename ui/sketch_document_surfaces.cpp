@@ -1,6 +1,6 @@
 // SketchDocument's surface modes (issue 6): picking the input curves of a surface, building it as
 // one undo step, and extrusion by dragging a curve. The surface itself is a model entity with a
-// recipe (scene/model/surface_recipe.h): the model rebuilds it whenever one of its curves changes.
+// recipe (model/surface_recipe.h): the model rebuilds it whenever one of its curves changes.
 #include "ui/sketch_document.h"
 
 #include "manipulators/stroke_input.h"
@@ -32,10 +32,10 @@ void SketchDocument::setSurfaceMessage(const QString& message)
     Q_EMIT surfaceStateChanged();
 }
 
-void SketchDocument::pickSurfaceInput(scene::EntityId curve)
+void SketchDocument::pickSurfaceInput(model::EntityId curve)
 {
-    const scene::Entity* e = model_.find(curve);
-    if (surfaceMode_.empty() || !e || e->kind != scene::EntityKind::Curve) return;
+    const model::Entity* e = model_.find(curve);
+    if (surfaceMode_.empty() || !e || e->kind != model::EntityKind::Curve) return;
     if (!surfaceInputs_.empty() && surfaceInputs_.back() == curve) {
         surfaceInputs_.pop_back();  // picked twice: taken back
     } else if (std::find(surfaceInputs_.begin(), surfaceInputs_.end(), curve) != surfaceInputs_.end()) {
@@ -45,7 +45,7 @@ void SketchDocument::pickSurfaceInput(scene::EntityId curve)
         surfaceInputs_.push_back(curve);
     }
     view_->setMarked(surfaceInputs_);
-    const scene::InputCount count = scene::surfaceInputCount(surfaceMode_);
+    const model::InputCount count = model::surfaceInputCount(surfaceMode_);
     if (static_cast<int>(surfaceInputs_.size()) >= count.max && surfaceMode_ != "gordon") {
         buildSurface();
         return;
@@ -67,7 +67,7 @@ bool SketchDocument::buildSurface()
                               .arg(gordonFirstFamily_));
         return false;
     }
-    const std::vector<scene::EntityId> inputs = surfaceInputs_;
+    const std::vector<model::EntityId> inputs = surfaceInputs_;
     const int firstFamily = gordonFirstFamily_;
     surfaceInputs_.clear();
     gordonFirstFamily_ = -1;
@@ -80,22 +80,22 @@ bool SketchDocument::buildSurface()
             setSurfaceMessage(tr("No mesh: %1").arg(QString::fromStdString(error.what())));
             return false;
         }
-        const scene::Entity* made = model_.find(selection_);
+        const model::Entity* made = model_.find(selection_);
         setSurfaceMessage(tr("Mesh %1 made: %2 triangles.").arg(selection_).arg(made ? made->mesh->triangles.size() : 0));
         return true;
     }
-    scene::SurfaceRecipe recipe;
+    model::SurfaceRecipe recipe;
     recipe.mode = surfaceMode_;
     recipe.uCurves = firstFamily;
     if (surfaceMode_ == "fill" && fillG1_) recipe.tangents = adjacentSurfaces(inputs);
     try {
-        scene::Entity surface = model_.makeSurface(inputs, recipe);
+        model::Entity surface = model_.makeSurface(inputs, recipe);
         undo_.push(new AddEntitiesCommand(*this, {surface}, tr("Make %1 surface").arg(QString::fromStdString(surfaceMode_))));
     } catch (const std::exception& error) {
         setSurfaceMessage(tr("No %1 surface: %2").arg(QString::fromStdString(surfaceMode_), QString::fromStdString(error.what())));
         return false;
     }
-    const scene::Entity* made = model_.find(selection_);
+    const model::Entity* made = model_.find(selection_);
     QString text = tr("Surface %1 made").arg(selection_);
     if (made && made->maxDeviation >= 0.0) text += tr(" (within %1 of its construction)").arg(made->maxDeviation, 0, 'g', 3);
     if (made && made->maxTangentAngle >= 0.0) {
@@ -105,16 +105,16 @@ bool SketchDocument::buildSurface()
     return true;
 }
 
-std::vector<scene::SurfaceRecipe::Tangent> SketchDocument::adjacentSurfaces(const std::vector<scene::EntityId>& boundaries) const
+std::vector<model::SurfaceRecipe::Tangent> SketchDocument::adjacentSurfaces(const std::vector<model::EntityId>& boundaries) const
 {
     // A boundary that a surface was built through (a loft's section, a revolve's profile, another
     // fill's boundary) lies on that surface: the fill is made G1 to it there (the first such).
-    std::vector<scene::SurfaceRecipe::Tangent> out;
+    std::vector<model::SurfaceRecipe::Tangent> out;
     for (size_t k = 0; k < boundaries.size(); ++k) {
         for (const auto& [id, e] : model_.entities()) {
-            if (e.kind != scene::EntityKind::Surface || !e.recipe) continue;
+            if (e.kind != model::EntityKind::Surface || !e.recipe) continue;
             // Every curve input lies on its surface but a revolve's axis and a sweep's path.
-            std::vector<scene::EntityId> curves = e.curveInputs();
+            std::vector<model::EntityId> curves = e.curveInputs();
             if (e.recipe->mode == "revolve" || e.recipe->mode == "sweep") curves.resize(1);
             if (std::find(curves.begin(), curves.end(), boundaries[k]) == curves.end()) continue;
             out.push_back({static_cast<int>(k), id});
@@ -132,17 +132,17 @@ void SketchDocument::cancelSurface()
     setSurfaceMessage(QString());
 }
 
-std::optional<scene::PlaneFrame> SketchDocument::grabExtrusion(const manipulators::StrokeHit& hit)
+std::optional<model::PlaneFrame> SketchDocument::grabExtrusion(const manipulators::StrokeHit& hit)
 {
-    const scene::Entity* curve = model_.find(hit.curve);
-    if (!curve || curve->kind != scene::EntityKind::Curve) return std::nullopt;
+    const model::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != model::EntityKind::Curve) return std::nullopt;
     scheduler_->flush();
     // The drag plane contains the profile plane's normal and faces the viewer as much as it can:
     // pulling towards or away from the plane and sideways both read naturally on screen.
     const Eigen::Vector3d n = curve->plane() != 0 ? model_.find(curve->plane())->frame.normal() : Eigen::Vector3d::UnitZ();
     Eigen::Vector3d facing = -hit.view - (-hit.view).dot(n) * n;
     if (facing.norm() < 1e-6) facing = n.unitOrthogonal();  // looking along n: any plane containing it
-    extrudeFrame_ = scene::PlaneFrame::fromNormal(hit.point, facing.normalized(), 1.0, n);
+    extrudeFrame_ = model::PlaneFrame::fromNormal(hit.point, facing.normalized(), 1.0, n);
     extrudeProfile_ = curve->id;
     extrusion_ = 0;
     select(curve->id);
@@ -151,11 +151,11 @@ std::optional<scene::PlaneFrame> SketchDocument::grabExtrusion(const manipulator
 
 void SketchDocument::extrudeTo(const Eigen::Vector3d& local)
 {
-    const scene::Entity* profile = model_.find(extrudeProfile_);
+    const model::Entity* profile = model_.find(extrudeProfile_);
     if (!profile) return;
     const Eigen::Vector3d world = extrudeFrame_.rotation * local;
     if (extrusion_ == 0 && world.norm() < kMinExtrusion) return;
-    scene::SurfaceRecipe recipe;
+    model::SurfaceRecipe recipe;
     recipe.mode = "extrude";
     // Stored in the profile plane's frame so that the extrusion turns with the plane.
     recipe.direction = profile->plane() != 0 ? Eigen::Vector3d(model_.find(profile->plane())->frame.rotation.conjugate() * world) : world;
@@ -174,12 +174,12 @@ void SketchDocument::extrudeTo(const Eigen::Vector3d& local)
 void SketchDocument::releaseExtrusion()
 {
     scheduler_->flush();
-    const scene::EntityId id = extrusion_;
+    const model::EntityId id = extrusion_;
     extrusion_ = 0;
     extrudeProfile_ = 0;
-    const scene::Entity* e = model_.find(id);
+    const model::Entity* e = model_.find(id);
     if (!e) return;
-    std::vector<scene::Entity> removed = model_.remove(id);
+    std::vector<model::Entity> removed = model_.remove(id);
     undo_.push(new AddEntitiesCommand(*this, removed, tr("Extrude curve %1").arg(removed.front().inputs.front())));
     setSurfaceMessage(tr("Surface %1 made.").arg(id));
 }

@@ -1,6 +1,6 @@
 #include "ui/undo_commands.h"
 
-#include "scene/scene_document.h"
+#include "model/document.h"
 #include "solvers/io/geometry_json.h"
 #include "ui/sketch_document.h"
 
@@ -8,24 +8,24 @@
 
 namespace sculptline::ui {
 
-scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e)
+model::EntityId restoreEntity(model::Model& model, const model::Entity& e)
 {
     switch (e.kind) {
-    case scene::EntityKind::Plane: return model.addPlane(e.frame, e.id);
-    case scene::EntityKind::Curve: {
-        const scene::EntityId id = model.addCurve(e.plane(), *e.local, e.id);
+    case model::EntityKind::Plane: return model.addPlane(e.frame, e.id);
+    case model::EntityKind::Curve: {
+        const model::EntityId id = model.addCurve(e.plane(), *e.local, e.id);
         if (!e.fixedPoints.empty()) model.setFixedPoints(id, e.fixedPoints);
         return id;
     }
-    case scene::EntityKind::Mesh: return model.addMesh(e.inputs, e.id, true);
-    case scene::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
-    case scene::EntityKind::Surface:
+    case model::EntityKind::Mesh: return model.addMesh(e.inputs, e.id, true);
+    case model::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
+    case model::EntityKind::Surface:
         return e.recipe ? model.restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : model.addSurface(*e.surface, e.id);
     }
     return 0;
 }
 
-AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<scene::Entity> entities, const QString& text)
+AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<model::Entity> entities, const QString& text)
     : doc_(doc), entities_(std::move(entities))
 {
     setText(text);
@@ -34,8 +34,8 @@ AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<scene::E
 void AddEntitiesCommand::redo()
 {
     for (size_t i = 0; i < entities_.size(); ++i) {
-        scene::Entity& e = entities_[i];
-        for (scene::EntityId& input : e.inputs) {
+        model::Entity& e = entities_[i];
+        for (model::EntityId& input : e.inputs) {
             if (input == kPreviousEntity && i > 0) input = entities_[i - 1].id;
         }
         // First run: the model assigns the id (0 asks for a fresh one); later runs reuse it.
@@ -51,10 +51,10 @@ void AddEntitiesCommand::undo()
     doc_.select(0);
 }
 
-DeleteEntityCommand::DeleteEntityCommand(SketchDocument& doc, scene::EntityId id) : doc_(doc), id_(id)
+DeleteEntityCommand::DeleteEntityCommand(SketchDocument& doc, model::EntityId id) : doc_(doc), id_(id)
 {
-    const scene::Entity* e = doc.model().find(id);
-    setText(QStringLiteral("Delete %1 %2").arg(e ? scene::kindName(e->kind) : "entity").arg(id));
+    const model::Entity* e = doc.model().find(id);
+    setText(QStringLiteral("Delete %1 %2").arg(e ? model::kindName(e->kind) : "entity").arg(id));
 }
 
 void DeleteEntityCommand::redo()
@@ -65,13 +65,13 @@ void DeleteEntityCommand::redo()
 
 void DeleteEntityCommand::undo()
 {
-    for (const scene::Entity& e : removed_) restoreEntity(doc_.model(), e);
+    for (const model::Entity& e : removed_) restoreEntity(doc_.model(), e);
     doc_.scheduler().flush();
     doc_.select(id_);
 }
 
-MovePlaneCommand::MovePlaneCommand(SketchDocument& doc, scene::EntityId plane, const scene::PlaneFrame& before,
-                                   const scene::PlaneFrame& after)
+MovePlaneCommand::MovePlaneCommand(SketchDocument& doc, model::EntityId plane, const model::PlaneFrame& before,
+                                   const model::PlaneFrame& after)
     : doc_(doc), plane_(plane), before_(before), after_(after)
 {
     setText(QStringLiteral("Move plane %1").arg(plane));
@@ -88,7 +88,7 @@ void MovePlaneCommand::redo()
 
 void MovePlaneCommand::undo() { apply(before_); }
 
-void MovePlaneCommand::apply(const scene::PlaneFrame& frame)
+void MovePlaneCommand::apply(const model::PlaneFrame& frame)
 {
     doc_.model().setPlaneFrame(plane_, frame);
     doc_.scheduler().flush();
@@ -98,7 +98,7 @@ void MovePlaneCommand::apply(const scene::PlaneFrame& frame)
 
 namespace sculptline::ui {
 
-ReplaceCurveCommand::ReplaceCurveCommand(SketchDocument& doc, scene::EntityId curve, solvers::Curve3d before, solvers::Curve3d after)
+ReplaceCurveCommand::ReplaceCurveCommand(SketchDocument& doc, model::EntityId curve, solvers::Curve3d before, solvers::Curve3d after)
     : doc_(doc), curve_(curve), before_(std::move(before)), after_(std::move(after))
 {
     setText(QStringLiteral("Over-sketch curve %1").arg(curve));
@@ -122,7 +122,7 @@ void ReplaceCurveCommand::undo()
 
 namespace sculptline::ui {
 
-SetFixedPointsCommand::SetFixedPointsCommand(SketchDocument& doc, scene::EntityId curve, std::vector<int> before, std::vector<int> after)
+SetFixedPointsCommand::SetFixedPointsCommand(SketchDocument& doc, model::EntityId curve, std::vector<int> before, std::vector<int> after)
     : doc_(doc), curve_(curve), before_(std::move(before)), after_(std::move(after))
 {
     setText(QStringLiteral("Fix control points of curve %1").arg(curve));
@@ -161,7 +161,7 @@ void RestoreStateCommand::apply(const std::string& state)
 {
     // The states were written by this program and read back once already (on recovery): a
     // failure here is a bug, not bad input.
-    doc_.restoreModel(scene::documentFromJson(solvers::io::parseJson(state)));
+    doc_.restoreModel(model::documentFromJson(solvers::io::parseJson(state)));
 }
 
 }  // namespace sculptline::ui

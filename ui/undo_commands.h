@@ -2,7 +2,7 @@
 // The undoable edits. Each command changes only the model (and the selection); the Coin view, the
 // manipulators and the docks follow the model as observers, so undo and redo redraw exactly what
 // the original edit did.
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include <QUndoCommand>
 
@@ -16,75 +16,75 @@ class SketchDocument;
 
 /// In an AddEntitiesCommand, an input naming the entity added just before (a curve on the
 /// auxiliary plane made for it, whose id is known only once the plane is added).
-constexpr scene::EntityId kPreviousEntity = 0xffffffffu;
+constexpr model::EntityId kPreviousEntity = 0xffffffffu;
 
 /// Adds entities (a plane; a curve from a stroke; an auxiliary plane and its curve). Redo re-adds
 /// them under their first ids, so later commands that name them stay valid.
 class AddEntitiesCommand : public QUndoCommand {
 public:
-    AddEntitiesCommand(SketchDocument& doc, std::vector<scene::Entity> entities, const QString& text);
+    AddEntitiesCommand(SketchDocument& doc, std::vector<model::Entity> entities, const QString& text);
     void redo() override;
     void undo() override;
 
 private:
     SketchDocument& doc_;
-    std::vector<scene::Entity> entities_;  ///< in creation (dependency) order, ids assigned
+    std::vector<model::Entity> entities_;  ///< in creation (dependency) order, ids assigned
 };
 
 /// Removes an entity and its dependents (a plane takes its curves along); undo restores them.
 class DeleteEntityCommand : public QUndoCommand {
 public:
-    DeleteEntityCommand(SketchDocument& doc, scene::EntityId id);
+    DeleteEntityCommand(SketchDocument& doc, model::EntityId id);
     void redo() override;
     void undo() override;
 
 private:
     SketchDocument& doc_;
-    scene::EntityId id_;
-    std::vector<scene::Entity> removed_;
+    model::EntityId id_;
+    std::vector<model::Entity> removed_;
 };
 
 /// One plane drag, from press to release. The drag has already moved the model when the command
 /// is pushed, so the first redo does nothing.
 class MovePlaneCommand : public QUndoCommand {
 public:
-    MovePlaneCommand(SketchDocument& doc, scene::EntityId plane, const scene::PlaneFrame& before,
-                     const scene::PlaneFrame& after);
+    MovePlaneCommand(SketchDocument& doc, model::EntityId plane, const model::PlaneFrame& before,
+                     const model::PlaneFrame& after);
     void redo() override;
     void undo() override;
 
 private:
-    void apply(const scene::PlaneFrame& frame);
+    void apply(const model::PlaneFrame& frame);
 
     SketchDocument& doc_;
-    scene::EntityId plane_;
-    scene::PlaneFrame before_, after_;
+    model::EntityId plane_;
+    model::PlaneFrame before_, after_;
     bool applied_ = true;
 };
 
 /// A curve's new shape (an over-sketch); the first redo applies it.
 class ReplaceCurveCommand : public QUndoCommand {
 public:
-    ReplaceCurveCommand(SketchDocument& doc, scene::EntityId curve, solvers::Curve3d before, solvers::Curve3d after);
+    ReplaceCurveCommand(SketchDocument& doc, model::EntityId curve, solvers::Curve3d before, solvers::Curve3d after);
     void redo() override;
     void undo() override;
 
 private:
     SketchDocument& doc_;
-    scene::EntityId curve_;
+    model::EntityId curve_;
     solvers::Curve3d before_, after_;
 };
 
 /// Which control points of a curve stay fixed when it is pulled (the inspector's check boxes).
 class SetFixedPointsCommand : public QUndoCommand {
 public:
-    SetFixedPointsCommand(SketchDocument& doc, scene::EntityId curve, std::vector<int> before, std::vector<int> after);
+    SetFixedPointsCommand(SketchDocument& doc, model::EntityId curve, std::vector<int> before, std::vector<int> after);
     void redo() override;
     void undo() override;
 
 private:
     SketchDocument& doc_;
-    scene::EntityId curve_;
+    model::EntityId curve_;
     std::vector<int> before_, after_;
 };
 
@@ -107,6 +107,6 @@ private:
 };
 
 /// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.
-scene::EntityId restoreEntity(scene::Model& model, const scene::Entity& e);
+model::EntityId restoreEntity(model::Model& model, const model::Entity& e);
 
 }  // namespace sculptline::ui

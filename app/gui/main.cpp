@@ -5,7 +5,7 @@
 // scene and a dialog instead of a bad document (app/gui/start_document.h).
 #include "app/gui/gui_options.h"
 #include "app/gui/start_document.h"
-#include "scene/scene_document.h"
+#include "model/document.h"
 #include "ui/main_window.h"
 #include "ui/recovery_file.h"
 #include "ui/replay_session.h"

@@ -9,7 +9,7 @@ StartDocument openStartDocument(const GuiOptions& options, bool interactive)
 {
     StartDocument start;
     try {
-        start.document = scene::loadDocument(options.document);
+        start.document = model::loadDocument(options.document);
         if (options.documentGiven) start.path = options.document;
         return start;
     } catch (const std::exception& e) {
@@ -21,7 +21,7 @@ StartDocument openStartDocument(const GuiOptions& options, bool interactive)
         start.exitStatus = 2;
         return start;
     }
-    start.document = scene::freshDocument();
+    start.document = model::freshDocument();
     return start;
 }
 

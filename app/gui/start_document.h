@@ -4,21 +4,21 @@
 // person who started the program from a desktop, where stderr goes nowhere, gets a fresh sheet
 // (File > New) instead and the reason in a dialog.
 #include "app/gui/gui_options.h"
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 #include <string>
 
 namespace sculptline::app {
 
 struct StartDocument {
-    scene::SceneDocument document;
+    model::SceneDocument document;
     std::string path;  ///< empty: untitled (the fresh sheet, so that Save asks where)
     std::string error;  ///< why the requested document is not the one opened (for the dialog)
     int exitStatus = 0;  ///< 2: leave now (the message is printed)
 };
 
 /// Opens options.document; on failure prints "sculptline: <reason>" to stderr and, when
-/// `interactive` (a display, and not scripted()), falls back to scene::freshDocument().
+/// `interactive` (a display, and not scripted()), falls back to model::freshDocument().
 StartDocument openStartDocument(const GuiOptions& options, bool interactive);
 
 }  // namespace sculptline::app

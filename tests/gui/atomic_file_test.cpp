@@ -1,9 +1,9 @@
-// Atomic saves (scene/model/atomic_file.h): the new contents replace the old only as a whole, the
+// Atomic saves (model/atomic_file.h): the new contents replace the old only as a whole, the
 // previous version stays in the backup, and a write that fails leaves the old file as it was.
 // Failures are provoked for real: a file size limit (RLIMIT_FSIZE, as a full disk would) and a
 // folder the writer may not write to (as root, in a child that gave up root first).
-#include "scene/model/atomic_file.h"
-#include "scene/model/model_document.h"
+#include "model/atomic_file.h"
+#include "model/model_document.h"
 #include "solvers/io/geometry_json.h"
 
 #include <gtest/gtest.h>
@@ -72,7 +72,7 @@ std::string saveInChild(Prepare prepare, const std::string& path, const std::str
         prepare();
         std::string message;
         try {
-            writeFileAtomically(path, contents, true);
+            model::writeFileAtomically(path, contents, true);
         } catch (const std::exception& e) {
             message = e.what();
         }
@@ -96,22 +96,22 @@ TEST(AtomicFile, ASaveReplacesTheDocumentAndKeepsThePreviousOneAsBackup)
     // Given a document saved twice
     const std::string dir = freshFolder("backup");
     const std::string path = dir + "/doc.json";
-    writeFileAtomically(path, "first\n", true);
+    model::writeFileAtomically(path, "first\n", true);
     chmod(path.c_str(), 0640);
-    writeFileAtomically(path, "second\n", true);
+    model::writeFileAtomically(path, "second\n", true);
     // Then it holds the second version, the backup the first, and nothing else is left over
     EXPECT_EQ(readFile(path), "second\n");
-    EXPECT_EQ(backupPath(path), path + ".bak");
-    EXPECT_EQ(readFile(backupPath(path)), "first\n");
+    EXPECT_EQ(model::backupPath(path), path + ".bak");
+    EXPECT_EQ(readFile(model::backupPath(path)), "first\n");
     EXPECT_EQ(filesIn(dir).size(), 2u);
     // And the document kept its permissions
     struct stat info {};
     ASSERT_EQ(stat(path.c_str(), &info), 0);
     EXPECT_EQ(info.st_mode & 0777, 0640u);
     // When saved a third time, the backup moves on by one version
-    writeFileAtomically(path, "third\n", true);
+    model::writeFileAtomically(path, "third\n", true);
     EXPECT_EQ(readFile(path), "third\n");
-    EXPECT_EQ(readFile(backupPath(path)), "second\n");
+    EXPECT_EQ(readFile(model::backupPath(path)), "second\n");
 }
 
 TEST(AtomicFile, AWriteThatFailsHalfwayLeavesTheOldDocument)
@@ -163,7 +163,7 @@ TEST(AtomicFile, SavingThroughASymbolicLinkReplacesTheLinkedDocument)
     const std::string dir = freshFolder("link");
     writeFile(dir + "/real.json", "old\n");
     ASSERT_EQ(symlink((dir + "/real.json").c_str(), (dir + "/link.json").c_str()), 0);
-    writeFileAtomically(dir + "/link.json", "new\n", true);
+    model::writeFileAtomically(dir + "/link.json", "new\n", true);
     struct stat info {};
     ASSERT_EQ(lstat((dir + "/link.json").c_str(), &info), 0);
     EXPECT_TRUE(S_ISLNK(info.st_mode));
@@ -173,25 +173,25 @@ TEST(AtomicFile, SavingThroughASymbolicLinkReplacesTheLinkedDocument)
 
 TEST(AtomicFile, SavedDocumentsCarryTheFormatAndVersion)
 {
-    const nlohmann::json doc = modelToJson(Model(), GridSpec());
+    const nlohmann::json doc = model::modelToJson(model::Model(), model::GridSpec());
     EXPECT_EQ(doc.at("format"), "sculptline");
-    EXPECT_EQ(doc.at("version"), kDocumentVersion);
-    EXPECT_NO_THROW(documentFromJson(doc));
+    EXPECT_EQ(doc.at("version"), model::kDocumentVersion);
+    EXPECT_NO_THROW(model::documentFromJson(doc));
 }
 
 TEST(AtomicFile, NewerAndForeignDocumentsAreRefusedByVersion)
 {
     // A version from the future is named as such, before any field it might have changed
     try {
-        documentFromJson(nlohmann::json{{"format", "sculptline"}, {"version", 7}, {"planes", "a new kind of planes"}});
+        model::documentFromJson(nlohmann::json{{"format", "sculptline"}, {"version", 7}, {"planes", "a new kind of planes"}});
         ADD_FAILURE() << "a newer document was accepted";
     } catch (const solvers::io::InputError& e) {
         EXPECT_EQ(std::string(e.what()), "made by a newer Sculptline (version 7); this one reads up to 1");
     }
-    EXPECT_THROW(documentFromJson(nlohmann::json{{"format", "someone-else"}}), solvers::io::InputError);
-    EXPECT_THROW(documentFromJson(nlohmann::json{{"version", "one"}}), solvers::io::InputError);
+    EXPECT_THROW(model::documentFromJson(nlohmann::json{{"format", "someone-else"}}), solvers::io::InputError);
+    EXPECT_THROW(model::documentFromJson(nlohmann::json{{"version", "one"}}), solvers::io::InputError);
     // Older documents, without the fields, read as before
-    EXPECT_NO_THROW(documentFromJson(nlohmann::json{{"planes", nlohmann::json::array()}}));
+    EXPECT_NO_THROW(model::documentFromJson(nlohmann::json{{"planes", nlohmann::json::array()}}));
 }
 
 }  // namespace

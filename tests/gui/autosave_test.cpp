@@ -3,8 +3,8 @@
 // restores it can undo and redo through the steps of the session that wrote it. Also the dialogs
 // a person sees at start-up, written to $SCULPTLINE_DIALOG_SHOTS (when set) to be looked at.
 #include "manipulators/stroke_input.h"
-#include "scene/model/model_document.h"
-#include "scene/scene_document.h"
+#include "model/model_document.h"
+#include "model/document.h"
 #include "ui/autosave.h"
 #include "ui/main_window.h"
 #include "ui/recovery_file.h"
@@ -59,14 +59,14 @@ QString freshFolder(const char* name)
 std::string stateOf(SketchDocument& doc)
 {
     doc.scheduler().flush();
-    return scene::modelToJson(doc.model(), doc.grid()).dump();
+    return model::modelToJson(doc.model(), doc.grid()).dump();
 }
 
 /// A stroke on plane 1 of the default scene, as the stroke input delivers it: a half circle
 /// of radius `r` (the recognizer's arc), or a flat wave when `wave`.
 manipulators::FinishedStroke strokeOn(SketchDocument& doc, double r, bool wave)
 {
-    const scene::PlaneFrame frame = doc.model().find(1)->frame;
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
     manipulators::FinishedStroke stroke;
     stroke.frame = frame;
     for (int i = 0; i < 40; ++i) {
@@ -90,7 +90,7 @@ std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
     for (int i = 0; i < rounds; ++i) {
         doc.select(1);
         doc.addStroke(strokeOn(doc, 20.0 + i, false));
-        const scene::EntityId curve = doc.selection();
+        const model::EntityId curve = doc.selection();
         states.push_back(stateOf(doc));
         doc.setFixedPoints(curve, {0});
         states.push_back(stateOf(doc));
@@ -100,7 +100,7 @@ std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
         }
         doc.select(1);
         doc.addStroke(strokeOn(doc, 30.0 + i, false));  // a concentric arc: the loft is a flat band
-        const scene::EntityId outer = doc.selection();
+        const model::EntityId outer = doc.selection();
         states.push_back(stateOf(doc));
         doc.setSurfaceMode("loft");
         doc.pickSurfaceInput(curve);
@@ -117,7 +117,7 @@ std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
     return states;
 }
 
-scene::SceneDocument defaultScene() { return scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"); }
+model::SceneDocument defaultScene() { return model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"); }
 
 TEST(Autosave, TheRecoveryFileExistsExactlyWhileWorkIsUnsaved)
 {
@@ -181,7 +181,7 @@ TEST(Autosave, ARecoveredHistoryUndoesAndRedoesLikeTheOriginal)
     std::ofstream(path) << text;
     const RecoveryData read = readRecoveryFile(QString::fromStdString(path));
     MainWindow recovered;
-    recovered.showDocument(scene::documentFromJson(nlohmann::json::parse(*read.history.states[read.history.index])), QString());
+    recovered.showDocument(model::documentFromJson(nlohmann::json::parse(*read.history.states[read.history.index])), QString());
     recovered.history().restore(read.history);
     // Then it has the same steps, texts, position and clean mark
     SketchDocument& doc = recovered.document();
@@ -211,7 +211,7 @@ TEST(Autosave, RecordingTheHistoryCostsLittlePerEdit)
     // Measured, not asserted: the GUI thread's cost of keeping the history of a larger document
     startApplication();
     MainWindow window;
-    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/bench_20_curves_5_planes.json"), QString());
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/bench_20_curves_5_planes.json"), QString());
     QElapsedTimer clock;
     clock.start();
     constexpr int kEdits = 20;

@@ -32,7 +32,7 @@ protected:
     void SetUp() override
     {
         SoDB::init();
-        doc_ = loadDocument(kDefaultScene);
+        doc_ = model::loadDocument(kDefaultScene);
         root_ = buildSceneGraph(doc_);
         refCountAtReturn_ = root_->getRefCount();
         root_->ref();
@@ -57,7 +57,7 @@ protected:
         return bbox.getBoundingBox();
     }
 
-    SceneDocument doc_;
+    model::SceneDocument doc_;
     SoSeparator* root_ = nullptr;
     int refCountAtReturn_ = -1;
 };
@@ -166,7 +166,7 @@ TEST_F(DefaultScene, PlaneFactoryReplacesStaticPlanes)
 {
     // Given a factory (the ui passes one that wraps planes in draggers)
     int calls = 0;
-    SoSeparator* graph = buildSceneGraph(doc_, [&calls](const PlaneSpec&, size_t) -> SoNode* {
+    SoSeparator* graph = buildSceneGraph(doc_, [&calls](const model::PlaneSpec&, size_t) -> SoNode* {
         ++calls;
         return new SoSeparator;
     });

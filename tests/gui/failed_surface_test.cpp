@@ -2,10 +2,10 @@
 // failed with the reason, with no geometry when none was saved, and every other entity is intact;
 // saving writes the construction back unchanged, so opening such a document loses nothing.
 // Headless (the model and its documents, Coin nodes without a window).
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
-#include "scene/model/model_view.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "scene/model_view.h"
+#include "model/document.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -100,15 +100,15 @@ TEST_P(BrokenConstruction, TheDocumentOpensWithTheSurfaceMarkedFailedAndEverythi
 {
     // Given a document whose only surface cannot be built from its curves
     const json doc = document();
-    const SceneDocument read = documentFromJson(doc);
+    const model::SceneDocument read = model::documentFromJson(doc);
 
     // When it is opened
-    Model model;
-    ASSERT_NO_THROW(populateModel(read, model));
+    model::Model model;
+    ASSERT_NO_THROW(model::populateModel(read, model));
 
     // Then the surface is there, failed, with a reason and no geometry (or, where the request can
     // be met another way, built); the rest is intact
-    const Entity* surface = model.find(100);
+    const model::Entity* surface = model.find(100);
     ASSERT_NE(surface, nullptr);
     if (GetParam().mustFail || surface->failed()) {
         EXPECT_TRUE(surface->failed());
@@ -117,19 +117,19 @@ TEST_P(BrokenConstruction, TheDocumentOpensWithTheSurfaceMarkedFailedAndEverythi
     }
     ASSERT_NE(model.find(50), nullptr);
     ASSERT_NE(model.find(51), nullptr);
-    for (const json& c : doc["curves"]) EXPECT_NE(model.find(c["id"].get<EntityId>()), nullptr) << c["id"];
+    for (const json& c : doc["curves"]) EXPECT_NE(model.find(c["id"].get<model::EntityId>()), nullptr) << c["id"];
 }
 
 TEST_P(BrokenConstruction, SavingWritesTheConstructionBackUnchanged)
 {
     // Given the opened document
-    Model model;
-    populateModel(documentFromJson(document()), model);
+    model::Model model;
+    model::populateModel(model::documentFromJson(document()), model);
 
     // When it is saved and read again
-    const json saved = modelToJson(model, GridSpec{});
-    Model reopened;
-    populateModel(documentFromJson(saved), reopened);
+    const json saved = model::modelToJson(model, model::GridSpec{});
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(saved), reopened);
 
     // Then the construction is the one read (nothing lost), still failed
     ASSERT_EQ(saved["surfaces"].size(), 1u);
@@ -144,9 +144,9 @@ TEST_P(BrokenConstruction, SavingWritesTheConstructionBackUnchanged)
 TEST_P(BrokenConstruction, TheViewShowsNothingForItAndTheRestAsUsual)
 {
     // Given the opened document shown by a Coin view
-    Model model;
+    model::Model model;
     ModelView view(model);
-    populateModel(documentFromJson(document()), model);
+    model::populateModel(model::documentFromJson(document()), model);
 
     // Then the failed surface has a node (empty) and the plane's curve is drawn
     SoNode* node = SoNode::getByName(SbName("Surface100"));
@@ -168,8 +168,8 @@ TEST(FailedSurface, ItBuildsOnceItsCurvesAllowAndItsDependentsFollow)
          {cubicJson(1, {{0, 0, 0}, {10, 0, 0}, {20, 0, 0}, {30, 0, 0}}), cubicJson(2, {{30, 0, 0}, {30, 10, 0}, {30, 20, 0}, {30, 30, 0}}),
           cubicJson(3, {{30, 30, 0}, {20, 30, 0}, {10, 30, 0}, {0, 30, 0}}), cubicJson(4, {{0, 31, 0}, {0, 20, 0}, {0, 10, 0}, {0, 1, 0}})}},
         {"surfaces", json::array({{{"id", 10}, {"construction", {{"mode", "fill"}, {"curves", {1, 2, 3, 4}}}}}})}};
-    Model model;
-    populateModel(documentFromJson(doc), model);
+    model::Model model;
+    model::populateModel(model::documentFromJson(doc), model);
     ASSERT_TRUE(model.find(10)->failed());
 
     // When the last curve is redrawn so that the loop closes
@@ -187,12 +187,12 @@ TEST(FailedSurface, AnExtrusionFarBeyondTheSceneOpensAndWhatItSavesReopens)
     // can use it; its surface reaches far beyond the 1e6 the reader allows for curves)
     const json doc = {{"curves", {cubicJson(1, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}})}},
                       {"surfaces", json::array({{{"id", 2}, {"construction", {{"mode", "extrude"}, {"curves", {1}}, {"direction", {0, 0, 2e11}}}}}})}};
-    Model model;
-    populateModel(documentFromJson(doc), model);
+    model::Model model;
+    model::populateModel(model::documentFromJson(doc), model);
 
     // When it is saved and opened again
-    Model reopened;
-    ASSERT_NO_THROW(populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened));
+    model::Model reopened;
+    ASSERT_NO_THROW(model::populateModel(model::documentFromJson(model::modelToJson(model, model::GridSpec{})), reopened));
 
     // Then it is the same surface, in the same state
     ASSERT_NE(reopened.find(2), nullptr);

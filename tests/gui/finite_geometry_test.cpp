@@ -1,8 +1,8 @@
 // No NaN or infinity reaches Coin: the model's geometry is checked where the view turns it into
-// nodes (ModelView::drawable, hasFiniteGeometry), and a plane never takes a non-finite frame.
+// nodes (ModelView::drawable, model::hasFiniteGeometry), and a plane never takes a non-finite frame.
 // Headless (Coin nodes without a window).
-#include "scene/model/model.h"
-#include "scene/model/model_view.h"
+#include "model/model.h"
+#include "scene/model_view.h"
 
 #include <Inventor/SoDB.h>
 #include <gtest/gtest.h>
@@ -23,36 +23,36 @@ protected:
 TEST_F(FiniteGeometry, EveryKindWithANonFiniteCoordinateIsReported)
 {
     // Given one entity of each kind with a finite and a non-finite coordinate
-    Entity plane;
-    plane.kind = EntityKind::Plane;
-    Entity mesh;
-    mesh.kind = EntityKind::Mesh;
+    model::Entity plane;
+    plane.kind = model::EntityKind::Plane;
+    model::Entity mesh;
+    mesh.kind = model::EntityKind::Mesh;
     mesh.mesh = solvers::surfaces::NetworkMesh{};
     mesh.mesh->vertices = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
     mesh.mesh->normals.assign(3, Eigen::Vector3d::UnitZ());
-    Entity constraint;
-    constraint.kind = EntityKind::Constraint;
+    model::Entity constraint;
+    constraint.kind = model::EntityKind::Constraint;
 
     // Then the check tells them apart
-    EXPECT_TRUE(hasFiniteGeometry(plane));
-    EXPECT_TRUE(hasFiniteGeometry(mesh));
-    EXPECT_TRUE(hasFiniteGeometry(constraint));
+    EXPECT_TRUE(model::hasFiniteGeometry(plane));
+    EXPECT_TRUE(model::hasFiniteGeometry(mesh));
+    EXPECT_TRUE(model::hasFiniteGeometry(constraint));
     plane.frame.origin.x() = kNaN;
     mesh.mesh->normals[1].y() = kInf;
     constraint.anchor.z() = -kInf;
-    EXPECT_FALSE(hasFiniteGeometry(plane));
-    EXPECT_FALSE(hasFiniteGeometry(mesh));
-    EXPECT_FALSE(hasFiniteGeometry(constraint));
+    EXPECT_FALSE(model::hasFiniteGeometry(plane));
+    EXPECT_FALSE(model::hasFiniteGeometry(mesh));
+    EXPECT_FALSE(model::hasFiniteGeometry(constraint));
 }
 
 TEST_F(FiniteGeometry, APlaneAddedWithANaNOriginIsNotDrawnAndItsCurvesStayFinite)
 {
     // Given a view of a model
-    Model model;
+    model::Model model;
     ModelView view(model);
 
     // When a plane with a NaN origin is added
-    PlaneFrame frame;
+    model::PlaneFrame frame;
     frame.origin = Eigen::Vector3d(kNaN, 0, 0);
     model.addPlane(frame);
 
@@ -63,21 +63,21 @@ TEST_F(FiniteGeometry, APlaneAddedWithANaNOriginIsNotDrawnAndItsCurvesStayFinite
 TEST_F(FiniteGeometry, APlaneIgnoresANonFiniteFrameAndKeepsItsCurves)
 {
     // Given a plane with a curve
-    Model model;
+    model::Model model;
     ModelView view(model);
-    const EntityId plane = model.addPlane(PlaneFrame{});
-    const EntityId curve = model.addCurve(plane, solvers::Curve3d(1, {0, 0, 1, 1}, {{0, 0, 0}, {10, 0, 0}}));
-    const PlaneFrame before = model.find(plane)->frame;
+    const model::EntityId plane = model.addPlane(model::PlaneFrame{});
+    const model::EntityId curve = model.addCurve(plane, solvers::Curve3d(1, {0, 0, 1, 1}, {{0, 0, 0}, {10, 0, 0}}));
+    const model::PlaneFrame before = model.find(plane)->frame;
 
     // When a dragger hands over a frame with an infinite origin
-    PlaneFrame bad = before;
+    model::PlaneFrame bad = before;
     bad.origin.y() = kInf;
     model.setPlaneFrame(plane, bad);
     model.update();
 
     // Then nothing moved and nothing non-finite was handed to the view
     EXPECT_TRUE(model.find(plane)->frame == before);
-    EXPECT_TRUE(hasFiniteGeometry(*model.find(curve)));
+    EXPECT_TRUE(model::hasFiniteGeometry(*model.find(curve)));
     EXPECT_EQ(view.nonFiniteRejections(), 0);
 }
 
@@ -103,19 +103,19 @@ TEST(CurveExtent, ACurveOfRoundOffSizeIsRefusedWithItsSize)
 
     // Then both are refused, and the message says how small
     try {
-        requireCurveExtent(tiny);
+        model::requireCurveExtent(tiny);
         FAIL() << "a 1e-14 curve was accepted";
     } catch (const std::invalid_argument& e) {
         EXPECT_NE(std::string(e.what()).find("mm"), std::string::npos) << e.what();
     }
-    EXPECT_THROW(requireCurveExtent(point), std::invalid_argument);
+    EXPECT_THROW(model::requireCurveExtent(point), std::invalid_argument);
 }
 
 TEST(CurveExtent, ASmallButRealCurveIsAccepted)
 {
     // A tenth of a millimetre at a kilometre from the origin: well within what doubles resolve.
-    EXPECT_NO_THROW(requireCurveExtent(cubicAround(Eigen::Vector3d(1e6, -1e6, 0), 1e-4)));
-    EXPECT_NO_THROW(requireCurveExtent(cubicAround(Eigen::Vector3d::Zero(), kMinCurveExtent)));
+    EXPECT_NO_THROW(model::requireCurveExtent(cubicAround(Eigen::Vector3d(1e6, -1e6, 0), 1e-4)));
+    EXPECT_NO_THROW(model::requireCurveExtent(cubicAround(Eigen::Vector3d::Zero(), model::kMinCurveExtent)));
 }
 
 }  // namespace

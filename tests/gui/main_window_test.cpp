@@ -3,7 +3,7 @@
 // the selected curve, and modes switch the viewer between viewing and interaction. Writes the whole
 // window to $SCULPTLINE_WINDOW_SHOT (when set) so a person can look at the docks.
 #include "manipulators/stroke_input.h"
-#include "scene/scene_document.h"
+#include "model/document.h"
 #include "ui/curvature_plot.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
@@ -47,7 +47,7 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
     window.show();
     window.resize(1200, 800);
     QApplication::processEvents();
@@ -103,7 +103,7 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("profile"))) << window.statusBar()->currentMessage().toStdString();
     // Picking the default curve (id 2) twice takes it back; a plane is not a curve
     window.document().pickSurfaceInput(2);
-    EXPECT_EQ(window.document().surfaceInputs(), std::vector<scene::EntityId>{2});
+    EXPECT_EQ(window.document().surfaceInputs(), std::vector<model::EntityId>{2});
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("axis"))) << window.statusBar()->currentMessage().toStdString();
     window.document().pickSurfaceInput(2);
     EXPECT_TRUE(window.document().surfaceInputs().empty());
@@ -137,7 +137,7 @@ TEST(MainWindow, ASurfaceThatCannotBeRebuiltOpensAsFailedWithItsReason)
     MainWindow window;
 
     // When it is opened and the surface selected
-    window.showDocument(scene::documentFromJson(doc), QString());
+    window.showDocument(model::documentFromJson(doc), QString());
     window.show();
     window.resize(1200, 800);
     window.document().select(7);
@@ -159,10 +159,10 @@ TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
     SketchDocument& doc = window.document();
     // Given an arc stroke on the default plane (id 1), as the stroke input would deliver it
-    const scene::PlaneFrame frame = doc.model().find(1)->frame;
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
     manipulators::FinishedStroke stroke;
     stroke.frame = frame;
     for (int i = 0; i < 40; ++i) {
@@ -175,7 +175,7 @@ TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
     }
     doc.select(1);
     doc.addStroke(stroke);
-    const scene::EntityId curve = doc.selection();
+    const model::EntityId curve = doc.selection();
     ASSERT_NE(curve, 0u);
     const std::vector<std::pair<QString, double>> candidates = doc.lastStroke().candidates;
     ASSERT_GE(candidates.size(), 2u);
@@ -215,7 +215,7 @@ TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(scene::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
     window.show();
     QApplication::processEvents();
     // Given an edit (a new plane) that was not saved

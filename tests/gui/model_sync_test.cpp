@@ -3,9 +3,9 @@
 // their plane through one transform write, and nothing is re-tessellated.
 #include "manipulators/projection_plane_manipulator.h"
 #include "scene/eigen_coin.h"
-#include "scene/model/model.h"
-#include "scene/model/model_view.h"
-#include "scene/model/update_scheduler.h"
+#include "model/model.h"
+#include "scene/model_view.h"
+#include "scene/update_scheduler.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInteraction.h>
@@ -26,13 +26,13 @@ TEST(ModelSync, DraggerEventsAreCoalescedAndCurvesFollowTheirPlane)
 {
     SoInteraction::init();
     // Given a plane with two curves, its manipulator reporting to the model, a view and a scheduler
-    scene::Model model;
+    model::Model model;
     scene::ModelView view(model);
     scene::UpdateScheduler scheduler(model);
-    scene::PlaneFrame start = scene::PlaneFrame::fromNormal(Eigen::Vector3d(0, 95, 60), Eigen::Vector3d(0, -1, 0), 120);
-    const scene::EntityId plane = model.addPlane(start);
+    model::PlaneFrame start = model::PlaneFrame::fromNormal(Eigen::Vector3d(0, 95, 60), Eigen::Vector3d(0, -1, 0), 120);
+    const model::EntityId plane = model.addPlane(start);
     const solvers::Curve3d local(1, {0, 0, 1, 1}, {Eigen::Vector3d(-30, 0, 0), Eigen::Vector3d(30, 10, 0)});
-    const scene::EntityId c1 = model.addCurve(plane, local);
+    const model::EntityId c1 = model.addCurve(plane, local);
     model.addCurve(plane, local);
     manipulators::ProjectionPlaneManipulator manipulator(start);
     manipulator.setMovedCallback([&]() { model.setPlaneFrame(plane, manipulator.frame()); });
@@ -69,13 +69,13 @@ TEST(ModelSync, DraggerEventsAreCoalescedAndCurvesFollowTheirPlane)
 TEST(ModelSync, SetFrameMovesTheManipulatorWithoutReportingAMove)
 {
     SoInteraction::init();
-    const scene::PlaneFrame start = scene::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 100);
+    const model::PlaneFrame start = model::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 100);
     manipulators::ProjectionPlaneManipulator manipulator(start);
     int moves = 0;
     manipulator.setMovedCallback([&moves]() { ++moves; });
     manipulator.dragger()->translation.setValue(1, 2, 0);
     const int afterDrag = moves;
-    scene::PlaneFrame target = start;
+    model::PlaneFrame target = start;
     target.origin = Eigen::Vector3d(5, 6, 7);
     target.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()));
     // When the model puts it somewhere (undo)

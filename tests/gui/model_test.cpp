@@ -1,7 +1,7 @@
-// The model's incremental updates (scene/model/model.h) without a window: curves stored on their
+// The model's incremental updates (model/model.h) without a window: curves stored on their
 // plane move rigidly with it, and only the dependents of what changed are recomputed, once each.
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,34 +18,34 @@ solvers::Curve3d localCurve(double shift)
                              Eigen::Vector3d(40, shift, 0)});
 }
 
-PlaneFrame turnedFrame()
+model::PlaneFrame turnedFrame()
 {
-    PlaneFrame f;
+    model::PlaneFrame f;
     f.origin = Eigen::Vector3d(10, 20, 30);
     f.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()));
     f.size = 120;
     return f;
 }
 
-struct Counting : ModelObserver {
-    std::vector<EntityId> updated;
-    void entityAdded(const Entity&) override {}
-    void entityRemoved(const Entity&) override {}
-    void entityUpdated(const Entity& e) override { updated.push_back(e.id); }
+struct Counting : model::ModelObserver {
+    std::vector<model::EntityId> updated;
+    void entityAdded(const model::Entity&) override {}
+    void entityRemoved(const model::Entity&) override {}
+    void entityUpdated(const model::Entity& e) override { updated.push_back(e.id); }
 };
 
 TEST(Model, CurveMovesRigidlyWithItsPlane)
 {
     // Given a curve on a plane
-    Model model;
-    const EntityId plane = model.addPlane(PlaneFrame{});
-    const EntityId curve = model.addCurve(plane, localCurve(0));
+    model::Model model;
+    const model::EntityId plane = model.addPlane(model::PlaneFrame{});
+    const model::EntityId curve = model.addCurve(plane, localCurve(0));
     // When the plane moves and turns
-    const PlaneFrame moved = turnedFrame();
+    const model::PlaneFrame moved = turnedFrame();
     model.setPlaneFrame(plane, moved);
     model.update();
     // Then the world curve is the local curve carried by the new frame, point for point
-    const Entity* c = model.find(curve);
+    const model::Entity* c = model.find(curve);
     ASSERT_TRUE(c->world);
     for (double u : {0.0, 0.25, 0.5, 1.0}) {
         const Eigen::Vector3d expected = moved.toWorld(c->local->evaluate(u));
@@ -58,21 +58,21 @@ TEST(Model, CurveMovesRigidlyWithItsPlane)
 TEST(Model, OnlyDependentsAreRecomputedOncePerUpdate)
 {
     // Given two planes with 3 and 2 curves and a world curve
-    Model model;
+    model::Model model;
     Counting counter;
     model.addObserver(&counter);
-    const EntityId a = model.addPlane(PlaneFrame{});
-    const EntityId b = model.addPlane(turnedFrame());
-    std::vector<EntityId> onA, onB;
+    const model::EntityId a = model.addPlane(model::PlaneFrame{});
+    const model::EntityId b = model.addPlane(turnedFrame());
+    std::vector<model::EntityId> onA, onB;
     for (int i = 0; i < 3; ++i) onA.push_back(model.addCurve(a, localCurve(i)));
     for (int i = 0; i < 2; ++i) onB.push_back(model.addCurve(b, localCurve(i)));
-    const EntityId free = model.addCurve(0, localCurve(5));
+    const model::EntityId free = model.addCurve(0, localCurve(5));
     int dirtyCalls = 0;
     model.setDirtyCallback([&dirtyCalls]() { ++dirtyCalls; });
 
     // When plane A moves three times (a flood of dragger events) before one update
     for (int step = 1; step <= 3; ++step) {
-        PlaneFrame f;
+        model::PlaneFrame f;
         f.origin = Eigen::Vector3d(0, 0, step);
         model.setPlaneFrame(a, f);
     }
@@ -82,9 +82,9 @@ TEST(Model, OnlyDependentsAreRecomputedOncePerUpdate)
     // plane first; B, its curves and the world curve were not touched
     EXPECT_EQ(dirtyCalls, 1);
     EXPECT_EQ(recomputed, 4);
-    EXPECT_EQ(counter.updated, (std::vector<EntityId>{a, onA[0], onA[1], onA[2]}));
-    for (EntityId id : onA) EXPECT_EQ(model.find(id)->recomputations, 1);
-    for (EntityId id : onB) EXPECT_EQ(model.find(id)->recomputations, 0);
+    EXPECT_EQ(counter.updated, (std::vector<model::EntityId>{a, onA[0], onA[1], onA[2]}));
+    for (model::EntityId id : onA) EXPECT_EQ(model.find(id)->recomputations, 1);
+    for (model::EntityId id : onB) EXPECT_EQ(model.find(id)->recomputations, 0);
     EXPECT_EQ(model.find(b)->recomputations, 0);
     EXPECT_EQ(model.find(free)->recomputations, 0);
     EXPECT_EQ(model.update(), 0);  // nothing left to do
@@ -92,11 +92,11 @@ TEST(Model, OnlyDependentsAreRecomputedOncePerUpdate)
 
 TEST(Model, RemovingAPlaneRemovesItsCurvesAndUndoRestoresThemUnderTheirIds)
 {
-    Model model;
-    const EntityId plane = model.addPlane(turnedFrame());
-    const EntityId curve = model.addCurve(plane, localCurve(1));
+    model::Model model;
+    const model::EntityId plane = model.addPlane(turnedFrame());
+    const model::EntityId curve = model.addCurve(plane, localCurve(1));
     // When the plane is removed
-    const std::vector<Entity> removed = model.remove(plane);
+    const std::vector<model::Entity> removed = model.remove(plane);
     // Then its curve went with it, plane first in the returned list (the order to restore them)
     ASSERT_EQ(removed.size(), 2u);
     EXPECT_EQ(removed[0].id, plane);
@@ -112,23 +112,23 @@ TEST(Model, RemovingAPlaneRemovesItsCurvesAndUndoRestoresThemUnderTheirIds)
 TEST(ModelDocument, SaveAndReopenRestoresTheModelExactly)
 {
     // Given a model with a turned plane, a curve on it and a world curve
-    Model model;
-    const EntityId plane = model.addPlane(turnedFrame());
+    model::Model model;
+    const model::EntityId plane = model.addPlane(turnedFrame());
     model.addCurve(plane, localCurve(0.123456789));
     model.addCurve(0, solvers::Curve3d(2, {0, 0, 0, 1, 1, 1}, {Eigen::Vector3d(1, 2, 3), Eigen::Vector3d(4, 5, 6.5), Eigen::Vector3d(7, 8, 9)}));
     model.update();
     // When it is written and read back
-    const std::string text = modelToJson(model, GridSpec{}).dump();
-    Model reopened;
-    populateModel(documentFromJson(nlohmann::json::parse(text)), reopened);
+    const std::string text = model::modelToJson(model, model::GridSpec{}).dump();
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(nlohmann::json::parse(text)), reopened);
     // Then the same entities come back with the same ids, frames and control points
     ASSERT_EQ(reopened.entities().size(), model.entities().size());
     for (const auto& [id, e] : model.entities()) {
-        const Entity* r = reopened.find(id);
+        const model::Entity* r = reopened.find(id);
         ASSERT_NE(r, nullptr) << id;
         EXPECT_EQ(r->kind, e.kind);
         EXPECT_EQ(r->plane(), e.plane());
-        if (e.kind == EntityKind::Plane) {
+        if (e.kind == model::EntityKind::Plane) {
             EXPECT_LT((r->frame.origin - e.frame.origin).norm(), kTolerance);
             EXPECT_LT(r->frame.rotation.angularDistance(e.frame.rotation), 1e-9);
         } else {
@@ -144,7 +144,7 @@ TEST(ModelDocument, ACurveNamingAMissingPlaneIsRefused)
     const auto doc = nlohmann::json::parse(R"({"planes": [{"origin": [0,0,0], "normal": [0,0,1], "size": 10}],
         "curves": [{"degree": 1, "knots": [0,0,1,1], "points": [[0,0],[1,1]], "plane": 7}]})");
     try {
-        documentFromJson(doc);
+        model::documentFromJson(doc);
         FAIL() << "accepted";
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find("curves[0].plane: no plane has id 7"), std::string::npos) << e.what();

@@ -47,7 +47,7 @@ protected:
         return bbox.getBoundingBox();
     }
 
-    scene::PlaneSpec spec_;
+    model::PlaneSpec spec_;
     std::unique_ptr<ProjectionPlaneManipulator> manipulator_;
 };
 
@@ -62,7 +62,7 @@ TEST_F(ProjectionPlane, StartsWhereTheDocumentPutsIt)
     EXPECT_NEAR(box.getCenter()[2], 60.0, kTolerance);
     EXPECT_NEAR(box.getMax()[0] - box.getMin()[0], 120.0, kTolerance);
     EXPECT_NEAR(box.getMax()[1] - box.getMin()[1], 0.0, kTolerance);
-    const scene::PlaneSpec now = manipulator_->plane();
+    const model::PlaneSpec now = manipulator_->plane();
     EXPECT_LT((now.origin - spec_.origin).norm(), kTolerance);
     EXPECT_LT((now.normal - spec_.normal).norm(), kTolerance);
     EXPECT_NEAR(now.size, 120.0, kTolerance);
@@ -93,7 +93,7 @@ TEST_F(ProjectionPlane, DraggerRotationTurnsThePlane)
     manipulator_->dragger()->rotation.setValue(SbRotation(SbVec3f(1, 0, 0), static_cast<float>(M_PI / 2)));
 
     // Then the plane lies flat (normal down), still centred on its origin
-    const scene::PlaneSpec now = manipulator_->plane();
+    const model::PlaneSpec now = manipulator_->plane();
     EXPECT_LT((now.normal - Eigen::Vector3d(0, 0, -1)).norm(), kTolerance);
     EXPECT_LT((now.origin - spec_.origin).norm(), kTolerance);
     const SbBox3f box = planeBounds();
@@ -210,7 +210,7 @@ TEST_F(DraggedWithTheMouse, PressMoveReleaseMovesThePlane)
     // Then the plane followed the mouse: its centre is now 40 pixels right and up of where it was
     // (the box translator moves in the horizontal plane, seen face-on), it has not turned, its
     // geometry agrees with plane(), and listeners heard of it
-    const scene::PlaneSpec now = manipulator_->plane();
+    const model::PlaneSpec now = manipulator_->plane();
     const SbVec2s landed = pixelOf(now.origin);
     EXPECT_NEAR(landed[0] - centre[0], 40, kPixelTolerance);
     EXPECT_NEAR(landed[1] - centre[1], 40, kPixelTolerance);

@@ -2,9 +2,9 @@
 // data/sessions/*.json --save/--export-iv/--screenshot` under Xvfb first): documents, exported .iv
 // files read back with Coin, and screenshots, as a person would check them. The files are in
 // $SCULPTLINE_REPLAY_DIR.
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "model/document.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>
@@ -47,24 +47,24 @@ nlohmann::json readJson(const std::string& name)
     return nlohmann::json::parse(in, nullptr, false);
 }
 
-scene::Model readModel(const std::string& name)
+model::Model readModel(const std::string& name)
 {
-    scene::Model model;
-    scene::populateModel(scene::loadDocument(file(name)), model);
+    model::Model model;
+    model::populateModel(model::loadDocument(file(name)), model);
     return model;
 }
 
-std::vector<const scene::Entity*> curvesOn(const scene::Model& model, scene::EntityId plane)
+std::vector<const model::Entity*> curvesOn(const model::Model& model, model::EntityId plane)
 {
-    std::vector<const scene::Entity*> out;
+    std::vector<const model::Entity*> out;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Curve && e.plane() == plane) out.push_back(&e);
+        if (e.kind == model::EntityKind::Curve && e.plane() == plane) out.push_back(&e);
     }
     return out;
 }
 
 /// Pixels close to the first sketched curve's colour (id 4: pink 0.95/0.3/0.55; the default
-/// scene's curve is orange, scene/model/model_view.cpp).
+/// scene's curve is orange, scene/model_view.cpp).
 int sketchPixels(const QImage& image)
 {
     int n = 0;
@@ -80,10 +80,10 @@ int sketchPixels(const QImage& image)
 
 TEST(ReplayResults, TwoStrokesBecomeTwoCubicCurvesOnTheDefaultPlane)
 {
-    const scene::Model model = readModel("sketch.json");
+    const model::Model model = readModel("sketch.json");
     const auto onPlane = curvesOn(model, 1);
     ASSERT_EQ(onPlane.size(), 2u);
-    for (const scene::Entity* c : onPlane) {
+    for (const model::Entity* c : onPlane) {
         EXPECT_EQ(c->local->degree(), 3);
         EXPECT_GE(c->local->pointCount(), 4);
         // Drawn inside the 120 mm plane
@@ -102,10 +102,10 @@ TEST(ReplayResults, TwoStrokesBecomeTwoCubicCurvesOnTheDefaultPlane)
 
 TEST(ReplayResults, DraggingThePlaneCarriesItsCurvesRigidly)
 {
-    const scene::Model before = readModel("sketch.json");
-    const scene::Model after = readModel("drag.json");
-    const scene::PlaneFrame& f0 = before.find(1)->frame;
-    const scene::PlaneFrame& f1 = after.find(1)->frame;
+    const model::Model before = readModel("sketch.json");
+    const model::Model after = readModel("drag.json");
+    const model::PlaneFrame& f0 = before.find(1)->frame;
+    const model::PlaneFrame& f1 = after.find(1)->frame;
     // The plane moved
     EXPECT_GT((f1.origin - f0.origin).norm() + 100.0 * f1.rotation.angularDistance(f0.rotation), kMinDragMotion);
     // Its curves kept their plane-local shape and are where the new frame puts them
@@ -124,8 +124,8 @@ TEST(ReplayResults, DraggingThePlaneCarriesItsCurvesRigidly)
 TEST(ReplayResults, UndoAndRedoRestoreThePlaneAndTheCurves)
 {
     // Session: two strokes, a drag, then undo x3 (drag, stroke, stroke) and redo x1 (first stroke)
-    const scene::Model sketched = readModel("sketch.json");
-    const scene::Model model = readModel("undo.json");
+    const model::Model sketched = readModel("sketch.json");
+    const model::Model model = readModel("undo.json");
     EXPECT_LT((model.find(1)->frame.origin - Eigen::Vector3d(0, 95, 60)).norm(), 1e-9);
     EXPECT_LT(model.find(1)->frame.rotation.angularDistance(sketched.find(1)->frame.rotation), 1e-9);
     const auto curves = curvesOn(model, 1);
@@ -137,10 +137,10 @@ TEST(ReplayResults, DeletesAreUndoable)
 {
     // Session: two strokes; Delete (the second curve); select the plane by its jack; Delete (the
     // plane and the first curve); Ctrl+Z (both back)
-    const scene::Model sketched = readModel("sketch.json");
-    const scene::Model model = readModel("delete.json");
+    const model::Model sketched = readModel("sketch.json");
+    const model::Model model = readModel("delete.json");
     ASSERT_NE(model.find(1), nullptr);
-    EXPECT_EQ(model.find(1)->kind, scene::EntityKind::Plane);
+    EXPECT_EQ(model.find(1)->kind, model::EntityKind::Plane);
     const auto curves = curvesOn(model, 1);
     ASSERT_EQ(curves.size(), 1u);
     EXPECT_EQ(curves[0]->id, curvesOn(sketched, 1)[0]->id);
@@ -152,28 +152,28 @@ TEST(ReplayResults, StrokesFromCurvesGoOntoAuxiliaryPlanes)
 {
     // Session: the two strokes of sketch.json (curves 4 and 5 on plane 1), then a stroke from curve
     // 4's start into the air (case 1) and one from curve 4's start to curve 5's start (case 2)
-    const scene::Model model = readModel("auxiliary.json");
-    const scene::Entity* curve4 = model.find(4);
-    const scene::Entity* curve5 = model.find(5);
+    const model::Model model = readModel("auxiliary.json");
+    const model::Entity* curve4 = model.find(4);
+    const model::Entity* curve5 = model.find(5);
     ASSERT_TRUE(curve4 && curve5);
     const Eigen::Vector3d a = curve4->world->evaluate(curve4->world->domainStart());
     const Eigen::Vector3d b = curve5->world->evaluate(curve5->world->domainStart());
     const Eigen::Vector3d tangent = curve4->world->derivatives(curve4->world->domainStart(), 1)[1].normalized();
     const Eigen::Vector3d planeNormal = model.find(1)->frame.normal();
-    std::vector<const scene::Entity*> auxiliary;
+    std::vector<const model::Entity*> auxiliary;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Plane && id != 1) auxiliary.push_back(&e);
+        if (e.kind == model::EntityKind::Plane && id != 1) auxiliary.push_back(&e);
     }
     ASSERT_EQ(auxiliary.size(), 2u);
     /// The hand starts within a few pixels of the curve's end: a millimetre or two here.
     constexpr double kOnPlane = 3.0;
     // Case 1: through the curve point, containing the tangent there, one curve on it
-    const scene::PlaneFrame& p1 = auxiliary[0]->frame;
+    const model::PlaneFrame& p1 = auxiliary[0]->frame;
     EXPECT_LT(std::abs((a - p1.origin).dot(p1.normal())), kOnPlane);
     EXPECT_LT(std::abs(tangent.dot(p1.normal())), 0.05);
     EXPECT_EQ(curvesOn(model, auxiliary[0]->id).size(), 1u);
     // Case 2: through both points, containing the first curve's binormal (its plane's normal)
-    const scene::PlaneFrame& p2 = auxiliary[1]->frame;
+    const model::PlaneFrame& p2 = auxiliary[1]->frame;
     EXPECT_LT(std::abs((a - p2.origin).dot(p2.normal())), kOnPlane);
     EXPECT_LT(std::abs((b - p2.origin).dot(p2.normal())), kOnPlane);
     EXPECT_LT(std::abs(planeNormal.dot(p2.normal())), 1e-6);
@@ -189,8 +189,8 @@ TEST(ReplayResults, OversketchRedrawsTheMiddleOfACurveAndKeepsItsEnds)
 {
     // Session: the two strokes, then in over-sketch mode a straight stroke across curve 4's middle,
     // undone and redone
-    const scene::Model sketched = readModel("sketch.json");
-    const scene::Model model = readModel("oversketch.json");
+    const model::Model sketched = readModel("sketch.json");
+    const model::Model model = readModel("oversketch.json");
     const solvers::Curve3d& before = *sketched.find(4)->local;
     const solvers::Curve3d& after = *model.find(4)->local;
     EXPECT_EQ(model.find(4)->plane(), 1u);
@@ -207,8 +207,8 @@ TEST(ReplayResults, PullingACurvePointDrawsTheCurveAfterTheHandle)
 {
     // Session: the two strokes, then in pull mode curve 4 grabbed at its trough and pulled 45
     // pixels down (about 15 mm on the plane), undone and redone
-    const scene::Model sketched = readModel("sketch.json");
-    const scene::Model model = readModel("pull.json");
+    const model::Model sketched = readModel("sketch.json");
+    const model::Model model = readModel("pull.json");
     const solvers::Curve3d& before = *sketched.find(4)->local;
     const solvers::Curve3d& after = *model.find(4)->local;
     EXPECT_EQ(model.find(4)->plane(), 1u);
@@ -228,10 +228,10 @@ TEST(ReplayResults, PullingACurvePointDrawsTheCurveAfterTheHandle)
 TEST(ReplayResults, LiftingAStrokeBetweenTwoCurvesMakesASpaceCurveJoiningThem)
 {
     // Session: the two strokes, then in lift mode a stroke from curve 4's start to curve 5's start
-    const scene::Model model = readModel("lift.json");
-    const scene::Entity* lifted = model.find(6);
+    const model::Model model = readModel("lift.json");
+    const model::Entity* lifted = model.find(6);
     ASSERT_NE(lifted, nullptr);
-    ASSERT_EQ(lifted->kind, scene::EntityKind::Curve);
+    ASSERT_EQ(lifted->kind, model::EntityKind::Curve);
     EXPECT_EQ(lifted->plane(), 0u);  // a space curve, on no plane
     const solvers::Curve3d& c4 = *model.find(4)->world;
     const solvers::Curve3d& c5 = *model.find(5)->world;
@@ -245,8 +245,8 @@ TEST(ReplayResults, LiftingAStrokeBetweenTwoCurvesMakesASpaceCurveJoiningThem)
 TEST(ReplayResults, TheRecognizedArcReplacesTheFreeformFitOnRequest)
 {
     // Session: the two strokes, then stroke.useRecognized (the arc stroke, curve 5), undo, redo
-    const scene::Model sketched = readModel("sketch.json");
-    const scene::Model model = readModel("recognize.json");
+    const model::Model sketched = readModel("sketch.json");
+    const model::Model model = readModel("recognize.json");
     const solvers::Curve3d& freeform = *sketched.find(5)->local;
     const solvers::Curve3d& arc = *model.find(5)->local;
     // The recognizer's exact arc: a rational quadratic, on the same plane, with the stroke's ends
@@ -281,10 +281,10 @@ TEST(ReplayResults, AHundredAndTwelveEditsOfFourKindsAreAllUndone)
 
 TEST(ReplayResults, ANewPlaneFacesTheViewerAndTakesTheStroke)
 {
-    const scene::Model model = readModel("plane.json");
-    const scene::Entity* plane = model.find(4);  // after plane 1, curve 2 and surface 3
+    const model::Model model = readModel("plane.json");
+    const model::Entity* plane = model.find(4);  // after plane 1, curve 2 and surface 3
     ASSERT_NE(plane, nullptr);
-    ASSERT_EQ(plane->kind, scene::EntityKind::Plane);
+    ASSERT_EQ(plane->kind, model::EntityKind::Plane);
     // Facing the default view direction (-1, 1.6, -0.9), i.e. its normal points back at the eye
     EXPECT_GT(plane->frame.normal().dot(Eigen::Vector3d(1, -1.6, 0.9).normalized()), 0.99);
     EXPECT_EQ(curvesOn(model, 4).size(), 1u);
@@ -306,7 +306,7 @@ TEST(ReplayResults, ExportedInventorFileReadsBackInCoinWithTheDraggedCurves)
     auto* curves = static_cast<SoSeparator*>(search.getPath()->getTail());
     EXPECT_EQ(curves->getNumChildren(), 3);
     // The sketched curves are exported where the dragged plane put them (world coordinates)
-    const scene::Model model = readModel("drag.json");
+    const model::Model model = readModel("drag.json");
     const auto onPlane = curvesOn(model, 1);
     ASSERT_EQ(onPlane.size(), 2u);
     SoSearchAction coords;

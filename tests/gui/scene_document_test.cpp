@@ -1,6 +1,6 @@
-// Reading scene documents (scene/scene_document.h): the default document, and malformed ones that
+// Reading scene documents (model/document.h): the default document, and malformed ones that
 // must give an InputError naming the field, never a crash.
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 #include "solvers/io/geometry_json.h"
 
@@ -19,11 +19,11 @@ using solvers::io::InputError;
 
 const std::string kDefaultScene = std::string(SCULPTLINE_DATA_DIR) + "/default_scene.json";
 
-/// The InputError message of documentFromJson(j), or "" when it does not throw.
+/// The InputError message of model::documentFromJson(j), or "" when it does not throw.
 std::string errorOf(const json& j)
 {
     try {
-        documentFromJson(j);
+        model::documentFromJson(j);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -35,7 +35,7 @@ json validCurve() { return {{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {
 TEST(SceneDocument, DefaultSceneHasAPlaneACurveAndASurface)
 {
     // Given the shipped default document / When it is read
-    const SceneDocument doc = loadDocument(kDefaultScene);
+    const model::SceneDocument doc = model::loadDocument(kDefaultScene);
     // Then it holds the sample geometry of issue 2, in millimetres on a 200 mm grid
     ASSERT_EQ(doc.planes.size(), 1u);
     ASSERT_EQ(doc.curves.size(), 1u);
@@ -49,11 +49,11 @@ TEST(SceneDocument, DefaultSceneHasAPlaneACurveAndASurface)
 
 TEST(SceneDocument, MissingMembersMeanAnEmptyScene)
 {
-    const SceneDocument doc = documentFromJson(json::object());
+    const model::SceneDocument doc = model::documentFromJson(json::object());
     EXPECT_TRUE(doc.planes.empty());
     EXPECT_TRUE(doc.curves.empty());
     EXPECT_TRUE(doc.surfaces.empty());
-    EXPECT_DOUBLE_EQ(doc.grid.spacing, GridSpec{}.spacing);
+    EXPECT_DOUBLE_EQ(doc.grid.spacing, model::GridSpec{}.spacing);
 }
 
 TEST(SceneDocument, MalformedDocumentsNameTheField)
@@ -118,13 +118,13 @@ TEST(SceneDocument, UnreadableFilesNameThePath)
 
     // Then both errors start with the path
     try {
-        loadDocument(missing);
+        model::loadDocument(missing);
         FAIL() << "no error for a missing file";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()), missing + ": cannot open file");
     }
     try {
-        loadDocument(broken);
+        model::loadDocument(broken);
         FAIL() << "no error for malformed JSON";
     } catch (const InputError& e) {
         EXPECT_EQ(std::string(e.what()).rfind(broken + ": ", 0), 0u) << e.what();

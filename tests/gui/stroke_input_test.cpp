@@ -3,7 +3,7 @@
 // active plane where the camera's geometry says.
 #include "manipulators/stroke_input.h"
 
-#include "scene/model/auxiliary_plane.h"
+#include "model/auxiliary_plane.h"
 
 #include <Inventor/SoInteraction.h>
 #include <Inventor/actions/SoHandleEventAction.h>
@@ -39,7 +39,7 @@ protected:
         root_->addChild(camera_);
         root_->addChild(input_->root());
         input_->setCamera([this]() { return camera_; });
-        input_->setActivePlane([](const StrokeHit&) { return scene::PlaneFrame{}; });
+        input_->setActivePlane([](const StrokeHit&) { return model::PlaneFrame{}; });
         input_->setFinishedCallback([this](const FinishedStroke& s) { strokes_.push_back(s); });
         input_->setEnabled(true);
     }
@@ -124,7 +124,7 @@ TEST_F(StrokeInputTest, AStrokeThatLeavesThePlaneKeepsOneTimePerPoint)
     root_->replaceChild(camera_, perspective);
     input_->setCamera([perspective]() { return perspective; });
     input_->setActivePlane([](const StrokeHit&) {
-        return scene::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 100.0, Eigen::Vector3d::UnitY());
+        return model::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), 100.0, Eigen::Vector3d::UnitY());
     });
 
     // When a stroke runs from the left of the view to the right
@@ -150,24 +150,24 @@ TEST_F(StrokeInputTest, DisabledInputDrawsNothing)
 TEST(AuxiliaryPlane, AlongATangentItContainsTheTangentAndFacesTheEye)
 {
     const Eigen::Vector3d point(1, 2, 3), tangent(1, 0, 0), view(0.3, 0.2, -1);
-    const auto plane = scene::planeAlongTangent(point, tangent, view, 50);
+    const auto plane = model::planeAlongTangent(point, tangent, view, 50);
     ASSERT_TRUE(plane);
     EXPECT_LT((plane->origin - point).norm(), 1e-12);
     EXPECT_LT(std::abs(plane->normal().dot(tangent)), 1e-12);
     EXPECT_GT(plane->normal().dot(-view.normalized()), 0.9);  // as much facing as a plane holding X can
-    EXPECT_FALSE(scene::planeAlongTangent(point, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1), 50));  // edge-on
+    EXPECT_FALSE(model::planeAlongTangent(point, Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1), 50));  // edge-on
 }
 
 TEST(AuxiliaryPlane, ThroughTwoPointsItContainsTheBinormal)
 {
     const Eigen::Vector3d a(0, 0, 0), b(10, 0, 5), binormal(0, 1, 0), view(0, 0, -1);
-    const auto plane = scene::planeThroughPoints(a, b, binormal, view, 50);
+    const auto plane = model::planeThroughPoints(a, b, binormal, view, 50);
     ASSERT_TRUE(plane);
     EXPECT_LT(std::abs((a - plane->origin).dot(plane->normal())), 1e-12);
     EXPECT_LT(std::abs((b - plane->origin).dot(plane->normal())), 1e-12);
     EXPECT_LT(std::abs(plane->normal().dot(binormal)), 1e-12);
     EXPECT_GT(plane->normal().dot(-view), 0.0);  // turned towards the eye
-    EXPECT_FALSE(scene::planeThroughPoints(a, Eigen::Vector3d(0, 3, 0), binormal, view, 50));  // chord along the binormal
+    EXPECT_FALSE(model::planeThroughPoints(a, Eigen::Vector3d(0, 3, 0), binormal, view, 50));  // chord along the binormal
 }
 
 }  // namespace

@@ -2,10 +2,10 @@
 // one of its curves changes (a plane drag, a new shape), only the affected surfaces are rebuilt,
 // once per update, a build that fails mid-drag keeps the last good surface, and documents save
 // the construction so reopening rebuilds the same surface. Headless (Coin nodes, no window).
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
-#include "scene/model/model_view.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "scene/model_view.h"
+#include "model/document.h"
 #include "solvers/bspline/projection.h"
 #include "surface_test_support.h"
 
@@ -27,27 +27,27 @@ solvers::Curve3d cubic(std::initializer_list<Eigen::Vector3d> points)
 }
 
 /// A vertical plane (local x = world X, local y = world Z) through `origin`.
-PlaneFrame verticalFrame(const Eigen::Vector3d& origin)
+model::PlaneFrame verticalFrame(const Eigen::Vector3d& origin)
 {
-    return PlaneFrame::fromNormal(origin, -Eigen::Vector3d::UnitY(), 200.0, Eigen::Vector3d::UnitX());
+    return model::PlaneFrame::fromNormal(origin, -Eigen::Vector3d::UnitY(), 200.0, Eigen::Vector3d::UnitX());
 }
 
 struct Scene {
-    Model model;
-    EntityId plane = 0, profile = 0, axis = 0, outlineA = 0, outlineB = 0, revolved = 0, rotated = 0;
+    model::Model model;
+    model::EntityId plane = 0, profile = 0, axis = 0, outlineA = 0, outlineB = 0, revolved = 0, rotated = 0;
 
     Scene()
     {
         plane = model.addPlane(verticalFrame(Eigen::Vector3d(0, 0, 50)));
         profile = model.addCurve(plane, cubic({{20, -40, 0}, {35, -10, 0}, {10, 10, 0}, {12, 40, 0}}));
         axis = model.addCurve(plane, cubic({{0, -45, 0}, {0, -15, 0}, {0, 15, 0}, {0, 45, 0}}));
-        const EntityId other = model.addPlane(verticalFrame(Eigen::Vector3d(0, 80, 50)));
+        const model::EntityId other = model.addPlane(verticalFrame(Eigen::Vector3d(0, 80, 50)));
         outlineA = model.addCurve(other, cubic({{-40, 0, 0}, {-20, 25, 0}, {20, 25, 0}, {40, 0, 0}}));
         outlineB = model.addCurve(other, cubic({{-40, -3, 0}, {-20, -25, 0}, {20, -25, 0}, {40, -3, 0}}));
-        SurfaceRecipe revolve;
+        model::SurfaceRecipe revolve;
         revolve.mode = "revolve";
         revolved = model.addSurface({profile, axis}, revolve);
-        SurfaceRecipe rotation;
+        model::SurfaceRecipe rotation;
         rotation.mode = "boundary-rotation";
         rotated = model.addSurface({outlineA, outlineB}, rotation);
     }
@@ -61,12 +61,12 @@ TEST(SurfaceEntity, ARevolvedSurfaceFollowsItsPlaneAndOnlyItIsRebuilt)
     Scene s;
     const int rotatedBuilds = s.model.find(s.rotated)->shapeVersion;
     // When plane 1 moves and turns
-    PlaneFrame moved = verticalFrame(Eigen::Vector3d(30, -20, 70));
+    model::PlaneFrame moved = verticalFrame(Eigen::Vector3d(30, -20, 70));
     moved.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ())) * moved.rotation;
     s.model.setPlaneFrame(s.plane, moved);
     s.model.update();
     // Then the revolved surface was rebuilt once and still contains its (moved) profile
-    const Entity* revolved = s.model.find(s.revolved);
+    const model::Entity* revolved = s.model.find(s.revolved);
     EXPECT_EQ(revolved->recomputations, 1);
     EXPECT_TRUE(revolved->buildError.empty());
     EXPECT_LT(curveToSurface(*s.model.find(s.profile)->world, *revolved->surface), kTolerance);
@@ -111,7 +111,7 @@ TEST(SurfaceEntity, ANewCurveShapeRebuildsItsSurfacesOnce)
     // Then the curve and its one surface were recomputed, once each, and the surface meets the
     // new outline within the deviation it reports
     EXPECT_EQ(recomputed, 2);
-    const Entity* rotated = s.model.find(s.rotated);
+    const model::Entity* rotated = s.model.find(s.rotated);
     EXPECT_EQ(rotated->recomputations, 1);
     ASSERT_GE(rotated->maxDeviation, 0.0);
     EXPECT_LT(curveToSurface(*s.model.find(s.outlineA)->world, *rotated->surface), rotated->maxDeviation + kTolerance);
@@ -127,7 +127,7 @@ TEST(SurfaceEntity, AFailedRebuildKeepsTheLastSurfaceAndSaysWhy)
     s.model.setCurveShape(s.axis, cubic({{0, 5, 0}, {0, 5, 0}, {0, 5, 0}, {0, 5, 0}}));
     s.model.update();
     // Then the surface is the last good one, with the reason
-    const Entity* revolved = s.model.find(s.revolved);
+    const model::Entity* revolved = s.model.find(s.revolved);
     EXPECT_FALSE(revolved->buildError.empty());
     EXPECT_EQ(revolved->surface->points(), before.points());
     s.model.setCurveShape(s.axis, cubic({{0, -45, 0}, {0, -15, 0}, {0, 15, 0}, {0, 45, 0}}));
@@ -139,16 +139,16 @@ TEST(SurfaceEntity, ImpossibleInputIsRefusedWithAMessageAndAddsNothing)
 {
     Scene s;
     const size_t count = s.model.entities().size();
-    SurfaceRecipe fill;
+    model::SurfaceRecipe fill;
     fill.mode = "fill";
     // Two curves whose ends are far apart do not bound a surface
     EXPECT_THROW(s.model.addSurface({s.profile, s.outlineA}, fill), std::invalid_argument);
     // A plane is not a curve, and revolve takes exactly a profile and an axis
-    SurfaceRecipe revolve;
+    model::SurfaceRecipe revolve;
     revolve.mode = "revolve";
     EXPECT_THROW(s.model.addSurface({s.profile, s.plane}, revolve), std::invalid_argument);
     EXPECT_THROW(s.model.addSurface({s.profile}, revolve), std::invalid_argument);
-    SurfaceRecipe unknown;
+    model::SurfaceRecipe unknown;
     unknown.mode = "teleport";
     EXPECT_THROW(s.model.addSurface({s.profile}, unknown), std::invalid_argument);
     EXPECT_EQ(s.model.entities().size(), count);
@@ -157,7 +157,7 @@ TEST(SurfaceEntity, ImpossibleInputIsRefusedWithAMessageAndAddsNothing)
 TEST(SurfaceEntity, RemovingACurveTakesItsSurfacesAlong)
 {
     Scene s;
-    const std::vector<Entity> removed = s.model.remove(s.axis);
+    const std::vector<model::Entity> removed = s.model.remove(s.axis);
     ASSERT_EQ(removed.size(), 2u);
     EXPECT_EQ(removed[1].id, s.revolved);
     EXPECT_EQ(s.model.find(s.revolved), nullptr);
@@ -168,18 +168,18 @@ TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
 {
     // Given the model with an extrusion too, saved
     Scene s;
-    SurfaceRecipe extrude;
+    model::SurfaceRecipe extrude;
     extrude.mode = "extrude";
     extrude.direction = Eigen::Vector3d(0, 0, 25);  // along plane 1's normal
-    const EntityId extruded = s.model.addSurface({s.profile}, extrude);
-    const nlohmann::json saved = modelToJson(s.model, GridSpec{});
+    const model::EntityId extruded = s.model.addSurface({s.profile}, extrude);
+    const nlohmann::json saved = model::modelToJson(s.model, model::GridSpec{});
     // When it is read back into a new model
-    Model reopened;
-    populateModel(documentFromJson(saved), reopened);
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(saved), reopened);
     // Then every surface has its construction and the very same control points
-    for (EntityId id : {s.revolved, s.rotated, extruded}) {
-        const Entity* a = s.model.find(id);
-        const Entity* b = reopened.find(id);
+    for (model::EntityId id : {s.revolved, s.rotated, extruded}) {
+        const model::Entity* a = s.model.find(id);
+        const model::Entity* b = reopened.find(id);
         ASSERT_NE(b, nullptr) << id;
         ASSERT_TRUE(b->recipe) << id;
         EXPECT_EQ(b->recipe->mode, a->recipe->mode);
@@ -187,7 +187,7 @@ TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
         EXPECT_EQ(b->surface->points(), a->surface->points()) << id;
     }
     // And the extrusion is along the plane's normal, 25 mm
-    const Entity* e = reopened.find(extruded);
+    const model::Entity* e = reopened.find(extruded);
     const Eigen::Vector3d normal = reopened.find(s.plane)->frame.normal();
     const solvers::Curve3d& profile = *reopened.find(s.profile)->world;
     // (S(u, v) = profile(u) + v·direction, solvers/surfaces/extrude.h)
@@ -198,18 +198,18 @@ TEST(ConstraintEntity, APinFollowsItsCurveAndIsSavedWithTheFixedPoints)
 {
     // Given a pin on the profile and two fixed control points
     Scene s;
-    const EntityId pin = s.model.addConstraint(s.profile, "position", 0.25);
+    const model::EntityId pin = s.model.addConstraint(s.profile, "position", 0.25);
     s.model.setFixedPoints(s.profile, {3, 0, 3});
     EXPECT_EQ(s.model.find(s.profile)->fixedPoints, (std::vector<int>{0, 3}));
     // When the plane moves
     s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(10, 0, 90)));
     s.model.update();
     // Then the pin's anchor is the moved curve's point at its parameter
-    const Entity* p = s.model.find(pin);
+    const model::Entity* p = s.model.find(pin);
     EXPECT_LT((p->anchor - s.model.find(s.profile)->world->evaluate(0.25)).norm(), kTolerance);
     // And a saved and reopened model has the pin and the fixed points
-    Model reopened;
-    populateModel(documentFromJson(modelToJson(s.model, GridSpec{})), reopened);
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(model::modelToJson(s.model, model::GridSpec{})), reopened);
     ASSERT_NE(reopened.find(pin), nullptr);
     EXPECT_EQ(reopened.find(pin)->constraintType, "position");
     EXPECT_EQ(reopened.find(pin)->parameter, 0.25);
@@ -227,7 +227,7 @@ TEST(ConstraintEntity, BadConstraintsAreRefused)
     EXPECT_THROW(s.model.addConstraint(s.profile, "position", std::nan("")), std::invalid_argument);
     EXPECT_THROW(s.model.setFixedPoints(s.profile, {4}), std::invalid_argument);
     const nlohmann::json doc = nlohmann::json::parse(R"({"constraints": [{"curve": 7, "type": "position", "u": 0.5}]})");
-    EXPECT_THROW(documentFromJson(doc), std::exception);
+    EXPECT_THROW(model::documentFromJson(doc), std::exception);
 }
 
 /// Largest angle (degrees) between the normals of `a` and `b` (either orientation) at 21 points of
@@ -249,22 +249,22 @@ TEST(SurfaceEntity, AFillTangentToALoftFollowsItAndIsSaved)
 {
     // Given a cylinder-like loft through two quarter arcs (x = 0 and x = 10), and three more curves
     // that close a loop with the second arc, leaving its ends in the loft's tangent planes
-    Model model;
+    model::Model model;
     const auto arc = [](double x) { return cubic({{x, 20, 0}, {x, 20, 11}, {x, 11, 20}, {x, 0, 20}}); };
-    const EntityId a = model.addCurve(0, arc(0)), b = model.addCurve(0, arc(10));
-    SurfaceRecipe loft;
+    const model::EntityId a = model.addCurve(0, arc(0)), b = model.addCurve(0, arc(10));
+    model::SurfaceRecipe loft;
     loft.mode = "loft";
-    const EntityId hull = model.addSurface({a, b}, loft);
-    const EntityId c = model.addCurve(0, cubic({{10, 20, 0}, {17, 20, 0}, {23, 20, 0}, {30, 20, 0}}));
-    const EntityId d = model.addCurve(0, cubic({{30, 20, 0}, {30, 13, 7}, {30, 7, 13}, {30, 0, 20}}));
-    const EntityId e = model.addCurve(0, cubic({{30, 0, 20}, {23, 0, 20}, {17, 0, 20}, {10, 0, 20}}));
+    const model::EntityId hull = model.addSurface({a, b}, loft);
+    const model::EntityId c = model.addCurve(0, cubic({{10, 20, 0}, {17, 20, 0}, {23, 20, 0}, {30, 20, 0}}));
+    const model::EntityId d = model.addCurve(0, cubic({{30, 20, 0}, {30, 13, 7}, {30, 7, 13}, {30, 0, 20}}));
+    const model::EntityId e = model.addCurve(0, cubic({{30, 0, 20}, {23, 0, 20}, {17, 0, 20}, {10, 0, 20}}));
     // When one fill is G1 to the loft along the arc and another is not
-    SurfaceRecipe plain;
+    model::SurfaceRecipe plain;
     plain.mode = "fill";
-    SurfaceRecipe g1 = plain;
+    model::SurfaceRecipe g1 = plain;
     g1.tangents = {{0, hull}};
-    const EntityId creased = model.addSurface({b, c, d, e}, plain);
-    const EntityId smooth = model.addSurface({b, c, d, e}, g1);
+    const model::EntityId creased = model.addSurface({b, c, d, e}, plain);
+    const model::EntityId smooth = model.addSurface({b, c, d, e}, g1);
     // Then only the G1 fill continues the loft's tangent plane (0.1 degree, coons_fill.h's default)
     const solvers::Curve3d& arcB = *model.find(b)->world;
     EXPECT_GT(normalAngleAlong(arcB, *model.find(hull)->surface, *model.find(creased)->surface), 1.0);
@@ -283,34 +283,34 @@ TEST(SurfaceEntity, AFillTangentToALoftFollowsItAndIsSaved)
     model.update();
     EXPECT_FALSE(model.find(smooth)->buildError.empty());
     // And a saved and reopened model rebuilds the same G1 fill
-    Model reopened;
-    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(model::modelToJson(model, model::GridSpec{})), reopened);
     ASSERT_NE(reopened.find(smooth), nullptr);
     ASSERT_EQ(reopened.find(smooth)->recipe->tangents.size(), 1u);
-    EXPECT_EQ(reopened.find(smooth)->curveInputs(), (std::vector<EntityId>{b, c, d, e}));
+    EXPECT_EQ(reopened.find(smooth)->curveInputs(), (std::vector<model::EntityId>{b, c, d, e}));
     EXPECT_EQ(reopened.find(smooth)->surface->points(), model.find(smooth)->surface->points());
 }
 
 TEST(MeshEntity, ANetworkLoopIsMeshedFollowsItsPlaneAndIsSaved)
 {
     // Given a closed loop of three curves on a plane (seed 004 §4's curve network)
-    Model model;
-    const EntityId plane = model.addPlane(verticalFrame(Eigen::Vector3d(0, 0, 50)));
-    const EntityId c1 = model.addCurve(plane, cubic({{-30, -20, 0}, {-10, -25, 0}, {10, -25, 0}, {30, -20, 0}}));
-    const EntityId c2 = model.addCurve(plane, cubic({{30, -20, 0}, {35, 0, 0}, {20, 20, 0}, {0, 30, 0}}));
-    const EntityId c3 = model.addCurve(plane, cubic({{0, 30, 0}, {-20, 20, 0}, {-35, 0, 0}, {-30, -20, 0}}));
+    model::Model model;
+    const model::EntityId plane = model.addPlane(verticalFrame(Eigen::Vector3d(0, 0, 50)));
+    const model::EntityId c1 = model.addCurve(plane, cubic({{-30, -20, 0}, {-10, -25, 0}, {10, -25, 0}, {30, -20, 0}}));
+    const model::EntityId c2 = model.addCurve(plane, cubic({{30, -20, 0}, {35, 0, 0}, {20, 20, 0}, {0, 30, 0}}));
+    const model::EntityId c3 = model.addCurve(plane, cubic({{0, 30, 0}, {-20, 20, 0}, {-35, 0, 0}, {-30, -20, 0}}));
     // When it is meshed
-    const EntityId mesh = model.addMesh({c1, c2, c3});
-    const Entity* m = model.find(mesh);
+    const model::EntityId mesh = model.addMesh({c1, c2, c3});
+    const model::Entity* m = model.find(mesh);
     ASSERT_TRUE(m->mesh);
     EXPECT_GT(m->mesh->triangles.size(), 10u);
     // Then its boundary vertices lie on the curves, and it moves with the plane
-    const auto onCurves = [&](const Model& md, EntityId id) {
-        const Entity* e = md.find(id);
+    const auto onCurves = [&](const model::Model& md, model::EntityId id) {
+        const model::Entity* e = md.find(id);
         double worst = 0.0;
         for (int i = 0; i < e->mesh->boundaryVertexCount; ++i) {
             double best = 1e300;
-            for (EntityId c : e->inputs) best = std::min(best, solvers::projectToCurve(*md.find(c)->world, e->mesh->vertices[i]).distance);
+            for (model::EntityId c : e->inputs) best = std::min(best, solvers::projectToCurve(*md.find(c)->world, e->mesh->vertices[i]).distance);
             worst = std::max(worst, best);
         }
         return worst;
@@ -321,8 +321,8 @@ TEST(MeshEntity, ANetworkLoopIsMeshedFollowsItsPlaneAndIsSaved)
     EXPECT_EQ(model.find(mesh)->recomputations, 1);
     EXPECT_LT(onCurves(model, mesh), kTolerance);
     // And a saved and reopened model rebuilds the same mesh
-    Model reopened;
-    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(model::modelToJson(model, model::GridSpec{})), reopened);
     ASSERT_NE(reopened.find(mesh), nullptr);
     EXPECT_EQ(reopened.find(mesh)->mesh->vertices, model.find(mesh)->mesh->vertices);
     // And curves that make no loop are refused, adding nothing
@@ -335,21 +335,21 @@ TEST(MeshEntity, ANetworkLoopIsMeshedFollowsItsPlaneAndIsSaved)
 TEST(SurfaceEntity, AGordonSurfaceInterpolatesBothFamiliesAndIsSaved)
 {
     // Given two u-curves and two v-curves that cross (a grid-like network on a saddle)
-    Model model;
-    const EntityId u0 = model.addCurve(0, cubic({{0, 0, 0}, {10, 0, 5}, {20, 0, 5}, {30, 0, 0}}));
-    const EntityId u1 = model.addCurve(0, cubic({{0, 30, 0}, {10, 30, 5}, {20, 30, 5}, {30, 30, 0}}));
-    const EntityId v0 = model.addCurve(0, cubic({{0, 0, 0}, {0, 10, -5}, {0, 20, -5}, {0, 30, 0}}));
-    const EntityId v1 = model.addCurve(0, cubic({{30, 0, 0}, {30, 10, -5}, {30, 20, -5}, {30, 30, 0}}));
-    SurfaceRecipe recipe;
+    model::Model model;
+    const model::EntityId u0 = model.addCurve(0, cubic({{0, 0, 0}, {10, 0, 5}, {20, 0, 5}, {30, 0, 0}}));
+    const model::EntityId u1 = model.addCurve(0, cubic({{0, 30, 0}, {10, 30, 5}, {20, 30, 5}, {30, 30, 0}}));
+    const model::EntityId v0 = model.addCurve(0, cubic({{0, 0, 0}, {0, 10, -5}, {0, 20, -5}, {0, 30, 0}}));
+    const model::EntityId v1 = model.addCurve(0, cubic({{30, 0, 0}, {30, 10, -5}, {30, 20, -5}, {30, 30, 0}}));
+    model::SurfaceRecipe recipe;
     recipe.mode = "gordon";
     recipe.uCurves = 2;
     // When the Gordon surface is built
-    const EntityId g = model.addSurface({u0, u1, v0, v1}, recipe);
+    const model::EntityId g = model.addSurface({u0, u1, v0, v1}, recipe);
     // Then it meets all four curves (to the reported gap), and reopens the same
-    const Entity* e = model.find(g);
-    for (EntityId c : {u0, u1, v0, v1}) EXPECT_LT(curveToSurface(*model.find(c)->world, *e->surface), e->maxDeviation + kTolerance) << c;
-    Model reopened;
-    populateModel(documentFromJson(modelToJson(model, GridSpec{})), reopened);
+    const model::Entity* e = model.find(g);
+    for (model::EntityId c : {u0, u1, v0, v1}) EXPECT_LT(curveToSurface(*model.find(c)->world, *e->surface), e->maxDeviation + kTolerance) << c;
+    model::Model reopened;
+    model::populateModel(model::documentFromJson(model::modelToJson(model, model::GridSpec{})), reopened);
     EXPECT_EQ(reopened.find(g)->recipe->uCurves, 2);
     EXPECT_EQ(reopened.find(g)->surface->points(), e->surface->points());
     // And one family of one curve is refused
@@ -361,7 +361,7 @@ TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
 {
     const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"id": 5, "construction": {"mode": "loft", "curves": [1, 2]}}]})");
     try {
-        documentFromJson(doc);
+        model::documentFromJson(doc);
         FAIL() << "accepted";
     } catch (const std::exception& e) {
         EXPECT_NE(std::string(e.what()).find("surfaces[0].construction.curves[0]"), std::string::npos) << e.what();
@@ -371,7 +371,7 @@ TEST(SurfaceDocument, AConstructionNamingAMissingCurveIsRefused)
 TEST(SurfaceDocument, AnUnknownModeIsRefused)
 {
     const nlohmann::json doc = nlohmann::json::parse(R"({"surfaces": [{"construction": {"mode": "melt", "curves": []}}]})");
-    EXPECT_THROW(documentFromJson(doc), std::exception);
+    EXPECT_THROW(model::documentFromJson(doc), std::exception);
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 // curves, the surfaces meet their defining curves, the exported .iv reads back in Coin with the same
 // geometry, and the live-update session moved the surfaces with the dragged plane. Files are in
 // $SCULPTLINE_REPLAY_DIR.
-#include "scene/model/model.h"
-#include "scene/model/model_document.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "model/document.h"
 #include "solvers/bspline/projection.h"
 #include "surface_test_support.h"
 
@@ -48,18 +48,18 @@ std::string file(const std::string& name)
     return std::string(dir ? dir : ".") + "/" + name;
 }
 
-scene::Model readModel(const std::string& name)
+model::Model readModel(const std::string& name)
 {
-    scene::Model model;
-    scene::populateModel(scene::loadDocument(file(name)), model);
+    model::Model model;
+    model::populateModel(model::loadDocument(file(name)), model);
     return model;
 }
 
-std::vector<const scene::Entity*> surfaces(const scene::Model& model)
+std::vector<const model::Entity*> surfaces(const model::Model& model)
 {
-    std::vector<const scene::Entity*> out;
+    std::vector<const model::Entity*> out;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Surface) out.push_back(&e);
+        if (e.kind == model::EntityKind::Surface) out.push_back(&e);
     }
     return out;
 }
@@ -68,7 +68,7 @@ using guitest::curveToSurface;
 
 /// Every defining curve of every surface lies on it: exactly for exact modes, within the reported
 /// deviation (plus the curve's own sampling) for approximating ones.
-void expectCurvesMet(const scene::Model& model, const scene::Entity& s)
+void expectCurvesMet(const model::Model& model, const model::Entity& s)
 {
     ASSERT_TRUE(s.recipe);
     EXPECT_TRUE(s.buildError.empty()) << s.buildError;
@@ -93,12 +93,12 @@ SoSeparator* readIv(const std::string& iv)
 }
 
 /// The exported .iv read back with Coin: each surface's vertices lie on the saved surface.
-void expectExportMatches(const std::string& iv, const scene::Model& model)
+void expectExportMatches(const std::string& iv, const model::Model& model)
 {
     SoSeparator* root = readIv(iv);
     ASSERT_NE(root, nullptr) << iv;
     const auto all = surfaces(model);
-    for (const scene::Entity* s : all) {
+    for (const model::Entity* s : all) {
         SoSearchAction search;
         search.setName(SbName(("surface" + std::to_string(s->id)).c_str()));
         search.apply(root);
@@ -132,22 +132,22 @@ int surfacePixels(const std::string& png)
     return n;
 }
 
-std::map<std::string, int> modes(const scene::Model& model)
+std::map<std::string, int> modes(const model::Model& model)
 {
     std::map<std::string, int> count;
-    for (const scene::Entity* s : surfaces(model)) ++count[s->recipe ? s->recipe->mode : "static"];
+    for (const model::Entity* s : surfaces(model)) ++count[s->recipe ? s->recipe->mode : "static"];
     return count;
 }
 
 TEST(SurfaceModels, BottleWithPlugAndHandle)
 {
-    const scene::Model model = readModel("bottle.json");
+    const model::Model model = readModel("bottle.json");
     // Two revolves (the bottle and its plug about the same drawn axis) and a swept handle
     EXPECT_EQ(modes(model), (std::map<std::string, int>{{"revolve", 2}, {"sweep", 1}}));
-    for (const scene::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
+    for (const model::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
     // Both revolves share their axis curve, and the handle's section is an exact (rational) circle
-    std::vector<scene::EntityId> axes;
-    for (const scene::Entity* s : surfaces(model)) {
+    std::vector<model::EntityId> axes;
+    for (const model::Entity* s : surfaces(model)) {
         if (s->recipe->mode == "revolve") axes.push_back(s->inputs[1]);
         if (s->recipe->mode == "sweep") {
             EXPECT_TRUE(model.find(s->inputs[0])->world->isRational());
@@ -161,7 +161,7 @@ TEST(SurfaceModels, BottleWithPlugAndHandle)
 
 TEST(SurfaceModels, BoatSkinnedThroughFiveSections)
 {
-    const scene::Model model = readModel("boat.json");
+    const model::Model model = readModel("boat.json");
     EXPECT_EQ(modes(model), (std::map<std::string, int>{{"loft", 1}}));
     const auto all = surfaces(model);
     ASSERT_EQ(all.size(), 1u);
@@ -173,16 +173,16 @@ TEST(SurfaceModels, BoatSkinnedThroughFiveSections)
 
 TEST(SurfaceModels, FishBodyAndTailByBoundaryRotation)
 {
-    const scene::Model model = readModel("fish.json");
+    const model::Model model = readModel("fish.json");
     EXPECT_EQ(modes(model), (std::map<std::string, int>{{"boundary-rotation", 2}}));
-    for (const scene::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
+    for (const model::Entity* s : surfaces(model)) expectCurvesMet(model, *s);
     expectExportMatches("fish.iv", model);
     EXPECT_GT(surfacePixels("fish.png"), kMinSurfacePixels);
 }
 
 TEST(SurfaceModels, VaseByRailRotation)
 {
-    const scene::Model model = readModel("vase.json");
+    const model::Model model = readModel("vase.json");
     EXPECT_EQ(modes(model), (std::map<std::string, int>{{"rail-rotation", 1}}));
     const auto all = surfaces(model);
     ASSERT_EQ(all.size(), 1u);
@@ -200,14 +200,14 @@ TEST(SurfaceModels, VaseByRailRotation)
 TEST(SurfaceModels, DraggingAPlaneRebuildsTheFourSurfacesOnItsCurves)
 {
     // The start document's plane 1 was dragged by its jack in the replay
-    scene::Model before;
-    scene::populateModel(scene::loadDocument(std::string(SCULPTLINE_DATA_DIR) + "/models/surfaces_drag_start.json"), before);
-    const scene::Model after = readModel("surfaces_drag.json");
+    model::Model before;
+    model::populateModel(model::loadDocument(std::string(SCULPTLINE_DATA_DIR) + "/models/surfaces_drag_start.json"), before);
+    const model::Model after = readModel("surfaces_drag.json");
     EXPECT_GT((after.find(1)->frame.origin - before.find(1)->frame.origin).norm(), 5.0);
     // Every surface was rebuilt where its curves now are
     const auto all = surfaces(after);
     ASSERT_EQ(all.size(), 4u);
-    for (const scene::Entity* s : all) {
+    for (const model::Entity* s : all) {
         expectCurvesMet(after, *s);
         EXPECT_NE(s->surface->points(), before.find(s->id)->surface->points()) << s->id;
     }
@@ -222,10 +222,10 @@ TEST(SurfaceModels, DraggingAPlaneRebuildsTheFourSurfacesOnItsCurves)
 TEST(SurfaceModels, ExtrudingByDraggingACurveIsOneUndoableStep)
 {
     // The stroke's curve was pulled 40 mm along the plane's normal (-Y), undone and redone
-    const scene::Model model = readModel("extrude.json");
+    const model::Model model = readModel("extrude.json");
     const auto all = surfaces(model);
     ASSERT_EQ(all.size(), 2u);  // the default scene's surface and the extrusion
-    const scene::Entity* e = all[1];
+    const model::Entity* e = all[1];
     ASSERT_TRUE(e->recipe);
     EXPECT_EQ(e->recipe->mode, "extrude");
     expectCurvesMet(model, *e);
@@ -243,10 +243,10 @@ TEST(SurfaceModels, APinHoldsWhileThePullMovesTheCurve)
     const auto wave = [](int i) {
         return Eigen::Vector3d(-40 + 80 * i / 39.0, 95, 50 + 10 * std::sin(2 * 3.14159265358979 * i / 39.0));
     };
-    const scene::Model model = readModel("pin_pull.json");
-    const scene::Entity* pin = nullptr;
+    const model::Model model = readModel("pin_pull.json");
+    const model::Entity* pin = nullptr;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Constraint) pin = &e;
+        if (e.kind == model::EntityKind::Constraint) pin = &e;
     }
     ASSERT_NE(pin, nullptr);
     EXPECT_EQ(pin->constraintType, "position");
@@ -262,8 +262,8 @@ TEST(SurfaceModels, ARationalCircleCanBePulledAndOversketched)
 {
     // pull_circle.json: the recognized circle (radius 30 about (0, 95, 55)) pulled 12 mm up at its
     // top, then over-sketched by a flatter stroke across its bottom
-    const scene::Model model = readModel("pull_circle.json");
-    const scene::Entity* c = model.find(4);
+    const model::Model model = readModel("pull_circle.json");
+    const model::Entity* c = model.find(4);
     ASSERT_NE(c, nullptr);
     const solvers::Curve3d& curve = *c->world;
     // Still the exact kind of curve it was: rational and closed
@@ -285,9 +285,9 @@ TEST(SurfaceModels, CurveNetworksGiveAGordonSurfaceAndAMesh)
 {
     // networks.json: two waves and two strokes crossing them made a Gordon surface (two families
     // of two), and one closed stroke a network mesh (data/sessions/make_models.py)
-    const scene::Model model = readModel("networks.json");
+    const model::Model model = readModel("networks.json");
     EXPECT_EQ(modes(model), (std::map<std::string, int>{{"gordon", 1}, {"static", 1}}));  // static: the default scene's
-    for (const scene::Entity* s : surfaces(model)) {
+    for (const model::Entity* s : surfaces(model)) {
         if (!s->recipe) continue;
         EXPECT_EQ(s->recipe->uCurves, 2);
         // The curves are trimmed to their outermost crossings (solvers/surfaces/gordon.h), so with
@@ -301,14 +301,14 @@ TEST(SurfaceModels, CurveNetworksGiveAGordonSurfaceAndAMesh)
             for (const Eigen::Vector3d& edge : {f.evaluate(u, f.domainStart(solvers::Direction::V)), f.evaluate(u, f.domainEnd(solvers::Direction::V)),
                                                 f.evaluate(f.domainStart(solvers::Direction::U), v), f.evaluate(f.domainEnd(solvers::Direction::U), v)}) {
                 double nearest = 1e300;
-                for (scene::EntityId c : s->inputs) nearest = std::min(nearest, solvers::projectToCurve(*model.find(c)->world, edge).distance);
+                for (model::EntityId c : s->inputs) nearest = std::min(nearest, solvers::projectToCurve(*model.find(c)->world, edge).distance);
                 EXPECT_LT(nearest, s->maxDeviation + kExact) << k;
             }
         }
     }
-    const scene::Entity* mesh = nullptr;
+    const model::Entity* mesh = nullptr;
     for (const auto& [id, e] : model.entities()) {
-        if (e.kind == scene::EntityKind::Mesh) mesh = &e;
+        if (e.kind == model::EntityKind::Mesh) mesh = &e;
     }
     ASSERT_NE(mesh, nullptr);
     ASSERT_EQ(mesh->inputs.size(), 1u);
@@ -331,8 +331,8 @@ TEST(SurfaceModels, CurveNetworksGiveAGordonSurfaceAndAMesh)
 TEST(SurfaceModels, SavedModelsReopenToTheSameSurfaces)
 {
     // The bottle reopened and saved again (gui_replay_bottle_reopen) has the same surfaces
-    const scene::Model a = readModel("bottle.json");
-    const scene::Model b = readModel("bottle_reopened.json");
+    const model::Model a = readModel("bottle.json");
+    const model::Model b = readModel("bottle_reopened.json");
     const auto sa = surfaces(a), sb = surfaces(b);
     ASSERT_EQ(sa.size(), sb.size());
     for (size_t i = 0; i < sa.size(); ++i) {

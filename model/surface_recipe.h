@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 struct SurfaceRecipe {
     /// A mode name of solvers/surfaces (fill, revolve, extrude, sweep, loft, boundary-rotation,
@@ -46,4 +46,4 @@ InputCount surfaceInputCount(const std::string& mode);
 /// What each input means, for status messages ("profile", "axis", "path", ...); `index` from 0.
 std::string surfaceInputRole(const std::string& mode, int index);
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -1,4 +1,4 @@
-#include "scene/model/model_view.h"
+#include "scene/model_view.h"
 
 #include "scene/eigen_coin.h"
 #include "scene/overlay_nodes.h"
@@ -36,12 +36,12 @@ const SbColor kPolygonColor(0.75f, 0.78f, 0.85f);
 constexpr float kPolygonPointSize = 5.0f;
 constexpr float kHighlightWidth = 5.0f;
 
-std::string nodeName(const char* prefix, EntityId id, const char* suffix = "")
+std::string nodeName(const char* prefix, model::EntityId id, const char* suffix = "")
 {
     return prefix + std::to_string(id) + suffix;
 }
 
-void setFrame(SoTransform* transform, const PlaneFrame& frame)
+void setFrame(SoTransform* transform, const model::PlaneFrame& frame)
 {
     transform->translation = toSb(frame.origin);
     transform->rotation = toSb(frame.rotation);
@@ -49,7 +49,7 @@ void setFrame(SoTransform* transform, const PlaneFrame& frame)
 
 }  // namespace
 
-ModelView::ModelView(Model& model, bool nurbsNodes) : model_(model), nurbsNodes_(nurbsNodes)
+ModelView::ModelView(model::Model& model, bool nurbsNodes) : model_(model), nurbsNodes_(nurbsNodes)
 {
     root_ = new SoSeparator;
     root_->ref();
@@ -76,13 +76,13 @@ ModelView::~ModelView()
     root_->unref();
 }
 
-SoSeparator* ModelView::nodeOf(EntityId id) const
+SoSeparator* ModelView::nodeOf(model::EntityId id) const
 {
     const auto it = nodes_.find(id);
     return it == nodes_.end() ? nullptr : it->second;
 }
 
-CurveStyle ModelView::curveStyle(EntityId id) const
+CurveStyle ModelView::curveStyle(model::EntityId id) const
 {
     CurveStyle style;
     // Offset so that the default scene's curve (id 2, after its plane) keeps the first colour.
@@ -98,16 +98,16 @@ CurveStyle ModelView::curveStyle(EntityId id) const
     return style;
 }
 
-SoSeparator* ModelView::planeGroup(EntityId plane) { return nodes_.at(plane); }
+SoSeparator* ModelView::planeGroup(model::EntityId plane) { return nodes_.at(plane); }
 
-bool ModelView::drawable(const Entity& e)
+bool ModelView::drawable(const model::Entity& e)
 {
-    if (hasFiniteGeometry(e)) return true;
+    if (model::hasFiniteGeometry(e)) return true;
     ++nonFiniteRejections_;
     return false;
 }
 
-SoSeparator* ModelView::makeCurveWithPolygon(const Entity& e)
+SoSeparator* ModelView::makeCurveWithPolygon(const model::Entity& e)
 {
     if (!drawable(e)) return new SoSeparator;
     SoSeparator* node = nurbsNodes_ ? makeNurbsCurveNode(*e.local, curveStyle(e.id)) : makeCurveNode(*e.local, curveStyle(e.id));
@@ -145,7 +145,7 @@ void ModelView::setControlPolygonsVisible(bool visible)
     }
 }
 
-void ModelView::addCurveNode(const Entity& e)
+void ModelView::addCurveNode(const model::Entity& e)
 {
     SoSeparator* node = makeCurveWithPolygon(e);
     ++nodeBuilds_;
@@ -157,7 +157,7 @@ void ModelView::addCurveNode(const Entity& e)
     builtShape_[e.id] = e.shapeVersion;
 }
 
-void ModelView::rebuildCurveNode(const Entity& e)
+void ModelView::rebuildCurveNode(const model::Entity& e)
 {
     SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
     SoSeparator* node = makeCurveWithPolygon(e);
@@ -168,10 +168,10 @@ void ModelView::rebuildCurveNode(const Entity& e)
     builtShape_[e.id] = e.shapeVersion;
 }
 
-void ModelView::entityAdded(const Entity& e)
+void ModelView::entityAdded(const model::Entity& e)
 {
     switch (e.kind) {
-    case EntityKind::Plane: {
+    case model::EntityKind::Plane: {
         auto* group = new SoSeparator;
         group->setName(nodeName("Plane", e.id, "Curves").c_str());
         auto* frame = new SoTransform;
@@ -182,10 +182,10 @@ void ModelView::entityAdded(const Entity& e)
         frames_[e.id] = frame;
         break;
     }
-    case EntityKind::Curve: addCurveNode(e); break;
-    case EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
-    case EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
-    case EntityKind::Constraint: {
+    case model::EntityKind::Curve: addCurveNode(e); break;
+    case model::EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
+    case model::EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
+    case model::EntityKind::Constraint: {
         // A pin at C(u), in world coordinates: it moves with the curve's updates.
         auto* node = new SoSeparator;
         node->setName(nodeName("Constraint", e.id).c_str());
@@ -200,7 +200,7 @@ void ModelView::entityAdded(const Entity& e)
     }
 }
 
-SoSeparator* ModelView::makeSurfaceEntityNode(const Entity& e, bool reuseGrid)
+SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuseGrid)
 {
     SoSeparator* node = nullptr;
     if (!e.surface || !drawable(e)) {
@@ -239,13 +239,13 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const Entity& e, bool reuseGrid)
     return node;
 }
 
-void ModelView::entityRemoved(const Entity& e)
+void ModelView::entityRemoved(const model::Entity& e)
 {
     const auto it = nodes_.find(e.id);
     if (it == nodes_.end()) return;
-    SoGroup* parent = e.kind == EntityKind::Plane        ? planeCurves_
-                      : e.kind == EntityKind::Surface || e.kind == EntityKind::Mesh ? surfaces_
-                      : e.kind == EntityKind::Constraint ? static_cast<SoGroup*>(constraints_)
+    SoGroup* parent = e.kind == model::EntityKind::Plane        ? planeCurves_
+                      : e.kind == model::EntityKind::Surface || e.kind == model::EntityKind::Mesh ? surfaces_
+                      : e.kind == model::EntityKind::Constraint ? static_cast<SoGroup*>(constraints_)
                       : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
                                                       : curves_;
     parent->removeChild(it->second);
@@ -258,28 +258,28 @@ void ModelView::entityRemoved(const Entity& e)
     marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
 
-void ModelView::entityUpdated(const Entity& e)
+void ModelView::entityUpdated(const model::Entity& e)
 {
     // A curve moved with its plane changes only its world form; its node is in plane-local
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
-    if (e.kind == EntityKind::Constraint && drawable(e)) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
-    if (e.kind == EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
-    if (e.kind == EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
+    if (e.kind == model::EntityKind::Constraint && drawable(e)) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
+    if (e.kind == model::EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
+    if (e.kind == model::EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeMeshEntityNode(e));
     }
-    if (e.kind == EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
+    if (e.kind == model::EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
         // A built surface follows its curves: re-tessellated once per update that rebuilt it.
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(e, true));
     }
-    if (e.kind != EntityKind::Plane || !drawable(e)) return;
+    if (e.kind != model::EntityKind::Plane || !drawable(e)) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
 }
 
-SoSeparator* ModelView::makeMeshEntityNode(const Entity& e)
+SoSeparator* ModelView::makeMeshEntityNode(const model::Entity& e)
 {
     SoSeparator* node = drawable(e) ? makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles) : new SoSeparator;
     ++nodeBuilds_;
@@ -294,7 +294,7 @@ int ModelView::refineSurfaces()
     int rebuilt = 0;
     for (auto& [id, grid] : grids_) {
         if (grid.adaptive) continue;
-        const Entity* e = model_.find(id);
+        const model::Entity* e = model_.find(id);
         if (!e) continue;
         SoSeparator* old = nodes_.at(id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(*e, false));
@@ -303,27 +303,27 @@ int ModelView::refineSurfaces()
     return rebuilt;
 }
 
-void ModelView::setMarked(const std::vector<EntityId>& ids)
+void ModelView::setMarked(const std::vector<model::EntityId>& ids)
 {
     if (ids == marked_) return;
-    std::vector<EntityId> changed = marked_;
+    std::vector<model::EntityId> changed = marked_;
     changed.insert(changed.end(), ids.begin(), ids.end());
     marked_ = ids;
-    for (EntityId id : changed) {
-        const Entity* e = model_.find(id);
-        if (e && e->kind == EntityKind::Curve) rebuildCurveNode(*e);
+    for (model::EntityId id : changed) {
+        const model::Entity* e = model_.find(id);
+        if (e && e->kind == model::EntityKind::Curve) rebuildCurveNode(*e);
     }
 }
 
-void ModelView::setHighlighted(EntityId id)
+void ModelView::setHighlighted(model::EntityId id)
 {
     if (id == highlighted_) return;
-    const EntityId previous = highlighted_;
+    const model::EntityId previous = highlighted_;
     highlighted_ = id;
     // Rebuilding the one or two curves involved is cheaper to read than a style node per curve.
-    for (EntityId changed : {previous, id}) {
-        const Entity* e = model_.find(changed);
-        if (!e || e->kind != EntityKind::Curve) continue;
+    for (model::EntityId changed : {previous, id}) {
+        const model::Entity* e = model_.find(changed);
+        if (!e || e->kind != model::EntityKind::Curve) continue;
         rebuildCurveNode(*e);
     }
 }

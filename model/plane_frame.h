@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 struct PlaneFrame {
     Eigen::Vector3d origin = Eigen::Vector3d::Zero();  ///< centre, model units
@@ -30,4 +30,4 @@ inline bool operator==(const PlaneFrame& a, const PlaneFrame& b)
 }
 inline bool operator!=(const PlaneFrame& a, const PlaneFrame& b) { return !(a == b); }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -1,15 +1,15 @@
 #pragma once
 // The model: projection planes, curves and surfaces with ids, each knowing what it depends on (a
 // curve on its plane). Plain C++ on the kernel's types (no Coin, no Qt), so incremental updates are
-// testable on their own; scene/model/model_view.h shows it with Coin nodes.
+// testable on their own; scene/model_view.h shows it with Coin nodes.
 //
 // Updates are explicit and lazy: an edit (a plane moved) marks the entity dirty and calls the dirty
-// callback once (the scheduler, scene/model/update_scheduler.h, turns that into one update per
+// callback once (the scheduler, scene/update_scheduler.h, turns that into one update per
 // displayed frame); update() then recomputes the dirty entities and everything downstream of them,
 // each exactly once, in dependency order. Ids grow with creation and an entity's inputs always exist
 // before it, so ascending id order is a topological order (restored entities keep their ids).
-#include "scene/model/plane_frame.h"
-#include "scene/model/surface_recipe.h"
+#include "model/plane_frame.h"
+#include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/surfaces/network_mesh.h"
 
@@ -21,7 +21,7 @@
 #include <string>
 #include <vector>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 using EntityId = std::uint32_t;  ///< 0 is "none"
 
@@ -209,4 +209,4 @@ bool hasFiniteGeometry(const Entity& entity);
 /// map of the control points maps the curve, The NURBS Book §4.4 "affine invariance").
 solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame& frame);
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -1,4 +1,4 @@
-#include "scene/model/atomic_file.h"
+#include "model/atomic_file.h"
 
 #include "solvers/io/geometry_json.h"
 
@@ -12,7 +12,7 @@
 #include <cstring>
 #include <vector>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, int error)
@@ -125,4 +125,4 @@ void writeFileAtomically(const std::string& requested, const std::string& conten
     }
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

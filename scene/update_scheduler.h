@@ -1,5 +1,5 @@
 #pragma once
-// Coalesces model edits into at most one Model::update() per displayed frame.
+// Coalesces model edits into at most one model::Model::update() per displayed frame.
 //
 // A dragger writes its fields on every mouse event, and the model is told each time (cheap: the
 // plane is only marked dirty). The first mark schedules a Coin one-shot sensor on the delay queue
@@ -7,7 +7,7 @@
 // queue runs once per frame, so the update runs once per frame and always before the frame is
 // drawn — the picture is never a frame behind the hand. The thesis used a 0.02 s timer sensor for the
 // same purpose (seed 002 §6.4); tying the update to the redraw keeps its bound without a fixed rate.
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include <Inventor/sensors/SoOneShotSensor.h>
 
@@ -21,14 +21,14 @@ constexpr uint32_t kModelUpdatePriority = 50;
 class UpdateScheduler {
 public:
     /// Installs itself as `model`'s dirty callback; the model must outlive the scheduler.
-    explicit UpdateScheduler(Model& model);
+    explicit UpdateScheduler(model::Model& model);
     ~UpdateScheduler();
     UpdateScheduler(const UpdateScheduler&) = delete;
     UpdateScheduler& operator=(const UpdateScheduler&) = delete;
 
     /// Runs a pending update now (before saving, before an undo step records a frame).
     void flush();
-    /// Model updates run so far.
+    /// model::Model updates run so far.
     int updates() const { return updates_; }
     /// Called after every update with its duration in milliseconds.
     void setUpdateListener(std::function<void(double ms)> listener) { listener_ = std::move(listener); }
@@ -37,7 +37,7 @@ private:
     static void trigger(void* self, SoSensor*);
     void run();
 
-    Model& model_;
+    model::Model& model_;
     SoOneShotSensor sensor_;
     int updates_ = 0;
     std::function<void(double)> listener_;

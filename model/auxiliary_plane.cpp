@@ -1,8 +1,8 @@
-#include "scene/model/auxiliary_plane.h"
+#include "model/auxiliary_plane.h"
 
 #include "solvers/bspline/projection.h"
 
-namespace sculptline::scene {
+namespace sculptline::model {
 namespace {
 
 /// Below this sine between two directions they count as parallel (a plane through them would be
@@ -45,4 +45,4 @@ CurveFrameAt curveFrameNear(const solvers::Curve3d& curve, const Eigen::Vector3d
     return frame;
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -2,7 +2,7 @@
 // The document a scene is built from: projection planes, a ground grid, curves and surfaces, read
 // from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
 // its error messages are testable on their own.
-#include "scene/model/surface_recipe.h"
+#include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 
 #include <Eigen/Geometry>
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 /// A square projection plane.
 struct PlaneSpec {
@@ -97,4 +97,4 @@ SceneDocument loadDocument(const std::string& path);
 /// opened): the ground grid and one vertical plane facing the default view, nothing drawn yet.
 SceneDocument freshDocument();
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

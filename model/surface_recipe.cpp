@@ -1,8 +1,8 @@
-#include "scene/model/surface_recipe.h"
+#include "model/surface_recipe.h"
 
 #include <stdexcept>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 InputCount surfaceInputCount(const std::string& mode)
 {
@@ -32,4 +32,4 @@ std::string surfaceInputRole(const std::string& mode, int index)
     return "curve " + std::to_string(index + 1);
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -3,12 +3,12 @@
 // starts on a curve and ends in the air lies on the plane through the curve point that contains the
 // curve's tangent there and faces the viewer; a stroke that connects two curves lies on the plane
 // through both points that contains the first curve's binormal. Plain geometry, no Coin.
-#include "scene/model/plane_frame.h"
+#include "model/plane_frame.h"
 #include "solvers/bspline/bspline_curve.h"
 
 #include <optional>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 /// Plane through `point` containing `tangent`, its normal the part of -view orthogonal to the
 /// tangent (as much facing the eye as a plane holding the tangent can). X axis along the tangent.
@@ -29,4 +29,4 @@ struct CurveFrameAt {
 };
 CurveFrameAt curveFrameNear(const solvers::Curve3d& curve, const Eigen::Vector3d& point, const Eigen::Vector3d& fallbackBinormal);
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

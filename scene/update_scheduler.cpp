@@ -1,10 +1,10 @@
-#include "scene/model/update_scheduler.h"
+#include "scene/update_scheduler.h"
 
 #include <chrono>
 
 namespace sculptline::scene {
 
-UpdateScheduler::UpdateScheduler(Model& model) : model_(model), sensor_(&UpdateScheduler::trigger, this)
+UpdateScheduler::UpdateScheduler(model::Model& model) : model_(model), sensor_(&UpdateScheduler::trigger, this)
 {
     sensor_.setPriority(kModelUpdatePriority);
     model_.setDirtyCallback([this]() { sensor_.schedule(); });

@@ -1,4 +1,4 @@
-#include "scene/scene_document.h"
+#include "model/document.h"
 
 #include "solvers/io/geometry_json.h"
 
@@ -11,7 +11,7 @@
 #include <set>
 #include <sstream>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 namespace io = solvers::io;
 using nlohmann::json;
 
@@ -314,4 +314,4 @@ SceneDocument freshDocument()
     return doc;
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -3,13 +3,13 @@
 // full frames (origin, normal and in-plane X axis), curves on a plane keep their plane-local control
 // points, and numbers are written with round-trip precision (nlohmann::json prints the shortest
 // decimal that reads back as the same double).
-#include "scene/model/model.h"
-#include "scene/scene_document.h"
+#include "model/model.h"
+#include "model/document.h"
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 /// The frame of a document plane (PlaneFrame::fromNormal with its xAxis).
 PlaneFrame planeFrame(const PlaneSpec& plane);
@@ -23,8 +23,8 @@ void populateModel(const SceneDocument& doc, Model& model);
 nlohmann::json modelToJson(const Model& model, const GridSpec& grid);
 
 /// Writes modelToJson to `path` atomically, the previous version kept in backupPath(path)
-/// (scene/model/atomic_file.h). @throws solvers::io::InputError("path: cannot save (reason)"); the
+/// (model/atomic_file.h). @throws solvers::io::InputError("path: cannot save (reason)"); the
 /// file at `path` is then unchanged.
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path);
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

@@ -5,7 +5,7 @@
 // file or the new one, never a mixture. Plain POSIX: the scene layer has no Qt.
 #include <string>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 /// Where writeFileAtomically keeps the previous version of `path`: `path` + ".bak".
 std::string backupPath(const std::string& path);
@@ -20,4 +20,4 @@ std::string backupPath(const std::string& path);
 ///         is then untouched and no temporary file is left behind.
 void writeFileAtomically(const std::string& path, const std::string& contents, bool keepBackup);
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

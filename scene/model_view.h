@@ -1,5 +1,5 @@
 #pragma once
-// The model drawn with Coin nodes, kept in step with it as a ModelObserver:
+// The model drawn with Coin nodes, kept in step with it as a model::ModelObserver:
 //   SoSeparator "Model" {
 //     SoGroup "Surfaces"   { SoSeparator "Surface<id>" .. }
 //     SoGroup "Curves"     { SoSeparator "Curve<id>" .. }              world-space curves
@@ -8,7 +8,7 @@
 // A curve on a plane is tessellated once, in the plane's local frame, and placed by the plane's one
 // SoTransform: a plane drag rewrites two fields, however many curves the plane carries.
 #include "scene/geometry_nodes.h"
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include <map>
 #include <vector>
@@ -20,12 +20,12 @@ class SoTransform;
 
 namespace sculptline::scene {
 
-class ModelView : public ModelObserver {
+class ModelView : public model::ModelObserver {
 public:
     /// Observes `model` (and shows what it already holds); the model must outlive this view.
     /// @param nurbsNodes draw with SoNurbsCurve / SoNurbsSurface instead of the kernel's
     ///        tessellation: only to measure the two against each other (issue 5 §4).
-    explicit ModelView(Model& model, bool nurbsNodes = false);
+    explicit ModelView(model::Model& model, bool nurbsNodes = false);
     ~ModelView() override;
     ModelView(const ModelView&) = delete;
     ModelView& operator=(const ModelView&) = delete;
@@ -33,7 +33,7 @@ public:
     /// The graph root (ref()ed by this view; add it to a scene).
     SoSeparator* root() const { return root_; }
     /// The node of an entity (a curve's or surface's separator, a plane's curve group), or null.
-    SoSeparator* nodeOf(EntityId id) const;
+    SoSeparator* nodeOf(model::EntityId id) const;
     /// Curve and surface nodes built (tessellations) since construction: a plane drag adds none.
     int nodeBuilds() const { return nodeBuilds_; }
     /// Plane transforms written since construction.
@@ -49,55 +49,55 @@ public:
     int refineSurfaces();
     /// Surface nodes built on a reused parameter grid since construction.
     int gridReuses() const { return gridReuses_; }
-    /// Entities not drawn (or not moved) because a coordinate was not finite (hasFiniteGeometry).
+    /// Entities not drawn (or not moved) because a coordinate was not finite (model::hasFiniteGeometry).
     int nonFiniteRejections() const { return nonFiniteRejections_; }
 
     /// Draws curve `id` highlighted (selection); 0 = none.
-    void setHighlighted(EntityId id);
+    void setHighlighted(model::EntityId id);
     /// Draws these curves marked (the inputs picked for a surface so far).
-    void setMarked(const std::vector<EntityId>& ids);
-    const std::vector<EntityId>& marked() const { return marked_; }
+    void setMarked(const std::vector<model::EntityId>& ids);
+    const std::vector<model::EntityId>& marked() const { return marked_; }
 
-    void entityAdded(const Entity& entity) override;
-    void entityRemoved(const Entity& entity) override;
-    void entityUpdated(const Entity& entity) override;
+    void entityAdded(const model::Entity& entity) override;
+    void entityRemoved(const model::Entity& entity) override;
+    void entityUpdated(const model::Entity& entity) override;
 
 private:
     /// The one gate between the model's geometry and Coin: false (and counted) when a coordinate
     /// of `entity` is not finite; its node is then left empty or unmoved.
-    bool drawable(const Entity& entity);
-    SoSeparator* planeGroup(EntityId plane);
-    void addCurveNode(const Entity& entity);
-    void rebuildCurveNode(const Entity& entity);
-    SoSeparator* makeCurveWithPolygon(const Entity& entity);
+    bool drawable(const model::Entity& entity);
+    SoSeparator* planeGroup(model::EntityId plane);
+    void addCurveNode(const model::Entity& entity);
+    void rebuildCurveNode(const model::Entity& entity);
+    SoSeparator* makeCurveWithPolygon(const model::Entity& entity);
     /// A surface's node, named and registered (nodes_, builtShape_). `reuseGrid`: evaluate on the
     /// last adaptive grid when the surface's domain is unchanged (a live rebuild).
-    SoSeparator* makeSurfaceEntityNode(const Entity& entity, bool reuseGrid = false);
+    SoSeparator* makeSurfaceEntityNode(const model::Entity& entity, bool reuseGrid = false);
     /// A curve network mesh's node, named and registered.
-    SoSeparator* makeMeshEntityNode(const Entity& entity);
+    SoSeparator* makeMeshEntityNode(const model::Entity& entity);
 
     /// The parameter grid a surface was last tessellated on.
     struct SurfaceGrid {
         std::vector<double> u, v;
         bool adaptive = true;  ///< false: the node was built on a reused grid
     };
-    CurveStyle curveStyle(EntityId id) const;
+    CurveStyle curveStyle(model::EntityId id) const;
 
-    Model& model_;
+    model::Model& model_;
     SoSeparator* root_ = nullptr;
     SoGroup* surfaces_ = nullptr;
     SoGroup* curves_ = nullptr;
     SoGroup* planeCurves_ = nullptr;
-    std::map<EntityId, SoSeparator*> nodes_;
-    std::map<EntityId, SoTransform*> frames_;
+    std::map<model::EntityId, SoSeparator*> nodes_;
+    std::map<model::EntityId, SoTransform*> frames_;
     SoSeparator* constraints_ = nullptr;
-    std::map<EntityId, SoCoordinate3*> anchors_;  ///< a constraint's pin
-    std::map<EntityId, SurfaceGrid> grids_;
+    std::map<model::EntityId, SoCoordinate3*> anchors_;  ///< a constraint's pin
+    std::map<model::EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
     int nonFiniteRejections_ = 0;
-    std::map<EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
-    EntityId highlighted_ = 0;
-    std::vector<EntityId> marked_;
+    std::map<model::EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
+    model::EntityId highlighted_ = 0;
+    std::vector<model::EntityId> marked_;
     bool nurbsNodes_ = false;
     bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;

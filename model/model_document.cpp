@@ -1,12 +1,12 @@
-#include "scene/model/model_document.h"
+#include "model/model_document.h"
 
-#include "scene/model/atomic_file.h"
+#include "model/atomic_file.h"
 #include "solvers/io/geometry_json.h"
 
 #include <map>
 #include <nlohmann/json.hpp>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 namespace io = solvers::io;
 using nlohmann::json;
 
@@ -152,4 +152,4 @@ void saveModel(const Model& model, const GridSpec& grid, const std::string& path
     writeFileAtomically(path, modelToJson(model, grid).dump(2) + "\n", true);
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

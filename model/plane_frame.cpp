@@ -1,6 +1,6 @@
-#include "scene/model/plane_frame.h"
+#include "model/plane_frame.h"
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 PlaneFrame PlaneFrame::fromNormal(const Eigen::Vector3d& origin, const Eigen::Vector3d& normal, double size,
                                   const Eigen::Vector3d& xAxis)
@@ -26,4 +26,4 @@ PlaneFrame PlaneFrame::fromNormal(const Eigen::Vector3d& origin, const Eigen::Ve
     return frame;
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model

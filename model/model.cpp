@@ -1,4 +1,4 @@
-#include "scene/model/model.h"
+#include "model/model.h"
 
 #include "solvers/surfaces/surface_modes.h"
 
@@ -8,7 +8,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace sculptline::scene {
+namespace sculptline::model {
 
 const char* kindName(EntityKind kind)
 {
@@ -496,4 +496,4 @@ void Model::removeObserver(ModelObserver* observer)
     observers_.erase(std::remove(observers_.begin(), observers_.end(), observer), observers_.end());
 }
 
-}  // namespace sculptline::scene
+}  // namespace sculptline::model
