@@ -7,6 +7,7 @@
 #include <cmath>
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -121,13 +122,11 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     if (surface.contains("points")) c.saved = io::surfaceFromJson(surface, path);
     const json& mode = io::member(*it, "mode", at);
     if (!mode.is_string()) throw io::InputError(at + ".mode: expected a string");
-    c.recipe.mode = mode.get<std::string>();
-    InputCount count;
-    try {
-        count = surfaceInputCount(c.recipe.mode);
-    } catch (const std::invalid_argument& e) {
-        throw io::InputError(at + ".mode: " + e.what());
-    }
+    const std::optional<Construction> known = constructionFromName(mode.get<std::string>());
+    if (!known) throw io::InputError(at + ".mode: unknown surface mode \"" + mode.get<std::string>() + "\"");
+    c.recipe.mode = *known;
+    const ConstructionInfo& info = describe(*known);
+    const InputCount count = surfaceInputCount(c.recipe.mode);
     const json& curves = io::member(*it, "curves", at);
     if (!curves.is_array()) throw io::InputError(at + ".curves: expected an array of curve ids");
     for (size_t k = 0; k < curves.size(); ++k) {
@@ -140,7 +139,7 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     }
     const int n = static_cast<int>(c.curves.size());
     if (n < count.min || n > count.max)
-        throw io::InputError(at + ".curves: mode " + c.recipe.mode + " takes " + std::to_string(count.min) + " to " +
+        throw io::InputError(at + ".curves: mode " + info.name + " takes " + std::to_string(count.min) + " to " +
                              std::to_string(count.max) + " curves");
     if (const auto a = it->find("angle"); a != it->end()) {
         c.recipe.angleDegrees = io::numberFromJson(*a, at + ".angle");
@@ -149,10 +148,10 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     // Any finite direction is read: one the extrusion cannot use (zero, 1e300) leaves the surface
     // failed with the reason when the document opens, and the rest of the document intact.
     if (const auto d = it->find("direction"); d != it->end()) c.recipe.direction = io::pointFromJson(*d, at + ".direction");
-    if (c.recipe.mode == "gordon") c.recipe.uCurves = io::integerFromJson(io::member(*it, "u_curves", at), at + ".u_curves", 2, n - 2);
+    if (info.options & kUCurvesOption) c.recipe.uCurves = io::integerFromJson(io::member(*it, "u_curves", at), at + ".u_curves", 2, n - 2);
     if (const auto g = it->find("tangents"); g != it->end()) {
         // G1 fill: {"curve": boundary index, "surface": id of a surface made before this one}.
-        if (!g->is_array() || c.recipe.mode != "fill") throw io::InputError(at + ".tangents: an array, for a fill only");
+        if (!g->is_array() || !(info.options & kTangentsOption)) throw io::InputError(at + ".tangents: an array, for a fill only");
         for (size_t k = 0; k < g->size(); ++k) {
             const std::string field = at + ".tangents[" + std::to_string(k) + "]";
             SurfaceRecipe::Tangent t;
@@ -269,22 +268,97 @@ SceneDocument documentFromJson(const json& j)
         doc.meshes.push_back(std::move(spec));
     }
     const json& constraints = optionalArray(j, "constraints");
+    // The kind of every entity the document names, for the constraints' checks.
+    std::map<int, EntityKind> kinds;
+    for (const PlaneSpec& p : doc.planes) kinds[p.id] = EntityKind::Plane;
+    for (int id : doc.curveIds) kinds[id] = EntityKind::Curve;
+    for (int id : doc.surfaceIds) kinds[id] = EntityKind::Surface;
+    for (const SceneDocument::ConstructedSurface& c : doc.constructed) kinds[c.id] = EntityKind::Surface;
+    for (const SceneDocument::MeshSpec& m : doc.meshes) kinds[m.id] = EntityKind::Mesh;
+    kinds.erase(0);  // entities without an id cannot be named
+    auto entityList = [&](const json& c, const char* name, const std::string& path) {
+        std::vector<int> ids;
+        const auto it = c.find(name);
+        if (it == c.end()) return ids;
+        if (!it->is_array()) throw io::InputError(path + "." + name + ": expected an array of entity ids");
+        for (size_t k = 0; k < it->size(); ++k) {
+            const std::string field = path + "." + name + "[" + std::to_string(k) + "]";
+            const int id = io::integerFromJson((*it)[k], field, 1, 1 << 30);
+            if (!kinds.count(id)) throw io::InputError(field + ": no entity has id " + std::to_string(id));
+            ids.push_back(id);
+        }
+        return ids;
+    };
     for (size_t i = 0; i < constraints.size(); ++i) {
         const std::string path = "constraints[" + std::to_string(i) + "]";
         const json& c = constraints[i];
         if (!c.is_object()) throw io::InputError(path + ": must be an object");
         SceneDocument::ConstraintSpec spec;
-        spec.id = entityId(c, path, usedIds);
-        spec.curve = io::integerFromJson(io::member(c, "curve", path), path + ".curve", 1, 1 << 30);
-        if (std::find(doc.curveIds.begin(), doc.curveIds.end(), spec.curve) == doc.curveIds.end())
-            throw io::InputError(path + ".curve: no curve has id " + std::to_string(spec.curve));
-        if (spec.id != 0 && spec.id <= spec.curve) throw io::InputError(path + ".id: must be greater than its curve's id");
+        // An id is read (older documents numbered pins with the entities) but not kept: constraints
+        // are numbered apart from entities.
+        entityId(c, path, usedIds);
         const json& type = io::member(c, "type", path);
-        spec.type = type.is_string() ? type.get<std::string>() : "";
-        if (spec.type != "position" && spec.type != "tangent") throw io::InputError(path + ".type: must be \"position\" or \"tangent\"");
-        spec.u = io::numberFromJson(io::member(c, "u", path), path + ".u");
-        doc.constraints.push_back(spec);
+        const std::optional<ConstraintType> parsed = type.is_string() ? constraintTypeFromName(type.get<std::string>()) : std::nullopt;
+        if (!parsed || derivedConstraint(*parsed)) {
+            throw io::InputError(path + ".type: must be \"position\", \"tangent\", \"fixed-points\", \"point-on-curve\", "
+                                        "\"curve-on-surface\", \"normal\", \"g1\" or \"smoothing\"");
+        }
+        spec.type = *parsed;
+        if (const auto curve = c.find("curve"); curve != c.end()) {
+            // A pin as documents have always written it: {"curve": id, "type", "u"}.
+            const int id = io::integerFromJson(*curve, path + ".curve", 1, 1 << 30);
+            if (std::find(doc.curveIds.begin(), doc.curveIds.end(), id) == doc.curveIds.end() || id == 0)
+                throw io::InputError(path + ".curve: no curve has id " + std::to_string(id));
+            spec.targets = {id};
+        } else {
+            spec.targets = entityList(c, "targets", path);
+        }
+        spec.sources = entityList(c, "sources", path);
+        if (const auto u = c.find("u"); u != c.end()) spec.parameters.push_back(io::numberFromJson(*u, path + ".u"));
+        if (const auto uv = c.find("uv"); uv != c.end()) {
+            if (!uv->is_array() || uv->size() != 2) throw io::InputError(path + ".uv: expected [u, v]");
+            for (size_t k = 0; k < 2; ++k) spec.parameters.push_back(io::numberFromJson((*uv)[k], path + ".uv[" + std::to_string(k) + "]"));
+        }
+        if (const auto ix = c.find("indices"); ix != c.end()) {
+            if (!ix->is_array()) throw io::InputError(path + ".indices: expected an array of indices");
+            for (size_t k = 0; k < ix->size(); ++k)
+                spec.indices.push_back(io::integerFromJson((*ix)[k], path + ".indices[" + std::to_string(k) + "]", 0, 1 << 20));
+        }
+        if (const auto v = c.find("value"); v != c.end()) spec.value = io::pointFromJson(*v, path + ".value");
+        if (const auto w = c.find("weight"); w != c.end()) {
+            spec.weight = io::numberFromJson(*w, path + ".weight");
+            if (!(spec.weight >= 0.0)) throw io::InputError(path + ".weight: must not be negative");
+        }
+        std::vector<EntityKind> targetKinds;
+        for (int id : spec.targets) targetKinds.push_back(kinds.at(id));
+        if (const std::string error = constraintShapeError(spec.type, targetKinds, spec.parameters.size(), spec.indices.size()); !error.empty())
+            throw io::InputError(path + ": " + error);
+        if (spec.type == ConstraintType::FixedPoints) {
+            const size_t curve = static_cast<size_t>(std::find(doc.curveIds.begin(), doc.curveIds.end(), spec.targets.front()) - doc.curveIds.begin());
+            const solvers::Curve3d& k = doc.curves[curve];
+            const int count = k.isClosed() ? k.pointCount() - k.degree() : k.pointCount();
+            for (size_t n = 0; n < spec.indices.size(); ++n) {
+                if (spec.indices[n] >= count) throw io::InputError(path + ".indices[" + std::to_string(n) + "]: curve " + std::to_string(spec.targets.front()) + " has " + std::to_string(count) + " control points");
+            }
+        }
+        doc.constraints.push_back(std::move(spec));
     }
+    // Entity states ("state": "fixed"), read after everything is known.
+    auto readState = [](const json& e, const std::string& path) {
+        const auto it = e.find("state");
+        if (it == e.end()) return false;
+        if (!it->is_string() || (*it != "fixed" && *it != "free")) throw io::InputError(path + ".state: must be \"fixed\" or \"free\"");
+        return *it == "fixed";
+    };
+    for (size_t i = 0; i < planes.size(); ++i) doc.planes[i].fixed = readState(planes[i], "planes[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < curves.size(); ++i) doc.curveStates.push_back(readState(curves[i], "curves[" + std::to_string(i) + "]"));
+    size_t constructed = 0;
+    for (size_t i = 0; i < surfaces.size(); ++i) {
+        const bool fixed = readState(surfaces[i], "surfaces[" + std::to_string(i) + "]");
+        if (surfaces[i].contains("construction")) doc.constructed[constructed++].fixed = fixed;
+        else doc.surfaceStates.push_back(fixed);
+    }
+    for (size_t i = 0; i < meshes.size(); ++i) doc.meshes[i].fixed = readState(meshes[i], "meshes[" + std::to_string(i) + "]");
     return doc;
 }
 

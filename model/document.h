@@ -2,6 +2,7 @@
 // The document a scene is built from: projection planes, a ground grid, curves and surfaces, read
 // from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
 // its error messages are testable on their own.
+#include "model/constraint.h"
 #include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 
@@ -24,6 +25,7 @@ struct PlaneSpec {
     /// The exact local -> world rotation as saved ("rotation": [x, y, z, w]); it wins over normal
     /// and xAxis, which are then checked against it. Saving it makes a reopened plane bit-identical.
     std::optional<Eigen::Quaterniond> rotation;
+    bool fixed = false;  ///< "state": "fixed"
 };
 
 /// The ground grid in the plane z = 0, centred on the origin.
@@ -50,16 +52,23 @@ struct SceneDocument {
         SurfaceRecipe recipe;
         std::vector<int> curves;
         std::optional<solvers::Surface3d> saved;  ///< the geometry as saved, if it was
+        bool fixed = false;
     };
     std::vector<ConstructedSurface> constructed;
     /// Per curve: the control points held fixed when it is pulled ("fixed": [indices]).
     std::vector<std::vector<int>> curveFixed;
-    /// Constraints on curves: {"id", "curve": curve id, "type": "position"|"tangent", "u"}.
+    /// The designer's constraints (model/constraint.h): a pin as always written, {"curve": curve
+    /// id, "type": "position"|"tangent", "u"}, or any type as {"type", "targets": [entity ids],
+    /// "sources"?: [ids], "u"?, "uv"?: [u, v], "indices"?: [..], "value"?: [x, y, z], "weight"?}.
+    /// An "id" is read but not kept (constraints are numbered apart from entities).
     struct ConstraintSpec {
-        int id = 0;
-        int curve = 0;
-        std::string type;
-        double u = 0.0;
+        ConstraintType type = ConstraintType::Position;
+        std::vector<int> targets;
+        std::vector<int> sources;
+        std::vector<double> parameters;
+        std::vector<int> indices;
+        Eigen::Vector3d value = Eigen::Vector3d::Zero();
+        double weight = 1.0;
     };
     std::vector<ConstraintSpec> constraints;
     /// Curve-network meshes: {"id", "curves": [curve ids of one closed loop, in order]}; the mesh
@@ -67,7 +76,11 @@ struct SceneDocument {
     struct MeshSpec {
         int id = 0;
         std::vector<int> curves;
+        bool fixed = false;
     };
+    /// Per curve and per static surface: "state": "fixed" (seed 000 §3.2); absent or "free": free.
+    std::vector<bool> curveStates;
+    std::vector<bool> surfaceStates;
     std::vector<MeshSpec> meshes;
 };
 

@@ -1,6 +1,6 @@
 #include "model/model.h"
 
-#include "solvers/surfaces/surface_modes.h"
+#include "model/solver_registry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,16 +10,95 @@
 
 namespace sculptline::model {
 
-const char* kindName(EntityKind kind)
+namespace {
+
+const std::array<EntityKindInfo, 5> kEntityKinds{{
+    {EntityKind::Plane, "plane"},
+    {EntityKind::Curve, "curve"},
+    {EntityKind::Surface, "surface"},
+    {EntityKind::Mesh, "mesh"},
+    {EntityKind::Point, "point"},
+}};
+
+// dofPerUse: see ConstraintTypeInfo.
+const std::array<ConstraintTypeInfo, 10> kConstraintTypes{{
+    {ConstraintType::Placement, "placement", true, 0},
+    {ConstraintType::Construction, "construction", true, -1},
+    {ConstraintType::Position, "position", false, 1},
+    {ConstraintType::Tangent, "tangent", false, 1},
+    {ConstraintType::FixedPoints, "fixed-points", false, -2},
+    {ConstraintType::PointOnCurve, "point-on-curve", false, -2},
+    {ConstraintType::CurveOnSurface, "curve-on-surface", false, 0},
+    {ConstraintType::Normal, "normal", false, 1},
+    {ConstraintType::G1, "g1", false, 0},
+    {ConstraintType::Smoothing, "smoothing", false, 0},
+}};
+
+}  // namespace
+
+const std::array<EntityKindInfo, 5>& entityKinds() { return kEntityKinds; }
+const EntityKindInfo& describe(EntityKind kind) { return kEntityKinds.at(static_cast<size_t>(kind)); }
+const char* kindName(EntityKind kind) { return describe(kind).name; }
+
+const char* stateName(State state)
 {
-    switch (kind) {
-    case EntityKind::Plane: return "plane";
-    case EntityKind::Curve: return "curve";
-    case EntityKind::Surface: return "surface";
-    case EntityKind::Constraint: return "constraint";
-    case EntityKind::Mesh: return "mesh";
+    switch (state) {
+    case State::Fixed: return "fixed";
+    case State::Free: return "free";
+    case State::Changed: return "changed";
     }
     return "?";
+}
+
+const std::array<ConstraintTypeInfo, 10>& constraintTypes() { return kConstraintTypes; }
+const ConstraintTypeInfo& describe(ConstraintType type) { return kConstraintTypes.at(static_cast<size_t>(type)); }
+const char* constraintTypeName(ConstraintType type) { return describe(type).name; }
+std::optional<ConstraintType> constraintTypeFromName(const std::string& name)
+{
+    for (const ConstraintTypeInfo& info : kConstraintTypes) {
+        if (name == info.name) return info.type;
+    }
+    return std::nullopt;
+}
+
+std::string constraintShapeError(ConstraintType type, const std::vector<EntityKind>& targets, size_t parameters, size_t indices)
+{
+    const std::string name = constraintTypeName(type);
+    auto kinds = [&](std::initializer_list<EntityKind> want, const char* what) -> std::string {
+        if (targets.size() != want.size()) return name + ": relates " + what;
+        size_t k = 0;
+        for (EntityKind kind : want) {
+            if (targets[k] != kind) return name + ": target " + std::to_string(k) + " must be a " + kindName(kind) + " (it relates " + what + ")";
+            ++k;
+        }
+        return {};
+    };
+    std::string error;
+    switch (type) {
+    case ConstraintType::Placement:
+    case ConstraintType::Construction: return name + ": made by the model from the entity it builds, not added";
+    case ConstraintType::Position:
+    case ConstraintType::Tangent:
+        error = kinds({EntityKind::Curve}, "one curve");
+        if (error.empty() && parameters != 1) error = name + ": needs one parameter u on the curve";
+        return error;
+    case ConstraintType::FixedPoints:
+        error = kinds({EntityKind::Curve}, "one curve");
+        if (error.empty() && indices == 0) error = name + ": names no control point";
+        return error;
+    case ConstraintType::PointOnCurve:
+        error = kinds({EntityKind::Point, EntityKind::Curve}, "a point and a curve");
+        if (error.empty() && parameters > 1) error = name + ": at most one parameter u on the curve";
+        return error;
+    case ConstraintType::CurveOnSurface: return kinds({EntityKind::Curve, EntityKind::Surface}, "a curve and a surface");
+    case ConstraintType::Normal:
+        error = kinds({EntityKind::Surface}, "one surface");
+        if (error.empty() && parameters != 2) error = name + ": needs parameters (u, v) on the surface";
+        return error;
+    case ConstraintType::G1: return kinds({EntityKind::Surface, EntityKind::Surface}, "two surfaces");
+    case ConstraintType::Smoothing: return targets.size() == 1 ? std::string() : name + ": relates one entity";
+    }
+    return name + ": unknown type";
 }
 
 size_t Entity::tangentSurfaceCount() const
@@ -36,6 +115,13 @@ solvers::Curve3d transformCurve(const solvers::Curve3d& curve, const PlaneFrame&
     points.reserve(curve.points().size());
     for (const Eigen::Vector3d& p : curve.points()) points.push_back(frame.toWorld(p));
     return solvers::Curve3d(curve.degree(), curve.knots(), points, curve.weights(), curve.isClosed());
+}
+
+solvers::Curve3d flattenToPlane(const solvers::Curve3d& local)
+{
+    std::vector<Eigen::Vector3d> flat = local.points();
+    for (Eigen::Vector3d& p : flat) p.z() = 0.0;
+    return solvers::Curve3d(local.degree(), local.knots(), flat, local.weights(), local.isClosed());
 }
 
 namespace {
@@ -82,29 +168,49 @@ bool hasFiniteGeometry(const Entity& e)
     case EntityKind::Curve: return (!e.local || finiteSpline(*e.local)) && (!e.world || finiteSpline(*e.world));
     case EntityKind::Surface: return !e.surface || finiteSpline(*e.surface);
     case EntityKind::Mesh: return !e.mesh || (allFinite(e.mesh->vertices) && allFinite(e.mesh->normals));
-    case EntityKind::Constraint: return e.anchor.allFinite();
+    case EntityKind::Point: return e.position.allFinite();
     }
     return false;
 }
 
-namespace {
+bool hasFiniteGeometry(const Constraint& c) { return c.value.allFinite(); }
 
-/// On a plane a curve is planar by construction; z is exactly 0 so the document's 2D points
-/// restore it bit for bit.
-solvers::Curve3d flatten(const solvers::Curve3d& local)
+Model::Model() : registry_(std::make_unique<SolverRegistry>()) {}
+Model::~Model() = default;
+
+Model::Model(Model&& other) noexcept
+    : entities_(std::move(other.entities_)),
+      dependents_(std::move(other.dependents_)),
+      constraints_(std::move(other.constraints_)),
+      constraintsOn_(std::move(other.constraintsOn_)),
+      dirty_(std::move(other.dirty_)),
+      nextId_(other.nextId_),
+      nextConstraintId_(other.nextConstraintId_),
+      registry_(std::make_unique<SolverRegistry>())
 {
-    std::vector<Eigen::Vector3d> flat = local.points();
-    for (Eigen::Vector3d& p : flat) p.z() = 0.0;
-    return solvers::Curve3d(local.degree(), local.knots(), flat, local.weights(), local.isClosed());
 }
 
-}  // namespace
+Model& Model::operator=(Model&& other) noexcept
+{
+    entities_ = std::move(other.entities_);
+    dependents_ = std::move(other.dependents_);
+    constraints_ = std::move(other.constraints_);
+    constraintsOn_ = std::move(other.constraintsOn_);
+    dirty_ = std::move(other.dirty_);
+    nextId_ = other.nextId_;
+    nextConstraintId_ = other.nextConstraintId_;
+    planValid_ = false;
+    dragSolvers_.clear();
+    pull_.reset();
+    dragged_ = 0;
+    return *this;
+}
 
 void Model::setCurveShape(EntityId curve, const solvers::Curve3d& local)
 {
     auto it = entities_.find(curve);
-    if (it == entities_.end() || it->second.kind != EntityKind::Curve) return;
-    it->second.local = it->second.plane() != 0 ? flatten(local) : local;
+    if (it == entities_.end() || it->second.kind != EntityKind::Curve || it->second.fixed) return;
+    it->second.local = it->second.plane() != 0 ? flattenToPlane(local) : local;
     ++it->second.shapeVersion;
     markDirty(curve);
 }
@@ -119,7 +225,41 @@ EntityId Model::insert(Entity entity, EntityId id, bool built)
     if (!built) recompute(entity);
     entity.recomputations = 0;  // building is not an update
     const Entity& stored = entities_.emplace(id, std::move(entity)).first->second;
+    deriveConstraints(stored);
+    freedomChanged();
     for (ModelObserver* o : observers_) o->entityAdded(stored);
+    return id;
+}
+
+void Model::deriveConstraints(const Entity& e)
+{
+    Constraint c;
+    if (e.kind == EntityKind::Curve && e.plane() != 0) {
+        c.type = ConstraintType::Placement;
+        c.sources = {e.plane()};
+    } else if ((e.kind == EntityKind::Surface && e.recipe) || e.kind == EntityKind::Mesh) {
+        c.type = ConstraintType::Construction;
+        c.sources = e.inputs;
+    } else {
+        return;
+    }
+    c.targets = {e.id};
+    insertConstraint(std::move(c));
+}
+
+ConstraintId Model::insertConstraint(Constraint c)
+{
+    if (c.id == 0) c.id = nextConstraintId_;
+    if (constraints_.count(c.id) != 0) throw std::invalid_argument("constraint id " + std::to_string(c.id) + " is taken");
+    nextConstraintId_ = std::max(nextConstraintId_, c.id + 1);
+    for (EntityId e : c.sources) constraintsOn_[e].insert(c.id);
+    for (EntityId e : c.targets) constraintsOn_[e].insert(c.id);
+    const ConstraintId id = c.id;
+    const Constraint& stored = constraints_.emplace(id, std::move(c)).first->second;
+    freedomChanged();
+    if (!derivedConstraint(stored.type)) {
+        for (ModelObserver* o : observers_) o->constraintAdded(stored);
+    }
     return id;
 }
 
@@ -140,7 +280,7 @@ EntityId Model::addCurve(EntityId plane, const solvers::Curve3d& local, EntityId
         if (!p || p->kind != EntityKind::Plane) throw std::invalid_argument("entity " + std::to_string(plane) + " is not a plane");
         e.inputs.push_back(plane);
     }
-    e.local = plane != 0 ? flatten(local) : local;
+    e.local = plane != 0 ? flattenToPlane(local) : local;
     return insert(std::move(e), id);
 }
 
@@ -152,12 +292,22 @@ EntityId Model::addSurface(const solvers::Surface3d& surface, EntityId id)
     return insert(std::move(e), id);
 }
 
+EntityId Model::addPoint(const Eigen::Vector3d& position, EntityId id)
+{
+    if (!position.allFinite()) throw std::invalid_argument("a point must have finite coordinates");
+    Entity e;
+    e.kind = EntityKind::Point;
+    e.position = position;
+    return insert(std::move(e), id);
+}
+
 void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
 {
+    const ConstructionInfo& info = describe(recipe.mode);
     const InputCount count = surfaceInputCount(recipe.mode);
     const int n = static_cast<int>(curves.size());
     if (n < count.min || n > count.max) {
-        throw std::invalid_argument(recipe.mode + " needs " +
+        throw std::invalid_argument(std::string(info.name) + " needs " +
                                     (count.min == count.max ? std::to_string(count.min)
                                                             : std::to_string(count.min) + " to " + std::to_string(count.max)) +
                                     " curves, got " + std::to_string(n));
@@ -168,7 +318,7 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
     }
     for (const SurfaceRecipe::Tangent& t : recipe.tangents) {
         const Entity* s = find(t.surface);
-        if (recipe.mode != "fill") throw std::invalid_argument("only a fill can be tangent to other surfaces");
+        if (!(info.options & kTangentsOption)) throw std::invalid_argument("only a fill can be tangent to other surfaces");
         if (t.boundary < 0 || t.boundary >= n) throw std::invalid_argument("tangent boundary " + std::to_string(t.boundary) + " is not a boundary");
         if (!s || s->kind != EntityKind::Surface) throw std::invalid_argument("entity " + std::to_string(t.surface) + " is not a surface");
     }
@@ -193,7 +343,7 @@ Entity Model::makeSurface(const std::vector<EntityId>& curves, const SurfaceReci
 {
     Entity e = unbuiltSurface(curves, recipe);
     try {
-        buildSurface(e);
+        buildSurfaceEntity(*this, e);
     } catch (const std::exception& error) {
         throw std::invalid_argument(error.what());
     }
@@ -205,7 +355,7 @@ EntityId Model::addSurface(const std::vector<EntityId>& curves, const SurfaceRec
 {
     Entity e = unbuiltSurface(curves, recipe);
     try {
-        buildSurface(e);
+        buildSurfaceEntity(*this, e);
     } catch (const std::exception& error) {
         if (!saved) throw std::invalid_argument(error.what());
         e.surface = *saved;
@@ -219,7 +369,7 @@ EntityId Model::restoreSurface(const std::vector<EntityId>& curves, const Surfac
 {
     Entity e = unbuiltSurface(curves, recipe);
     try {
-        buildSurface(e);
+        buildSurfaceEntity(*this, e);
     } catch (const std::exception& error) {
         e.surface = saved;
         e.buildError = error.what();
@@ -238,7 +388,7 @@ Entity Model::makeMesh(const std::vector<EntityId>& curves) const
     e.kind = EntityKind::Mesh;
     e.inputs = curves;
     try {
-        buildMesh(e);
+        buildMeshEntity(*this, e);
     } catch (const std::exception& error) {
         throw std::invalid_argument(error.what());
     }
@@ -267,112 +417,159 @@ EntityId Model::addMesh(const std::vector<EntityId>& curves, EntityId id, bool k
     return insert(std::move(e), id, true);
 }
 
-void Model::buildMesh(Entity& e) const
+EntityId Model::restore(const Entity& e)
 {
-    std::vector<solvers::Curve3d> curves;
-    std::vector<int> loop;
-    for (EntityId input : e.inputs) {
-        loop.push_back(static_cast<int>(curves.size()));
-        curves.push_back(*entities_.at(input).world);
+    EntityId id = 0;
+    switch (e.kind) {
+    case EntityKind::Plane: id = addPlane(e.frame, e.id); break;
+    case EntityKind::Curve: id = addCurve(e.plane(), *e.local, e.id); break;
+    case EntityKind::Mesh: id = addMesh(e.inputs, e.id, true); break;
+    case EntityKind::Point: id = addPoint(e.position, e.id); break;
+    case EntityKind::Surface:
+        id = e.recipe ? restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : addSurface(*e.surface, e.id);
+        break;
     }
-    e.mesh = solvers::surfaces::meshNetwork(curves, {loop});
-    e.buildError.clear();
-    ++e.shapeVersion;
+    if (e.fixed) setFixed(id, true);
+    return id;
 }
 
-EntityId Model::addConstraint(EntityId curve, const std::string& type, double u, EntityId id)
+void Model::restore(const Removed& removed)
+{
+    for (const Entity& e : removed.entities) restore(e);
+    for (const Constraint& c : removed.constraints) addConstraint(c);
+}
+
+ConstraintId Model::addConstraint(Constraint c)
+{
+    const ConstraintTypeInfo& info = describe(c.type);
+    if (derivedConstraint(c.type))
+        throw std::invalid_argument(std::string(info.name) + " constraints are made by the model from the entity they build");
+    std::vector<EntityKind> kinds;
+    for (EntityId t : c.targets) {
+        const Entity* e = find(t);
+        if (!e) throw std::invalid_argument(std::string(info.name) + ": entity " + std::to_string(t) + " does not exist");
+        kinds.push_back(e->kind);
+    }
+    for (EntityId s : c.sources) {
+        if (!find(s)) throw std::invalid_argument(std::string(info.name) + ": entity " + std::to_string(s) + " does not exist");
+    }
+    for (double p : c.parameters) {
+        if (!std::isfinite(p)) throw std::invalid_argument(std::string(info.name) + ": parameters must be finite");
+    }
+    if (!c.value.allFinite() || !std::isfinite(c.weight)) throw std::invalid_argument(std::string(info.name) + ": value and weight must be finite");
+    if (const std::string error = constraintShapeError(c.type, kinds, c.parameters.size(), c.indices.size()); !error.empty())
+        throw std::invalid_argument(error);
+    const Entity& first = *find(c.targets.front());
+    if (c.type == ConstraintType::Position || c.type == ConstraintType::Tangent) {
+        // Kept inside the curve's domain, where the solver reads it (closed curves wrap there too).
+        c.parameters.front() = std::clamp(c.parameters.front(), first.local->domainStart(), first.local->domainEnd());
+    }
+    if (c.type == ConstraintType::FixedPoints) {
+        std::sort(c.indices.begin(), c.indices.end());
+        c.indices.erase(std::unique(c.indices.begin(), c.indices.end()), c.indices.end());
+        const int count = first.local->isClosed() ? first.local->pointCount() - first.local->degree() : first.local->pointCount();
+        for (int i : c.indices) {
+            if (i < 0 || i >= count)
+                throw std::invalid_argument("fixed point " + std::to_string(i) + " is not a control point of curve " + std::to_string(first.id));
+        }
+    }
+    const ConstraintId id = insertConstraint(std::move(c));
+    refreshConstraintValues(constraints_.at(id).targets.front());
+    return id;
+}
+
+ConstraintId Model::addConstraint(EntityId curve, ConstraintType type, double u, ConstraintId id)
 {
     const Entity* c = find(curve);
     if (!c || c->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(curve) + " is not a curve");
-    if (type != "position" && type != "tangent") throw std::invalid_argument("constraint type must be \"position\" or \"tangent\"");
+    if (type != ConstraintType::Position && type != ConstraintType::Tangent)
+        throw std::invalid_argument("a pin's constraint type must be \"position\" or \"tangent\"");
     if (!std::isfinite(u)) throw std::invalid_argument("constraint parameter must be finite");
-    Entity e;
-    e.kind = EntityKind::Constraint;
-    e.inputs = {curve};
-    e.constraintType = type;
-    // Kept inside the curve's domain, where the solver reads it (closed curves wrap there too).
-    e.parameter = std::clamp(u, c->local->domainStart(), c->local->domainEnd());
-    return insert(std::move(e), id);
+    Constraint k;
+    k.id = id;
+    k.type = type;
+    k.targets = {curve};
+    k.parameters = {u};
+    return addConstraint(std::move(k));
+}
+
+std::optional<Constraint> Model::removeConstraint(ConstraintId id)
+{
+    const auto it = constraints_.find(id);
+    if (it == constraints_.end() || derivedConstraint(it->second.type)) return std::nullopt;
+    for (ModelObserver* o : observers_) o->constraintRemoved(it->second);
+    for (EntityId e : it->second.sources) constraintsOn_[e].erase(id);
+    for (EntityId e : it->second.targets) constraintsOn_[e].erase(id);
+    Constraint removed = std::move(it->second);
+    constraints_.erase(it);
+    freedomChanged();
+    return removed;
 }
 
 void Model::setFixedPoints(EntityId curve, std::vector<int> fixed)
 {
     auto it = entities_.find(curve);
     if (it == entities_.end() || it->second.kind != EntityKind::Curve) return;
-    std::sort(fixed.begin(), fixed.end());
-    fixed.erase(std::unique(fixed.begin(), fixed.end()), fixed.end());
-    const int count = it->second.local->isClosed() ? it->second.local->pointCount() - it->second.local->degree()
-                                                   : it->second.local->pointCount();
-    for (int i : fixed) {
+    Constraint c;
+    c.type = ConstraintType::FixedPoints;
+    c.targets = {curve};
+    c.indices = std::move(fixed);
+    // Checked before the old set goes: a bad index leaves the curve as it was.
+    std::sort(c.indices.begin(), c.indices.end());
+    c.indices.erase(std::unique(c.indices.begin(), c.indices.end()), c.indices.end());
+    const solvers::Curve3d& local = *it->second.local;
+    const int count = local.isClosed() ? local.pointCount() - local.degree() : local.pointCount();
+    for (int i : c.indices) {
         if (i < 0 || i >= count) throw std::invalid_argument("fixed point " + std::to_string(i) + " is not a control point of curve " + std::to_string(curve));
     }
-    it->second.fixedPoints = std::move(fixed);
+    for (ConstraintId id : constraintsOn(curve)) {
+        if (constraints_.at(id).type == ConstraintType::FixedPoints) {
+            c.id = id;  // the curve's one set keeps its id
+            removeConstraint(id);
+        }
+    }
+    if (!c.indices.empty()) addConstraint(std::move(c));
     for (ModelObserver* o : observers_) o->entityUpdated(it->second);
+}
+
+std::vector<int> Model::fixedPoints(EntityId curve) const
+{
+    for (ConstraintId id : constraintsOn(curve)) {
+        const Constraint& c = constraints_.at(id);
+        if (c.type == ConstraintType::FixedPoints) return c.indices;
+    }
+    return {};
+}
+
+void Model::setFixed(EntityId id, bool fixed)
+{
+    auto it = entities_.find(id);
+    if (it == entities_.end() || it->second.fixed == fixed) return;
+    it->second.fixed = fixed;
+    freedomChanged();
+    for (ModelObserver* o : observers_) o->entityUpdated(it->second);
+}
+
+State Model::state(EntityId id) const
+{
+    const Entity* e = find(id);
+    if (!e) return State::Free;
+    if (dirty_.count(id)) return State::Changed;
+    return e->fixed ? State::Fixed : State::Free;
 }
 
 void Model::setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe)
 {
     auto it = entities_.find(surface);
-    if (it == entities_.end() || !it->second.recipe) return;
+    if (it == entities_.end() || !it->second.recipe || it->second.fixed) return;
     it->second.recipe = recipe;
     markDirty(surface);
-}
-
-void Model::buildSurface(Entity& e) const
-{
-    namespace surf = solvers::surfaces;
-    const SurfaceRecipe& r = *e.recipe;
-    std::vector<solvers::Curve3d> curves;
-    for (EntityId input : e.inputs) {
-        const Entity& in = entities_.at(input);
-        if (in.kind == EntityKind::Curve) curves.push_back(*in.world);
-    }
-    const surf::SurfaceBuild build = [&]() -> surf::SurfaceBuild {
-        if (r.mode == "gordon") {
-            // A grid-like network (seed 004 §4, The NURBS Book §10.5): the first `uCurves` inputs are
-            // one family, the rest the other; every curve of one meets every curve of the other. The
-            // reported deviation is the largest gap between crossing curves.
-            const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
-            const surf::GordonResult g = surf::buildGordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
-            return {g.surface, g.maxGap};
-        }
-        surf::SurfaceOptions options;
-        options.tolerance = r.tolerance;
-        for (const SurfaceRecipe::Tangent& t : r.tangents) {
-            const Entity& adjacent = entities_.at(t.surface);
-            if (!adjacent.surface) throw std::invalid_argument("surface " + std::to_string(t.surface) + ", which it is tangent to, has not been built");
-            options.fillTangents.push_back({t.boundary, *adjacent.surface});
-        }
-        if (r.mode == "network") throw std::invalid_argument("\"network\" makes a mesh entity from a loop of curves, not a surface");
-        const surf::SurfaceMode mode = surf::parseSurfaceMode(r.mode);
-        if (mode == surf::SurfaceMode::Revolve) {
-            // The axis is the line the designer drew: the last input's ends, start to end.
-            const solvers::Curve3d axis = curves.back();
-            curves.pop_back();
-            if (axis.isClosed())
-                throw std::invalid_argument("axis: the axis curve is closed, its ends coincide and give no direction");
-            options.axisPoint = axis.evaluate(axis.domainStart());
-            options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
-            options.angleDegrees = r.angleDegrees;
-        }
-        if (mode == surf::SurfaceMode::Extrude) {
-            const Entity& profile = entities_.at(e.inputs.front());
-            options.direction = profile.plane() != 0 ? Eigen::Vector3d(entities_.at(profile.plane()).frame.rotation * r.direction)
-                                                     : r.direction;
-        }
-        return surf::buildSurface(mode, curves, options);
-    }();
-    e.surface = build.surface;
-    e.maxDeviation = build.maxDeviation;
-    e.maxTangentAngle = build.maxTangentAngleDegrees;
-    e.buildError.clear();
-    ++e.shapeVersion;
 }
 
 void Model::setPlaneFrame(EntityId plane, const PlaneFrame& frame)
 {
     auto it = entities_.find(plane);
-    if (it == entities_.end() || it->second.kind != EntityKind::Plane) return;
+    if (it == entities_.end() || it->second.kind != EntityKind::Plane || it->second.fixed) return;
     if (it->second.frame == frame) return;
     // A degenerate manipulation (a dragger scaled to nothing) can hand over NaN: the plane stays.
     if (!frame.origin.allFinite() || !frame.rotation.coeffs().allFinite()) return;
@@ -387,69 +584,199 @@ void Model::markDirty(EntityId id)
     if (first && dirtyCallback_) dirtyCallback_();
 }
 
+const Plan& Model::plan() const
+{
+    if (planValid_) return plan_;
+    std::vector<EntityId> ids;
+    std::set<EntityId> fixed;
+    for (const auto& [id, e] : entities_) {
+        ids.push_back(id);
+        if (e.fixed) fixed.insert(id);
+    }
+    std::vector<const Constraint*> constraints;
+    for (const auto& [id, c] : constraints_) constraints.push_back(&c);
+    plan_ = makePlan(ids, fixed, constraints, [this](const PlanStep& step) { return registry_->choose(*this, step); });
+    planValid_ = true;
+    ++planCount_;
+    return plan_;
+}
+
+Dof Model::dof(EntityId id) const
+{
+    Dof d;
+    const Entity* e = find(id);
+    if (!e) return d;
+    const int dim = e->kind == EntityKind::Curve && e->plane() != 0 ? 2 : 3;
+    auto uniquePoints = [](const auto& g) { return g.isClosed() ? g.pointCount() - g.degree() : g.pointCount(); };
+    switch (e->kind) {
+    case EntityKind::Plane: d.total = 6; break;  // a rigid frame: position and orientation
+    case EntityKind::Curve: d.total = e->local ? dim * uniquePoints(*e->local) : 0; break;
+    case EntityKind::Surface: d.total = e->surface ? 3 * e->surface->countU() * e->surface->countV() : 0; break;
+    case EntityKind::Point: d.total = 3; break;
+    case EntityKind::Mesh: d.total = 0; break;  // its freedom is its curves'
+    }
+    for (ConstraintId cid : constraintsOn(id)) {
+        const Constraint& c = constraints_.at(cid);
+        if (std::find(c.targets.begin(), c.targets.end(), id) == c.targets.end()) continue;
+        const int per = describe(c.type).dofPerUse;
+        if (per == -1) d.consumed += d.total;
+        else if (c.type == ConstraintType::FixedPoints) d.consumed += dim * static_cast<int>(c.indices.size());
+        else if (c.type == ConstraintType::PointOnCurve) {
+            // Incidence of a point on a curve: a point in space has `dim` coordinates; on the curve
+            // at an unknown parameter it keeps one of them (seed 000 Fig. 3: P1 and P2 on A take
+            // two DOF of B). With the parameter given, all `dim`.
+            d.consumed += c.parameters.empty() ? dim - 1 : dim;
+        } else d.consumed += per * dim;
+    }
+    return d;
+}
+
+std::vector<ConstraintId> Model::constraintsOn(EntityId entity) const
+{
+    const auto it = constraintsOn_.find(entity);
+    return it == constraintsOn_.end() ? std::vector<ConstraintId>{} : std::vector<ConstraintId>(it->second.begin(), it->second.end());
+}
+
+const Constraint* Model::findConstraint(ConstraintId id) const
+{
+    const auto it = constraints_.find(id);
+    return it == constraints_.end() ? nullptr : &it->second;
+}
+
+void Model::refreshConstraintValues(EntityId curve)
+{
+    const Entity* e = find(curve);
+    if (!e || e->kind != EntityKind::Curve || !e->world) return;
+    for (ConstraintId id : constraintsOn(curve)) {
+        Constraint& c = constraints_.at(id);
+        if (c.type != ConstraintType::Position && c.type != ConstraintType::Tangent) continue;
+        c.value = e->world->evaluate(std::clamp(c.parameters.front(), e->world->domainStart(), e->world->domainEnd()));
+        for (ModelObserver* o : observers_) o->constraintUpdated(c);
+    }
+}
+
 int Model::update()
 {
     if (dirty_.empty()) return 0;
-    // The closure of the dirty set under "depends on", in a std::set: ascending ids are a
-    // topological order (see model.h), and a set visits each entity once however many paths lead
-    // to it.
-    std::set<EntityId> affected;
-    std::vector<EntityId> stack(dirty_.begin(), dirty_.end());
+    const Plan& p = plan();
+    std::vector<const Constraint*> constraints;
+    for (const auto& [id, c] : constraints_) constraints.push_back(&c);
+    const std::set<EntityId> changed(dirty_.begin(), dirty_.end());
     dirty_.clear();
-    while (!stack.empty()) {
-        const EntityId id = stack.back();
-        stack.pop_back();
-        if (!entities_.count(id) || !affected.insert(id).second) continue;
-        if (auto d = dependents_.find(id); d != dependents_.end()) stack.insert(stack.end(), d->second.begin(), d->second.end());
+    std::set<EntityId> recomputed;
+    // A changed entity no step solves is a source: its own derived data first (a curve in space
+    // that nothing constrains: its world form is its shape), then what depends on it.
+    for (EntityId id : changed) {
+        auto it = entities_.find(id);
+        if (it != entities_.end() && !p.stepOf.count(id)) recompute(it->second);
     }
-    for (EntityId id : affected) {
-        Entity& e = entities_.at(id);
-        recompute(e);
-        ++e.recomputations;
-        for (ModelObserver* o : observers_) o->entityUpdated(e);
+    for (size_t index : stepsAfter(p, constraints, changed)) {
+        const PlanStep& step = p.steps[index];
+        if (std::none_of(step.solve.begin(), step.solve.end(), [this](EntityId id) { return entities_.count(id) != 0; })) continue;
+        if (const auto cached = dragSolvers_.find(index); cached != dragSolvers_.end()) {
+            cached->second->solve(*this, step);
+            dragRebuilt_.insert(step.solve.begin(), step.solve.end());
+        } else {
+            // Outside a drag a step is set up and solved at once: what a fresh build gives.
+            const std::unique_ptr<StepSolver> solver = registry_->make(step.solver);
+            solver->factor(*this, step);
+            solver->solve(*this, step);
+        }
+        recomputed.insert(step.solve.begin(), step.solve.end());
     }
-    return static_cast<int>(affected.size());
+    // What changed itself is updated too (a plane's frame: its observers redraw it).
+    recomputed.insert(changed.begin(), changed.end());
+    int count = 0;
+    for (EntityId id : recomputed) {
+        auto it = entities_.find(id);
+        if (it == entities_.end()) continue;
+        ++it->second.recomputations;
+        ++count;
+        refreshConstraintValues(id);
+        for (ModelObserver* o : observers_) o->entityUpdated(it->second);
+    }
+    return count;
 }
 
 void Model::recompute(Entity& e)
 {
-    if (e.kind == EntityKind::Surface) {
-        if (!e.recipe) return;  // a static surface, as read
+    // An entity being added: its derived data from its inputs, as its step's solver would.
+    if (e.kind == EntityKind::Curve && e.local) {
         try {
-            buildSurface(e);
+            e.world = e.plane() != 0 ? transformCurve(*e.local, entities_.at(e.plane()).frame) : *e.local;
+            e.buildError.clear();
         } catch (const std::exception& error) {
-            // Mid-drag the curves may pass through a configuration the mode cannot build (a fill
-            // whose boundaries no longer meet): keep the last good surface and say why.
             e.buildError = error.what();
         }
-        return;
-    }
-    if (e.kind == EntityKind::Mesh) {
-        try {
-            buildMesh(e);
-        } catch (const std::exception& error) {
-            e.buildError = error.what();  // the curves pulled apart mid-drag: keep the last mesh
-        }
-        return;
-    }
-    if (e.kind == EntityKind::Constraint) {
-        const solvers::Curve3d& curve = *entities_.at(e.inputs.front()).world;
-        e.anchor = curve.evaluate(std::clamp(e.parameter, curve.domainStart(), curve.domainEnd()));
-        return;
-    }
-    if (e.kind != EntityKind::Curve) return;  // a plane holds its frame
-    const EntityId plane = e.plane();
-    try {
-        e.world = plane != 0 ? transformCurve(*e.local, entities_.at(plane).frame) : *e.local;
-        e.buildError.clear();
-    } catch (const std::exception& error) {
-        e.buildError = error.what();  // coordinates beyond double range: the last world form stays
     }
 }
 
-std::vector<Entity> Model::remove(EntityId id)
+void Model::beginDrag(EntityId id)
+{
+    if (dragged_ != 0) endDrag();
+    if (!entities_.count(id)) return;
+    update();  // the drag starts from a settled model
+    dragged_ = id;
+    const Plan& p = plan();
+    std::vector<const Constraint*> constraints;
+    for (const auto& [cid, c] : constraints_) constraints.push_back(&c);
+    for (size_t index : stepsAfter(p, constraints, {id})) {
+        const PlanStep& step = p.steps[index];
+        if (!registry_->caches(step.solver)) continue;
+        std::unique_ptr<StepSolver> solver = registry_->make(step.solver);
+        solver->factor(*this, step);
+        ++factorizations_;
+        dragSolvers_.emplace(index, std::move(solver));
+    }
+}
+
+void Model::beginPull(EntityId curve, double u)
+{
+    if (dragged_ != 0) endDrag();
+    const Entity* c = find(curve);
+    if (!c || c->kind != EntityKind::Curve || !c->local) throw std::invalid_argument("entity " + std::to_string(curve) + " is not a curve");
+    if (c->fixed) throw std::invalid_argument("curve " + std::to_string(curve) + " is fixed");
+    if (!std::isfinite(u)) throw std::invalid_argument("the grip's parameter must be finite");
+    update();
+    PlanStep step;
+    step.solve = {curve};
+    step.solver = "least-change";
+    std::unique_ptr<StepSolver> solver = makePullSolver(std::clamp(u, c->local->domainStart(), c->local->domainEnd()));
+    solver->factor(*this, step);  // throws when it cannot be pulled: no drag then
+    ++factorizations_;
+    beginDrag(curve);
+    pull_ = std::move(solver);
+}
+
+std::string Model::pullTo(const Eigen::Vector3d& local)
+{
+    if (!pull_ || !entities_.count(dragged_)) return {};
+    PlanStep step;
+    step.solve = {dragged_};
+    step.solver = "least-change";
+    pull_->setGrip(local);
+    const int before = entities_.at(dragged_).shapeVersion;
+    pull_->solve(*this, step);
+    if (entities_.at(dragged_).shapeVersion != before) markDirty(dragged_);
+    return pull_->message();
+}
+
+void Model::endDrag()
+{
+    // The surfaces rebuilt incrementally come to rest as a fresh build makes them.
+    for (EntityId id : dragRebuilt_) {
+        if (entities_.count(id)) markDirty(id);
+    }
+    dragRebuilt_.clear();
+    dragSolvers_.clear();
+    pull_.reset();
+    dragged_ = 0;
+}
+
+Removed Model::remove(EntityId id)
 {
     if (!entities_.count(id)) return {};
+    if (dragged_ != 0) endDrag();
     std::set<EntityId> doomed;
     std::vector<EntityId> stack{id};
     while (!stack.empty()) {
@@ -458,7 +785,16 @@ std::vector<Entity> Model::remove(EntityId id)
         if (!doomed.insert(next).second) continue;
         if (auto d = dependents_.find(next); d != dependents_.end()) stack.insert(stack.end(), d->second.begin(), d->second.end());
     }
-    std::vector<Entity> removed;
+    Removed removed;
+    // The designer's constraints on anything removed go first (they name it).
+    std::set<ConstraintId> constraints;
+    for (EntityId e : doomed) {
+        for (ConstraintId c : constraintsOn(e)) constraints.insert(c);
+    }
+    for (ConstraintId c : constraints) {
+        if (derivedConstraint(constraints_.at(c).type)) continue;
+        if (std::optional<Constraint> k = removeConstraint(c)) removed.constraints.push_back(std::move(*k));
+    }
     // Dependents first (highest ids first), so observers never see a curve outlive its plane.
     for (auto it = doomed.rbegin(); it != doomed.rend(); ++it) {
         auto e = entities_.find(*it);
@@ -466,17 +802,29 @@ std::vector<Entity> Model::remove(EntityId id)
         for (EntityId input : e->second.inputs) dependents_[input].erase(*it);
         dependents_.erase(*it);
         dirty_.erase(*it);
-        removed.push_back(std::move(e->second));
+        for (ConstraintId c : constraintsOn(*it)) {
+            // The derived constraint that makes it goes with it.
+            const Constraint& k = constraints_.at(c);
+            for (EntityId s : k.sources) constraintsOn_[s].erase(c);
+            for (EntityId t : k.targets) constraintsOn_[t].erase(c);
+            constraints_.erase(c);
+        }
+        constraintsOn_.erase(*it);
+        removed.entities.push_back(std::move(e->second));
         entities_.erase(e);
     }
-    std::reverse(removed.begin(), removed.end());
+    freedomChanged();
+    std::reverse(removed.entities.begin(), removed.entities.end());
     return removed;
 }
 
 void Model::clear()
 {
+    endDrag();
     while (!entities_.empty()) remove(entities_.begin()->first);
+    dirty_.clear();
     nextId_ = 1;
+    nextConstraintId_ = 1;
 }
 
 const Entity* Model::find(EntityId id) const

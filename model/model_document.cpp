@@ -22,7 +22,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface, Constructed, Constraint, Mesh };
+    enum class Kind { Plane, Curve, Surface, Constructed, Mesh };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -40,32 +40,34 @@ void populateModel(const SceneDocument& doc, Model& model)
         if (doc.meshes[i].id != 0) byId[doc.meshes[i].id] = {Kind::Mesh, i};
         else unnumbered.push_back({Kind::Mesh, i});
     }
-    for (size_t i = 0; i < doc.constraints.size(); ++i) {
-        if (doc.constraints[i].id != 0) byId[doc.constraints[i].id] = {Kind::Constraint, i};
-        else unnumbered.push_back({Kind::Constraint, i});
-    }
     for (size_t i = 0; i < doc.constructed.size(); ++i) {
         if (doc.constructed[i].id != 0) byId[doc.constructed[i].id] = {Kind::Constructed, i};
         else unnumbered.push_back({Kind::Constructed, i});
     }
+    auto flag = [](const std::vector<bool>& states, size_t i) { return i < states.size() && states[i]; };
     auto create = [&](Kind kind, size_t i, EntityId id) {
+        EntityId made = 0;
+        bool fixed = false;
         switch (kind) {
-        case Kind::Plane: model.addPlane(planeFrame(doc.planes[i]), id); break;
+        case Kind::Plane:
+            made = model.addPlane(planeFrame(doc.planes[i]), id);
+            fixed = doc.planes[i].fixed;
+            break;
         case Kind::Curve: {
             const int plane = i < doc.curvePlanes.size() ? doc.curvePlanes[i] : 0;
-            const EntityId curve = model.addCurve(static_cast<EntityId>(plane), doc.curves[i], id);
-            if (i < doc.curveFixed.size() && !doc.curveFixed[i].empty()) model.setFixedPoints(curve, doc.curveFixed[i]);
+            made = model.addCurve(static_cast<EntityId>(plane), doc.curves[i], id);
+            if (i < doc.curveFixed.size() && !doc.curveFixed[i].empty()) model.setFixedPoints(made, doc.curveFixed[i]);
+            fixed = flag(doc.curveStates, i);
             break;
         }
-        case Kind::Surface: model.addSurface(doc.surfaces[i], id); break;
+        case Kind::Surface:
+            made = model.addSurface(doc.surfaces[i], id);
+            fixed = flag(doc.surfaceStates, i);
+            break;
         case Kind::Mesh: {
             const std::vector<EntityId> curves(doc.meshes[i].curves.begin(), doc.meshes[i].curves.end());
-            model.addMesh(curves, id, true);
-            break;
-        }
-        case Kind::Constraint: {
-            const SceneDocument::ConstraintSpec& c = doc.constraints[i];
-            model.addConstraint(static_cast<EntityId>(c.curve), c.type, c.u, id);
+            made = model.addMesh(curves, id, true);
+            fixed = doc.meshes[i].fixed;
             break;
         }
         case Kind::Constructed: {
@@ -74,13 +76,33 @@ void populateModel(const SceneDocument& doc, Model& model)
             // the document opens with everything else intact.
             const SceneDocument::ConstructedSurface& c = doc.constructed[i];
             const std::vector<EntityId> curves(c.curves.begin(), c.curves.end());
-            model.restoreSurface(curves, c.recipe, id, c.saved);
+            made = model.restoreSurface(curves, c.recipe, id, c.saved);
+            fixed = c.fixed;
             break;
         }
         }
+        if (fixed) model.setFixed(made, true);
     };
     for (const auto& [id, entry] : byId) create(entry.first, entry.second, static_cast<EntityId>(id));
     for (const auto& [kind, i] : unnumbered) create(kind, i, 0);
+    // The designer's constraints last: they name entities of any kind (the reader checked them).
+    for (const SceneDocument::ConstraintSpec& spec : doc.constraints) {
+        Constraint c;
+        c.type = spec.type;
+        c.targets.assign(spec.targets.begin(), spec.targets.end());
+        c.sources.assign(spec.sources.begin(), spec.sources.end());
+        c.parameters = spec.parameters;
+        c.indices = spec.indices;
+        c.value = spec.value;
+        c.weight = spec.weight;
+        if (c.type == ConstraintType::FixedPoints) {
+            std::vector<int> fixed = model.fixedPoints(c.targets.front());
+            fixed.insert(fixed.end(), c.indices.begin(), c.indices.end());
+            model.setFixedPoints(c.targets.front(), fixed);
+            continue;
+        }
+        model.addConstraint(std::move(c));
+    }
     model.update();
 }
 
@@ -89,52 +111,74 @@ json modelToJson(const Model& model, const GridSpec& grid)
     json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array(),
          meshes = json::array();
     for (const auto& [id, e] : model.entities()) {
+        json entry;
         switch (e.kind) {
         case EntityKind::Plane:
-            planes.push_back({{"id", id},
-                              {"origin", io::toJson(e.frame.origin)},
-                              {"normal", io::toJson(e.frame.normal())},
-                              {"xAxis", io::toJson(e.frame.xAxis())},
-                              {"rotation", {e.frame.rotation.x(), e.frame.rotation.y(), e.frame.rotation.z(), e.frame.rotation.w()}},
-                              {"size", e.frame.size}});
+            entry = {{"id", id},
+                     {"origin", io::toJson(e.frame.origin)},
+                     {"normal", io::toJson(e.frame.normal())},
+                     {"xAxis", io::toJson(e.frame.xAxis())},
+                     {"rotation", {e.frame.rotation.x(), e.frame.rotation.y(), e.frame.rotation.z(), e.frame.rotation.w()}},
+                     {"size", e.frame.size}};
             break;
         case EntityKind::Curve: {
-            json c = io::toJson(*e.local);
-            c["id"] = id;
+            entry = io::toJson(*e.local);
+            entry["id"] = id;
             if (e.plane() != 0) {
-                c["plane"] = e.plane();
+                entry["plane"] = e.plane();
                 // Plane-local points are 2D: [x, y].
-                for (json& p : c["points"]) p.erase(2);
+                for (json& p : entry["points"]) p.erase(2);
             }
-            if (!e.fixedPoints.empty()) c["fixed"] = e.fixedPoints;
-            curves.push_back(std::move(c));
+            // Fixed control points as documents have always held them, on the curve.
+            if (const std::vector<int> fixed = model.fixedPoints(id); !fixed.empty()) entry["fixed"] = fixed;
             break;
         }
-        case EntityKind::Mesh: meshes.push_back({{"id", id}, {"curves", e.inputs}}); break;
-        case EntityKind::Constraint:
-            constraints.push_back({{"id", id}, {"curve", e.inputs.front()}, {"type", e.constraintType}, {"u", e.parameter}});
-            break;
+        case EntityKind::Mesh: entry = {{"id", id}, {"curves", e.inputs}}; break;
+        case EntityKind::Point: continue;  // points come with the constraints that make them (later issues)
         case EntityKind::Surface: {
             // A construction that never built has no geometry: the construction alone is saved.
-            json s = e.surface ? io::toJson(*e.surface) : json::object();
-            s["id"] = id;
+            entry = e.surface ? io::toJson(*e.surface) : json::object();
+            entry["id"] = id;
             if (e.recipe) {
-                json c{{"mode", e.recipe->mode}, {"curves", e.curveInputs()}};
+                const ConstructionInfo& info = describe(e.recipe->mode);
+                json c{{"mode", info.name}, {"curves", e.curveInputs()}};
                 if (!e.recipe->tangents.empty()) {
                     json tangents = json::array();
                     for (const SurfaceRecipe::Tangent& t : e.recipe->tangents) tangents.push_back({{"curve", t.boundary}, {"surface", t.surface}});
                     c["tangents"] = std::move(tangents);
                 }
-                if (e.recipe->mode == "revolve") c["angle"] = e.recipe->angleDegrees;
-                if (e.recipe->mode == "extrude") c["direction"] = io::toJson(e.recipe->direction);
+                if (info.options & kAngleOption) c["angle"] = e.recipe->angleDegrees;
+                if (info.options & kDirectionOption) c["direction"] = io::toJson(e.recipe->direction);
                 if (e.recipe->tolerance > 0.0) c["tolerance"] = e.recipe->tolerance;
-                if (e.recipe->mode == "gordon") c["u_curves"] = e.recipe->uCurves;
-                s["construction"] = std::move(c);
+                if (info.options & kUCurvesOption) c["u_curves"] = e.recipe->uCurves;
+                entry["construction"] = std::move(c);
             }
-            surfaces.push_back(std::move(s));
             break;
         }
         }
+        if (e.fixed) entry["state"] = "fixed";
+        switch (e.kind) {
+        case EntityKind::Plane: planes.push_back(std::move(entry)); break;
+        case EntityKind::Curve: curves.push_back(std::move(entry)); break;
+        case EntityKind::Mesh: meshes.push_back(std::move(entry)); break;
+        case EntityKind::Surface: surfaces.push_back(std::move(entry)); break;
+        case EntityKind::Point: break;
+        }
+    }
+    for (const auto& [id, c] : model.constraints()) {
+        if (derivedConstraint(c.type) || c.type == ConstraintType::FixedPoints) continue;  // with their entities
+        if (c.type == ConstraintType::Position || c.type == ConstraintType::Tangent) {
+            constraints.push_back({{"curve", c.targets.front()}, {"type", constraintTypeName(c.type)}, {"u", c.parameters.front()}});
+            continue;
+        }
+        json k{{"type", constraintTypeName(c.type)}, {"targets", c.targets}};
+        if (!c.sources.empty()) k["sources"] = c.sources;
+        if (c.parameters.size() == 1) k["u"] = c.parameters.front();
+        if (c.parameters.size() == 2) k["uv"] = c.parameters;
+        if (!c.indices.empty()) k["indices"] = c.indices;
+        if (!c.value.isZero()) k["value"] = io::toJson(c.value);
+        if (c.weight != 1.0) k["weight"] = c.weight;
+        constraints.push_back(std::move(k));
     }
     return json{{"format", kDocumentFormat},
                 {"version", kDocumentVersion},

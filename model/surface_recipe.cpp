@@ -4,32 +4,66 @@
 
 namespace sculptline::model {
 
-InputCount surfaceInputCount(const std::string& mode)
+namespace {
+
+using solvers::surfaces::SurfaceMode;
+
+const std::array<ConstructionInfo, 9> kConstructions{{
+    {Construction::Fill, "fill", 2, 4, {"boundary", nullptr, nullptr}, true, kTangentsOption, SurfaceMode::Fill, false},
+    {Construction::Revolve, "revolve", 2, 2, {"profile", "axis (a line)", nullptr}, false, kAngleOption, SurfaceMode::Revolve, false},
+    {Construction::Extrude, "extrude", 1, 1, {"profile", nullptr, nullptr}, false, kDirectionOption, SurfaceMode::Extrude, false},
+    {Construction::Sweep, "sweep", 2, 2, {"profile", "path", nullptr}, false, kToleranceOption, SurfaceMode::Sweep, false},
+    {Construction::Loft, "loft", 2, 64, {"section", nullptr, nullptr}, true, 0u, SurfaceMode::Loft, false},
+    {Construction::BoundaryRotation, "boundary-rotation", 2, 2, {"left outline", "right outline", nullptr}, false, kToleranceOption,
+     SurfaceMode::BoundaryRotation, false},
+    {Construction::RailRotation, "rail-rotation", 3, 3, {"rail 1", "rail 2", "profile"}, false, kToleranceOption,
+     SurfaceMode::RailRotation, false},
+    // Two families of at least two curves each (seed 004 §4).
+    {Construction::Gordon, "gordon", 4, 64, {"curve", nullptr, nullptr}, true, kToleranceOption | kUCurvesOption, std::nullopt, false},
+    // One closed loop of curves, filled by a triangle mesh.
+    {Construction::Network, "network", 1, 64, {"curve", nullptr, nullptr}, true, 0u, std::nullopt, true},
+}};
+
+}  // namespace
+
+const std::array<ConstructionInfo, 9>& constructions() { return kConstructions; }
+
+const ConstructionInfo& describe(Construction mode) { return kConstructions.at(static_cast<size_t>(mode)); }
+
+const char* constructionName(Construction mode) { return describe(mode).name; }
+
+std::optional<Construction> constructionFromName(const std::string& name)
 {
-    if (mode == "fill") return {2, 4};
-    if (mode == "revolve") return {2, 2};  // profile, axis
-    if (mode == "extrude") return {1, 1};
-    if (mode == "sweep") return {2, 2};
-    if (mode == "loft") return {2, 64};
-    if (mode == "boundary-rotation") return {2, 2};
-    if (mode == "rail-rotation") return {3, 3};
-    if (mode == "gordon") return {4, 64};  // two families of at least two
-    if (mode == "network") return {1, 64};  // one closed loop (a mesh entity, not a surface)
-    throw std::invalid_argument("unknown surface mode \"" + mode + "\"");
+    for (const ConstructionInfo& info : kConstructions) {
+        if (name == info.name) return info.mode;
+    }
+    return std::nullopt;
 }
 
-std::string surfaceInputRole(const std::string& mode, int index)
+InputCount surfaceInputCount(Construction mode)
 {
-    if (mode == "fill") return "boundary " + std::to_string(index + 1);
-    if (mode == "revolve") return index == 0 ? "profile" : "axis (a line)";
-    if (mode == "extrude") return "profile";
-    if (mode == "sweep") return index == 0 ? "profile" : "path";
-    if (mode == "loft") return "section " + std::to_string(index + 1);
-    if (mode == "boundary-rotation") return index == 0 ? "left outline" : "right outline";
-    if (mode == "rail-rotation") return index == 0 ? "rail 1" : index == 1 ? "rail 2" : "profile";
-    if (mode == "gordon") return "curve " + std::to_string(index + 1) + " of the network";
-    if (mode == "network") return "curve " + std::to_string(index + 1) + " of the loop";
+    const ConstructionInfo& info = describe(mode);
+    return {info.minInputs, info.maxInputs};
+}
+
+std::string surfaceInputRole(Construction mode, int index)
+{
+    const ConstructionInfo& info = describe(mode);
+    if (info.numberedRoles) {
+        std::string role = std::string(info.roles[0]) + " " + std::to_string(index + 1);
+        if (mode == Construction::Gordon) role += " of the network";
+        if (mode == Construction::Network) role += " of the loop";
+        return role;
+    }
+    if (index >= 0 && index < static_cast<int>(info.roles.size()) && info.roles[static_cast<size_t>(index)])
+        return info.roles[static_cast<size_t>(index)];
     return "curve " + std::to_string(index + 1);
+}
+
+bool inputLiesOnSurface(Construction mode, int index)
+{
+    if (mode == Construction::Revolve || mode == Construction::Sweep) return index == 0;
+    return !describe(mode).makesMesh;
 }
 
 }  // namespace sculptline::model

@@ -1,20 +1,62 @@
 #pragma once
-// How a surface entity is built from its input curves (issue 6 §2): the surface mode and its
-// options, as plain data the document saves. Options that refer to geometry are kept relative to
-// the inputs so that they follow a drag: the revolve axis is a curve the designer drew (its two
-// ends), and an extrusion's direction lives in the frame of the profile's plane.
+// How a surface (or mesh) entity is built from its input curves (issue 6 §2): the construction mode
+// and its options, as plain data the document saves. Options that refer to geometry are kept
+// relative to the inputs so that they follow a drag: the revolve axis is a curve the designer drew
+// (its two ends), and an extrusion's direction lives in the frame of the profile's plane.
+//
+// The modes are an enum with one descriptor table (name, inputs and their roles, options): the
+// document reader, the CLI, the ui's status texts and the model's checks all read the table, and
+// nothing compares mode names.
+#include "solvers/surfaces/surface_modes.h"
+
 #include <Eigen/Core>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace sculptline::model {
 
+/// Every way the model builds a surface or mesh from curves.
+enum class Construction { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation, Gordon, Network };
+
+/// Options a construction reads (bits of ConstructionInfo::options).
+enum ConstructionOption : unsigned {
+    kAngleOption = 1u << 0,      ///< revolve: sweep angle
+    kDirectionOption = 1u << 1,  ///< extrude: direction and distance
+    kToleranceOption = 1u << 2,  ///< approximating modes: model units
+    kTangentsOption = 1u << 3,   ///< fill: G1 to adjacent surfaces
+    kUCurvesOption = 1u << 4,    ///< gordon: size of the first family
+};
+
+/// One row of the construction table.
+struct ConstructionInfo {
+    Construction mode;
+    const char* name;  ///< as documents, the CLI and the ui's actions spell it
+    int minInputs;     ///< input curves, in order
+    int maxInputs;
+    /// Role of each input for status messages; for modes with a variable count, the role of every
+    /// input, numbered ("boundary 1", "section 2").
+    std::array<const char*, 3> roles;
+    bool numberedRoles;  ///< roles[0] followed by the input's number
+    unsigned options;    ///< ConstructionOption bits
+    /// The solver mode that builds it (solvers/surfaces/surface_modes.h); none for gordon and
+    /// network, which have their own builders.
+    std::optional<solvers::surfaces::SurfaceMode> solverMode;
+    bool makesMesh;  ///< network: a mesh entity, not a surface
+};
+
+/// The whole table, in enum order.
+const std::array<ConstructionInfo, 9>& constructions();
+const ConstructionInfo& describe(Construction mode);
+const char* constructionName(Construction mode);
+/// The mode named `name`, or nothing.
+std::optional<Construction> constructionFromName(const std::string& name);
+
 struct SurfaceRecipe {
-    /// A mode name of solvers/surfaces (fill, revolve, extrude, sweep, loft, boundary-rotation,
-    /// rail-rotation, gordon).
-    std::string mode;
+    Construction mode = Construction::Fill;
     /// revolve: sweep angle in degrees, (0, 360].
     double angleDegrees = 360.0;
     /// extrude: the direction and distance (model units), in the frame of the profile's plane (world
@@ -40,10 +82,13 @@ struct InputCount {
     int min = 0;
     int max = 0;
 };
-/// @throws std::invalid_argument for an unknown mode name.
-InputCount surfaceInputCount(const std::string& mode);
+InputCount surfaceInputCount(Construction mode);
 
 /// What each input means, for status messages ("profile", "axis", "path", ...); `index` from 0.
-std::string surfaceInputRole(const std::string& mode, int index);
+std::string surfaceInputRole(Construction mode, int index);
+
+/// Whether input `index` lies on the surface it builds (every input but a revolve's axis and a
+/// sweep's path): a G1 fill can be tangent to a surface along such a curve.
+bool inputLiesOnSurface(Construction mode, int index);
 
 }  // namespace sculptline::model

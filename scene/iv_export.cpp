@@ -72,7 +72,7 @@ SoSeparator* makeExportGraph(const model::Model& model, const model::GridSpec& g
             node = makeCurveNode(e.world ? *e.world : *e.local);
             curves->addChild(node);
             break;
-        case model::EntityKind::Constraint: continue;  // an editing aid, not geometry
+        case model::EntityKind::Point: continue;  // a construction aid, not geometry
         case model::EntityKind::Mesh:
             node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
             surfaces->addChild(node);

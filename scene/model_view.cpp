@@ -185,18 +185,7 @@ void ModelView::entityAdded(const model::Entity& e)
     case model::EntityKind::Curve: addCurveNode(e); break;
     case model::EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
     case model::EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
-    case model::EntityKind::Constraint: {
-        // A pin at C(u), in world coordinates: it moves with the curve's updates.
-        auto* node = new SoSeparator;
-        node->setName(nodeName("Constraint", e.id).c_str());
-        SoCoordinate3* point = addStyledCoordinates(node, kConstraintColor, kConstraintSize, 0.0f);
-        if (drawable(e)) point->point.setValue(toSb(e.anchor));
-        node->addChild(new SoPointSet);
-        constraints_->addChild(node);
-        nodes_[e.id] = node;
-        anchors_[e.id] = point;
-        break;
-    }
+    case model::EntityKind::Point: break;  // drawn with the constraints that make them (later issues)
     }
 }
 
@@ -245,7 +234,6 @@ void ModelView::entityRemoved(const model::Entity& e)
     if (it == nodes_.end()) return;
     SoGroup* parent = e.kind == model::EntityKind::Plane        ? planeCurves_
                       : e.kind == model::EntityKind::Surface || e.kind == model::EntityKind::Mesh ? surfaces_
-                      : e.kind == model::EntityKind::Constraint ? static_cast<SoGroup*>(constraints_)
                       : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
                                                       : curves_;
     parent->removeChild(it->second);
@@ -253,7 +241,6 @@ void ModelView::entityRemoved(const model::Entity& e)
     frames_.erase(e.id);
     builtShape_.erase(e.id);
     grids_.erase(e.id);
-    anchors_.erase(e.id);
     if (highlighted_ == e.id) highlighted_ = 0;
     marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
@@ -263,7 +250,6 @@ void ModelView::entityUpdated(const model::Entity& e)
     // A curve moved with its plane changes only its world form; its node is in plane-local
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
-    if (e.kind == model::EntityKind::Constraint && drawable(e)) anchors_.at(e.id)->point.setValue(toSb(e.anchor));
     if (e.kind == model::EntityKind::Curve && builtShape_[e.id] != e.shapeVersion) rebuildCurveNode(e);
     if (e.kind == model::EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
         SoSeparator* old = nodes_.at(e.id);
@@ -277,6 +263,36 @@ void ModelView::entityUpdated(const model::Entity& e)
     if (e.kind != model::EntityKind::Plane || !drawable(e)) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
+}
+
+void ModelView::constraintAdded(const model::Constraint& c)
+{
+    // A pin at C(u), in world coordinates: it moves with the curve's updates.
+    if (c.type != model::ConstraintType::Position && c.type != model::ConstraintType::Tangent) return;
+    auto* node = new SoSeparator;
+    node->setName(nodeName("Constraint", c.id).c_str());
+    SoCoordinate3* point = addStyledCoordinates(node, kConstraintColor, kConstraintSize, 0.0f);
+    if (model::hasFiniteGeometry(c)) point->point.setValue(toSb(c.value));
+    else ++nonFiniteRejections_;
+    node->addChild(new SoPointSet);
+    constraints_->addChild(node);
+    pins_[c.id] = {node, point};
+}
+
+void ModelView::constraintRemoved(const model::Constraint& c)
+{
+    const auto it = pins_.find(c.id);
+    if (it == pins_.end()) return;
+    constraints_->removeChild(it->second.first);
+    pins_.erase(it);
+}
+
+void ModelView::constraintUpdated(const model::Constraint& c)
+{
+    const auto it = pins_.find(c.id);
+    if (it == pins_.end()) return;
+    if (model::hasFiniteGeometry(c)) it->second.second->point.setValue(toSb(c.value));
+    else ++nonFiniteRejections_;
 }
 
 SoSeparator* ModelView::makeMeshEntityNode(const model::Entity& e)

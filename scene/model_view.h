@@ -61,6 +61,9 @@ public:
     void entityAdded(const model::Entity& entity) override;
     void entityRemoved(const model::Entity& entity) override;
     void entityUpdated(const model::Entity& entity) override;
+    void constraintAdded(const model::Constraint& constraint) override;
+    void constraintRemoved(const model::Constraint& constraint) override;
+    void constraintUpdated(const model::Constraint& constraint) override;
 
 private:
     /// The one gate between the model's geometry and Coin: false (and counted) when a coordinate
@@ -91,7 +94,8 @@ private:
     std::map<model::EntityId, SoSeparator*> nodes_;
     std::map<model::EntityId, SoTransform*> frames_;
     SoSeparator* constraints_ = nullptr;
-    std::map<model::EntityId, SoCoordinate3*> anchors_;  ///< a constraint's pin
+    /// A pin's node and its point, by constraint id.
+    std::map<model::ConstraintId, std::pair<SoSeparator*, SoCoordinate3*>> pins_;
     std::map<model::EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
     int nonFiniteRejections_ = 0;

@@ -36,14 +36,23 @@ void EntityListDock::refresh(const model::Model& model, model::EntityId selectio
     for (const auto& [id, e] : model.entities()) {
         if (e.kind == model::EntityKind::Curve && e.plane() == 0) add(e, tr("Curve %1 (in space)").arg(id));
         if (e.kind == model::EntityKind::Surface) {
-            QString text = e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromStdString(e.recipe->mode)) : tr("Surface %1").arg(id);
+            QString text = e.recipe ? tr("Surface %1 (%2)").arg(id).arg(QString::fromLatin1(model::constructionName(e.recipe->mode)))
+                                    : tr("Surface %1").arg(id);
             if (e.failed()) text += e.surface ? tr(" - not rebuilt") : tr(" - failed");
             add(e, text);
         }
         if (e.kind == model::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
-        if (e.kind == model::EntityKind::Constraint) {
-            add(e, tr("Constraint %1 (%2 on curve %3)").arg(id).arg(QString::fromStdString(e.constraintType)).arg(e.inputs.front()));
-        }
+    }
+    // The designer's constraints (pins and the rest; fixed points show in the inspector): an item
+    // selects what the constraint holds.
+    for (const auto& [id, c] : model.constraints()) {
+        if (model::derivedConstraint(c.type) || c.type == model::ConstraintType::FixedPoints) continue;
+        QStringList targets;
+        for (model::EntityId t : c.targets) targets << QString::number(t);
+        auto* item = new QListWidgetItem(tr("Constraint c%1 (%2 on %3)").arg(id).arg(QString::fromLatin1(model::constraintTypeName(c.type)))
+                                             .arg(targets.join(QStringLiteral(", "))),
+                                         list_);
+        item->setData(Qt::UserRole, c.targets.front());
     }
     updating_ = false;
     setSelection(selection);

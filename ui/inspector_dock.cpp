@@ -63,7 +63,8 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
         // A closed curve's last `degree` points repeat its first: one box per unique point.
         const int unique = c.isClosed() ? c.pointCount() - c.degree() : c.pointCount();
         for (int i = 0; i < unique; ++i) {
-            const bool fixed = std::binary_search(e->fixedPoints.begin(), e->fixedPoints.end(), i);
+            const std::vector<int> held = model.fixedPoints(id);
+            const bool fixed = std::binary_search(held.begin(), held.end(), i);
             auto* item = new QListWidgetItem(QStringLiteral("%1: %2").arg(i).arg(point(c.points()[i])), points_);
             item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
             item->setCheckState(fixed ? Qt::Checked : Qt::Unchecked);
@@ -77,6 +78,9 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
     QString out;
     QTextStream s(&out);
     s << tr("Type: %1 %2").arg(model::kindName(e->kind)).arg(id) << "\n";
+    // Seed 000 §3.2: its state, and the freedom its constraints leave it.
+    const model::Dof dof = model.dof(id);
+    s << tr("State: %1; freedom: %2 of %3 left").arg(QString::fromLatin1(model::stateName(model.state(id)))).arg(dof.free()).arg(dof.total) << "\n";
     if (e->kind == model::EntityKind::Plane) {
         s << tr("Origin: %1").arg(point(e->frame.origin)) << "\n";
         s << tr("Normal: %1").arg(point(e->frame.normal())) << "\n";
@@ -88,11 +92,16 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
         s << (e->plane() != 0 ? tr("On plane %1 (control points in its frame)").arg(e->plane()) : tr("In space")) << "\n";
         s << tr("Degree: %1%2%3").arg(c.degree()).arg(c.isRational() ? tr(", rational") : QString()).arg(c.isClosed() ? tr(", closed") : QString()) << "\n";
         s << tr("Knots (%1): %2").arg(c.knots().size()).arg(knots(c.knots())) << "\n";
-        s << tr("Control points (%1), %2 fixed, the rest free (check boxes below):").arg(c.pointCount()).arg(e->fixedPoints.size()) << "\n";
-        for (model::EntityId d : model.dependents(id)) {
-            const model::Entity* k = model.find(d);
-            if (k && k->kind == model::EntityKind::Constraint)
-                s << tr("Constraint %1: %2 at u = %3").arg(d).arg(QString::fromStdString(k->constraintType)).arg(k->parameter, 0, 'g', 5) << "\n";
+        s << tr("Control points (%1), %2 fixed, the rest free (check boxes below):").arg(c.pointCount()).arg(model.fixedPoints(id).size()) << "\n";
+        for (model::ConstraintId k : model.constraintsOn(id)) {
+            const model::Constraint* c = model.findConstraint(k);
+            if (c->type != model::ConstraintType::Position && c->type != model::ConstraintType::Tangent) continue;
+            s << tr("Constraint c%1: keeps the %2 at u = %3 (at %4) while it is pulled")
+                     .arg(k)
+                     .arg(c->type == model::ConstraintType::Position ? tr("point") : tr("tangent"))
+                     .arg(c->parameters.front(), 0, 'g', 5)
+                     .arg(point(c->value))
+              << "\n";
         }
     } else if (e->kind == model::EntityKind::Mesh) {
         QStringList curves;
@@ -100,15 +109,13 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
         s << tr("Curve network loop: curves %1").arg(curves.join(QStringLiteral(", "))) << "\n";
         s << tr("Vertices: %1, triangles: %2").arg(e->mesh->vertices.size()).arg(e->mesh->triangles.size()) << "\n";
         if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
-    } else if (e->kind == model::EntityKind::Constraint) {
-        s << tr("Keeps the %1 of curve %2 at u = %3 while it is pulled").arg(QString::fromStdString(e->constraintType == "position" ? "point" : "tangent"))
-                 .arg(e->inputs.front()).arg(e->parameter, 0, 'g', 6) << "\n";
-        s << tr("At %1").arg(point(e->anchor)) << "\n";
+    } else if (e->kind == model::EntityKind::Point) {
+        s << tr("At %1").arg(point(e->position)) << "\n";
     } else {
         if (e->recipe) {
             QStringList inputs;
             for (model::EntityId c : e->curveInputs()) inputs << QString::number(c);
-            s << tr("Made by: %1 of curves %2").arg(QString::fromStdString(e->recipe->mode), inputs.join(QStringLiteral(", "))) << "\n";
+            s << tr("Made by: %1 of curves %2").arg(QString::fromLatin1(model::constructionName(e->recipe->mode)), inputs.join(QStringLiteral(", "))) << "\n";
             for (const model::SurfaceRecipe::Tangent& t : e->recipe->tangents)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";

@@ -183,7 +183,7 @@ void MainWindow::createActions()
     modes_ = new QActionGroup(this);
     // Each mode: its action name, a short label for the Modes dock's button, the menu text, the hot key.
     auto modeAction = [&](const char* name, const QString& label, const QString& text, const QString& key, Mode m,
-                          const char* surface = "") {
+                          std::optional<model::Construction> surface = std::nullopt) {
         QAction* a = make(modeMenu, name, text, QKeySequence(key), [this, m, surface]() { setMode(m, surface); });
         a->setIconText(label);
         a->setCheckable(true);
@@ -197,18 +197,21 @@ void MainWindow::createActions()
     modeAction("mode.select", tr("Select"), tr("S&elect"), QStringLiteral("E"), Mode::Select);
     modeMenu->addSeparator();
     // The surface modes (thesis §5.1.3, §5.2; seed 000): pick the curves, the surface follows them.
-    auto surfaceAction = [&](const char* name, const QString& label, const QString& text, const QString& key, const char* mode) {
+    auto surfaceAction = [&](const char* name, const QString& label, const QString& text, const QString& key, model::Construction mode) {
         modeAction(name, label, text, key, Mode::Surface, mode);
     };
-    surfaceAction("mode.fill", tr("Fill"), tr("&Fill 2-4 boundary curves"), QStringLiteral("F"), "fill");
-    surfaceAction("mode.revolve", tr("Revolve"), tr("&Revolve a profile about an axis line"), QStringLiteral("R"), "revolve");
-    surfaceAction("mode.extrude", tr("Extrude"), tr("E&xtrude: drag a curve out"), QStringLiteral("X"), "extrude");
-    surfaceAction("mode.sweep", tr("Sweep"), tr("S&weep a profile along a path"), QStringLiteral("W"), "sweep");
-    surfaceAction("mode.loft", tr("Loft / skin"), tr("Loft / s&kin through sections"), QStringLiteral("K"), "loft");
-    surfaceAction("mode.boundaryRotation", tr("Boundary rot."), tr("&Boundary rotation of two outlines"), QStringLiteral("B"), "boundary-rotation");
-    surfaceAction("mode.railRotation", tr("Rail rot."), tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"), "rail-rotation");
-    surfaceAction("mode.gordon", tr("Gordon"), tr("Gordon s&urface through a grid of curves"), QStringLiteral("U"), "gordon");
-    surfaceAction("mode.network", tr("Network mesh"), tr("&Mesh a closed loop of curves"), QStringLiteral("M"), "network");
+    using model::Construction;
+    surfaceAction("mode.fill", tr("Fill"), tr("&Fill 2-4 boundary curves"), QStringLiteral("F"), Construction::Fill);
+    surfaceAction("mode.revolve", tr("Revolve"), tr("&Revolve a profile about an axis line"), QStringLiteral("R"), Construction::Revolve);
+    surfaceAction("mode.extrude", tr("Extrude"), tr("E&xtrude: drag a curve out"), QStringLiteral("X"), Construction::Extrude);
+    surfaceAction("mode.sweep", tr("Sweep"), tr("S&weep a profile along a path"), QStringLiteral("W"), Construction::Sweep);
+    surfaceAction("mode.loft", tr("Loft / skin"), tr("Loft / s&kin through sections"), QStringLiteral("K"), Construction::Loft);
+    surfaceAction("mode.boundaryRotation", tr("Boundary rot."), tr("&Boundary rotation of two outlines"), QStringLiteral("B"),
+                  Construction::BoundaryRotation);
+    surfaceAction("mode.railRotation", tr("Rail rot."), tr("Rail rotation (&G): two rails and a profile"), QStringLiteral("G"),
+                  Construction::RailRotation);
+    surfaceAction("mode.gordon", tr("Gordon"), tr("Gordon s&urface through a grid of curves"), QStringLiteral("U"), Construction::Gordon);
+    surfaceAction("mode.network", tr("Network mesh"), tr("&Mesh a closed loop of curves"), QStringLiteral("M"), Construction::Network);
     QAction* g1 = make(modeMenu, "surface.fillTangent", tr("Fill &tangent to the surfaces its boundaries come from"),
                        QKeySequence(QStringLiteral("T")), [this](bool on) { document_->setFillTangent(on); });
     g1->setCheckable(true);
@@ -248,16 +251,16 @@ void MainWindow::createDocks()
     connect(entities_, &EntityListDock::entityPicked, this, [this](model::EntityId id) { document_->select(id); });
 }
 
-void MainWindow::setMode(Mode mode, const std::string& surfaceMode)
+void MainWindow::setMode(Mode mode, std::optional<model::Construction> surfaceMode)
 {
     mode_ = mode;
-    surfaceMode_ = mode == Mode::Surface ? surfaceMode : std::string();
+    surfaceMode_ = mode == Mode::Surface ? surfaceMode : std::nullopt;
     document_->setSurfaceMode(surfaceMode_);
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     if (viewer_) viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
     document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift);
-    document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == "extrude");
+    document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == model::Construction::Extrude);
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch
                              : mode == Mode::Lift     ? SketchDocument::StrokeMode::Lift
                                                       : SketchDocument::StrokeMode::Sketch);
@@ -305,12 +308,12 @@ QString MainWindow::modeActionName() const
     // "boundary-rotation" -> "mode.boundaryRotation"
     QString name = QStringLiteral("mode.");
     bool upper = false;
-    for (char c : surfaceMode_) {
-        if (c == '-') {
+    for (const char* c = surfaceMode_ ? model::constructionName(*surfaceMode_) : ""; *c; ++c) {
+        if (*c == '-') {
             upper = true;
             continue;
         }
-        name += upper ? QChar(c).toUpper() : QChar(c);
+        name += upper ? QChar(*c).toUpper() : QChar(*c);
         upper = false;
     }
     return name;
@@ -318,20 +321,21 @@ QString MainWindow::modeActionName() const
 
 QString MainWindow::surfaceGuidance() const
 {
-    const QString mode = QString::fromStdString(surfaceMode_);
     if (!document_->surfaceMessage().isEmpty()) return document_->surfaceMessage();
-    if (surfaceMode_ == "extrude") return tr("Extrude: press on a curve and drag; the surface follows the pointer.");
-    if (surfaceMode_ == "gordon") {
+    if (!surfaceMode_) return QString();
+    const QString mode = QString::fromLatin1(model::constructionName(*surfaceMode_));
+    if (surfaceMode_ == model::Construction::Extrude) return tr("Extrude: press on a curve and drag; the surface follows the pointer.");
+    if (surfaceMode_ == model::Construction::Gordon) {
         return tr("Gordon: click two or more curves of one family, Enter, then the curves crossing them, Enter (%1 picked). Esc forgets.")
             .arg(document_->surfaceInputs().size());
     }
-    if (surfaceMode_ == "network") {
+    if (surfaceMode_ == model::Construction::Network) {
         return tr("Network: click the curves of a closed loop in order (or one closed curve), then Enter (%1 picked). Esc forgets.")
             .arg(document_->surfaceInputs().size());
     }
-    const model::InputCount count = model::surfaceInputCount(surfaceMode_);
+    const model::InputCount count = model::surfaceInputCount(*surfaceMode_);
     const int picked = static_cast<int>(document_->surfaceInputs().size());
-    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(model::surfaceInputRole(surfaceMode_, picked)));
+    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(model::surfaceInputRole(*surfaceMode_, picked)));
     text += count.min == count.max ? tr(" (%1 of %2).").arg(picked + 1).arg(count.max)
                                    : tr(" (%1 picked; Enter builds with %2 or more).").arg(picked).arg(count.min);
     return text + tr(" Esc forgets the picks.");
@@ -389,7 +393,7 @@ SbBool MainWindow::viewerEvent(void* self, QEvent* event)
     if (event->type() != QEvent::MouseButtonPress) return FALSE;
     auto* mouse = static_cast<QMouseEvent*>(event);
     if (mouse->button() != Qt::LeftButton) return FALSE;
-    if (window->mode_ == Mode::Surface && window->surfaceMode_ != "extrude") {
+    if (window->mode_ == Mode::Surface && window->surfaceMode_ != model::Construction::Extrude) {
         // A click picks the nearest curve as the next input; nothing else sees the press.
         if (const model::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickSurfaceInput(curve);
         return TRUE;

@@ -63,7 +63,7 @@ public:
     QPoint pixelOf(const Eigen::Vector3d& world) const;
     Mode mode() const { return mode_; }
     /// The solvers/surfaces mode name while mode() is Surface.
-    const std::string& surfaceMode() const { return surfaceMode_; }
+    std::optional<model::Construction> surfaceMode() const { return surfaceMode_; }
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
@@ -96,7 +96,7 @@ protected:
 private:
     void createActions();
     void createDocks();
-    void setMode(Mode mode, const std::string& surfaceMode = std::string());
+    void setMode(Mode mode, std::optional<model::Construction> surfaceMode = std::nullopt);
     void updateStatus();
     void updateTitle();
     /// The object name of the current mode's action ("mode.boundaryRotation", ...).
@@ -130,7 +130,7 @@ private:
     RecognitionDock* recognition_ = nullptr;
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::View;
-    std::string surfaceMode_;
+    std::optional<model::Construction> surfaceMode_;
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
     UndoHistory* history_ = nullptr;

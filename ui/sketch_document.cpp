@@ -28,7 +28,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     // One handle for two drags: pulling a curve point, or (extrude mode) pulling a curve out into
     // a surface.
     curvePull_->setCallbacks(
-        [this](const manipulators::StrokeHit& hit) { return surfaceMode_ == "extrude" ? grabExtrusion(hit) : grabCurve(hit); },
+        [this](const manipulators::StrokeHit& hit) { return surfaceMode_ == model::Construction::Extrude ? grabExtrusion(hit) : grabCurve(hit); },
         [this](const Eigen::Vector3d& local) { extrusion_ || extrudeProfile_ ? extrudeTo(local) : pullTo(local); },
         [this]() { extrudeProfile_ ? releaseExtrusion() : releaseCurve(); });
     gridNode_ = scene::makeGroundGrid(grid_);
@@ -48,7 +48,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
 SketchDocument::~SketchDocument()
 {
     undo_.clear();
-    pullSolver_.reset();
+    model_.endDrag();
     model_.removeObserver(this);
     planes_.clear();
     scheduler_.reset();
@@ -141,8 +141,8 @@ void SketchDocument::addPlane(const model::PlaneFrame& frame)
 void SketchDocument::setFixedPoints(model::EntityId curve, std::vector<int> fixed)
 {
     const model::Entity* e = model_.find(curve);
-    if (!e || e->kind != model::EntityKind::Curve || e->fixedPoints == fixed) return;
-    undo_.push(new SetFixedPointsCommand(*this, curve, e->fixedPoints, std::move(fixed)));
+    if (!e || e->kind != model::EntityKind::Curve || model_.fixedPoints(curve) == fixed) return;
+    undo_.push(new SetFixedPointsCommand(*this, curve, model_.fixedPoints(curve), std::move(fixed)));
 }
 
 void SketchDocument::notifyChanged()

@@ -117,8 +117,8 @@ public:
     /// `mode` (a solvers/surfaces mode name; empty = no surface mode). When the mode's largest
     /// count is reached the surface is built; fill and loft can be built earlier (buildSurface()).
     /// Extrude instead drags a picked curve: the surface follows the pointer and is one undo step.
-    void setSurfaceMode(const std::string& mode);
-    const std::string& surfaceMode() const { return surfaceMode_; }
+    void setSurfaceMode(std::optional<model::Construction> mode);
+    std::optional<model::Construction> surfaceMode() const { return surfaceMode_; }
     /// Adds `curve` to the picked inputs (a second pick of the last one takes it back).
     void pickSurfaceInput(model::EntityId curve);
     const std::vector<model::EntityId>& surfaceInputs() const { return surfaceInputs_; }
@@ -186,10 +186,8 @@ private:
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
     std::unique_ptr<scene::StrokeFeedback> feedback_;
-    std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> pullSolver_;
     model::EntityId pulled_ = 0;
     std::optional<solvers::Curve3d> pullStart_;
-    std::vector<Eigen::Vector3d> pullHeld_;  ///< values the curve's constraints keep during a pull
     QString pullMessage_;  ///< the solver's last remark during a pull (compromise, too few points)
     std::map<model::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
@@ -214,7 +212,7 @@ private:
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
-    std::string surfaceMode_;
+    std::optional<model::Construction> surfaceMode_;
     bool fillG1_ = true;
     int gordonFirstFamily_ = -1;  ///< gordon: picks in the first family once Enter closed it
     std::vector<model::EntityId> surfaceInputs_;

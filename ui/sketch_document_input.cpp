@@ -326,32 +326,19 @@ std::optional<model::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
     const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
     if (hit.shift) {
         // Shift+press pins the curve there: a position constraint kept by every later pull.
-        model::Entity pin;
-        pin.kind = model::EntityKind::Constraint;
-        pin.inputs = {curve->id};
-        pin.constraintType = "position";
-        pin.parameter = u;
-        undo_.push(new AddEntitiesCommand(*this, {pin}, tr("Pin curve %1").arg(curve->id)));
+        model::Constraint pin;
+        pin.type = model::ConstraintType::Position;
+        pin.targets = {curve->id};
+        pin.parameters = {u};
+        undo_.push(new AddConstraintCommand(*this, std::move(pin), tr("Pin curve %1").arg(curve->id)));
         return std::nullopt;
     }
     try {
-        // A position constraint at the grabbed parameter, plus the curve's own constraints held at
-        // their present values, with its fixed points blocked; the factorization is done here, once
-        // per pull, and each pointer event is one product (curve_manipulation.h).
-        solvers::editing::CurveConstraint<3> grip;
-        grip.u = u;
-        std::vector<solvers::editing::CurveConstraint<3>> constraints{grip};
-        pullHeld_.clear();
-        for (model::EntityId d : model_.dependents(curve->id)) {
-            const model::Entity* k = model_.find(d);
-            if (!k || k->kind != model::EntityKind::Constraint) continue;
-            solvers::editing::CurveConstraint<3> kept;
-            kept.type = k->constraintType == "tangent" ? solvers::editing::ConstraintType::Tangent : solvers::editing::ConstraintType::Position;
-            kept.u = k->parameter;
-            constraints.push_back(kept);
-            pullHeld_.push_back(curve->local->derivatives(k->parameter, 1)[k->constraintType == "tangent" ? 1 : 0]);
-        }
-        pullSolver_ = std::make_unique<solvers::editing::CurveManipulationSolver<3>>(*curve->local, constraints, curve->fixedPoints);
+        // The model factors the curve's least-change solver once, here: a position constraint at
+        // the grabbed parameter plus the curve's pins held at their present values, its fixed points
+        // blocked; each pointer event is then one solve (Model::pullTo).
+        scheduler_->flush();
+        model_.beginPull(curve->id, u);
     } catch (const std::exception& e) {
         lastStroke_ = {};
         lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(curve->id).arg(QString::fromStdString(e.what()));
@@ -366,31 +353,22 @@ std::optional<model::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
 
 void SketchDocument::pullTo(const Eigen::Vector3d& local)
 {
-    if (!pullSolver_) return;
-    std::vector<Eigen::Vector3d> targets{local};
-    targets.insert(targets.end(), pullHeld_.begin(), pullHeld_.end());
-    // Marks the curve dirty only: the scheduler re-tessellates it once per frame.
-    solvers::editing::ManipulationReport report;
-    solvers::Curve3d pulled = pullSolver_->solve(targets, &report);
-    try {
-        model::requireCurveExtent(pulled);
-    } catch (const std::exception& e) {
-        pullMessage_ = QString::fromStdString(e.what());  // the curve keeps its last shape
-        return;
-    }
-    model_.setCurveShape(pulled_, std::move(pulled));
-    if (!report.message.empty()) pullMessage_ = QString::fromStdString(report.message);
+    if (pulled_ == 0) return;
+    // Marks the curve changed only: the scheduler updates its dependents once per frame.
+    const std::string message = model_.pullTo(local);
+    if (!message.empty()) pullMessage_ = QString::fromStdString(message);
 }
 
 void SketchDocument::releaseCurve()
 {
+    scheduler_->flush();
+    model_.endDrag();  // the surfaces it drove come to rest as fresh builds
     scheduler_->flush();
     view_->refineSurfaces();
     const model::Entity* curve = model_.find(pulled_);
     if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
         undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));
     }
-    pullSolver_.reset();
     pullStart_.reset();
     pulled_ = 0;
     if (!pullMessage_.isEmpty()) {

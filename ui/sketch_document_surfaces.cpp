@@ -16,7 +16,7 @@ constexpr double kMinExtrusion = 1e-3;
 
 }  // namespace
 
-void SketchDocument::setSurfaceMode(const std::string& mode)
+void SketchDocument::setSurfaceMode(std::optional<model::Construction> mode)
 {
     if (mode == surfaceMode_) return;
     surfaceMode_ = mode;
@@ -35,7 +35,7 @@ void SketchDocument::setSurfaceMessage(const QString& message)
 void SketchDocument::pickSurfaceInput(model::EntityId curve)
 {
     const model::Entity* e = model_.find(curve);
-    if (surfaceMode_.empty() || !e || e->kind != model::EntityKind::Curve) return;
+    if (!surfaceMode_ || !e || e->kind != model::EntityKind::Curve) return;
     if (!surfaceInputs_.empty() && surfaceInputs_.back() == curve) {
         surfaceInputs_.pop_back();  // picked twice: taken back
     } else if (std::find(surfaceInputs_.begin(), surfaceInputs_.end(), curve) != surfaceInputs_.end()) {
@@ -45,8 +45,8 @@ void SketchDocument::pickSurfaceInput(model::EntityId curve)
         surfaceInputs_.push_back(curve);
     }
     view_->setMarked(surfaceInputs_);
-    const model::InputCount count = model::surfaceInputCount(surfaceMode_);
-    if (static_cast<int>(surfaceInputs_.size()) >= count.max && surfaceMode_ != "gordon") {
+    const model::InputCount count = model::surfaceInputCount(*surfaceMode_);
+    if (static_cast<int>(surfaceInputs_.size()) >= count.max && surfaceMode_ != model::Construction::Gordon) {
         buildSurface();
         return;
     }
@@ -55,8 +55,8 @@ void SketchDocument::pickSurfaceInput(model::EntityId curve)
 
 bool SketchDocument::buildSurface()
 {
-    if (surfaceMode_.empty()) return false;
-    if (surfaceMode_ == "gordon" && gordonFirstFamily_ < 0) {
+    if (!surfaceMode_) return false;
+    if (surfaceMode_ == model::Construction::Gordon && gordonFirstFamily_ < 0) {
         // The first Enter closes the first family; the curves picked next are the other one.
         if (surfaceInputs_.size() < 2) {
             setSurfaceMessage(tr("Gordon: pick at least two curves of the first family before Enter."));
@@ -73,7 +73,7 @@ bool SketchDocument::buildSurface()
     gordonFirstFamily_ = -1;
     view_->setMarked({});
     scheduler_->flush();
-    if (surfaceMode_ == "network") {
+    if (surfaceMode_ == model::Construction::Network) {
         try {
             undo_.push(new AddEntitiesCommand(*this, {model_.makeMesh(inputs)}, tr("Mesh a curve network loop")));
         } catch (const std::exception& error) {
@@ -85,14 +85,15 @@ bool SketchDocument::buildSurface()
         return true;
     }
     model::SurfaceRecipe recipe;
-    recipe.mode = surfaceMode_;
+    recipe.mode = *surfaceMode_;
+    const QString modeName = QString::fromLatin1(model::constructionName(*surfaceMode_));
     recipe.uCurves = firstFamily;
-    if (surfaceMode_ == "fill" && fillG1_) recipe.tangents = adjacentSurfaces(inputs);
+    if ((model::describe(*surfaceMode_).options & model::kTangentsOption) && fillG1_) recipe.tangents = adjacentSurfaces(inputs);
     try {
         model::Entity surface = model_.makeSurface(inputs, recipe);
-        undo_.push(new AddEntitiesCommand(*this, {surface}, tr("Make %1 surface").arg(QString::fromStdString(surfaceMode_))));
+        undo_.push(new AddEntitiesCommand(*this, {surface}, tr("Make %1 surface").arg(modeName)));
     } catch (const std::exception& error) {
-        setSurfaceMessage(tr("No %1 surface: %2").arg(QString::fromStdString(surfaceMode_), QString::fromStdString(error.what())));
+        setSurfaceMessage(tr("No %1 surface: %2").arg(modeName, QString::fromStdString(error.what())));
         return false;
     }
     const model::Entity* made = model_.find(selection_);
@@ -114,9 +115,9 @@ std::vector<model::SurfaceRecipe::Tangent> SketchDocument::adjacentSurfaces(cons
         for (const auto& [id, e] : model_.entities()) {
             if (e.kind != model::EntityKind::Surface || !e.recipe) continue;
             // Every curve input lies on its surface but a revolve's axis and a sweep's path.
-            std::vector<model::EntityId> curves = e.curveInputs();
-            if (e.recipe->mode == "revolve" || e.recipe->mode == "sweep") curves.resize(1);
-            if (std::find(curves.begin(), curves.end(), boundaries[k]) == curves.end()) continue;
+            const std::vector<model::EntityId> curves = e.curveInputs();
+            const auto at = std::find(curves.begin(), curves.end(), boundaries[k]);
+            if (at == curves.end() || !model::inputLiesOnSurface(e.recipe->mode, static_cast<int>(at - curves.begin()))) continue;
             out.push_back({static_cast<int>(k), id});
             break;
         }
@@ -156,7 +157,7 @@ void SketchDocument::extrudeTo(const Eigen::Vector3d& local)
     const Eigen::Vector3d world = extrudeFrame_.rotation * local;
     if (extrusion_ == 0 && world.norm() < kMinExtrusion) return;
     model::SurfaceRecipe recipe;
-    recipe.mode = "extrude";
+    recipe.mode = model::Construction::Extrude;
     // Stored in the profile plane's frame so that the extrusion turns with the plane.
     recipe.direction = profile->plane() != 0 ? Eigen::Vector3d(model_.find(profile->plane())->frame.rotation.conjugate() * world) : world;
     if (extrusion_ != 0) {
@@ -179,7 +180,7 @@ void SketchDocument::releaseExtrusion()
     extrudeProfile_ = 0;
     const model::Entity* e = model_.find(id);
     if (!e) return;
-    std::vector<model::Entity> removed = model_.remove(id);
+    std::vector<model::Entity> removed = model_.remove(id).entities;
     undo_.push(new AddEntitiesCommand(*this, removed, tr("Extrude curve %1").arg(removed.front().inputs.front())));
     setSurfaceMessage(tr("Surface %1 made.").arg(id));
 }

@@ -8,23 +8,6 @@
 
 namespace sculptline::ui {
 
-model::EntityId restoreEntity(model::Model& model, const model::Entity& e)
-{
-    switch (e.kind) {
-    case model::EntityKind::Plane: return model.addPlane(e.frame, e.id);
-    case model::EntityKind::Curve: {
-        const model::EntityId id = model.addCurve(e.plane(), *e.local, e.id);
-        if (!e.fixedPoints.empty()) model.setFixedPoints(id, e.fixedPoints);
-        return id;
-    }
-    case model::EntityKind::Mesh: return model.addMesh(e.inputs, e.id, true);
-    case model::EntityKind::Constraint: return model.addConstraint(e.inputs.front(), e.constraintType, e.parameter, e.id);
-    case model::EntityKind::Surface:
-        return e.recipe ? model.restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : model.addSurface(*e.surface, e.id);
-    }
-    return 0;
-}
-
 AddEntitiesCommand::AddEntitiesCommand(SketchDocument& doc, std::vector<model::Entity> entities, const QString& text)
     : doc_(doc), entities_(std::move(entities))
 {
@@ -39,7 +22,7 @@ void AddEntitiesCommand::redo()
             if (input == kPreviousEntity && i > 0) input = entities_[i - 1].id;
         }
         // First run: the model assigns the id (0 asks for a fresh one); later runs reuse it.
-        e.id = restoreEntity(doc_.model(), e);
+        e.id = doc_.model().restore(e);
     }
     doc_.scheduler().flush();
     if (!entities_.empty()) doc_.select(entities_.back().id);
@@ -65,9 +48,45 @@ void DeleteEntityCommand::redo()
 
 void DeleteEntityCommand::undo()
 {
-    for (const model::Entity& e : removed_) restoreEntity(doc_.model(), e);
+    doc_.model().restore(removed_);
     doc_.scheduler().flush();
     doc_.select(id_);
+}
+
+AddConstraintCommand::AddConstraintCommand(SketchDocument& doc, model::Constraint constraint, const QString& text)
+    : doc_(doc), constraint_(std::move(constraint))
+{
+    setText(text);
+}
+
+void AddConstraintCommand::redo()
+{
+    // First run: the model numbers it; later runs restore it under that number.
+    constraint_.id = doc_.model().addConstraint(constraint_);
+    doc_.notifyChanged();
+}
+
+void AddConstraintCommand::undo()
+{
+    doc_.model().removeConstraint(constraint_.id);
+    doc_.notifyChanged();
+}
+
+SetFixedCommand::SetFixedCommand(SketchDocument& doc, model::EntityId id, bool fixed) : doc_(doc), id_(id), fixed_(fixed)
+{
+    setText(fixed ? QStringLiteral("Fix %1").arg(id) : QStringLiteral("Free %1").arg(id));
+}
+
+void SetFixedCommand::redo()
+{
+    doc_.model().setFixed(id_, fixed_);
+    doc_.notifyChanged();
+}
+
+void SetFixedCommand::undo()
+{
+    doc_.model().setFixed(id_, !fixed_);
+    doc_.notifyChanged();
 }
 
 MovePlaneCommand::MovePlaneCommand(SketchDocument& doc, model::EntityId plane, const model::PlaneFrame& before,

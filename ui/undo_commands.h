@@ -41,7 +41,32 @@ public:
 private:
     SketchDocument& doc_;
     model::EntityId id_;
-    std::vector<model::Entity> removed_;
+    model::Removed removed_;
+};
+
+/// Adds one of the designer's constraints (a pin); undo removes it, redo restores it under its id.
+class AddConstraintCommand : public QUndoCommand {
+public:
+    AddConstraintCommand(SketchDocument& doc, model::Constraint constraint, const QString& text);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    model::Constraint constraint_;
+};
+
+/// Fixes or frees an entity (seed 000 §3.2: a fixed one keeps its shape through every edit and solve).
+class SetFixedCommand : public QUndoCommand {
+public:
+    SetFixedCommand(SketchDocument& doc, model::EntityId id, bool fixed);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    model::EntityId id_;
+    bool fixed_;
 };
 
 /// One plane drag, from press to release. The drag has already moved the model when the command
@@ -106,7 +131,5 @@ private:
     const bool& suspended_;
 };
 
-/// Re-adds `e` under its id (a plane, curve or surface; id 0: a fresh one); returns the id.
-model::EntityId restoreEntity(model::Model& model, const model::Entity& e);
 
 }  // namespace sculptline::ui

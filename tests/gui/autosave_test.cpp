@@ -102,7 +102,7 @@ std::vector<std::string> editSeveralWays(MainWindow& window, int rounds)
         doc.addStroke(strokeOn(doc, 30.0 + i, false));  // a concentric arc: the loft is a flat band
         const model::EntityId outer = doc.selection();
         states.push_back(stateOf(doc));
-        doc.setSurfaceMode("loft");
+        doc.setSurfaceMode(model::Construction::Loft);
         doc.pickSurfaceInput(curve);
         doc.pickSurfaceInput(outer);
         EXPECT_TRUE(doc.buildSurface()) << "the loft of round " << i;

@@ -30,8 +30,8 @@ TEST_F(FiniteGeometry, EveryKindWithANonFiniteCoordinateIsReported)
     mesh.mesh = solvers::surfaces::NetworkMesh{};
     mesh.mesh->vertices = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)};
     mesh.mesh->normals.assign(3, Eigen::Vector3d::UnitZ());
-    model::Entity constraint;
-    constraint.kind = model::EntityKind::Constraint;
+    model::Constraint constraint;
+    constraint.type = model::ConstraintType::Position;
 
     // Then the check tells them apart
     EXPECT_TRUE(model::hasFiniteGeometry(plane));
@@ -39,7 +39,7 @@ TEST_F(FiniteGeometry, EveryKindWithANonFiniteCoordinateIsReported)
     EXPECT_TRUE(model::hasFiniteGeometry(constraint));
     plane.frame.origin.x() = kNaN;
     mesh.mesh->normals[1].y() = kInf;
-    constraint.anchor.z() = -kInf;
+    constraint.value.z() = -kInf;
     EXPECT_FALSE(model::hasFiniteGeometry(plane));
     EXPECT_FALSE(model::hasFiniteGeometry(mesh));
     EXPECT_FALSE(model::hasFiniteGeometry(constraint));

@@ -83,9 +83,9 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     QListWidget* points = inspector->pointList();
     ASSERT_EQ(points->count(), 6);
     points->item(0)->setCheckState(Qt::Checked);
-    EXPECT_EQ(window.document().model().find(2)->fixedPoints, std::vector<int>{0});
+    EXPECT_EQ(window.document().model().fixedPoints(2), std::vector<int>{0});
     window.document().undoStack()->undo();
-    EXPECT_TRUE(window.document().model().find(2)->fixedPoints.empty());
+    EXPECT_TRUE(window.document().model().fixedPoints(2).empty());
     QApplication::processEvents();  // the queued refresh shows the undone state
     EXPECT_EQ(inspector->pointList()->item(0)->checkState(), Qt::Unchecked);
 
@@ -98,7 +98,7 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     }
     window.action(QStringLiteral("mode.revolve"))->trigger();
     EXPECT_EQ(window.mode(), Mode::Surface);
-    EXPECT_EQ(window.surfaceMode(), "revolve");
+    EXPECT_EQ(window.surfaceMode(), model::Construction::Revolve);
     EXPECT_TRUE(window.action(QStringLiteral("mode.revolve"))->isChecked());
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("profile"))) << window.statusBar()->currentMessage().toStdString();
     // Picking the default curve (id 2) twice takes it back; a plane is not a curve

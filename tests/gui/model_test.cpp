@@ -96,7 +96,7 @@ TEST(Model, RemovingAPlaneRemovesItsCurvesAndUndoRestoresThemUnderTheirIds)
     const model::EntityId plane = model.addPlane(turnedFrame());
     const model::EntityId curve = model.addCurve(plane, localCurve(1));
     // When the plane is removed
-    const std::vector<model::Entity> removed = model.remove(plane);
+    const std::vector<model::Entity> removed = model.remove(plane).entities;
     // Then its curve went with it, plane first in the returned list (the order to restore them)
     ASSERT_EQ(removed.size(), 2u);
     EXPECT_EQ(removed[0].id, plane);

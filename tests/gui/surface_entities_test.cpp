@@ -45,10 +45,10 @@ struct Scene {
         outlineA = model.addCurve(other, cubic({{-40, 0, 0}, {-20, 25, 0}, {20, 25, 0}, {40, 0, 0}}));
         outlineB = model.addCurve(other, cubic({{-40, -3, 0}, {-20, -25, 0}, {20, -25, 0}, {40, -3, 0}}));
         model::SurfaceRecipe revolve;
-        revolve.mode = "revolve";
+        revolve.mode = model::Construction::Revolve;
         revolved = model.addSurface({profile, axis}, revolve);
         model::SurfaceRecipe rotation;
-        rotation.mode = "boundary-rotation";
+        rotation.mode = model::Construction::BoundaryRotation;
         rotated = model.addSurface({outlineA, outlineB}, rotation);
     }
 };
@@ -140,24 +140,23 @@ TEST(SurfaceEntity, ImpossibleInputIsRefusedWithAMessageAndAddsNothing)
     Scene s;
     const size_t count = s.model.entities().size();
     model::SurfaceRecipe fill;
-    fill.mode = "fill";
+    fill.mode = model::Construction::Fill;
     // Two curves whose ends are far apart do not bound a surface
     EXPECT_THROW(s.model.addSurface({s.profile, s.outlineA}, fill), std::invalid_argument);
     // A plane is not a curve, and revolve takes exactly a profile and an axis
     model::SurfaceRecipe revolve;
-    revolve.mode = "revolve";
+    revolve.mode = model::Construction::Revolve;
     EXPECT_THROW(s.model.addSurface({s.profile, s.plane}, revolve), std::invalid_argument);
     EXPECT_THROW(s.model.addSurface({s.profile}, revolve), std::invalid_argument);
-    model::SurfaceRecipe unknown;
-    unknown.mode = "teleport";
-    EXPECT_THROW(s.model.addSurface({s.profile}, unknown), std::invalid_argument);
+    // An unknown mode name has no construction (documents refuse it, naming the field)
+    EXPECT_FALSE(model::constructionFromName("teleport"));
     EXPECT_EQ(s.model.entities().size(), count);
 }
 
 TEST(SurfaceEntity, RemovingACurveTakesItsSurfacesAlong)
 {
     Scene s;
-    const std::vector<model::Entity> removed = s.model.remove(s.axis);
+    const std::vector<model::Entity> removed = s.model.remove(s.axis).entities;
     ASSERT_EQ(removed.size(), 2u);
     EXPECT_EQ(removed[1].id, s.revolved);
     EXPECT_EQ(s.model.find(s.revolved), nullptr);
@@ -169,7 +168,7 @@ TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
     // Given the model with an extrusion too, saved
     Scene s;
     model::SurfaceRecipe extrude;
-    extrude.mode = "extrude";
+    extrude.mode = model::Construction::Extrude;
     extrude.direction = Eigen::Vector3d(0, 0, 25);  // along plane 1's normal
     const model::EntityId extruded = s.model.addSurface({s.profile}, extrude);
     const nlohmann::json saved = model::modelToJson(s.model, model::GridSpec{});
@@ -194,37 +193,55 @@ TEST(SurfaceEntity, SavedConstructionsReopenToTheSameSurfaces)
     EXPECT_LT((e->surface->evaluate(0.3, 1.0) - (profile.evaluate(0.3) + 25.0 * normal)).norm(), kTolerance);
 }
 
+/// The one pin of `model` (a position or tangent constraint), or null.
+const model::Constraint* onlyPin(const model::Model& model)
+{
+    const model::Constraint* pin = nullptr;
+    for (const auto& [id, c] : model.constraints()) {
+        if (c.type == model::ConstraintType::Position || c.type == model::ConstraintType::Tangent) pin = &c;
+    }
+    return pin;
+}
+
 TEST(ConstraintEntity, APinFollowsItsCurveAndIsSavedWithTheFixedPoints)
 {
     // Given a pin on the profile and two fixed control points
     Scene s;
-    const model::EntityId pin = s.model.addConstraint(s.profile, "position", 0.25);
+    const model::ConstraintId pin = s.model.addConstraint(s.profile, model::ConstraintType::Position, 0.25);
     s.model.setFixedPoints(s.profile, {3, 0, 3});
-    EXPECT_EQ(s.model.find(s.profile)->fixedPoints, (std::vector<int>{0, 3}));
+    EXPECT_EQ(s.model.fixedPoints(s.profile), (std::vector<int>{0, 3}));
     // When the plane moves
     s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(10, 0, 90)));
     s.model.update();
-    // Then the pin's anchor is the moved curve's point at its parameter
-    const model::Entity* p = s.model.find(pin);
-    EXPECT_LT((p->anchor - s.model.find(s.profile)->world->evaluate(0.25)).norm(), kTolerance);
+    // Then the pin's value is the moved curve's point at its parameter
+    const model::Constraint* p = s.model.findConstraint(pin);
+    ASSERT_NE(p, nullptr);
+    EXPECT_LT((p->value - s.model.find(s.profile)->world->evaluate(0.25)).norm(), kTolerance);
     // And a saved and reopened model has the pin and the fixed points
     model::Model reopened;
     model::populateModel(model::documentFromJson(model::modelToJson(s.model, model::GridSpec{})), reopened);
-    ASSERT_NE(reopened.find(pin), nullptr);
-    EXPECT_EQ(reopened.find(pin)->constraintType, "position");
-    EXPECT_EQ(reopened.find(pin)->parameter, 0.25);
-    EXPECT_EQ(reopened.find(s.profile)->fixedPoints, (std::vector<int>{0, 3}));
-    // And removing the curve removes its pin (and its surface)
-    s.model.remove(s.profile);
-    EXPECT_EQ(s.model.find(pin), nullptr);
+    const model::Constraint* again = onlyPin(reopened);
+    ASSERT_NE(again, nullptr);
+    EXPECT_EQ(again->type, model::ConstraintType::Position);
+    EXPECT_EQ(again->targets, std::vector<model::EntityId>{s.profile});
+    EXPECT_EQ(again->parameters, std::vector<double>{0.25});
+    EXPECT_EQ(reopened.fixedPoints(s.profile), (std::vector<int>{0, 3}));
+    // And removing the curve removes its pin and fixed points (and its surface), and gives them
+    // back for an undo
+    const model::Removed removed = s.model.remove(s.profile);
+    EXPECT_EQ(s.model.findConstraint(pin), nullptr);
+    EXPECT_EQ(removed.constraints.size(), 2u);
+    s.model.restore(removed);
+    ASSERT_NE(s.model.findConstraint(pin), nullptr);
+    EXPECT_EQ(s.model.fixedPoints(s.profile), (std::vector<int>{0, 3}));
 }
 
 TEST(ConstraintEntity, BadConstraintsAreRefused)
 {
     Scene s;
-    EXPECT_THROW(s.model.addConstraint(s.plane, "position", 0.5), std::invalid_argument);
-    EXPECT_THROW(s.model.addConstraint(s.profile, "twist", 0.5), std::invalid_argument);
-    EXPECT_THROW(s.model.addConstraint(s.profile, "position", std::nan("")), std::invalid_argument);
+    EXPECT_THROW(s.model.addConstraint(s.plane, model::ConstraintType::Position, 0.5), std::invalid_argument);
+    EXPECT_THROW(s.model.addConstraint(s.profile, model::ConstraintType::Normal, 0.5), std::invalid_argument);
+    EXPECT_THROW(s.model.addConstraint(s.profile, model::ConstraintType::Position, std::nan("")), std::invalid_argument);
     EXPECT_THROW(s.model.setFixedPoints(s.profile, {4}), std::invalid_argument);
     const nlohmann::json doc = nlohmann::json::parse(R"({"constraints": [{"curve": 7, "type": "position", "u": 0.5}]})");
     EXPECT_THROW(model::documentFromJson(doc), std::exception);
@@ -253,14 +270,14 @@ TEST(SurfaceEntity, AFillTangentToALoftFollowsItAndIsSaved)
     const auto arc = [](double x) { return cubic({{x, 20, 0}, {x, 20, 11}, {x, 11, 20}, {x, 0, 20}}); };
     const model::EntityId a = model.addCurve(0, arc(0)), b = model.addCurve(0, arc(10));
     model::SurfaceRecipe loft;
-    loft.mode = "loft";
+    loft.mode = model::Construction::Loft;
     const model::EntityId hull = model.addSurface({a, b}, loft);
     const model::EntityId c = model.addCurve(0, cubic({{10, 20, 0}, {17, 20, 0}, {23, 20, 0}, {30, 20, 0}}));
     const model::EntityId d = model.addCurve(0, cubic({{30, 20, 0}, {30, 13, 7}, {30, 7, 13}, {30, 0, 20}}));
     const model::EntityId e = model.addCurve(0, cubic({{30, 0, 20}, {23, 0, 20}, {17, 0, 20}, {10, 0, 20}}));
     // When one fill is G1 to the loft along the arc and another is not
     model::SurfaceRecipe plain;
-    plain.mode = "fill";
+    plain.mode = model::Construction::Fill;
     model::SurfaceRecipe g1 = plain;
     g1.tangents = {{0, hull}};
     const model::EntityId creased = model.addSurface({b, c, d, e}, plain);
@@ -341,7 +358,7 @@ TEST(SurfaceEntity, AGordonSurfaceInterpolatesBothFamiliesAndIsSaved)
     const model::EntityId v0 = model.addCurve(0, cubic({{0, 0, 0}, {0, 10, -5}, {0, 20, -5}, {0, 30, 0}}));
     const model::EntityId v1 = model.addCurve(0, cubic({{30, 0, 0}, {30, 10, -5}, {30, 20, -5}, {30, 30, 0}}));
     model::SurfaceRecipe recipe;
-    recipe.mode = "gordon";
+    recipe.mode = model::Construction::Gordon;
     recipe.uCurves = 2;
     // When the Gordon surface is built
     const model::EntityId g = model.addSurface({u0, u1, v0, v1}, recipe);

@@ -74,10 +74,10 @@ void expectCurvesMet(const model::Model& model, const model::Entity& s)
     EXPECT_TRUE(s.buildError.empty()) << s.buildError;
     const double tolerance = s.maxDeviation >= 0.0 ? s.maxDeviation + kExact : kExact;
     for (size_t k = 0; k < s.inputs.size(); ++k) {
-        if (s.recipe->mode == "revolve" && k == 1) continue;  // the axis is not on the surface
-        if (s.recipe->mode == "sweep" && k == 1) continue;    // nor is the sweep's path
+        if (s.recipe->mode == model::Construction::Revolve && k == 1) continue;  // the axis is not on the surface
+        if (s.recipe->mode == model::Construction::Sweep && k == 1) continue;    // nor is the sweep's path
         EXPECT_LT(curveToSurface(*model.find(s.inputs[k])->world, *s.surface), tolerance)
-            << s.recipe->mode << " surface " << s.id << " input " << s.inputs[k];
+            << model::constructionName(s.recipe->mode) << " surface " << s.id << " input " << s.inputs[k];
     }
 }
 
@@ -135,7 +135,7 @@ int surfacePixels(const std::string& png)
 std::map<std::string, int> modes(const model::Model& model)
 {
     std::map<std::string, int> count;
-    for (const model::Entity* s : surfaces(model)) ++count[s->recipe ? s->recipe->mode : "static"];
+    for (const model::Entity* s : surfaces(model)) ++count[s->recipe ? model::constructionName(s->recipe->mode) : "static"];
     return count;
 }
 
@@ -148,8 +148,8 @@ TEST(SurfaceModels, BottleWithPlugAndHandle)
     // Both revolves share their axis curve, and the handle's section is an exact (rational) circle
     std::vector<model::EntityId> axes;
     for (const model::Entity* s : surfaces(model)) {
-        if (s->recipe->mode == "revolve") axes.push_back(s->inputs[1]);
-        if (s->recipe->mode == "sweep") {
+        if (s->recipe->mode == model::Construction::Revolve) axes.push_back(s->inputs[1]);
+        if (s->recipe->mode == model::Construction::Sweep) {
             EXPECT_TRUE(model.find(s->inputs[0])->world->isRational());
         }
     }
@@ -227,7 +227,7 @@ TEST(SurfaceModels, ExtrudingByDraggingACurveIsOneUndoableStep)
     ASSERT_EQ(all.size(), 2u);  // the default scene's surface and the extrusion
     const model::Entity* e = all[1];
     ASSERT_TRUE(e->recipe);
-    EXPECT_EQ(e->recipe->mode, "extrude");
+    EXPECT_EQ(e->recipe->mode, model::Construction::Extrude);
     expectCurvesMet(model, *e);
     // S(u, 1) - S(u, 0) is the world direction: towards the viewer, about 40 mm (within
     // kPointerSlack: the press grabs the curve point the pick found)
@@ -244,15 +244,15 @@ TEST(SurfaceModels, APinHoldsWhileThePullMovesTheCurve)
         return Eigen::Vector3d(-40 + 80 * i / 39.0, 95, 50 + 10 * std::sin(2 * 3.14159265358979 * i / 39.0));
     };
     const model::Model model = readModel("pin_pull.json");
-    const model::Entity* pin = nullptr;
-    for (const auto& [id, e] : model.entities()) {
-        if (e.kind == model::EntityKind::Constraint) pin = &e;
+    const model::Constraint* pin = nullptr;
+    for (const auto& [id, c] : model.constraints()) {
+        if (c.type == model::ConstraintType::Position || c.type == model::ConstraintType::Tangent) pin = &c;
     }
     ASSERT_NE(pin, nullptr);
-    EXPECT_EQ(pin->constraintType, "position");
-    const solvers::Curve3d& curve = *model.find(pin->inputs.front())->world;
+    EXPECT_EQ(pin->type, model::ConstraintType::Position);
+    const solvers::Curve3d& curve = *model.find(pin->targets.front())->world;
     // The press picks within a few pixels (kPointerSlack)
-    EXPECT_LT((curve.evaluate(pin->parameter) - wave(10)).norm(), kPointerSlack);
+    EXPECT_LT((curve.evaluate(pin->parameters.front()) - wave(10)).norm(), kPointerSlack);
     EXPECT_LT(solvers::projectToCurve(curve, Eigen::Vector3d(wave(30) + Eigen::Vector3d(0, 0, 15))).distance, kPointerSlack);
     // and the pulled curve no longer passes where it was pulled from
     EXPECT_GT(solvers::projectToCurve(curve, wave(30)).distance, 10.0);

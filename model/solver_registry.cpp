@@ -1,0 +1,349 @@
+#include "model/solver_registry.h"
+
+#include "model/model.h"
+#include "solvers/editing/curve_manipulation.h"
+#include "solvers/surfaces/surface_modes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace sculptline::model {
+
+namespace surf = solvers::surfaces;
+
+Entity& StepSolver::entity(Model& model, EntityId id) { return model.entity(id); }
+
+namespace {
+
+/// The world curves a construction reads, in input order (the tangent surfaces are not curves).
+std::vector<solvers::Curve3d> worldCurves(const Model& model, const Entity& e)
+{
+    std::vector<solvers::Curve3d> curves;
+    for (EntityId input : e.inputs) {
+        const Entity* in = model.find(input);
+        if (in && in->kind == EntityKind::Curve) curves.push_back(*in->world);
+    }
+    return curves;
+}
+
+/// The solver options of a surface's recipe with the model's present geometry (the revolve axis
+/// from its curve, the extrusion direction in its profile plane's frame, the adjacent surfaces of a
+/// G1 fill); `curves` loses the revolve axis.
+surf::SurfaceOptions surfaceOptions(const Model& model, const Entity& e, std::vector<solvers::Curve3d>& curves)
+{
+    const SurfaceRecipe& r = *e.recipe;
+    surf::SurfaceOptions options;
+    options.tolerance = r.tolerance;
+    for (const SurfaceRecipe::Tangent& t : r.tangents) {
+        const Entity* adjacent = model.find(t.surface);
+        if (!adjacent || !adjacent->surface)
+            throw std::invalid_argument("surface " + std::to_string(t.surface) + ", which it is tangent to, has not been built");
+        options.fillTangents.push_back({t.boundary, *adjacent->surface});
+    }
+    if (r.mode == Construction::Revolve) {
+        // The axis is the line the designer drew: the last input's ends, start to end.
+        const solvers::Curve3d axis = curves.back();
+        curves.pop_back();
+        if (axis.isClosed()) throw std::invalid_argument("axis: the axis curve is closed, its ends coincide and give no direction");
+        options.axisPoint = axis.evaluate(axis.domainStart());
+        options.axisDirection = axis.evaluate(axis.domainEnd()) - options.axisPoint;
+        options.angleDegrees = r.angleDegrees;
+    }
+    if (r.mode == Construction::Extrude) {
+        const Entity& profile = *model.find(e.inputs.front());
+        options.direction = profile.plane() != 0 ? Eigen::Vector3d(model.find(profile.plane())->frame.rotation * r.direction) : r.direction;
+    }
+    return options;
+}
+
+void store(Entity& e, const surf::SurfaceBuild& build)
+{
+    e.surface = build.surface;
+    e.maxDeviation = build.maxDeviation;
+    e.maxTangentAngle = build.maxTangentAngleDegrees;
+    e.buildError.clear();
+    ++e.shapeVersion;
+}
+
+/// placement: world = frame(local); no set-up.
+class PlacementSolver : public StepSolver {
+public:
+    void factor(const Model&, const PlanStep&) override {}
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) place(model, id);
+    }
+
+    static void place(Model& model, EntityId id)
+    {
+        Entity& e = entity(model, id);
+        if (e.kind != EntityKind::Curve || !e.local) return;
+        const EntityId plane = e.plane();
+        try {
+            e.world = plane != 0 ? transformCurve(*e.local, model.find(plane)->frame) : *e.local;
+            e.buildError.clear();
+        } catch (const std::exception& error) {
+            e.buildError = error.what();  // coordinates beyond double range: the last world form stays
+        }
+    }
+};
+
+/// least-change: a curve pulled with its pins held and its fixed points blocked. factor() makes the
+/// solver (one QR of the constraint matrix, curve_manipulation.h) at the grip's parameter, which
+/// the model passes as the step's first constraint parameter through setGripParameter().
+class LeastChangeSolver : public StepSolver {
+public:
+    explicit LeastChangeSolver(double gripU = std::numeric_limits<double>::quiet_NaN()) : gripU_(gripU) {}
+
+    void factor(const Model& model, const PlanStep& step) override
+    {
+        curve_ = step.solve.front();
+        solver_.reset();
+        held_.clear();
+        if (!std::isfinite(gripU_)) return;  // no pull: nothing moves the shape
+        const Entity& c = *model.find(curve_);
+        namespace ed = solvers::editing;
+        ed::CurveConstraint<3> grip;
+        grip.u = gripU_;
+        std::vector<ed::CurveConstraint<3>> constraints{grip};
+        std::vector<int> blocked;
+        for (ConstraintId id : model.constraintsOn(curve_)) {
+            const Constraint& k = *model.findConstraint(id);
+            if (k.type == ConstraintType::FixedPoints) blocked = k.indices;
+            if (k.type != ConstraintType::Position && k.type != ConstraintType::Tangent) continue;
+            ed::CurveConstraint<3> kept;
+            kept.type = k.type == ConstraintType::Tangent ? ed::ConstraintType::Tangent : ed::ConstraintType::Position;
+            kept.u = k.parameters.front();
+            constraints.push_back(kept);
+            held_.push_back(c.local->derivatives(kept.u, 1)[k.type == ConstraintType::Tangent ? 1 : 0]);
+        }
+        try {
+            solver_ = std::make_unique<ed::CurveManipulationSolver<3>>(*c.local, constraints, blocked);
+        } catch (const std::exception& error) {
+            throw std::invalid_argument(error.what());
+        }
+        grip_ = solver_->currentValues().front();
+    }
+
+    void setGrip(const Eigen::Vector3d& target) override { grip_ = target; }
+
+    void solve(Model& model, const PlanStep& step) override
+    {
+        message_.clear();
+        if (solver_) {
+            std::vector<Eigen::Vector3d> targets{grip_};
+            targets.insert(targets.end(), held_.begin(), held_.end());
+            solvers::editing::ManipulationReport report;
+            solvers::Curve3d pulled = solver_->solve(targets, &report);
+            message_ = report.message;
+            if (curveExtent(pulled) >= kMinCurveExtent) {
+                Entity& e = entity(model, curve_);
+                e.local = e.plane() != 0 ? flattenToPlane(pulled) : pulled;
+                ++e.shapeVersion;
+            } else {
+                try {
+                    requireCurveExtent(pulled);
+                } catch (const std::exception& error) {
+                    message_ = error.what();  // the curve keeps its last shape
+                }
+            }
+        }
+        for (EntityId id : step.solve) PlacementSolver::place(model, id);
+    }
+
+    std::string message() const override { return message_; }
+
+private:
+    double gripU_;
+    EntityId curve_ = 0;
+    std::unique_ptr<solvers::editing::CurveManipulationSolver<3>> solver_;
+    std::vector<Eigen::Vector3d> held_;
+    Eigen::Vector3d grip_ = Eigen::Vector3d::Zero();
+    std::string message_;
+};
+
+/// surface-builder: SurfaceBuilder made at factor() from the present curves; solve() updates it with
+/// the moved curves (fill, loft and sweep keep their parameterization and refinement). Options that
+/// follow the geometry (an extrusion's direction with its plane, a revolve's axis, a G1 fill's
+/// adjacent surfaces) are re-read each solve; when they changed the builder is made again.
+class SurfaceBuilderSolver : public StepSolver {
+public:
+    void factor(const Model& model, const PlanStep& step) override
+    {
+        surface_ = step.solve.front();
+        builder_.reset();
+        const Entity& e = *model.find(surface_);
+        if (!e.recipe || !describe(e.recipe->mode).solverMode) return;  // static, or gordon
+        std::vector<solvers::Curve3d> curves = worldCurves(model, e);
+        try {
+            options_ = surfaceOptions(model, e, curves);
+            builder_ = std::make_unique<surf::SurfaceBuilder>(*describe(e.recipe->mode).solverMode, curves, options_);
+        } catch (const std::exception&) {
+            builder_.reset();  // it cannot be built as it is: each solve then tries afresh
+        }
+    }
+
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) {
+            Entity& e = entity(model, id);
+            if (!e.recipe) continue;  // a static surface, as read
+            try {
+                if (builder_ && id == surface_) {
+                    std::vector<solvers::Curve3d> curves = worldCurves(model, e);
+                    const surf::SurfaceOptions options = surfaceOptions(model, e, curves);
+                    if (!sameOptions(options, options_)) {
+                        options_ = options;
+                        builder_ = std::make_unique<surf::SurfaceBuilder>(builder_->mode(), curves, options_);
+                        store(e, builder_->build());
+                    } else {
+                        store(e, builder_->update(curves));
+                    }
+                } else {
+                    buildSurfaceEntity(model, e);
+                }
+            } catch (const std::exception& error) {
+                // Mid-drag the curves may pass through a configuration the mode cannot build (a
+                // fill whose boundaries no longer meet): keep the last good surface and say why.
+                e.buildError = error.what();
+            }
+        }
+    }
+
+private:
+    static bool sameOptions(const surf::SurfaceOptions& a, const surf::SurfaceOptions& b)
+    {
+        if (a.fillTangents.size() != b.fillTangents.size()) return false;
+        for (size_t k = 0; k < a.fillTangents.size(); ++k) {
+            if (a.fillTangents[k].curve != b.fillTangents[k].curve || a.fillTangents[k].reference.points() != b.fillTangents[k].reference.points()) return false;
+        }
+        return a.direction == b.direction && a.axisPoint == b.axisPoint && a.axisDirection == b.axisDirection &&
+               a.angleDegrees == b.angleDegrees && a.tolerance == b.tolerance;
+    }
+
+    EntityId surface_ = 0;
+    std::unique_ptr<surf::SurfaceBuilder> builder_;
+    surf::SurfaceOptions options_;
+};
+
+/// network-mesh: the loop is triangulated afresh (no set-up to keep).
+class MeshSolver : public StepSolver {
+public:
+    void factor(const Model&, const PlanStep&) override {}
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) {
+            Entity& e = entity(model, id);
+            try {
+                buildMeshEntity(model, e);
+            } catch (const std::exception& error) {
+                e.buildError = error.what();  // the curves pulled apart mid-drag: keep the last mesh
+            }
+        }
+    }
+};
+
+/// unsolved: a cluster of coupled free entities no registered solver handles (yet); its entities
+/// keep their geometry. Curves still take their placement.
+class UnsolvedCluster : public StepSolver {
+public:
+    void factor(const Model&, const PlanStep&) override {}
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) PlacementSolver::place(model, id);
+    }
+    std::string message() const override { return "no solver handles this cluster of coupled constraints yet"; }
+};
+
+}  // namespace
+
+void buildSurfaceEntity(const Model& model, Entity& e)
+{
+    const SurfaceRecipe& r = *e.recipe;
+    std::vector<solvers::Curve3d> curves = worldCurves(model, e);
+    if (r.mode == Construction::Gordon) {
+        // A grid-like network (seed 004 §4, The NURBS Book §10.5): the first `uCurves` inputs are
+        // one family, the rest the other; every curve of one meets every curve of the other. The
+        // reported deviation is the largest gap between crossing curves.
+        const auto split = curves.begin() + std::clamp(r.uCurves, 0, static_cast<int>(curves.size()));
+        const surf::GordonResult g = surf::buildGordon({curves.begin(), split}, {split, curves.end()}, {r.tolerance});
+        store(e, surf::SurfaceBuild{g.surface, g.maxGap});
+        return;
+    }
+    const ConstructionInfo& info = describe(r.mode);
+    if (!info.solverMode) throw std::invalid_argument(std::string("\"") + info.name + "\" makes a mesh entity from a loop of curves, not a surface");
+    const surf::SurfaceOptions options = surfaceOptions(model, e, curves);
+    store(e, surf::buildSurface(*info.solverMode, curves, options));
+}
+
+void buildMeshEntity(const Model& model, Entity& e)
+{
+    std::vector<solvers::Curve3d> curves;
+    std::vector<int> loop;
+    for (EntityId input : e.inputs) {
+        loop.push_back(static_cast<int>(curves.size()));
+        curves.push_back(*model.find(input)->world);
+    }
+    e.mesh = surf::meshNetwork(curves, {loop});
+    e.buildError.clear();
+    ++e.shapeVersion;
+}
+
+SolverRegistry::SolverRegistry()
+{
+    add("placement", [] { return std::make_unique<PlacementSolver>(); });
+    add("least-change", [] { return std::make_unique<LeastChangeSolver>(); });
+    add("surface-builder", [] { return std::make_unique<SurfaceBuilderSolver>(); });
+    add("network-mesh", [] { return std::make_unique<MeshSolver>(); });
+    add("unsolved", [] { return std::make_unique<UnsolvedCluster>(); });
+}
+
+void SolverRegistry::add(const std::string& key, Factory factory) { factories_[key] = std::move(factory); }
+
+std::unique_ptr<StepSolver> SolverRegistry::make(const std::string& key) const
+{
+    const auto it = factories_.find(key);
+    if (it == factories_.end()) throw std::invalid_argument("no solver is registered as \"" + key + "\"");
+    return it->second();
+}
+
+std::string SolverRegistry::choose(const Model& model, const PlanStep& step) const
+{
+    if (step.solve.size() != 1) return "unsolved";
+    const Entity* e = model.find(step.solve.front());
+    if (!e) return "unsolved";
+    bool construction = false, placement = false, pins = false, other = false;
+    for (ConstraintId id : step.constraints) {
+        const Constraint* c = model.findConstraint(id);
+        if (!c) continue;
+        switch (c->type) {
+        case ConstraintType::Construction: construction = true; break;
+        case ConstraintType::Placement: placement = true; break;
+        case ConstraintType::Position:
+        case ConstraintType::Tangent:
+        case ConstraintType::FixedPoints: pins = true; break;
+        default: other = true;
+        }
+    }
+    if (other) return "unsolved";
+    if (e->kind == EntityKind::Surface && construction) return "surface-builder";
+    if (e->kind == EntityKind::Mesh && construction) return "network-mesh";
+    if (e->kind == EntityKind::Curve && pins) return "least-change";
+    if (e->kind == EntityKind::Curve && placement) return "placement";
+    return "unsolved";
+}
+
+std::vector<std::string> SolverRegistry::keys() const
+{
+    std::vector<std::string> out;
+    for (const auto& [key, factory] : factories_) out.push_back(key);
+    return out;
+}
+
+bool SolverRegistry::caches(const std::string& key) const { return key == "surface-builder"; }
+
+std::unique_ptr<StepSolver> makePullSolver(double u) { return std::make_unique<LeastChangeSolver>(u); }
+
+}  // namespace sculptline::model
