@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "scene/eigen_coin.h"
+#include "scene/entity_path.h"
 #include "scene/overlay_nodes.h"
 
 #include <Inventor/SoPickedPoint.h>
@@ -124,14 +125,10 @@ StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view)
     pick.apply(action->getPickRoot());
     const SoPickedPointList& points = pick.getPickedPointList();
     for (int k = 0; k < points.getLength(); ++k) {
-        const SoPath* path = points[k]->getPath();
-        for (int i = path->getLength() - 1; i >= 0; --i) {
-            const std::string name = path->getNode(i)->getName().getString();
-            if (name.rfind("Curve", 0) == 0 && name.size() > 5 && name.find_first_not_of("0123456789", 5) == std::string::npos) {
-                result.curve = static_cast<std::uint32_t>(std::stoul(name.substr(5)));
-                result.point = scene::toEigen(points[k]->getPoint());
-                return result;
-            }
+        if (const auto curve = scene::entityAt(points[k]->getPath(), {model::EntityKind::Curve})) {
+            result.curve = curve->id;
+            result.point = scene::toEigen(points[k]->getPoint());
+            return result;
         }
     }
     return result;

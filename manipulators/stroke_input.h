@@ -22,7 +22,7 @@ class SoSeparator;
 
 namespace sculptline::manipulators {
 
-/// Where a stroke's end met an existing curve (a pick on a node named "Curve<id>").
+/// Where a stroke's end met an existing curve (a pick through its node, scene/entity_path.h).
 struct StrokeHit {
     std::uint32_t curve = 0;  ///< entity id; 0 = the stroke end is in the air
     Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< picked point, world
@@ -50,7 +50,7 @@ struct FinishedStroke {
 /// The pointer's world ray for the event `node` handles, seen through `camera` (the viewer's
 /// aspect-adjusted volume); false without a camera.
 bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction);
-/// The nearest curve (a node named "Curve<id>") under the pointer, within a few pixels, looking
+/// The nearest curve (scene::entityAt on the pick path) under the pointer, within a few pixels, looking
 /// through other shapes.
 StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view);
 /// Where the ray meets the frame's plane, local (z = 0); empty when parallel or behind the eye.

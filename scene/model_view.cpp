@@ -1,6 +1,7 @@
 #include "scene/model_view.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/entity_path.h"
 #include "scene/overlay_nodes.h"
 
 #include <Inventor/SoPath.h>
@@ -35,11 +36,6 @@ const SbColor kMarked(0.3f, 0.9f, 1.0f);
 const SbColor kPolygonColor(0.75f, 0.78f, 0.85f);
 constexpr float kPolygonPointSize = 5.0f;
 constexpr float kHighlightWidth = 5.0f;
-
-std::string nodeName(const char* prefix, model::EntityId id, const char* suffix = "")
-{
-    return prefix + std::to_string(id) + suffix;
-}
 
 void setFrame(SoTransform* transform, const model::PlaneFrame& frame)
 {
@@ -149,7 +145,7 @@ void ModelView::addCurveNode(const model::Entity& e)
 {
     SoSeparator* node = makeCurveWithPolygon(e);
     ++nodeBuilds_;
-    node->setName(nodeName("Curve", e.id).c_str());
+    node->setName(entityNodeName(model::EntityKind::Curve, e.id).c_str());
     // Kept in creation order inside its group so that the picture does not depend on history.
     SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
     parent->addChild(node);
@@ -162,7 +158,7 @@ void ModelView::rebuildCurveNode(const model::Entity& e)
     SoGroup* parent = e.plane() != 0 ? static_cast<SoGroup*>(planeGroup(e.plane())) : curves_;
     SoSeparator* node = makeCurveWithPolygon(e);
     ++nodeBuilds_;
-    node->setName(nodeName("Curve", e.id).c_str());
+    node->setName(entityNodeName(model::EntityKind::Curve, e.id).c_str());
     parent->replaceChild(parent->findChild(nodes_.at(e.id)), node);
     nodes_[e.id] = node;
     builtShape_[e.id] = e.shapeVersion;
@@ -173,7 +169,7 @@ void ModelView::entityAdded(const model::Entity& e)
     switch (e.kind) {
     case model::EntityKind::Plane: {
         auto* group = new SoSeparator;
-        group->setName(nodeName("Plane", e.id, "Curves").c_str());
+        group->setName((entityNodeName(model::EntityKind::Plane, e.id) + "Curves").c_str());
         auto* frame = new SoTransform;
         if (drawable(e)) setFrame(frame, e.frame);
         group->addChild(frame);
@@ -222,7 +218,7 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuse
         }
     }
     ++nodeBuilds_;
-    node->setName(nodeName("Surface", e.id).c_str());
+    node->setName(entityNodeName(model::EntityKind::Surface, e.id).c_str());
     nodes_[e.id] = node;
     builtShape_[e.id] = e.shapeVersion;
     return node;
@@ -270,7 +266,7 @@ void ModelView::constraintAdded(const model::Constraint& c)
     // A pin at C(u), in world coordinates: it moves with the curve's updates.
     if (c.type != model::ConstraintType::Position && c.type != model::ConstraintType::Tangent) return;
     auto* node = new SoSeparator;
-    node->setName(nodeName("Constraint", c.id).c_str());
+    node->setName(constraintNodeName(c.id).c_str());
     SoCoordinate3* point = addStyledCoordinates(node, kConstraintColor, kConstraintSize, 0.0f);
     if (model::hasFiniteGeometry(c)) point->point.setValue(toSb(c.value));
     else ++nonFiniteRejections_;
@@ -299,7 +295,7 @@ SoSeparator* ModelView::makeMeshEntityNode(const model::Entity& e)
 {
     SoSeparator* node = drawable(e) ? makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles) : new SoSeparator;
     ++nodeBuilds_;
-    node->setName(nodeName("Mesh", e.id).c_str());
+    node->setName(entityNodeName(model::EntityKind::Mesh, e.id).c_str());
     nodes_[e.id] = node;
     builtShape_[e.id] = e.shapeVersion;
     return node;

@@ -5,6 +5,7 @@
 //     SoGroup "Curves"     { SoSeparator "Curve<id>" .. }              world-space curves
 //     SoGroup "PlaneCurves" {
 //       SoSeparator "Plane<id>Curves" { SoTransform frame, SoSeparator "Curve<id>" .. } .. } }
+// The names are scene/entity_path.h's entityNodeName(): entityAt() maps a pick path back to the entity.
 // A curve on a plane is tessellated once, in the plane's local frame, and placed by the plane's one
 // SoTransform: a plane drag rewrites two fields, however many curves the plane carries.
 #include "scene/geometry_nodes.h"

@@ -3,6 +3,7 @@
 #include "manipulators/curve_pull.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
+#include "scene/entity_path.h"
 #include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
@@ -415,15 +416,9 @@ bool MainWindow::pickAt(const QPoint& position)
     pick.apply(viewer_->getSceneManager()->getSceneGraph());
     model::EntityId picked = 0;
     if (const SoPickedPoint* point = pick.getPickedPoint()) {
-        const SoPath* path = point->getPath();
-        for (int i = path->getLength() - 1; i >= 0 && picked == 0; --i) {
-            const QString name = QString::fromLatin1(path->getNode(i)->getName().getString());
-            for (const char* prefix : {"Curve", "Plane", "Surface"}) {
-                if (name.startsWith(QLatin1String(prefix)) && !name.endsWith(QLatin1String("Curves"))) {
-                    picked = name.mid(static_cast<int>(strlen(prefix))).toUInt();
-                }
-            }
-        }
+        // What a click selects: planes (through their draggers), curves and surfaces.
+        const auto entity = scene::entityAt(point->getPath(), {model::EntityKind::Curve, model::EntityKind::Plane, model::EntityKind::Surface});
+        if (entity) picked = entity->id;
     }
     document_->select(picked);
     return picked != 0;

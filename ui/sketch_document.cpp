@@ -1,14 +1,13 @@
 #include "ui/sketch_document.h"
 
 #include "manipulators/curve_pull.h"
-#include "manipulators/projection_plane_manipulator.h"
+#include "manipulators/plane_binding.h"
 #include "manipulators/stroke_input.h"
 #include "scene/ground_grid.h"
 #include "scene/iv_export.h"
 #include "model/model_document.h"
 #include "ui/undo_commands.h"
 
-#include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 namespace sculptline::ui {
@@ -37,11 +36,13 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(view_->root());
     feedback_ = std::make_unique<scene::StrokeFeedback>();
     root_->addChild(feedback_->root());
-    // Last: the planes are translucent and drawn over what lies behind them.
-    planeGroup_ = new SoGroup;
-    planeGroup_->setName("Planes");
-    root_->addChild(planeGroup_);
     scheduler_ = std::make_unique<scene::UpdateScheduler>(model_);
+    // Last: the planes are translucent and drawn over what lies behind them.
+    planeDraggers_ = std::make_unique<manipulators::PlaneDraggers>(model_, *scheduler_);
+    planeDraggers_->setDragCallbacks([this](model::EntityId plane) { dragStarted(plane); },
+                                     [this](model::EntityId plane, const model::PlaneFrame& before,
+                                            const model::PlaneFrame& after) { dragFinished(plane, before, after); });
+    root_->addChild(planeDraggers_->root());
     model_.addObserver(this);
 }
 
@@ -50,7 +51,7 @@ SketchDocument::~SketchDocument()
     undo_.clear();
     model_.endDrag();
     model_.removeObserver(this);
-    planes_.clear();
+    planeDraggers_.reset();
     scheduler_.reset();
     view_.reset();
     root_->unref();
@@ -158,56 +159,32 @@ void SketchDocument::deleteSelection()
 
 void SketchDocument::entityAdded(const model::Entity& e)
 {
-    if (e.kind == model::EntityKind::Plane) {
-        auto manipulator = std::make_unique<manipulators::ProjectionPlaneManipulator>(e.frame);
-        manipulators::ProjectionPlaneManipulator* m = manipulator.get();
-        const model::EntityId id = e.id;
-        m->root()->setName(SbName(("Plane" + std::to_string(id)).c_str()));
-        // Each dragger event only records the frame; the scheduler solves once per frame.
-        m->setMovedCallback([this, m, id]() { model_.setPlaneFrame(id, m->frame()); });
-        m->setDragCallbacks([this, id]() { dragStarted(id); }, [this, id]() { dragFinished(id); });
-        planeGroup_->addChild(m->root());
-        planes_[id] = std::move(manipulator);
-        lastPlane_ = id;
-    }
+    // The plane's dragger comes from planeDraggers_, which observes the model too.
+    if (e.kind == model::EntityKind::Plane) lastPlane_ = e.id;
     Q_EMIT entitiesChanged();
 }
 
 void SketchDocument::entityRemoved(const model::Entity& e)
 {
-    if (const auto it = planes_.find(e.id); it != planes_.end()) {
-        planeGroup_->removeChild(it->second->root());
-        planes_.erase(it);
-    }
     if (selection_ == e.id) selection_ = 0;
     Q_EMIT entitiesChanged();
 }
 
 void SketchDocument::entityUpdated(const model::Entity& e)
 {
-    // During a drag the manipulator is the source of the frame; any other change (undo, redo)
-    // puts the manipulator where the model says.
+    // The stroke feedback dots move with their plane (planeDraggers_ moves the plane's dragger).
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
-    if (e.kind != model::EntityKind::Plane || e.id == dragging_) return;
-    const auto it = planes_.find(e.id);
-    if (it != planes_.end() && it->second->frame() != e.frame) it->second->setFrame(e.frame);
 }
 
-void SketchDocument::dragStarted(model::EntityId plane)
-{
-    scheduler_->flush();
-    dragging_ = plane;
-    dragStart_ = model_.find(plane)->frame;
-    select(plane);
-}
+bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0; }
 
-void SketchDocument::dragFinished(model::EntityId plane)
+// planeDraggers_ ran the pending update before either call, so the frames are the model's.
+void SketchDocument::dragStarted(model::EntityId plane) { select(plane); }
+
+void SketchDocument::dragFinished(model::EntityId plane, const model::PlaneFrame& before, const model::PlaneFrame& after)
 {
-    scheduler_->flush();
     view_->refineSurfaces();  // live rebuilds reused their grids; the resting shape adapts again
-    dragging_ = 0;
-    const model::Entity* e = model_.find(plane);
-    if (e && e->frame != dragStart_) undo_.push(new MovePlaneCommand(*this, plane, dragStart_, e->frame));
+    if (model_.find(plane) && after != before) undo_.push(new MovePlaneCommand(*this, plane, before, after));
     Q_EMIT entitiesChanged();
 }
 

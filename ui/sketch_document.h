@@ -24,11 +24,10 @@
 #include <string>
 
 class SoCamera;
-class SoGroup;
 class SoSeparator;
 
 namespace sculptline::manipulators {
-class ProjectionPlaneManipulator;
+class PlaneDraggers;
 class StrokeInput;
 class CurvePull;
 struct FinishedStroke;
@@ -76,8 +75,8 @@ public:
     const QString& path() const { return path_; }
     const model::GridSpec& grid() const { return grid_; }
     const StrokeReport& lastStroke() const { return lastStroke_; }
-    /// True between a press on a dragger and its release.
-    bool dragging() const { return dragging_ != 0; }
+    /// True between a press on a plane's dragger and its release.
+    bool dragging() const;
 
     /// The plane strokes go onto: the selected plane, the selected curve's plane, else the plane
     /// added or used last; 0 when there is none.
@@ -177,7 +176,8 @@ private:
     /// For each boundary another surface was built through: that surface (G1 fill).
     std::vector<model::SurfaceRecipe::Tangent> adjacentSurfaces(const std::vector<model::EntityId>& boundaries) const;
     void dragStarted(model::EntityId plane);
-    void dragFinished(model::EntityId plane);
+    /// One undo step for the drag (when the plane moved).
+    void dragFinished(model::EntityId plane, const model::PlaneFrame& before, const model::PlaneFrame& after);
 
     model::Model model_;
     model::GridSpec grid_;
@@ -189,18 +189,15 @@ private:
     model::EntityId pulled_ = 0;
     std::optional<solvers::Curve3d> pullStart_;
     QString pullMessage_;  ///< the solver's last remark during a pull (compromise, too few points)
-    std::map<model::EntityId, std::unique_ptr<manipulators::ProjectionPlaneManipulator>> planes_;
+    std::unique_ptr<manipulators::PlaneDraggers> planeDraggers_;  ///< one dragger per plane, bound to the model
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
-    SoGroup* planeGroup_ = nullptr;
     QUndoStack undo_;
     QString path_;
     model::EntityId selection_ = 0;
     model::EntityId lastPlane_ = 0;
-    model::EntityId dragging_ = 0;
     /// The existing plane the current stroke is on; 0 = an auxiliary plane made for it.
     model::EntityId strokeOnPlane_ = 0;
-    model::PlaneFrame dragStart_;
     StrokeReport lastStroke_;
     model::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;

@@ -1,89 +1,259 @@
-// Dragger -> sensors -> model -> Coin view, without a window: simulated dragger field changes are
-// coalesced into one model update per delay-queue pass (one per displayed frame), the curves follow
-// their plane through one transform write, and nothing is re-tessellated.
+// Dragger -> the plane binding (manipulators/plane_binding.h) -> model -> Coin view, without a
+// window, wired as the program wires it: simulated dragger field changes are coalesced into one
+// model update per delay-queue pass (one per displayed frame), the curves follow their plane
+// through one transform write, nothing is re-tessellated, a mouse drag reports its frames before
+// and after, and a frame set from outside (undo) moves the dragger.
+#include "manipulators/plane_binding.h"
 #include "manipulators/projection_plane_manipulator.h"
-#include "scene/eigen_coin.h"
 #include "model/model.h"
+#include "scene/eigen_coin.h"
+#include "scene/entity_path.h"
 #include "scene/model_view.h"
 #include "scene/update_scheduler.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInteraction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/actions/SoHandleEventAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/draggers/SoJackDragger.h>
+#include <Inventor/events/SoLocation2Event.h>
+#include <Inventor/events/SoMouseButtonEvent.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/sensors/SoSensorManager.h>
 #include <gtest/gtest.h>
+
+#include <vector>
 
 namespace sculptline {
 namespace {
 
 /// Coin computes in float: micrometres at 100 mm.
 constexpr double kTolerance = 1e-3;
+/// Rounding of projected points to whole pixels, on both ends of a drag.
+constexpr int kPixelTolerance = 1;
 
-TEST(ModelSync, DraggerEventsAreCoalescedAndCurvesFollowTheirPlane)
+/// What the binding's drag callbacks reported.
+struct Finished {
+    model::EntityId plane = 0;
+    model::PlaneFrame before, after;
+};
+
+/// Given a plane with two curves (left of its dragger, so a press on the jack grabs the jack), the
+/// model's view, its scheduler and the plane draggers, as SketchDocument builds them.
+class ModelSync : public testing::Test {
+protected:
+    // Before any fixture exists: its members are Coin nodes and draggers (node kits). Idempotent.
+    static void SetUpTestSuite() { SoInteraction::init(); }
+
+    void SetUp() override
+    {
+        draggers_.setDragCallbacks([this](model::EntityId plane) { started_.push_back(plane); },
+                                   [this](model::EntityId plane, const model::PlaneFrame& before, const model::PlaneFrame& after) {
+                                       finished_.push_back({plane, before, after});
+                                   });
+        plane_ = model_.addPlane(start_);
+        c1_ = model_.addCurve(plane_, local_);
+        c2_ = model_.addCurve(plane_, local_);
+        manipulator_ = draggers_.manipulator(plane_);
+    }
+
+    model::Model model_;
+    scene::ModelView view_{model_};
+    scene::UpdateScheduler scheduler_{model_};
+    manipulators::PlaneDraggers draggers_{model_, scheduler_};
+    const model::PlaneFrame start_ = model::PlaneFrame::fromNormal(Eigen::Vector3d(0, 95, 60), Eigen::Vector3d(0, -1, 0), 120);
+    const solvers::Curve3d local_{1, {0, 0, 1, 1}, {Eigen::Vector3d(-55, 0, 0), Eigen::Vector3d(-35, 10, 0)}};
+    model::EntityId plane_ = 0, c1_ = 0, c2_ = 0;
+    manipulators::ProjectionPlaneManipulator* manipulator_ = nullptr;
+    std::vector<model::EntityId> started_;
+    std::vector<Finished> finished_;
+};
+
+TEST_F(ModelSync, EveryPlaneHasANamedManipulatorUnderTheBindingsRoot)
 {
-    SoInteraction::init();
-    // Given a plane with two curves, its manipulator reporting to the model, a view and a scheduler
-    model::Model model;
-    scene::ModelView view(model);
-    scene::UpdateScheduler scheduler(model);
-    model::PlaneFrame start = model::PlaneFrame::fromNormal(Eigen::Vector3d(0, 95, 60), Eigen::Vector3d(0, -1, 0), 120);
-    const model::EntityId plane = model.addPlane(start);
-    const solvers::Curve3d local(1, {0, 0, 1, 1}, {Eigen::Vector3d(-30, 0, 0), Eigen::Vector3d(30, 10, 0)});
-    const model::EntityId c1 = model.addCurve(plane, local);
-    model.addCurve(plane, local);
-    manipulators::ProjectionPlaneManipulator manipulator(start);
-    manipulator.setMovedCallback([&]() { model.setPlaneFrame(plane, manipulator.frame()); });
-    const int builds = view.nodeBuilds();
+    ASSERT_NE(manipulator_, nullptr);
+    EXPECT_EQ(draggers_.size(), 1u);
+    EXPECT_EQ(draggers_.root()->findChild(manipulator_->root()), 0);
+    EXPECT_EQ(std::string(manipulator_->root()->getName().getString()), scene::entityNodeName(model::EntityKind::Plane, plane_));
+    EXPECT_EQ(draggers_.manipulator(c1_), nullptr);  // curves have no dragger
+    EXPECT_LT((manipulator_->frame().origin - start_.origin).norm(), kTolerance);
+}
+
+TEST_F(ModelSync, DraggerEventsAreCoalescedAndCurvesFollowTheirPlane)
+{
+    const int builds = view_.nodeBuilds();
+    const int updates = scheduler_.updates();
 
     // When the dragger's fields change five times (a burst of mouse events) before Coin's delay
     // queue runs
-    for (int k = 1; k <= 5; ++k) manipulator.dragger()->translation.setValue(0.5f * k, 0.0f, 0.0f);
-    EXPECT_EQ(scheduler.updates(), 0);  // nothing solved per event
+    for (int k = 1; k <= 5; ++k) manipulator_->dragger()->translation.setValue(0.5f * k, 0.0f, 0.0f);
+    EXPECT_EQ(scheduler_.updates(), updates);  // nothing solved per event
+    EXPECT_TRUE(model_.updatePending());  // the binding wrote the frame into the model
     SoDB::getSensorManager()->processDelayQueue(FALSE);
 
     // Then the model was solved once, the curves were recomputed once, the view wrote one transform
     // and built no node; the curve's world points moved by the dragger's last offset
-    EXPECT_EQ(scheduler.updates(), 1);
-    EXPECT_EQ(model.find(c1)->recomputations, 1);
-    EXPECT_EQ(view.transformWrites(), 1);
-    EXPECT_EQ(view.nodeBuilds(), builds);
+    EXPECT_EQ(scheduler_.updates(), updates + 1);
+    EXPECT_EQ(model_.find(c1_)->recomputations, 1);
+    EXPECT_EQ(model_.find(c2_)->recomputations, 1);
+    EXPECT_EQ(view_.transformWrites(), 1);
+    EXPECT_EQ(view_.nodeBuilds(), builds);
     const double unit = manipulators::kDraggerScale * 120.0;
-    const Eigen::Vector3d offset = start.rotation * Eigen::Vector3d(2.5 * unit, 0, 0);
-    EXPECT_LT((model.find(c1)->world->points()[0] - (start.toWorld(local.points()[0]) + offset)).norm(), kTolerance);
+    const Eigen::Vector3d offset = start_.rotation * Eigen::Vector3d(2.5 * unit, 0, 0);
+    EXPECT_LT((model_.find(c1_)->world->points()[0] - (start_.toWorld(local_.points()[0]) + offset)).norm(), kTolerance);
 
     // And the Coin node of the curve is drawn where the model says (bounds of the view's graph)
     SoSearchAction search;
-    search.setName("Curve2");
-    search.apply(view.root());
+    search.setName(scene::entityNodeName(model::EntityKind::Curve, c1_).c_str());
+    search.apply(view_.root());
     ASSERT_NE(search.getPath(), nullptr);
     SoGetBoundingBoxAction bbox(SbViewportRegion(800, 600));
     bbox.apply(search.getPath());
     const SbVec3f center = bbox.getBoundingBox().getCenter();
-    const Eigen::Vector3d expected = 0.5 * (model.find(c1)->world->points()[0] + model.find(c1)->world->points()[1]);
+    const Eigen::Vector3d expected = 0.5 * (model_.find(c1_)->world->points()[0] + model_.find(c1_)->world->points()[1]);
     EXPECT_LT((scene::toEigen(center) - expected).norm(), kTolerance);
 }
 
-TEST(ModelSync, SetFrameMovesTheManipulatorWithoutReportingAMove)
+TEST_F(ModelSync, SetPlaneFrameFromOutsideMovesTheManipulatorWithoutReportingAMove)
 {
-    SoInteraction::init();
-    const model::PlaneFrame start = model::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 100);
-    manipulators::ProjectionPlaneManipulator manipulator(start);
-    int moves = 0;
-    manipulator.setMovedCallback([&moves]() { ++moves; });
-    manipulator.dragger()->translation.setValue(1, 2, 0);
-    const int afterDrag = moves;
-    model::PlaneFrame target = start;
+    // Given no drag under way
+    ASSERT_EQ(draggers_.dragging(), 0u);
+    model::PlaneFrame target = start_;
     target.origin = Eigen::Vector3d(5, 6, 7);
     target.rotation = Eigen::Quaterniond(Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitX()));
-    // When the model puts it somewhere (undo)
-    manipulator.setFrame(target);
-    // Then it is there, and no move was reported back (no feedback loop)
-    EXPECT_EQ(moves, afterDrag);
-    EXPECT_LT((manipulator.frame().origin - target.origin).norm(), kTolerance);
-    EXPECT_LT(manipulator.frame().rotation.angularDistance(target.rotation), 1e-5);
+
+    // When the model's frame is set from outside (an undo) and the update runs
+    model_.setPlaneFrame(plane_, target);
+    scheduler_.flush();
+
+    // Then the manipulator is there, and moving it did not write the frame back into the model
+    // (no feedback loop: nothing is pending and the model keeps the frame it was given)
+    EXPECT_LT((manipulator_->frame().origin - target.origin).norm(), kTolerance);
+    EXPECT_LT(manipulator_->frame().rotation.angularDistance(target.rotation), 1e-5);
+    EXPECT_FALSE(model_.updatePending());
+    EXPECT_EQ(model_.find(plane_)->frame, target);
+    EXPECT_TRUE(started_.empty());
+    EXPECT_TRUE(finished_.empty());
+}
+
+TEST_F(ModelSync, RemovingThePlaneRemovesItsManipulator)
+{
+    model_.remove(plane_);
+    EXPECT_EQ(draggers_.manipulator(plane_), nullptr);
+    EXPECT_EQ(draggers_.size(), 0u);
+    EXPECT_EQ(draggers_.root()->getNumChildren(), 0);
+    // And an undo brings it back
+    model_.addPlane(start_, plane_);
+    ASSERT_NE(draggers_.manipulator(plane_), nullptr);
+    EXPECT_EQ(draggers_.root()->getNumChildren(), 1);
+}
+
+/// A drag with simulated Coin events (SoHandleEventAction) on the program's graph: the view and
+/// the draggers under one camera looking straight down, so the jack's centre box is seen face-on.
+class ModelSyncMouse : public ModelSync {
+protected:
+    static constexpr short kWidth = 400, kHeight = 400;
+
+    void SetUp() override
+    {
+        ModelSync::SetUp();
+        scene_ = new SoSeparator;
+        scene_->ref();
+        camera_ = new SoOrthographicCamera;
+        scene_->addChild(camera_);
+        scene_->addChild(view_.root());
+        scene_->addChild(draggers_.root());
+        camera_->viewAll(scene_, viewport());
+    }
+    void TearDown() override { scene_->unref(); }
+
+    SbViewportRegion viewport() const { return SbViewportRegion(kWidth, kHeight); }
+
+    /// Pixel (origin bottom-left, as in Coin events) of a world point.
+    SbVec2s pixelOf(const Eigen::Vector3d& p) const
+    {
+        SbVec3f ndc;
+        camera_->getViewVolume(1.0f).projectToScreen(scene::toSb(p), ndc);
+        return SbVec2s(static_cast<short>(ndc[0] * kWidth), static_cast<short>(ndc[1] * kHeight));
+    }
+
+    void send(SoEvent& event, const SbVec2s& pixel)
+    {
+        event.setPosition(pixel);
+        event.setTime(SbTime::getTimeOfDay());
+        SoHandleEventAction action(viewport());
+        action.setEvent(&event);
+        action.apply(scene_);
+    }
+    void button(const SbVec2s& pixel, SoButtonEvent::State state)
+    {
+        SoMouseButtonEvent e;
+        e.setButton(SoMouseButtonEvent::BUTTON1);
+        e.setState(state);
+        send(e, pixel);
+    }
+    void move(const SbVec2s& pixel)
+    {
+        SoLocation2Event e;
+        send(e, pixel);
+    }
+
+    SoSeparator* scene_ = nullptr;
+    SoOrthographicCamera* camera_ = nullptr;
+};
+
+TEST_F(ModelSyncMouse, ADragReportsItsFramesBeforeAndAfter)
+{
+    // Given a press on the jack's centre box (off the axes: at the centre itself the jack's
+    // vertical line translator, seen end-on, wins)
+    const int builds = view_.nodeBuilds();
+    const SbVec2s centre = pixelOf(start_.origin);
+    const SbVec2s press(centre[0] + 7, centre[1] + 7);
+    button(press, SoButtonEvent::DOWN);
+    ASSERT_EQ(started_, std::vector<model::EntityId>{plane_}) << "the press grabbed no part of the jack";
+    EXPECT_EQ(draggers_.dragging(), plane_);
+
+    // When the mouse moves 40 pixels right and up in four steps, one frame passing after each, and
+    // an update runs mid-drag
+    const int updates = scheduler_.updates();
+    for (int step = 1; step <= 4; ++step) {
+        move(SbVec2s(press[0] + 10 * step, press[1] + 10 * step));
+        SoDB::getSensorManager()->processDelayQueue(FALSE);
+    }
+    EXPECT_EQ(scheduler_.updates(), updates + 4);  // one per frame
+    // (the manipulator being dragged is not put back by the model's own updates)
+    EXPECT_LT((manipulator_->frame().origin - model_.find(plane_)->frame.origin).norm(), kTolerance);
+    button(SbVec2s(press[0] + 40, press[1] + 40), SoButtonEvent::UP);
+
+    // Then the finished callback reports the frame at the press and the model's frame at the
+    // release, which lies 40 pixels right and up of the start; the drag is over, the curves
+    // followed and nothing was re-tessellated
+    ASSERT_EQ(finished_.size(), 1u);
+    EXPECT_EQ(draggers_.dragging(), 0u);
+    const Finished& f = finished_.front();
+    EXPECT_EQ(f.plane, plane_);
+    EXPECT_EQ(f.before, start_);
+    EXPECT_EQ(f.after, model_.find(plane_)->frame);
+    EXPECT_FALSE(model_.updatePending());
+    const SbVec2s landed = pixelOf(f.after.origin);
+    EXPECT_NEAR(landed[0] - centre[0], 40, kPixelTolerance);
+    EXPECT_NEAR(landed[1] - centre[1], 40, kPixelTolerance);
+    EXPECT_NEAR(f.after.origin.z(), start_.origin.z(), kTolerance);
+    EXPECT_LT((model_.find(c1_)->world->points()[1] - f.after.toWorld(local_.points()[1])).norm(), kTolerance);
+    EXPECT_EQ(view_.nodeBuilds(), builds);
+}
+
+TEST_F(ModelSyncMouse, APressAndReleaseWithoutMotionReportsNoMove)
+{
+    const SbVec2s centre = pixelOf(start_.origin);
+    const SbVec2s press(centre[0] + 7, centre[1] + 7);
+    button(press, SoButtonEvent::DOWN);
+    ASSERT_EQ(started_.size(), 1u);
+    button(press, SoButtonEvent::UP);
+    ASSERT_EQ(finished_.size(), 1u);
+    EXPECT_EQ(finished_.front().before, finished_.front().after);  // the ui pushes no undo step
 }
 
 }  // namespace
