@@ -65,7 +65,8 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
     // increasing parameter: walk the spans instead of searching for each.
     const size_t kEnd = S.size() - 1;
     size_t k = static_cast<size_t>(std::lower_bound(u.begin() + 1, u.begin() + static_cast<long>(kEnd), s.breaks[first]) - u.begin());
-    // The basis of one span at many samples: the knot differences' reciprocals once per span.
+    // The basis of one span at many samples: the knot differences' reciprocals once per span (the
+    // breaks are distinct, so every span is non-empty, as SpanBasis requires).
     double basis[kDegree + 1];
     int i = first;
     SpanBasis<kDegree> spanBasis(s.knots, i + kDegree);
