@@ -1,5 +1,7 @@
 #include "solvers/bspline/basis.h"
 
+#include "solvers/bspline/basis_evaluator.h"
+
 #include "solvers/bspline/geometry_error.h"
 
 #include <algorithm>
@@ -88,76 +90,16 @@ int findSpan(int degree, const KnotVector& knots, double u)
 
 void basisFunctions(int span, double u, int degree, const KnotVector& knots, double* out)
 {
-    // The NURBS Book, A2.2 (Cox-de Boor triangle without divisions by zero).
-    double left[32];
-    double right[32];
-    out[0] = 1.0;
-    for (int j = 1; j <= degree; ++j) {
-        left[j] = u - knots[span + 1 - j];
-        right[j] = knots[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double temp = out[r] / (right[r + 1] + left[j - r]);
-            out[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        out[j] = saved;
-    }
+    detail::basisFunctionsA22<kMaxDegree>(span, u, degree, knots.data(), out);
 }
 
 void basisDerivatives(int span, double u, int p, int n, const KnotVector& knots, double* ders)
 {
-    // The NURBS Book, A2.3, in fixed-size arrays (degree <= kMaxDegree): no allocation, so that
-    // per-sample evaluations in inner loops (frames along a path, stroke fitting) can call it.
+    // Fixed-size arrays (degree <= kMaxDegree): no allocation, so that per-sample evaluations in
+    // inner loops (frames along a path, curve jets) can call it.
     const int cols = p + 1;
-    std::fill(ders, ders + static_cast<size_t>(n + 1) * cols, 0.0);
-    double ndu[kMaxDegree + 1][kMaxDegree + 1];
-    double left[kMaxDegree + 1], right[kMaxDegree + 1];
-    double a[2][kMaxDegree + 1];
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-        left[j] = u - knots[span + 1 - j];
-        right[j] = knots[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];  // lower triangle: knot differences
-            const double temp = ndu[r][j - 1] / ndu[j][r];
-            ndu[r][j] = saved + right[r + 1] * temp;  // upper triangle: basis functions
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    for (int j = 0; j <= p; ++j) ders[j] = ndu[j][p];
-    const int nd = std::min(n, p);
-    for (int r = 0; r <= p; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (int k = 1; k <= nd; ++k) {
-            double d = 0.0;
-            const int rk = r - k, pk = p - k;
-            if (r >= k) {
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const int j1 = rk >= -1 ? 1 : -rk;
-            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
-            for (int j = j1; j <= j2; ++j) {
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders[k * cols + r] = d;
-            std::swap(s1, s2);
-        }
-    }
-    double factor = p;
-    for (int k = 1; k <= nd; ++k) {
-        for (int j = 0; j <= p; ++j) ders[k * cols + j] *= factor;
-        factor *= (p - k);
-    }
+    detail::basisDerivativesA23<kMaxDegree>(span, u, p, n, knots.data(),
+                                            [ders, cols](int k) { return ders + k * cols; });
 }
 
 Eigen::MatrixXd basisDerivatives(int span, double u, int p, int n, const KnotVector& knots)

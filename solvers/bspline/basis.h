@@ -28,6 +28,8 @@ void validateKnots(int degree, int pointCount, const KnotVector& knots, const st
 int findSpan(int degree, const KnotVector& knots, double u);
 
 /// The degree+1 non-vanishing basis functions N_{span-degree..span, degree}(u). The NURBS Book, A2.2.
+/// (basis_evaluator.h holds the algorithms, shared with the fixed-degree forms evaluateBasis<Degree,
+/// Order> and SpanBasis<Degree>.)
 void basisFunctions(int span, double u, int degree, const KnotVector& knots, double* out);
 
 /// Basis functions and their derivatives up to order `n` (row k = k-th derivative, columns the

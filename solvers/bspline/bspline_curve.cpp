@@ -397,9 +397,7 @@ BSplineCurve<Dim> makeClosedUniform(int degree, const std::vector<typename BSpli
         pts.push_back(unique[i]);
         if (!w.empty()) w.push_back(uniqueWeights[i]);
     }
-    KnotVector knots(static_cast<size_t>(N + 2 * degree + 1));
-    for (size_t i = 0; i < knots.size(); ++i) knots[i] = static_cast<double>(static_cast<int>(i) - degree);
-    return BSplineCurve<Dim>(degree, std::move(knots), std::move(pts), std::move(w), true);
+    return BSplineCurve<Dim>(degree, periodicUniformKnots(degree, N, 0.0, N), std::move(pts), std::move(w), true);
 }
 
 template <int Dim>

@@ -6,6 +6,40 @@
 #include <cmath>
 
 namespace sculptline::solvers {
+namespace {
+
+// floor(a / b) for b > 0 (integer division truncates toward zero).
+int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+}  // namespace
+
+KnotVector periodicKnots(int degree, const std::vector<double>& L, double period)
+{
+    const int N = static_cast<int>(L.size());
+    if (N < 1 || !(period > 0.0)) throw GeometryError("knots: a period needs at least one knot and a positive length");
+    int m = 1;
+    while (m < N && L[static_cast<size_t>(m)] == L[0]) ++m;
+    if (m > degree) throw GeometryError("knots: the period's start knot has multiplicity above the degree");
+    const int o = degree + 1 - m;
+    KnotVector U(static_cast<size_t>(N + 2 * degree + 1));
+    for (int i = 0; i < static_cast<int>(U.size()); ++i) {
+        const int q = floorDiv(i - o, N);
+        U[static_cast<size_t>(i)] = L[static_cast<size_t>(i - o - q * N)] + q * period;
+    }
+    return U;
+}
+
+KnotVector periodicUniformKnots(int degree, int spans, double start, double period)
+{
+    if (spans < 1 || !(period > 0.0)) {
+        throw GeometryError("knots: a period needs at least one span and a positive length");
+    }
+    KnotVector U(static_cast<size_t>(spans + 2 * degree + 1));
+    for (int i = 0; i < static_cast<int>(U.size()); ++i) {
+        U[static_cast<size_t>(i)] = start + period * (i - degree) / spans;
+    }
+    return U;
+}
 
 PeriodicWindow periodicExtension(int p, const KnotVector& t, const ControlMatrix& P, int periods)
 {
@@ -14,7 +48,6 @@ PeriodicWindow periodicExtension(int p, const KnotVector& t, const ControlMatrix
     PeriodicWindow w;
     w.start = t[p];
     w.period = t[n + 1] - t[p];
-    auto floorDiv = [](int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); };
     auto knotAt = [&](int i) {
         const int j = i - p;
         const int q = floorDiv(j, N);

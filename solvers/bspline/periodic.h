@@ -16,6 +16,19 @@ struct PeriodicWindow {
     double period = 0.0;   ///< T
 };
 
+/// The knot vector, in the unwrapped convention of BSplineCurve, of a closed curve of `degree` whose
+/// knots in one period [start, start + period) are `periodKnots` (non-decreasing, its first value
+/// `start` with multiplicity m, 1 <= m <= degree; N = periodKnots.size() distinct control points):
+/// U_i = L[(i - o) mod N] + floor((i - o) / N) * period for i = 0..N + 2 degree, o = degree + 1 - m,
+/// so that the last copy of start is U_degree, the domain is [start, start + period] and
+/// U_{i+N} = U_i + period.
+/// @throws GeometryError when N < 1, the period is not positive or m is out of range.
+KnotVector periodicKnots(int degree, const std::vector<double>& periodKnots, double period);
+
+/// The uniform case: `spans` equal spans per period, U_i = start + period (i - degree) / spans for
+/// i = 0..spans + 2 degree (makeClosedUniform: start 0, period = spans).
+KnotVector periodicUniformKnots(int degree, int spans, double start = 0.0, double period = 1.0);
+
 /// The periodic extension of a closed curve repeated `periods` times on each side of its domain.
 PeriodicWindow periodicExtension(int degree, const KnotVector& knots, const ControlMatrix& points, int periods);
 

@@ -29,7 +29,8 @@ std::vector<double> sampleParameters(int degree, const KnotVector& knots, int co
 }  // namespace
 
 template <int Dim>
-CurveProjector<Dim>::CurveProjector(BSplineCurve<Dim> curve, int samplesPerSpan) : curve_(std::move(curve))
+CurveProjector<Dim>::CurveProjector(BSplineCurve<Dim> curve, int samplesPerSpan)
+    : curve_(std::move(curve)), jet_(curve_)
 {
     params_ = sampleParameters(curve_.degree(), curve_.knots(), curve_.pointCount(), std::max(2, samplesPerSpan));
     samples_.reserve(params_.size());
@@ -42,10 +43,12 @@ double CurveProjector<Dim>::refine(const Point& x, double lo, double hi, double 
     // Safeguarded Newton (Numerical Recipes' rtsafe idea) on f(u) = C'(u)·(C(u) - x), which is
     // negative left of a local minimum of the distance and positive right of it.
     auto f = [&](double t, double* df) {
-        const auto d = curve_.derivatives(t, 2);
-        const Point r = d[0] - x;
-        if (df) *df = d[2].dot(r) + d[1].squaredNorm();
-        return d[1].dot(r);
+        // The parameter wrapped as BSplineCurve::derivatives does (brackets cross a closed curve's seam).
+        Point c, d1, d2;
+        jet_.evaluate(curve_.normalizeParameter(t), c, d1, d2);
+        const Point r = c - x;
+        if (df) *df = d2.dot(r) + d1.squaredNorm();
+        return d1.dot(r);
     };
     const double resolution = 4 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(lo), std::abs(hi)});
     // At a knot the kernel evaluates the span to its right; the upper end needs the left limit

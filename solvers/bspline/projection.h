@@ -1,8 +1,28 @@
 #pragma once
 // Closest-point projection onto curves and surfaces, global (not just the nearest local minimum).
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/bspline/curve_jet.h"
+
+#include <algorithm>
 
 namespace sculptline::solvers {
+
+/// One Newton step toward a foot point of x on a curve (The NURBS Book eq. 6.3): on
+/// f(u) = C'(u)·(C(u) - x), f'(u) = C''(u)·(C(u) - x) + |C'(u)|², from c = C(u), d1 = C'(u),
+/// d2 = C''(u) (any evaluator: CurveJet, a solver's own power form); u moves to u - f / f'
+/// clamped to [lo, hi]. Returns false, u unchanged, where f' <= 0 (no minimum of the distance
+/// nearby: Newton would climb). The solvers iterate it in their own loops: a fixed count of passes
+/// or until the distance is small enough; CurveProjector brackets and safeguards it instead.
+template <class Vector>
+bool footPointNewtonStep(const Vector& c, const Vector& d1, const Vector& d2, const Vector& x, double lo, double hi,
+                         double& u)
+{
+    const Vector r = c - x;
+    const double df = d2.dot(r) + d1.squaredNorm();
+    if (!(df > 0.0)) return false;
+    u = std::clamp(u - d1.dot(r) / df, lo, hi);
+    return true;
+}
 
 template <int Dim>
 struct CurveProjection {
@@ -37,6 +57,7 @@ private:
     double refine(const Point& x, double lo, double hi, double guess) const;
 
     BSplineCurve<Dim> curve_;
+    CurveJet<Dim> jet_;  // C, C', C'' for the Newton iterations without allocating
     std::vector<double> params_;
     std::vector<Point> samples_;
 };

@@ -1,6 +1,8 @@
 #include "solvers/editing/lift.h"
 
+#include "solvers/bspline/curve_jet.h"
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
 #include "solvers/editing/constrained_fit.h"
 
 #include <algorithm>
@@ -115,20 +117,18 @@ std::vector<double> fittedParameters(const std::vector<Eigen::Vector2d>& pts, do
         double err = 0.0;
         for (int pass = 0; pass < (spans == 1 ? kCorrections : kCorrectionsSpline); ++pass) {
             fit.params = u;
-            const Curve2d c(3, fit.knots, fitFixedKnots(fit));
+            const CurveJet2d c(Curve2d(3, fit.knots, fitFixedKnots(fit)));
             double moved = 0.0;
             err = 0.0;
             for (int i = 1; i + 1 < n; ++i) {
                 // One Newton step on (C(x) - p)·C'(x) = 0 per pass (the passes iterate anyway);
                 // the error is the fit's at the parameters it was made with (a distance bound).
-                const auto d = c.derivatives(u[i], 2);
-                const Eigen::Vector2d r = d[0] - pts[i];
-                err = std::max(err, r.norm());
-                const double g = r.dot(d[1]), h = d[1].squaredNorm() + r.dot(d[2]);
-                if (!(h > 0.0)) continue;
-                const double x = std::clamp(u[i] - g / h, 0.0, 1.0);
-                moved = std::max(moved, std::abs(x - u[i]));
-                u[i] = x;
+                Eigen::Vector2d x, d1, d2;
+                c.evaluate(u[i], x, d1, d2);
+                err = std::max(err, (x - pts[i]).norm());
+                const double before = u[i];
+                if (!footPointNewtonStep(x, d1, d2, pts[i], 0.0, 1.0, u[i])) continue;
+                moved = std::max(moved, std::abs(u[i] - before));
             }
             if (moved < kParameterConverged) break;
             // A single span still off by more than the tolerance after the spline's passes is no

@@ -88,8 +88,4 @@ struct SplineFitResult {
 /// banded Cholesky) or cyclic band (closed, sparse LDL^T): O(samples + control points) per solve.
 SplineFitResult fitCubicSpline(const SplineFitInput& input, const SplineFitOptions& options);
 
-/// The four cubic B-splines non-zero on `span` and their first and second derivatives at u:
-/// ders[k][j] = d^k/du^k N_{span-3+j}(u). The NURBS Book A2.3 with n = 2, allocation-free.
-void cubicBasisDerivatives(const KnotVector& knots, int span, double u, double ders[3][4]);
-
 }  // namespace sculptline::solvers::stroke

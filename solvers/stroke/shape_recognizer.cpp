@@ -1,5 +1,6 @@
 #include "solvers/stroke/shape_recognizer.h"
 
+#include "solvers/bspline/periodic.h"
 #include "solvers/geometry/plane_fit.h"
 #include "solvers/math_constants.h"
 
@@ -28,13 +29,8 @@ Curve3d closeLoop(const Curve3d& c)
     const int n = c.pointCount() - 1;  // distinct points Q_0..Q_{n-1}
     const KnotVector& k = c.knots();
     const double period = c.domainEnd() - c.domainStart();
-    std::vector<double> per(k.begin() + 1, k.begin() + 1 + n);
-    KnotVector u;
-    for (int i = 0; i <= n + 2 * p; ++i) {
-        const int j = i - 1;
-        const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
-        u.push_back(per[j - q * n] + q * period);
-    }
+    const std::vector<double> per(k.begin() + 1, k.begin() + 1 + n);
+    const KnotVector u = periodicKnots(p, per, period);
     std::vector<Eigen::Vector3d> pts(c.points().begin(), c.points().end() - 1);
     std::vector<double> w;
     if (c.isRational()) w.assign(c.weights().begin(), c.weights().end() - 1);

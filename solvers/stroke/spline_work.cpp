@@ -1,128 +1,20 @@
 #include "solvers/stroke/spline_work.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
 #include "solvers/stroke/banded_cholesky.h"
 
 #include <Eigen/Sparse>
 
-namespace sculptline::solvers::stroke {
-namespace {
-
-double safeDiv(double a, double b) { return b == 0.0 ? 0.0 : a / b; }  // 0/0 := 0 for repeated knots
-
-}  // namespace
-
-void cubicBasisDerivatives(const KnotVector& U, int span, double u, double ders[3][4])
-{
-    constexpr int p = detail::kDegree;
-    double ndu[p + 1][p + 1], left[p + 1], right[p + 1], a[2][p + 1];
-    ndu[0][0] = 1.0;
-    for (int j = 1; j <= p; ++j) {
-        left[j] = u - U[span + 1 - j];
-        right[j] = U[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            ndu[j][r] = right[r + 1] + left[j - r];
-            const double temp = safeDiv(ndu[r][j - 1], ndu[j][r]);
-            ndu[r][j] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        ndu[j][j] = saved;
-    }
-    for (int j = 0; j <= p; ++j) ders[0][j] = ndu[j][p];
-    for (int r = 0; r <= p; ++r) {
-        int s1 = 0, s2 = 1;
-        a[0][0] = 1.0;
-        for (int k = 1; k <= 2; ++k) {
-            double d = 0.0;
-            const int rk = r - k, pk = p - k;
-            if (r >= k) {
-                a[s2][0] = safeDiv(a[s1][0], ndu[pk + 1][rk]);
-                d = a[s2][0] * ndu[rk][pk];
-            }
-            const int j1 = rk >= -1 ? 1 : -rk;
-            const int j2 = (r - 1 <= pk) ? k - 1 : p - r;
-            for (int j = j1; j <= j2; ++j) {
-                a[s2][j] = safeDiv(a[s1][j] - a[s1][j - 1], ndu[pk + 1][rk + j]);
-                d += a[s2][j] * ndu[rk + j][pk];
-            }
-            if (r <= pk) {
-                a[s2][k] = safeDiv(-a[s1][k - 1], ndu[pk + 1][r]);
-                d += a[s2][k] * ndu[r][pk];
-            }
-            ders[k][r] = d;
-            std::swap(s1, s2);
-        }
-    }
-    for (int j = 0; j <= p; ++j) {
-        ders[1][j] *= p;
-        ders[2][j] *= p * (p - 1);
-    }
-}
-
-namespace detail {
-
-// The four non-zero cubic B-splines on `span` at u: The NURBS Book A2.2 unrolled for p = 3.
-void cubicBasis(const KnotVector& U, int span, double u, double N[4])
-{
-    double left[4], right[4];
-    N[0] = 1.0;
-    for (int j = 1; j <= kDegree; ++j) {
-        left[j] = u - U[span + 1 - j];
-        right[j] = U[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double den = right[r + 1] + left[j - r];
-            const double temp = den != 0.0 ? N[r] / den : 0.0;
-            N[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        N[j] = saved;
-    }
-}
-
-// A2.2's six denominators on `span` are knot differences, U[span+r+1] - U[span+1-j+r] (j = 1..3,
-// r < j), independent of u: their reciprocals are computed once per span (0 for repeated knots, as
-// in cubicBasis), which takes the divisions out of the per-sample loop of the least squares.
-void cubicBasisReciprocals(const KnotVector& U, int span, double inv[6])
-{
-    int k = 0;
-    for (int j = 1; j <= kDegree; ++j) {
-        for (int r = 0; r < j; ++r) {
-            const double den = U[span + r + 1] - U[span + 1 - j + r];
-            inv[k++] = den != 0.0 ? 1.0 / den : 0.0;
-        }
-    }
-}
-
-void cubicBasis(const KnotVector& U, int span, double u, const double inv[6], double N[4])
-{
-    double left[4], right[4];
-    N[0] = 1.0;
-    int k = 0;
-    for (int j = 1; j <= kDegree; ++j) {
-        left[j] = u - U[span + 1 - j];
-        right[j] = U[span + j] - u;
-        double saved = 0.0;
-        for (int r = 0; r < j; ++r) {
-            const double temp = N[r] * inv[k++];
-            N[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
-        }
-        N[j] = saved;
-    }
-}
+namespace sculptline::solvers::stroke::detail {
 
 // One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi)
 {
     Vec3 c[3];
     s.eval(u, c);
-    const Vec3 r = c[0] - x;
-    const double f = c[1].dot(r);
-    const double df = c[2].dot(r) + c[1].squaredNorm();
-    if (!(df > 0.0)) return u;
-    return std::clamp(u - f / df, lo, hi);
+    footPointNewtonStep(c[0], c[1], c[2], x, lo, hi, u);
+    return u;
 }
 
 double distanceAt(const Spline& s, const Vec3& x, double u) { return (s.point(u) - x).norm(); }
@@ -139,10 +31,7 @@ double footDistance(const Spline& s, const Vec3& x, double u, double lo, double 
     Vec3 c[3];
     if (best > tol) s.eval(u, c);
     for (int it = 0; it < 2 && best > tol; ++it) {
-        const Vec3 r = c[0] - x;
-        const double df = c[2].dot(r) + c[1].squaredNorm();
-        if (!(df > 0.0)) break;
-        u = std::clamp(u - c[1].dot(r) / df, lo, hi);
+        if (!footPointNewtonStep(c[0], c[1], c[2], x, lo, hi, u)) break;
         s.eval(u, c);
         const double d = (c[0] - x).norm();
         if (d < best) {
@@ -176,16 +65,18 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
     // increasing parameter: walk the spans instead of searching for each.
     const size_t kEnd = S.size() - 1;
     size_t k = static_cast<size_t>(std::lower_bound(u.begin() + 1, u.begin() + static_cast<long>(kEnd), s.breaks[first]) - u.begin());
-    double basis[kDegree + 1], inv[6];
+    // The basis of one span at many samples: the knot differences' reciprocals once per span (the
+    // breaks are distinct, so every span is non-empty, as SpanBasis requires).
+    double basis[kDegree + 1];
     int i = first;
-    cubicBasisReciprocals(s.knots, i + kDegree, inv);
+    SpanBasis<kDegree> spanBasis(s.knots, i + kDegree);
     for (; k < kEnd; ++k) {
         if (i < spans - 1 && u[k] >= s.breaks[i + 1]) {
             while (i < spans - 1 && u[k] >= s.breaks[i + 1]) ++i;
             if (i > last) break;
-            cubicBasisReciprocals(s.knots, i + kDegree, inv);
+            spanBasis = SpanBasis<kDegree>(s.knots, i + kDegree);
         }
-        cubicBasis(s.knots, i + kDegree, u[k], inv, basis);
+        spanBasis.functions(u[k], basis);
         SpanSums& t = sums[i];
         const Vec3& x = X[S[k]];
         for (int q = 0; q <= kDegree; ++q) {
@@ -303,11 +194,11 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
     std::vector<Eigen::Triplet<double>> trip;
     trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
     Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 3);
-    double basis[kDegree + 1];
     for (size_t k = 0; k < S.size(); ++k) {
         const double uk = s.wrap(u[k]);
         const int span = findSpan(kDegree, s.knots, uk);
-        cubicBasis(s.knots, span, uk, basis);
+        const BasisDerivatives<kDegree, 0> nk = evaluateBasis<kDegree, 0>(s.knots, span, uk);
+        const auto& basis = nk.d[0];
         for (int q = 0; q <= kDegree; ++q) {
             const int i = (span - kDegree + q) % n;
             b.row(i) += basis[q] * X[S[k]].transpose();
@@ -344,5 +235,4 @@ void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, con
     solveOpenFromSums(s, X, S, sums, fairing);
 }
 
-}  // namespace detail
-}  // namespace sculptline::solvers::stroke
+}  // namespace sculptline::solvers::stroke::detail

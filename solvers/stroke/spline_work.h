@@ -2,6 +2,8 @@
 // Internals of the least-squares fit (lsq_fit.cpp): the spline being fitted, its evaluation in
 // power form, foot-point distances and the band / cyclic-band least-squares solves. Not part of
 // the stroke library's interface.
+#include "solvers/bspline/basis_evaluator.h"
+#include "solvers/bspline/periodic.h"
 #include "solvers/stroke/lsq_fit.h"
 
 #include <algorithm>
@@ -31,13 +33,9 @@ struct Spline {
             knots.insert(knots.end(), kDegree, 1.0);
             return;
         }
-        // Periodic: U_i = b_{(i-3) mod N} + floor((i-3)/N), i = 0..N+6, so that U_3 = b_0 = 0 and U_{N+3} = 1.
-        const int n = static_cast<int>(breaks.size());
-        for (int i = 0; i <= n + 2 * kDegree; ++i) {
-            const int j = i - kDegree;
-            const int q = j >= 0 ? j / n : -((-j + n - 1) / n);
-            knots.push_back(breaks[j - q * n] + q);
-        }
+        // Periodic, period 1: U_i = b_{(i-3) mod N} + floor((i-3)/N), i = 0..N+6, so that U_3 = b_0 = 0
+        // and U_{N+3} = 1.
+        knots = periodicKnots(kDegree, breaks, 1.0);
     }
     double wrap(double u) const { return closed ? u - std::floor(u) : std::clamp(u, 0.0, 1.0); }
     // The spline in power form per span (Taylor coefficients at the span start): evaluation is a
@@ -62,12 +60,11 @@ struct Spline {
             }
             const double a = j < spans ? breaks[j] : 1.0;
             const int span = j < spans ? findSpan(kDegree, knots, a) : static_cast<int>(knots.size()) - kDegree - 2;
-            double d[3][4];
-            cubicBasisDerivatives(knots, span, a, d);
+            const BasisDerivatives<kDegree, 2> b = evaluateBasis<kDegree, 2>(knots, span, a);
             for (int k = 0; k < 3; ++k) at[j][k].setZero();
-            for (int q = 0; q < 4; ++q) {
+            for (int q = 0; q <= kDegree; ++q) {
                 const Vec3& p = ctrl[span - kDegree + q];
-                for (int k = 0; k < 3; ++k) at[j][k] += d[k][q] * p;
+                for (int k = 0; k < 3; ++k) at[j][k] += b.d[k][q] * p;
             }
         }
         for (int j = 0; j < spans; ++j) {
@@ -110,12 +107,6 @@ struct Spline {
     }
 };
 
-/// The four non-zero cubic B-splines on `span` at u (The NURBS Book A2.2 unrolled for p = 3).
-void cubicBasis(const KnotVector& U, int span, double u, double N[4]);
-/// The reciprocals of A2.2's six knot differences on `span` (0 where knots repeat), and the same
-/// basis from them: no division per evaluation (the least squares evaluates many u per span).
-void cubicBasisReciprocals(const KnotVector& U, int span, double inv[6]);
-void cubicBasis(const KnotVector& U, int span, double u, const double inv[6], double N[4]);
 /// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi);
 double distanceAt(const Spline& s, const Vec3& x, double u);

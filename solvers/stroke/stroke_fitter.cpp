@@ -1,6 +1,7 @@
 #include "solvers/stroke/stroke_fitter.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/periodic.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,17 +65,13 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
 
 // A clamped loop (first point == last point) as a periodic curve in the unwrapped convention of
 // BSplineCurve: per period the knots are 0,0,0,s_1..s_k (N = M values for M + 1 clamped points),
-// U_i = L[(i-1) mod N] + floor((i-1)/N) so that U_1 = U_2 = U_3 = 0 and P_0 = Q_0 is the seam.
+// U_i = L[(i-1) mod N] + floor((i-1)/N) so that U_1 = U_2 = U_3 = 0 and P_0 = Q_0 is the seam. The
+// chain's parameter, hence the period, is normalized to [0, 1].
 Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q)
 {
     const int nPts = static_cast<int>(q.size()) - 1;  // distinct points Q_0..Q_{M-1}
-    std::vector<double> per(clamped.begin() + 1, clamped.begin() + 1 + nPts);  // 0,0,0,s_1..s_k
-    KnotVector u;
-    for (int i = 0; i <= nPts + 6; ++i) {
-        const int j = i - 1;
-        const int qt = j >= 0 ? j / nPts : -((-j + nPts - 1) / nPts);
-        u.push_back(per[j - qt * nPts] + qt);
-    }
+    const std::vector<double> per(clamped.begin() + 1, clamped.begin() + 1 + nPts);  // 0,0,0,s_1..s_k
+    const KnotVector u = periodicKnots(3, per, 1.0);
     std::vector<Vec3> pts(q.begin(), q.end() - 1);
     for (int i = 0; i < 3; ++i) pts.push_back(q[i % nPts]);
     return Curve3d(3, u, pts, {}, true);

@@ -1,6 +1,7 @@
 #include "solvers/surfaces/rail_rotation.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/periodic.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/math_constants.h"
 #include "solvers/surfaces/approximation_tolerance.h"
@@ -215,7 +216,7 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
                 if (h == 4) data(k, static_cast<Eigen::Index>(i) * h + 3) = w;
             }
         }
-        const KnotVector knotsV = periodicCubicKnots(count);
+        const KnotVector knotsV = periodicUniformKnots(3, count);
         const ControlMatrix net = periodicCubicInterpolation(data);
         double deviation = 0.0;
         Eigen::RowVectorXd iso(net.cols());
@@ -252,13 +253,6 @@ ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, con
                                        deviation, tolerance};
         count = next;
     }
-}
-
-KnotVector periodicCubicKnots(int count)
-{
-    KnotVector knots;
-    for (int j = 0; j < count + 7; ++j) knots.push_back(static_cast<double>(j - 3) / count);
-    return knots;
 }
 
 ControlMatrix periodicCubicInterpolation(const ControlMatrix& data)

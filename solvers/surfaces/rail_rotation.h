@@ -25,11 +25,9 @@ namespace sculptline::solvers::surfaces {
 ApproximatedSurface railRotation(const Curve3d& rail1, const Curve3d& rail2, const Curve3d& profile,
                                  const ApproximationOptions& options = {});
 
-/// Knots -3/K, ..., (K+3)/K of a closed uniform cubic with K distinct control points (domain [0, 1]).
-KnotVector periodicCubicKnots(int count);
-
-/// Control rows (K distinct ones, then the first three repeated) of the closed uniform cubic that
-/// passes through data row k at v = k/K. O(K) per column.
+/// Control rows (K distinct ones, then the first three repeated) of the closed uniform cubic (knots
+/// periodicUniformKnots(3, K), domain [0, 1]) that passes through data row k at v = k/K. O(K) per
+/// column.
 /// @throws GeometryError when data.rows() < 3.
 ControlMatrix periodicCubicInterpolation(const ControlMatrix& data);
 

@@ -25,46 +25,6 @@ Eigen::Matrix3d Frame::axes() const
     return m;
 }
 
-// Largest degree the fixed arrays of CurveJet hold (the kernel's basisFunctions has the same bound).
-constexpr int kMaxJetDegree = kMaxDegree;
-
-CurveJet::CurveJet(const Curve3d& curve) : degree_(curve.degree()), knots_(curve.knots())
-{
-    if (degree_ > kMaxJetDegree) throw GeometryError("path: degree above " + std::to_string(kMaxJetDegree));
-    for (int i = 0; i < curve.pointCount(); ++i) {
-        const double w = curve.weight(i);
-        points_.emplace_back(w * curve.points()[i].x(), w * curve.points()[i].y(), w * curve.points()[i].z(), w);
-    }
-}
-
-void CurveJet::evaluate(double u, Eigen::Vector3d& x, Eigen::Vector3d& d1, Eigen::Vector3d& d2) const
-{
-    // The NURBS Book A2.3 with n = 2 derivatives (the kernel's allocation-free form).
-    const int p = degree_;
-    const KnotVector& U = knots_;
-    u = std::clamp(u, U[p], U[points_.size()]);
-    const int span = findSpan(p, U, u);
-    double ders[3 * (kMaxJetDegree + 1)];
-    basisDerivatives(span, u, p, 2, U, ders);
-    Eigen::Vector4d A[3] = {Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero(), Eigen::Vector4d::Zero()};
-    for (int j = 0; j <= p; ++j) {
-        const Eigen::Vector4d& P = points_[span - p + j];
-        for (int k = 0; k < 3; ++k) A[k] += ders[k * (p + 1) + j] * P;
-    }
-    // C = A/w: C' = (A' - w' C) / w, C'' = (A'' - 2 w' C' - w'' C) / w (The NURBS Book eq. 4.8).
-    const double w = A[0].w();
-    x = A[0].head<3>() / w;
-    d1 = (A[1].head<3>() - A[1].w() * x) / w;
-    d2 = (A[2].head<3>() - 2.0 * A[1].w() * d1 - A[2].w() * x) / w;
-}
-
-Eigen::Vector3d CurveJet::derivative(double u) const
-{
-    Eigen::Vector3d x, d1, d2;
-    evaluate(u, x, d1, d2);
-    return d1;
-}
-
 Eigen::Vector3d unitTangent(const Curve3d& path, double u)
 {
     const Eigen::Vector3d d = path.derivatives(u, 1)[1];
@@ -92,10 +52,10 @@ Frame propagateFrame(const Frame& f, const Eigen::Vector3d& x1, const Eigen::Vec
 std::vector<Frame> rotationMinimizingFrames(const Curve3d& path, const std::vector<double>& params,
                                             const Eigen::Vector3d& initialNormal)
 {
-    return rotationMinimizingFrames(CurveJet(path), params, initialNormal);
+    return rotationMinimizingFrames(CurveJet3d(path), params, initialNormal);
 }
 
-std::vector<Frame> rotationMinimizingFrames(const CurveJet& path, const std::vector<double>& params,
+std::vector<Frame> rotationMinimizingFrames(const CurveJet3d& path, const std::vector<double>& params,
                                             const Eigen::Vector3d& initialNormal)
 {
     std::vector<Frame> frames;
@@ -121,7 +81,7 @@ void requireNoCusp(const Curve3d& path)
     std::vector<double> breaks{a};
     for (double k : interiorBreakpoints(path.degree(), path.knots())) breaks.push_back(k);
     breaks.push_back(b);
-    const CurveJet jet(path);
+    const CurveJet3d jet(path);
     double length = 0.0;
     Eigen::Vector3d prev = path.evaluate(a);
     std::vector<double> params;

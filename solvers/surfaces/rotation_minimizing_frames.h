@@ -3,6 +3,7 @@
 // Y. Liu, "Computation of rotation minimizing frames", ACM TOG 27(1), 2008, Algorithm 1): frames
 // along a curve that do not twist about the tangent, so a swept profile does not flip.
 #include "solvers/bspline/bspline_curve.h"
+#include "solvers/bspline/curve_jet.h"
 #include "solvers/math_constants.h"
 
 #include <Eigen/Core>
@@ -20,24 +21,6 @@ struct Frame {
     Eigen::Matrix3d axes() const;
 };
 
-/// Position and first two derivatives of a curve without allocating: basis derivatives by The NURBS
-/// Book A2.3 on fixed arrays, the quotient rule (A4.2) for rational curves. Sweeping evaluates the
-/// path at thousands of parameters per build; Curve3d::derivatives allocates on every call.
-class CurveJet {
-public:
-    explicit CurveJet(const Curve3d& curve);
-    /// x = C(u), d1 = C'(u), d2 = C''(u) (u clamped to the domain; at a knot, the right-hand
-    /// derivatives, except at the domain end).
-    void evaluate(double u, Eigen::Vector3d& x, Eigen::Vector3d& d1, Eigen::Vector3d& d2) const;
-    /// C'(u) only (same conventions).
-    Eigen::Vector3d derivative(double u) const;
-
-private:
-    int degree_;
-    KnotVector knots_;
-    std::vector<Eigen::Vector4d> points_;  // homogeneous (w x, w)
-};
-
 /// One double-reflection step from frame f to the point x1 with unit tangent t1 (Wang et al. eq. 6):
 /// reflect in the bisector plane of x0 x1, then in the plane that takes the reflected tangent to t1.
 Frame propagateFrame(const Frame& f, const Eigen::Vector3d& x1, const Eigen::Vector3d& t1);
@@ -47,8 +30,9 @@ Frame propagateFrame(const Frame& f, const Eigen::Vector3d& x1, const Eigen::Vec
 std::vector<Frame> rotationMinimizingFrames(const Curve3d& path, const std::vector<double>& params,
                                             const Eigen::Vector3d& initialNormal);
 
-/// The same, with the path's jet already built (sweeps reuse it).
-std::vector<Frame> rotationMinimizingFrames(const CurveJet& path, const std::vector<double>& params,
+/// The same, with the path's jet (the kernel's allocation-free C, C', C'') already built (sweeps
+/// reuse it).
+std::vector<Frame> rotationMinimizingFrames(const CurveJet3d& path, const std::vector<double>& params,
                                             const Eigen::Vector3d& initialNormal);
 
 /// Throws GeometryError ("path: ...") if the path has no length, a vanishing derivative, or a

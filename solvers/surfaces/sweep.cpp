@@ -70,7 +70,7 @@ constexpr double kLeftOfKnot = 1e-9;
 constexpr double kSmoothSeam = 1e-6;
 constexpr double kSeamGapRelative = 1e-9;
 
-bool closesSmoothly(const CurveJet& jet, double a, double b, double size)
+bool closesSmoothly(const CurveJet3d& jet, double a, double b, double size)
 {
     Vec3 x0, t0, d2, x1, t1;
     jet.evaluate(a, x0, t0, d2);
@@ -79,7 +79,7 @@ bool closesSmoothly(const CurveJet& jet, double a, double b, double size)
            t0.dot(t1) > 0.0;
 }
 
-std::shared_ptr<SweepPathSamples> samplePath(const CurveJet& jet, const std::vector<double>& breaks,
+std::shared_ptr<SweepPathSamples> samplePath(const CurveJet3d& jet, const std::vector<double>& breaks,
                                              const std::vector<int>& perSpan, bool closed)
 {
     auto s = std::make_shared<SweepPathSamples>();
@@ -249,7 +249,7 @@ SweepResult sweepResult(const Curve3d& profile, Assembly&& A, int sections, doub
 // At a corner of the path (a knot where the tangent turns) the exact sweep is torn: the section
 // turns at once with the frame, so points at distance ρ from the path jump by up to 2ρ·sin(α/2).
 // Within tolerance the interpolation absorbs it; beyond, no surface follows the construction.
-void requireNoTear(const CurveJet& jet, const Curve3d& path, const Curve3d& profile, double tolerance)
+void requireNoTear(const CurveJet3d& jet, const Curve3d& path, const Curve3d& profile, double tolerance)
 {
     const double a = path.domainStart(), b = path.domainEnd();
     Vec3 x0, d1, d2;
@@ -333,7 +333,7 @@ SweepResult buildSweep(const Curve3d& profile, const Curve3d& path, const SweepO
         samples.reset();
         return polylineSweep(profile, path, tolerance);
     }
-    const CurveJet jet(path);
+    const CurveJet3d jet(path);
     requireNoTear(jet, path, profile, tolerance);
     // Sections at equally spaced parameters per path knot span, so every path knot (where the
     // exact sweep is only C1) is a section: C1 in v, error O(h^4) on each piece instead of the

@@ -53,33 +53,6 @@ TEST(BandedCholesky, GivenIndefiniteMatrix_ThenFactorReportsFailure)
     EXPECT_FALSE(band.factor());
 }
 
-TEST(CubicBasisDerivatives, GivenClampedAndInteriorSpans_ThenMatchKernelA23)
-{
-    const solvers::KnotVector knots = {0, 0, 0, 0, 0.1, 0.35, 0.35, 0.35, 0.6, 1, 1, 1, 1};
-    for (double u : {0.0, 0.05, 0.1, 0.2, 0.349, 0.35, 0.5, 0.77, 1.0}) {
-        const int span = solvers::findSpan(3, knots, u);
-        double d[3][4];
-        cubicBasisDerivatives(knots, span, u, d);
-        const Eigen::MatrixXd ref = solvers::basisDerivatives(span, u, 3, 2, knots);
-        for (int k = 0; k < 3; ++k)
-            for (int j = 0; j < 4; ++j) EXPECT_NEAR(d[k][j], ref(k, j), 1e-9 * (1 + std::abs(ref(k, j)))) << u;
-    }
-}
-
-TEST(CubicBasis, GivenPrecomputedReciprocals_ThenSameValuesAsTheKernelIncludingRepeatedKnots)
-{
-    // Clamped ends and a triple interior knot: the zero differences must give zero terms, not NaN.
-    const solvers::KnotVector knots = {0, 0, 0, 0, 0.1, 0.35, 0.35, 0.35, 0.6, 1, 1, 1, 1};
-    for (double u : {0.0, 0.05, 0.1, 0.2, 0.349, 0.35, 0.5, 0.77, 1.0}) {
-        const int span = solvers::findSpan(3, knots, u);
-        double inv[6], n[4];
-        detail::cubicBasisReciprocals(knots, span, inv);
-        detail::cubicBasis(knots, span, u, inv, n);
-        const Eigen::MatrixXd ref = solvers::basisDerivatives(span, u, 3, 0, knots);
-        for (int j = 0; j < 4; ++j) EXPECT_NEAR(n[j], ref(0, j), 1e-14) << u;
-    }
-}
-
 TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
 {
     const double unit = 2.0;

@@ -1,6 +1,7 @@
 // Rail-based rotation (thesis §5.2.2): the profile starts the surface exactly, the rails are
 // followed within the reported deviation, circular rails give a surface of revolution.
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/periodic.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/surfaces/rail_rotation.h"
 #include "surface_checks.h"
@@ -100,7 +101,7 @@ TEST(PeriodicCubicInterpolation, GivenDataRows_WhenInterpolated_ThenClosedCurveP
         for (int r = 0; r < net.rows(); ++r) pts.emplace_back(net(r, 0), net(r, 1), net(r, 2));
         // (Evaluated as an unclamped open curve on the same knots: the same function on [0, 1],
         // and it admits K = 3, which the kernel's closed convention does not.)
-        const Curve3d closed(3, periodicCubicKnots(K), pts);
+        const Curve3d closed(3, periodicUniformKnots(3, K), pts);
         for (int k = 0; k < K; ++k)
             EXPECT_LT((closed.evaluate(static_cast<double>(k) / K) - Vec3(data.row(k).transpose())).norm(), kExact)
                 << "K = " << K << ", k = " << k;

@@ -109,27 +109,6 @@ TEST(RotationMinimizingFrames, GivenHelix_WhenPropagated_ThenOrthonormalAndAngul
     }
 }
 
-TEST(CurveJet, GivenCubicAndRationalCurves_WhenEvaluated_ThenMatchesTheKernelsDerivatives)
-{
-    // Reference: Curve3d::derivatives (The NURBS Book A3.2 / A4.2), at knots and between them.
-    const Curve3d helix = helixPath();
-    const Curve3d circle = fullCircle(Vec3(1, 2, 3), 2.0, Vec3::UnitX(), Vec3(0, 0.6, 0.8));
-    const Curve3d line(1, {0, 0, 1, 1}, {{0, 0, 0}, {1, 2, 3}});
-    for (const Curve3d& c : {helix, circle, line}) {
-        const CurveJet jet(c);
-        for (int k = 0; k <= 40; ++k) {
-            const double u = c.domainStart() + (c.domainEnd() - c.domainStart()) * k / 40.0;
-            Vec3 x, d1, d2;
-            jet.evaluate(u, x, d1, d2);
-            const auto ref = c.derivatives(u, 2);
-            const double scale = 1.0 + ref[1].norm() + ref[2].norm();
-            EXPECT_LT((x - ref[0]).norm(), kExact);
-            EXPECT_LT((d1 - ref[1]).norm(), kExact * scale) << u;
-            EXPECT_LT((d2 - ref[2]).norm(), kExact * scale) << u;
-        }
-    }
-}
-
 namespace {
 
 // The curve moved by the rotation `angle` about `axis` through the origin, then by `shift` (a
