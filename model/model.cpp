@@ -659,8 +659,6 @@ int Model::update()
 {
     if (dirty_.empty()) return 0;
     const Plan& p = plan();
-    std::vector<const Constraint*> constraints;
-    for (const auto& [id, c] : constraints_) constraints.push_back(&c);
     const std::set<EntityId> changed(dirty_.begin(), dirty_.end());
     dirty_.clear();
     std::set<EntityId> recomputed;
@@ -670,7 +668,7 @@ int Model::update()
         auto it = entities_.find(id);
         if (it != entities_.end() && !p.stepOf.count(id)) recompute(it->second);
     }
-    for (size_t index : stepsAfter(p, constraints, changed)) {
+    for (size_t index : stepsAfter(p, changed)) {
         const PlanStep& step = p.steps[index];
         if (std::none_of(step.solve.begin(), step.solve.end(), [this](EntityId id) { return entities_.count(id) != 0; })) continue;
         if (const auto cached = dragSolvers_.find(index); cached != dragSolvers_.end()) {
@@ -718,9 +716,7 @@ void Model::beginDrag(EntityId id)
     update();  // the drag starts from a settled model
     dragged_ = id;
     const Plan& p = plan();
-    std::vector<const Constraint*> constraints;
-    for (const auto& [cid, c] : constraints_) constraints.push_back(&c);
-    for (size_t index : stepsAfter(p, constraints, {id})) {
+    for (size_t index : stepsAfter(p, {id})) {
         const PlanStep& step = p.steps[index];
         if (!registry_->caches(step.solver)) continue;
         std::unique_ptr<StepSolver> solver = registry_->make(step.solver);

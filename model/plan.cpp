@@ -133,6 +133,13 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
             if (component[v] != component[w] && next[component[v]].insert(component[w]).second) ++incoming[component[w]];
         }
     }
+    // Entity -> the constraints that consume its freedom here (each step lists those of its entities).
+    std::map<EntityId, std::vector<ConstraintId>> consuming;
+    for (const Constraint* c : constraints) {
+        for (EntityId t : c->targets) {
+            if (g.index.count(t) && solves(*c, t)) consuming[t].push_back(c->id);
+        }
+    }
     using Ready = std::pair<EntityId, size_t>;  // (smallest member id, component)
     std::priority_queue<Ready, std::vector<Ready>, std::greater<Ready>> ready;
     for (size_t k = 0; k < count; ++k) {
@@ -145,12 +152,12 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
         PlanStep step;
         for (size_t v : members[k]) step.solve.push_back(g.nodes[v]);
         std::sort(step.solve.begin(), step.solve.end());
-        const std::set<EntityId> in(step.solve.begin(), step.solve.end());
-        for (const Constraint* c : constraints) {
-            if (std::any_of(c->targets.begin(), c->targets.end(), [&](EntityId t) { return in.count(t) != 0 && solves(*c, t); }))
-                step.constraints.push_back(c->id);
+        for (EntityId e : step.solve) {
+            const auto it = consuming.find(e);
+            if (it != consuming.end()) step.constraints.insert(step.constraints.end(), it->second.begin(), it->second.end());
         }
         std::sort(step.constraints.begin(), step.constraints.end());
+        step.constraints.erase(std::unique(step.constraints.begin(), step.constraints.end()), step.constraints.end());
         step.solver = chooseSolver(step);
         for (EntityId e : step.solve) plan.stepOf[e] = plan.steps.size();
         plan.steps.push_back(std::move(step));
@@ -158,35 +165,43 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
             if (--incoming[m] == 0) ready.push({g.nodes[members[m].front()], m});
         }
     }
+    // What each entity's change reaches: the solved targets of the constraints touching it.
+    for (const Constraint* c : constraints) {
+        std::vector<EntityId> targets;
+        for (EntityId t : c->targets) {
+            if (plan.stepOf.count(t)) targets.push_back(t);
+        }
+        if (targets.empty()) continue;
+        for (const std::vector<EntityId>* ends : {&c->sources, &c->targets}) {
+            for (EntityId e : *ends) {
+                std::vector<EntityId>& r = plan.reaches[e];
+                r.insert(r.end(), targets.begin(), targets.end());
+            }
+        }
+    }
+    for (auto& [e, r] : plan.reaches) {
+        std::sort(r.begin(), r.end());
+        r.erase(std::unique(r.begin(), r.end()), r.end());
+    }
     return plan;
 }
 
-std::vector<size_t> stepsAfter(const Plan& plan, const std::vector<const Constraint*>& constraints,
-                               const std::set<EntityId>& changed)
+std::vector<size_t> stepsAfter(const Plan& plan, const std::set<EntityId>& changed)
 {
-    // Entity -> constraints that read it or consume its freedom.
-    std::map<EntityId, std::vector<const Constraint*>> touching;
-    for (const Constraint* c : constraints) {
-        for (EntityId e : c->sources) touching[e].push_back(c);
-        for (EntityId e : c->targets) touching[e].push_back(c);
-    }
     std::set<size_t> run;
     std::vector<EntityId> frontier(changed.begin(), changed.end());
     std::set<EntityId> seen(changed.begin(), changed.end());
-    auto reach = [&](EntityId e) {
-        if (seen.insert(e).second) frontier.push_back(e);
-    };
     while (!frontier.empty()) {
         const EntityId e = frontier.back();
         frontier.pop_back();
         if (const auto s = plan.stepOf.find(e); s != plan.stepOf.end() && run.insert(s->second).second) {
-            for (EntityId other : plan.steps[s->second].solve) reach(other);
+            for (EntityId other : plan.steps[s->second].solve) {
+                if (seen.insert(other).second) frontier.push_back(other);
+            }
         }
-        const auto t = touching.find(e);
-        if (t == touching.end()) continue;
-        for (const Constraint* c : t->second) {
-            for (EntityId target : c->targets) {
-                if (plan.stepOf.count(target)) reach(target);
+        if (const auto r = plan.reaches.find(e); r != plan.reaches.end()) {
+            for (EntityId target : r->second) {
+                if (seen.insert(target).second) frontier.push_back(target);
             }
         }
     }

@@ -29,6 +29,9 @@ struct Plan {
     /// Entity -> index of the step that solves it; entities absent here are sources (nothing
     /// constrains them, or they are fixed).
     std::map<EntityId, size_t> stepOf;
+    /// Entity -> the solved entities its change reaches directly (the targets of every constraint
+    /// that reads it or couples it), so that finding a change's steps costs what it reaches.
+    std::map<EntityId, std::vector<EntityId>> reaches;
 };
 
 /// Chooses the solver key of a step (the registry's rule).
@@ -42,9 +45,8 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
               const std::vector<const Constraint*>& constraints, const SolverChooser& chooseSolver);
 
 /// The indices of the steps that must run when `changed` entities changed: the steps solving them
-/// and every step downstream, ascending (= plan order). `dependents` maps an entity to the steps
-/// whose constraints read it or couple it.
-std::vector<size_t> stepsAfter(const Plan& plan, const std::vector<const Constraint*>& constraints,
-                               const std::set<EntityId>& changed);
+/// and every step downstream, ascending (= plan order). Costs what the change reaches, not the size
+/// of the graph.
+std::vector<size_t> stepsAfter(const Plan& plan, const std::set<EntityId>& changed);
 
 }  // namespace sculptline::model

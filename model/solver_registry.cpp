@@ -124,6 +124,8 @@ public:
         } catch (const std::exception& error) {
             throw std::invalid_argument(error.what());
         }
+        if (solver_->freeIndices().empty())
+            throw std::invalid_argument("every control point of curve " + std::to_string(curve_) + " is fixed: nothing can move");
         grip_ = solver_->currentValues().front();
     }
 
