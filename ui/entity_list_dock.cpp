@@ -20,7 +20,7 @@ void EntityListDock::refresh(const model::Model& model, model::EntityId selectio
     updating_ = true;
     list_->clear();
     auto add = [this](const model::Entity& e, const QString& text) {
-        auto* item = new QListWidgetItem(text, list_);
+        auto* item = new QListWidgetItem(e.fixed ? text + tr(" - fixed") : text, list_);
         item->setData(Qt::UserRole, e.id);
     };
     // Planes with their curves under them, then curves on no plane, surfaces and constraints.

@@ -169,6 +169,10 @@ void MainWindow::createActions()
     redo->setShortcuts({QKeySequence::Redo, QKeySequence(QStringLiteral("Ctrl+Y"))});
     edit->addAction(redo);
     make(edit, "edit.delete", tr("&Delete selection"), QKeySequence::Delete, [this]() { document_->deleteSelection(); });
+    // Seed 000 §3.2: a fixed element keeps its shape through every edit and solve; the plan changes.
+    make(edit, "edit.toggleFixed", tr("&Fix / free the selection"), QKeySequence(QStringLiteral("Ctrl+Shift+F")),
+         [this]() { document_->toggleSelectionFixed(); });
+    make(edit, "edit.removePins", tr("Remove the selected curve's &pins"), QKeySequence(), [this]() { document_->removeSelectionPins(); });
 
     make(edit, "stroke.useRecognized", tr("Use the recognized shape for the last stroke"), QKeySequence(),
          [this]() { document_->chooseRecognized(true); });

@@ -157,6 +157,26 @@ void SketchDocument::deleteSelection()
     undo_.push(new DeleteEntityCommand(*this, selection_));
 }
 
+void SketchDocument::toggleSelectionFixed()
+{
+    const model::Entity* e = model_.find(selection_);
+    if (!e) return;
+    undo_.push(new SetFixedCommand(*this, e->id, !e->fixed));
+}
+
+void SketchDocument::removeSelectionPins()
+{
+    std::vector<model::Constraint> pins;
+    for (model::ConstraintId id : model_.constraintsOn(selection_)) {
+        const model::Constraint* c = model_.findConstraint(id);
+        if (c->type == model::ConstraintType::Position || c->type == model::ConstraintType::Tangent) pins.push_back(*c);
+    }
+    if (pins.empty()) return;
+    undo_.beginMacro(tr("Remove the pins of curve %1").arg(selection_));
+    for (model::Constraint& pin : pins) undo_.push(new RemoveConstraintCommand(*this, std::move(pin)));
+    undo_.endMacro();
+}
+
 void SketchDocument::entityAdded(const model::Entity& e)
 {
     // The plane's dragger comes from planeDraggers_, which observes the model too.

@@ -110,6 +110,10 @@ public:
     /// what is running).
     void notifyChanged();
     void deleteSelection();
+    /// Fixes the selected entity, or frees it when it is fixed (undoable).
+    void toggleSelectionFixed();
+    /// Removes the pins (position and tangent constraints) of the selected curve (undoable).
+    void removeSelectionPins();
     void addStroke(const manipulators::FinishedStroke& stroke);
 
     /// Surface modes (issue 6): curves picked one by one become the inputs of a surface of

@@ -72,6 +72,24 @@ void AddConstraintCommand::undo()
     doc_.notifyChanged();
 }
 
+RemoveConstraintCommand::RemoveConstraintCommand(SketchDocument& doc, model::Constraint constraint)
+    : doc_(doc), constraint_(std::move(constraint))
+{
+    setText(QStringLiteral("Remove constraint c%1").arg(constraint_.id));
+}
+
+void RemoveConstraintCommand::redo()
+{
+    doc_.model().removeConstraint(constraint_.id);
+    doc_.notifyChanged();
+}
+
+void RemoveConstraintCommand::undo()
+{
+    doc_.model().addConstraint(constraint_);
+    doc_.notifyChanged();
+}
+
 SetFixedCommand::SetFixedCommand(SketchDocument& doc, model::EntityId id, bool fixed) : doc_(doc), id_(id), fixed_(fixed)
 {
     setText(fixed ? QStringLiteral("Fix %1").arg(id) : QStringLiteral("Free %1").arg(id));

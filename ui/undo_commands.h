@@ -56,6 +56,18 @@ private:
     model::Constraint constraint_;
 };
 
+/// Removes one of the designer's constraints; undo restores it under its id.
+class RemoveConstraintCommand : public QUndoCommand {
+public:
+    RemoveConstraintCommand(SketchDocument& doc, model::Constraint constraint);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    model::Constraint constraint_;
+};
+
 /// Fixes or frees an entity (seed 000 §3.2: a fixed one keeps its shape through every edit and solve).
 class SetFixedCommand : public QUndoCommand {
 public:

@@ -89,6 +89,15 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     QApplication::processEvents();  // the queued refresh shows the undone state
     EXPECT_EQ(inspector->pointList()->item(0)->checkState(), Qt::Unchecked);
 
+    // Fix / free (seed 000 §3.2; a space curve of 6 control points has 18 DOF): the selection's state, shown in the inspector with its freedom, undoable
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("State: free; freedom: 18 of 18 left"))) << inspector->text().toStdString();
+    window.action(QStringLiteral("edit.toggleFixed"))->trigger();
+    EXPECT_EQ(window.document().model().state(2), model::State::Fixed);
+    QApplication::processEvents();
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("State: fixed"))) << inspector->text().toStdString();
+    window.document().undoStack()->undo();
+    EXPECT_EQ(window.document().model().state(2), model::State::Free);
+
     // The surface modes each have an action with a hot key, and tell what to pick
     for (const char* mode : {"mode.fill", "mode.revolve", "mode.extrude", "mode.sweep", "mode.loft", "mode.boundaryRotation",
                              "mode.railRotation", "mode.gordon", "mode.network", "surface.fillTangent"}) {
