@@ -1,6 +1,8 @@
 #include "manipulators/curve_pull.h"
 
 #include "scene/eigen_coin.h"
+#include "scene/update_scheduler.h"
+#include "solvers/bspline/projection.h"
 #include "scene/overlay_nodes.h"
 
 #include <Inventor/events/SoLocation2Event.h>
@@ -93,6 +95,52 @@ void CurvePull::onEvent(SoEventCallback* node)
         node->setHandled();
         if (release_) release_();
     }
+}
+
+}  // namespace sculptline::manipulators
+
+namespace sculptline::manipulators {
+
+CurvePullBinding::CurvePullBinding(model::Model& model, scene::UpdateScheduler& scheduler) : model_(model), scheduler_(scheduler) {}
+
+std::optional<model::PlaneFrame> CurvePullBinding::grab(const StrokeHit& hit, std::string* error)
+{
+    const model::Entity* curve = model_.find(hit.curve);
+    if (!curve || curve->kind != model::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
+    const model::PlaneFrame frame = model_.find(curve->plane())->frame;
+    const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
+    scheduler_.flush();
+    try {
+        model_.beginPull(curve->id, u);
+    } catch (const std::exception& e) {
+        if (error) *error = e.what();
+        return std::nullopt;
+    }
+    pulled_ = curve->id;
+    before_ = curve->local;
+    message_.clear();
+    return frame;
+}
+
+void CurvePullBinding::moveTo(const Eigen::Vector3d& local)
+{
+    if (pulled_ == 0) return;
+    // Marks the curve changed only: the scheduler updates its dependents once per frame.
+    const std::string message = model_.pullTo(local);
+    if (!message.empty()) message_ = message;
+}
+
+void CurvePullBinding::release()
+{
+    if (pulled_ == 0) return;
+    scheduler_.flush();
+    model_.endDrag();  // the surfaces it drove come to rest as fresh builds
+    scheduler_.flush();
+    const model::EntityId curve = pulled_;
+    pulled_ = 0;
+    if (finished_) finished_(curve, *before_, message_);
+    before_.reset();
+    message_.clear();
 }
 
 }  // namespace sculptline::manipulators

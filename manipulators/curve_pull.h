@@ -1,14 +1,17 @@
 #pragma once
 // Pulling a point of a curve (thesis §6.1, direct constrained manipulation): press on a curve that
 // lies on a plane, drag, release. The pointer's ray meets the curve's plane at pointer rate and the
-// point under the handle follows it; the solver (solvers/editing, factored once at the press) is
-// run by the caller per event. A marker shows the handle.
+// point under the handle follows it; CurvePullBinding (below) drives the model with it: the
+// model's least-change solver is factored once at the press and re-solved per event. A marker shows
+// the handle.
 #include "manipulators/stroke_input.h"
+#include "model/model.h"
 
 #include <Eigen/Core>
 
 #include <functional>
 #include <optional>
+#include <string>
 
 class SoCamera;
 class SoCoordinate3;
@@ -52,6 +55,48 @@ private:
     Grab grab_;
     Move move_;
     std::function<void()> release_;
+};
+
+}  // namespace sculptline::manipulators
+
+namespace sculptline::scene {
+class UpdateScheduler;
+}
+
+namespace sculptline::manipulators {
+
+/// The binding of a curve pull to the model (thesis §6.1): at the grab the model factors the
+/// curve's least-change solver once (Model::beginPull, its pins held and fixed points blocked), each
+/// pointer event is one Model::pullTo, and the release ends the drag so the surfaces it drove come
+/// to rest as fresh builds. The caller decides what a finished pull means (the ui pushes one undo
+/// step with the shape before and after).
+class CurvePullBinding {
+public:
+    /// A finished pull: the curve, its plane-local shape at the grab, and the solver's last remark
+    /// (a compromise, too few free points; empty when it met everything).
+    using Finished = std::function<void(model::EntityId curve, const solvers::Curve3d& before, const std::string& message)>;
+
+    /// Both must outlive this object.
+    CurvePullBinding(model::Model& model, scene::UpdateScheduler& scheduler);
+
+    /// Grabs `hit.curve` where the hit is: the frame of its plane to pull in, or empty when it
+    /// cannot be pulled (not on a plane; `error` then says why when the model refused it).
+    std::optional<model::PlaneFrame> grab(const StrokeHit& hit, std::string* error = nullptr);
+    /// Per pointer event: the pulled point goes to `local` (the plane's frame).
+    void moveTo(const Eigen::Vector3d& local);
+    /// The release: ends the drag and reports it.
+    void release();
+    void setFinishedCallback(Finished finished) { finished_ = std::move(finished); }
+    /// The curve being pulled, or 0.
+    model::EntityId pulled() const { return pulled_; }
+
+private:
+    model::Model& model_;
+    scene::UpdateScheduler& scheduler_;
+    model::EntityId pulled_ = 0;
+    std::optional<solvers::Curve3d> before_;
+    std::string message_;
+    Finished finished_;
 };
 
 }  // namespace sculptline::manipulators

@@ -28,8 +28,8 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     // a surface.
     curvePull_->setCallbacks(
         [this](const manipulators::StrokeHit& hit) { return surfaceMode_ == model::Construction::Extrude ? grabExtrusion(hit) : grabCurve(hit); },
-        [this](const Eigen::Vector3d& local) { extrusion_ || extrudeProfile_ ? extrudeTo(local) : pullTo(local); },
-        [this]() { extrudeProfile_ ? releaseExtrusion() : releaseCurve(); });
+        [this](const Eigen::Vector3d& local) { extrusion_ || extrudeProfile_ ? extrudeTo(local) : pullBinding_->moveTo(local); },
+        [this]() { extrudeProfile_ ? releaseExtrusion() : pullBinding_->release(); });
     gridNode_ = scene::makeGroundGrid(grid_);
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
@@ -37,6 +37,10 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     feedback_ = std::make_unique<scene::StrokeFeedback>();
     root_->addChild(feedback_->root());
     scheduler_ = std::make_unique<scene::UpdateScheduler>(model_);
+    pullBinding_ = std::make_unique<manipulators::CurvePullBinding>(model_, *scheduler_);
+    pullBinding_->setFinishedCallback([this](model::EntityId curve, const solvers::Curve3d& before, const std::string& message) {
+        pullFinished(curve, before, message);
+    });
     // Last: the planes are translucent and drawn over what lies behind them.
     planeDraggers_ = std::make_unique<manipulators::PlaneDraggers>(model_, *scheduler_);
     planeDraggers_->setDragCallbacks([this](model::EntityId plane) { dragStarted(plane); },
@@ -52,6 +56,7 @@ SketchDocument::~SketchDocument()
     model_.endDrag();
     model_.removeObserver(this);
     planeDraggers_.reset();
+    pullBinding_.reset();
     scheduler_.reset();
     view_.reset();
     root_->unref();

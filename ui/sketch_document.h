@@ -30,6 +30,7 @@ namespace sculptline::manipulators {
 class PlaneDraggers;
 class StrokeInput;
 class CurvePull;
+class CurvePullBinding;
 struct FinishedStroke;
 struct StrokeHit;
 }  // namespace sculptline::manipulators
@@ -170,8 +171,8 @@ private:
     void replaceRecognizedCurve(const solvers::Curve3d& target);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<model::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
-    void pullTo(const Eigen::Vector3d& local);
-    void releaseCurve();
+    /// A pull ended (manipulators::CurvePullBinding): one undo step, and the solver's remark.
+    void pullFinished(model::EntityId curve, const solvers::Curve3d& before, const std::string& message);
     /// Extrude mode's drag (the pointer pulls the picked curve out into a surface).
     std::optional<model::PlaneFrame> grabExtrusion(const manipulators::StrokeHit& hit);
     void extrudeTo(const Eigen::Vector3d& local);
@@ -190,9 +191,7 @@ private:
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
     std::unique_ptr<scene::StrokeFeedback> feedback_;
-    model::EntityId pulled_ = 0;
-    std::optional<solvers::Curve3d> pullStart_;
-    QString pullMessage_;  ///< the solver's last remark during a pull (compromise, too few points)
+    std::unique_ptr<manipulators::CurvePullBinding> pullBinding_;
     std::unique_ptr<manipulators::PlaneDraggers> planeDraggers_;  ///< one dragger per plane, bound to the model
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;

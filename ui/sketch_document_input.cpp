@@ -322,9 +322,9 @@ std::optional<model::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
 {
     const model::Entity* curve = model_.find(hit.curve);
     if (!curve || curve->kind != model::EntityKind::Curve || curve->plane() == 0) return std::nullopt;
-    const model::PlaneFrame& frame = model_.find(curve->plane())->frame;
-    const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
     if (hit.shift) {
+        const model::PlaneFrame& frame = model_.find(curve->plane())->frame;
+        const double u = solvers::projectToCurve(*curve->local, frame.toLocal(hit.point)).u;
         // Shift+press pins the curve there: a position constraint kept by every later pull.
         model::Constraint pin;
         pin.type = model::ConstraintType::Position;
@@ -333,49 +333,29 @@ std::optional<model::PlaneFrame> SketchDocument::grabCurve(const manipulators::S
         undo_.push(new AddConstraintCommand(*this, std::move(pin), tr("Pin curve %1").arg(curve->id)));
         return std::nullopt;
     }
-    try {
-        // The model factors the curve's least-change solver once, here: a position constraint at
-        // the grabbed parameter plus the curve's pins held at their present values, its fixed points
-        // blocked; each pointer event is then one solve (Model::pullTo).
-        scheduler_->flush();
-        model_.beginPull(curve->id, u);
-    } catch (const std::exception& e) {
+    // The binding (manipulators/curve_pull.h) has the model factor the curve's least-change solver
+    // once, here; each pointer event is then one solve.
+    std::string error;
+    const std::optional<model::PlaneFrame> frame = pullBinding_->grab(hit, &error);
+    if (!frame) {
         lastStroke_ = {};
-        lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(curve->id).arg(QString::fromStdString(e.what()));
+        lastStroke_.message = tr("Curve %1 cannot be pulled: %2").arg(hit.curve).arg(QString::fromStdString(error));
         Q_EMIT strokeFinished();
         return std::nullopt;
     }
-    pulled_ = curve->id;
-    pullStart_ = curve->local;
-    select(curve->id);
+    select(hit.curve);
     return frame;
 }
 
-void SketchDocument::pullTo(const Eigen::Vector3d& local)
+void SketchDocument::pullFinished(model::EntityId id, const solvers::Curve3d& before, const std::string& message)
 {
-    if (pulled_ == 0) return;
-    // Marks the curve changed only: the scheduler updates its dependents once per frame.
-    const std::string message = model_.pullTo(local);
-    if (!message.empty()) pullMessage_ = QString::fromStdString(message);
-}
-
-void SketchDocument::releaseCurve()
-{
-    scheduler_->flush();
-    model_.endDrag();  // the surfaces it drove come to rest as fresh builds
-    scheduler_->flush();
     view_->refineSurfaces();
-    const model::Entity* curve = model_.find(pulled_);
-    if (curve && pullStart_ && curve->local->points() != pullStart_->points()) {
-        undo_.push(new ReplaceCurveCommand(*this, pulled_, *pullStart_, *curve->local));
-    }
-    pullStart_.reset();
-    pulled_ = 0;
-    if (!pullMessage_.isEmpty()) {
+    const model::Entity* curve = model_.find(id);
+    if (curve && curve->local->points() != before.points()) undo_.push(new ReplaceCurveCommand(*this, id, before, *curve->local));
+    if (!message.empty()) {
         // Too few free points for the constraints, or contradictory ones (thesis §7.5): say so.
         lastStroke_ = {};
-        lastStroke_.message = tr("Pull: %1").arg(pullMessage_);
-        pullMessage_.clear();
+        lastStroke_.message = tr("Pull: %1").arg(QString::fromStdString(message));
         Q_EMIT strokeFinished();
     }
     Q_EMIT entitiesChanged();
