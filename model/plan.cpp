@@ -161,15 +161,9 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
     return plan;
 }
 
-std::vector<size_t> stepsAfter(const Plan& plan, const std::vector<const Constraint*>& constraints,
-                               const std::set<EntityId>& changed)
+std::vector<size_t> stepsAfter(const Plan& plan, const std::map<EntityId, std::set<ConstraintId>>& constraintsOn,
+                               const std::map<ConstraintId, Constraint>& constraints, const std::set<EntityId>& changed)
 {
-    // Entity -> constraints that read it or consume its freedom.
-    std::map<EntityId, std::vector<const Constraint*>> touching;
-    for (const Constraint* c : constraints) {
-        for (EntityId e : c->sources) touching[e].push_back(c);
-        for (EntityId e : c->targets) touching[e].push_back(c);
-    }
     std::set<size_t> run;
     std::vector<EntityId> frontier(changed.begin(), changed.end());
     std::set<EntityId> seen(changed.begin(), changed.end());
@@ -182,10 +176,12 @@ std::vector<size_t> stepsAfter(const Plan& plan, const std::vector<const Constra
         if (const auto s = plan.stepOf.find(e); s != plan.stepOf.end() && run.insert(s->second).second) {
             for (EntityId other : plan.steps[s->second].solve) reach(other);
         }
-        const auto t = touching.find(e);
-        if (t == touching.end()) continue;
-        for (const Constraint* c : t->second) {
-            for (EntityId target : c->targets) {
+        const auto t = constraintsOn.find(e);
+        if (t == constraintsOn.end()) continue;
+        for (ConstraintId id : t->second) {
+            const auto c = constraints.find(id);
+            if (c == constraints.end()) continue;
+            for (EntityId target : c->second.targets) {
                 if (plan.stepOf.count(target)) reach(target);
             }
         }

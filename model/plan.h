@@ -42,9 +42,10 @@ Plan makePlan(const std::vector<EntityId>& entities, const std::set<EntityId>& f
               const std::vector<const Constraint*>& constraints, const SolverChooser& chooseSolver);
 
 /// The indices of the steps that must run when `changed` entities changed: the steps solving them
-/// and every step downstream, ascending (= plan order). `dependents` maps an entity to the steps
-/// whose constraints read it or couple it.
-std::vector<size_t> stepsAfter(const Plan& plan, const std::vector<const Constraint*>& constraints,
-                               const std::set<EntityId>& changed);
+/// and every step downstream, ascending (= plan order). `constraintsOn` maps an entity to the
+/// constraints that read it or consume its freedom (the model's index, kept as constraints come
+/// and go, so a drag event builds none), `constraints` holds them by id.
+std::vector<size_t> stepsAfter(const Plan& plan, const std::map<EntityId, std::set<ConstraintId>>& constraintsOn,
+                               const std::map<ConstraintId, Constraint>& constraints, const std::set<EntityId>& changed);
 
 }  // namespace sculptline::model
