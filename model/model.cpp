@@ -199,7 +199,7 @@ Model& Model::operator=(Model&& other) noexcept
     dirty_ = std::move(other.dirty_);
     nextId_ = other.nextId_;
     nextConstraintId_ = other.nextConstraintId_;
-    planValid_ = false;
+    freedomChanged();
     dragSolvers_.clear();
     pull_.reset();
     dragged_ = 0;
@@ -601,6 +601,17 @@ const Plan& Model::plan() const
     return plan_;
 }
 
+const std::vector<size_t>& Model::downstreamSteps(const std::set<EntityId>& changed)
+{
+    const Plan& p = plan();
+    if (!downstreamValid_ || downstreamOf_ != changed) {
+        downstream_ = stepsAfter(p, changed);
+        downstreamOf_ = changed;
+        downstreamValid_ = true;
+    }
+    return downstream_;
+}
+
 Dof Model::dof(EntityId id) const
 {
     Dof d;
@@ -647,7 +658,9 @@ void Model::refreshConstraintValues(EntityId curve)
 {
     const Entity* e = find(curve);
     if (!e || e->kind != EntityKind::Curve || !e->world) return;
-    for (ConstraintId id : constraintsOn(curve)) {
+    const auto on = constraintsOn_.find(curve);
+    if (on == constraintsOn_.end()) return;
+    for (ConstraintId id : on->second) {
         Constraint& c = constraints_.at(id);
         if (c.type != ConstraintType::Position && c.type != ConstraintType::Tangent) continue;
         c.value = e->world->evaluate(std::clamp(c.parameters.front(), e->world->domainStart(), e->world->domainEnd()));
@@ -659,8 +672,8 @@ int Model::update()
 {
     if (dirty_.empty()) return 0;
     const Plan& p = plan();
-    const std::set<EntityId> changed(dirty_.begin(), dirty_.end());
-    dirty_.clear();
+    std::set<EntityId> changed;
+    changed.swap(dirty_);
     std::set<EntityId> recomputed;
     // A changed entity no step solves is a source: its own derived data first (a curve in space
     // that nothing constrains: its world form is its shape), then what depends on it.
@@ -668,15 +681,19 @@ int Model::update()
         auto it = entities_.find(id);
         if (it != entities_.end() && !p.stepOf.count(id)) recompute(it->second);
     }
-    for (size_t index : stepsAfter(p, changed)) {
+    const std::vector<size_t> steps = downstreamSteps(changed);  // a copy: solvers run meanwhile
+    for (size_t index : steps) {
         const PlanStep& step = p.steps[index];
         if (std::none_of(step.solve.begin(), step.solve.end(), [this](EntityId id) { return entities_.count(id) != 0; })) continue;
         if (const auto cached = dragSolvers_.find(index); cached != dragSolvers_.end()) {
             cached->second->solve(*this, step);
             dragRebuilt_.insert(step.solve.begin(), step.solve.end());
         } else {
-            // Outside a drag a step is set up and solved at once: what a fresh build gives.
-            const std::unique_ptr<StepSolver> solver = registry_->make(step.solver);
+            // Outside a drag a step is set up and solved at once: what a fresh build gives. One
+            // solver per key serves every such step (factor() starts it afresh), so an event
+            // allocates none.
+            std::unique_ptr<StepSolver>& solver = scratch_[step.solver];
+            if (!solver) solver = registry_->make(step.solver);
             solver->factor(*this, step);
             solver->solve(*this, step);
         }
@@ -716,7 +733,8 @@ void Model::beginDrag(EntityId id)
     update();  // the drag starts from a settled model
     dragged_ = id;
     const Plan& p = plan();
-    for (size_t index : stepsAfter(p, {id})) {
+    const std::vector<size_t> steps = downstreamSteps({id});
+    for (size_t index : steps) {
         const PlanStep& step = p.steps[index];
         if (!registry_->caches(step.solver)) continue;
         std::unique_ptr<StepSolver> solver = registry_->make(step.solver);

@@ -276,7 +276,14 @@ private:
     /// A surface entity over `curves` with `recipe`, checked but not built yet.
     Entity unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
     void markDirty(EntityId id);
-    void freedomChanged() { planValid_ = false; }
+    void freedomChanged()
+    {
+        planValid_ = false;
+        downstreamValid_ = false;
+    }
+    /// stepsAfter(plan(), ..., changed), remembered for the last `changed` while the plan lasts (a
+    /// drag asks the same question every event).
+    const std::vector<size_t>& downstreamSteps(const std::set<EntityId>& changed);
     /// Recomputes the values the designer's constraints on `curve` hold (a pin's point).
     void refreshConstraintValues(EntityId curve);
     Entity& entity(EntityId id) { return entities_.at(id); }
@@ -295,10 +302,16 @@ private:
     mutable Plan plan_;
     mutable bool planValid_ = false;
     mutable int planCount_ = 0;
+    /// downstreamSteps()'s last question and answer; dropped whenever the plan is.
+    std::set<EntityId> downstreamOf_;
+    std::vector<size_t> downstream_;
+    bool downstreamValid_ = false;
 
     std::unique_ptr<SolverRegistry> registry_;
     /// A drag's solvers, factored at beginDrag, by the index of their step in the plan.
     std::map<size_t, std::unique_ptr<StepSolver>> dragSolvers_;
+    /// A solver per registry key for the steps solved outside a drag (set up afresh each time).
+    std::map<std::string, std::unique_ptr<StepSolver>> scratch_;
     /// The steps a drag re-solved (their entities are rebuilt fresh at endDrag).
     std::set<EntityId> dragRebuilt_;
     EntityId dragged_ = 0;

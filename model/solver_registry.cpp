@@ -182,6 +182,7 @@ public:
         try {
             options_ = surfaceOptions(model, e, curves);
             builder_ = std::make_unique<surf::SurfaceBuilder>(*describe(e.recipe->mode).solverMode, curves, options_);
+            builtFrom_ = std::move(curves);
         } catch (const std::exception&) {
             builder_.reset();  // it cannot be built as it is: each solve then tries afresh
         }
@@ -200,9 +201,14 @@ public:
                         options_ = options;
                         builder_ = std::make_unique<surf::SurfaceBuilder>(builder_->mode(), curves, options_);
                         store(e, builder_->build());
+                    } else if (sameCurves(curves, builtFrom_)) {
+                        // The builder's last build is of these very curves (a step factored and
+                        // solved at once, outside a drag): it is the result, no second build.
+                        store(e, builder_->build());
                     } else {
                         store(e, builder_->update(curves));
                     }
+                    builtFrom_ = std::move(curves);
                 } else {
                     buildSurfaceEntity(model, e);
                 }
@@ -225,8 +231,17 @@ private:
                a.angleDegrees == b.angleDegrees && a.tolerance == b.tolerance;
     }
 
+    static bool sameCurves(const std::vector<solvers::Curve3d>& a, const std::vector<solvers::Curve3d>& b)
+    {
+        return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const solvers::Curve3d& x, const solvers::Curve3d& y) {
+            return x.degree() == y.degree() && x.knots() == y.knots() && x.points() == y.points() && x.weights() == y.weights();
+        });
+    }
+
     EntityId surface_ = 0;
     std::unique_ptr<surf::SurfaceBuilder> builder_;
+    /// The curves of the builder's last build (what build() is the surface of).
+    std::vector<solvers::Curve3d> builtFrom_;
     surf::SurfaceOptions options_;
 };
 
