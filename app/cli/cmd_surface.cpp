@@ -14,6 +14,7 @@
 // report "max_deviation". The modes are built by solvers/surfaces/surface_modes (shared with the GUI).
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
+#include "model/surface_recipe.h"
 #include "solvers/surfaces/surface_modes.h"
 
 #include <functional>
@@ -69,19 +70,19 @@ std::function<Outcome()> prepareGordon(const json& input, const std::vector<Curv
 // Input is read and checked before the clock starts; `build` runs timed (solvers/surfaces/surface_modes).
 std::function<Outcome()> prepare(const std::string& name, const json& input, const std::vector<Curve3d>& c)
 {
-    if (name == "gordon") return prepareGordon(input, c);
-    // Every mode but these four reads "tolerance" before anything else (the order of the checks
+    // The model's construction table (model/surface_recipe.h) names the modes; a network is a mesh
+    // (the network subcommand), not a surface.
+    const std::optional<model::Construction> construction = model::constructionFromName(name);
+    if (!construction || model::describe(*construction).makesMesh) {
+        throw InputError("mode: unknown mode \"" + name +
+                         "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation, gordon)");
+    }
+    const model::ConstructionInfo& info = model::describe(*construction);
+    if (*construction == model::Construction::Gordon) return prepareGordon(input, c);
+    // Every mode that approximates reads "tolerance" before anything else (the order of the checks
     // decides which of several mistakes is reported).
-    const bool tolerant = name != "fill" && name != "revolve" && name != "extrude" && name != "loft";
-    const double tolerance = tolerant ? positiveOption(input, "tolerance", 0.0) : 0.0;
-    const surf::SurfaceMode mode = [&] {
-        try {
-            return surf::parseSurfaceMode(name);
-        } catch (const std::invalid_argument&) {
-            throw InputError("mode: unknown mode \"" + name +
-                             "\" (fill, revolve, extrude, sweep, loft, boundary-rotation, rail-rotation, gordon)");
-        }
-    }();
+    const double tolerance = (info.options & model::kToleranceOption) ? positiveOption(input, "tolerance", 0.0) : 0.0;
+    const surf::SurfaceMode mode = *info.solverMode;
     try {
         surf::checkCurveCount(mode, c.size());
     } catch (const std::invalid_argument& e) {

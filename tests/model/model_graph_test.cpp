@@ -65,6 +65,27 @@ struct LoftScene {
     }
 };
 
+TEST(ModelGraph, TheDescriptorTablesAreInEnumOrderAndAgreeWithTheSolvers)
+{
+    for (size_t k = 0; k < constructions().size(); ++k) {
+        const ConstructionInfo& info = constructions()[k];
+        EXPECT_EQ(static_cast<size_t>(info.mode), k) << info.name;
+        EXPECT_EQ(constructionFromName(info.name), info.mode) << info.name;
+        // A mode the solvers build is spelled as they spell it
+        if (info.solverMode) {
+            EXPECT_STREQ(solvers::surfaces::surfaceModeName(*info.solverMode), info.name);
+        }
+        EXPECT_LE(info.minInputs, info.maxInputs) << info.name;
+    }
+    for (size_t k = 0; k < constraintTypes().size(); ++k) {
+        EXPECT_EQ(static_cast<size_t>(constraintTypes()[k].type), k);
+        EXPECT_EQ(constraintTypeFromName(constraintTypes()[k].name), constraintTypes()[k].type);
+    }
+    for (size_t k = 0; k < entityKinds().size(); ++k) EXPECT_EQ(static_cast<size_t>(entityKinds()[k].kind), k);
+    EXPECT_FALSE(constructionFromName("teleport"));
+    EXPECT_FALSE(constraintTypeFromName("twist"));
+}
+
 TEST(ModelGraph, RecipesAndPlacementsAreConstraintsTheModelDerives)
 {
     LoftScene s;
