@@ -689,12 +689,11 @@ int Model::update()
             cached->second->solve(*this, step);
             dragRebuilt_.insert(step.solve.begin(), step.solve.end());
         } else {
-            // Outside a drag a step is set up and solved at once: what a fresh build gives. One
-            // solver per key serves every such step (factor() starts it afresh), so an event
-            // allocates none.
+            // Outside a drag a step is solved without a set-up: what a fresh build gives. One
+            // solver per key serves every such step, so an event allocates none.
             std::unique_ptr<StepSolver>& solver = scratch_[step.solver];
             if (!solver) solver = registry_->make(step.solver);
-            solver->factor(*this, step);
+            solver->reset();
             solver->solve(*this, step);
         }
         recomputed.insert(step.solve.begin(), step.solve.end());

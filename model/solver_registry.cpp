@@ -156,6 +156,11 @@ public:
     }
 
     std::string message() const override { return message_; }
+    void reset() override
+    {
+        solver_.reset();
+        held_.clear();
+    }
 
 private:
     double gripU_;
@@ -218,6 +223,12 @@ public:
                 e.buildError = error.what();
             }
         }
+    }
+
+    void reset() override
+    {
+        builder_.reset();
+        builtFrom_.clear();
     }
 
 private:

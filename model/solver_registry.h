@@ -36,9 +36,13 @@ public:
     /// The set-up that lasts across a drag, from the model as it is now.
     /// @throws std::invalid_argument when the step cannot be solved (the message says why).
     virtual void factor(const Model& model, const PlanStep& step) = 0;
-    /// Re-solves the step's entities from their inputs with that set-up. A failure is recorded on
-    /// the entity (buildError; the last good geometry stays), never thrown.
+    /// Re-solves the step's entities from their inputs with that set-up, or, with none (never
+    /// factored, or reset()), as a fresh build does. A failure is recorded on the entity
+    /// (buildError; the last good geometry stays), never thrown.
     virtual void solve(Model& model, const PlanStep& step) = 0;
+    /// Forgets the set-up: the next solve() is a fresh build (bit for bit what opening a document
+    /// gives, so a model at rest does not depend on the drags it went through).
+    virtual void reset() {}
     /// least-change: the pulled point's target for the next solve() (the grip); others ignore it.
     virtual void setGrip(const Eigen::Vector3d&) {}
     /// The last solve's message (a compromise the solver had to make), empty when it met everything.
