@@ -293,7 +293,7 @@ SceneDocument documentFromJson(const json& j)
         const std::string path = "constraints[" + std::to_string(i) + "]";
         const json& c = constraints[i];
         if (!c.is_object()) throw io::InputError(path + ": must be an object");
-        SceneDocument::ConstraintSpec spec;
+        Constraint spec;
         // An id is read (older documents numbered pins with the entities) but not kept: constraints
         // are numbered apart from entities.
         entityId(c, path, usedIds);
@@ -309,11 +309,13 @@ SceneDocument documentFromJson(const json& j)
             const int id = io::integerFromJson(*curve, path + ".curve", 1, 1 << 30);
             if (std::find(doc.curveIds.begin(), doc.curveIds.end(), id) == doc.curveIds.end() || id == 0)
                 throw io::InputError(path + ".curve: no curve has id " + std::to_string(id));
-            spec.targets = {id};
+            spec.targets = {static_cast<EntityId>(id)};
         } else {
-            spec.targets = entityList(c, "targets", path);
+            const std::vector<int> targets = entityList(c, "targets", path);
+            spec.targets.assign(targets.begin(), targets.end());
         }
-        spec.sources = entityList(c, "sources", path);
+        const std::vector<int> sources = entityList(c, "sources", path);
+        spec.sources.assign(sources.begin(), sources.end());
         if (const auto u = c.find("u"); u != c.end()) spec.parameters.push_back(io::numberFromJson(*u, path + ".u"));
         if (const auto uv = c.find("uv"); uv != c.end()) {
             if (!uv->is_array() || uv->size() != 2) throw io::InputError(path + ".uv: expected [u, v]");
@@ -330,11 +332,12 @@ SceneDocument documentFromJson(const json& j)
             if (!(spec.weight >= 0.0)) throw io::InputError(path + ".weight: must not be negative");
         }
         std::vector<EntityKind> targetKinds;
-        for (int id : spec.targets) targetKinds.push_back(kinds.at(id));
+        for (EntityId id : spec.targets) targetKinds.push_back(kinds.at(static_cast<int>(id)));
         if (const std::string error = constraintShapeError(spec.type, targetKinds, spec.parameters.size(), spec.indices.size()); !error.empty())
             throw io::InputError(path + ": " + error);
         if (spec.type == ConstraintType::FixedPoints) {
-            const size_t curve = static_cast<size_t>(std::find(doc.curveIds.begin(), doc.curveIds.end(), spec.targets.front()) - doc.curveIds.begin());
+            const size_t curve = static_cast<size_t>(
+                std::find(doc.curveIds.begin(), doc.curveIds.end(), static_cast<int>(spec.targets.front())) - doc.curveIds.begin());
             const solvers::Curve3d& k = doc.curves[curve];
             const int count = k.isClosed() ? k.pointCount() - k.degree() : k.pointCount();
             for (size_t n = 0; n < spec.indices.size(); ++n) {

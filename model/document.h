@@ -60,17 +60,9 @@ struct SceneDocument {
     /// The designer's constraints (model/constraint.h): a pin as always written, {"curve": curve
     /// id, "type": "position"|"tangent", "u"}, or any type as {"type", "targets": [entity ids],
     /// "sources"?: [ids], "u"?, "uv"?: [u, v], "indices"?: [..], "value"?: [x, y, z], "weight"?}.
-    /// An "id" is read but not kept (constraints are numbered apart from entities).
-    struct ConstraintSpec {
-        ConstraintType type = ConstraintType::Position;
-        std::vector<int> targets;
-        std::vector<int> sources;
-        std::vector<double> parameters;
-        std::vector<int> indices;
-        Eigen::Vector3d value = Eigen::Vector3d::Zero();
-        double weight = 1.0;
-    };
-    std::vector<ConstraintSpec> constraints;
+    /// An "id" is read but not kept (constraints are numbered apart from entities): the records'
+    /// ids are 0, the model numbers them.
+    std::vector<Constraint> constraints;
     /// Curve-network meshes: {"id", "curves": [curve ids of one closed loop, in order]}; the mesh
     /// itself is rebuilt from the curves on opening.
     struct MeshSpec {

@@ -86,15 +86,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     for (const auto& [id, entry] : byId) create(entry.first, entry.second, static_cast<EntityId>(id));
     for (const auto& [kind, i] : unnumbered) create(kind, i, 0);
     // The designer's constraints last: they name entities of any kind (the reader checked them).
-    for (const SceneDocument::ConstraintSpec& spec : doc.constraints) {
-        Constraint c;
-        c.type = spec.type;
-        c.targets.assign(spec.targets.begin(), spec.targets.end());
-        c.sources.assign(spec.sources.begin(), spec.sources.end());
-        c.parameters = spec.parameters;
-        c.indices = spec.indices;
-        c.value = spec.value;
-        c.weight = spec.weight;
+    for (Constraint c : doc.constraints) {
         if (c.type == ConstraintType::FixedPoints) {
             std::vector<int> fixed = model.fixedPoints(c.targets.front());
             fixed.insert(fixed.end(), c.indices.begin(), c.indices.end());

@@ -22,6 +22,8 @@
 #include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/sensors/SoSensorManager.h>
+#include "tests/gui/coin_mouse.h"
+
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -154,54 +156,16 @@ TEST_F(ModelSync, RemovingThePlaneRemovesItsManipulator)
 /// the draggers under one camera looking straight down, so the jack's centre box is seen face-on.
 class ModelSyncMouse : public ModelSync {
 protected:
-    static constexpr short kWidth = 400, kHeight = 400;
-
     void SetUp() override
     {
         ModelSync::SetUp();
-        scene_ = new SoSeparator;
-        scene_->ref();
-        camera_ = new SoOrthographicCamera;
-        scene_->addChild(camera_);
-        scene_->addChild(view_.root());
-        scene_->addChild(draggers_.root());
-        camera_->viewAll(scene_, viewport());
+        mouse_ = std::make_unique<guitest::CoinMouse>(std::initializer_list<SoNode*>{view_.root(), draggers_.root()});
     }
-    void TearDown() override { scene_->unref(); }
+    void TearDown() override { mouse_.reset(); }
 
-    SbViewportRegion viewport() const { return SbViewportRegion(kWidth, kHeight); }
+    SbVec2s pixelOf(const Eigen::Vector3d& p) const { return mouse_->pixelOf(p); }
 
-    /// Pixel (origin bottom-left, as in Coin events) of a world point.
-    SbVec2s pixelOf(const Eigen::Vector3d& p) const
-    {
-        SbVec3f ndc;
-        camera_->getViewVolume(1.0f).projectToScreen(scene::toSb(p), ndc);
-        return SbVec2s(static_cast<short>(ndc[0] * kWidth), static_cast<short>(ndc[1] * kHeight));
-    }
-
-    void send(SoEvent& event, const SbVec2s& pixel)
-    {
-        event.setPosition(pixel);
-        event.setTime(SbTime::getTimeOfDay());
-        SoHandleEventAction action(viewport());
-        action.setEvent(&event);
-        action.apply(scene_);
-    }
-    void button(const SbVec2s& pixel, SoButtonEvent::State state)
-    {
-        SoMouseButtonEvent e;
-        e.setButton(SoMouseButtonEvent::BUTTON1);
-        e.setState(state);
-        send(e, pixel);
-    }
-    void move(const SbVec2s& pixel)
-    {
-        SoLocation2Event e;
-        send(e, pixel);
-    }
-
-    SoSeparator* scene_ = nullptr;
-    SoOrthographicCamera* camera_ = nullptr;
+    std::unique_ptr<guitest::CoinMouse> mouse_;
 };
 
 TEST_F(ModelSyncMouse, ADragReportsItsFramesBeforeAndAfter)
@@ -211,7 +175,7 @@ TEST_F(ModelSyncMouse, ADragReportsItsFramesBeforeAndAfter)
     const int builds = view_.nodeBuilds();
     const SbVec2s centre = pixelOf(start_.origin);
     const SbVec2s press(centre[0] + 7, centre[1] + 7);
-    button(press, SoButtonEvent::DOWN);
+    mouse_->press(press);
     ASSERT_EQ(started_, std::vector<model::EntityId>{plane_}) << "the press grabbed no part of the jack";
     EXPECT_EQ(draggers_.dragging(), plane_);
 
@@ -219,13 +183,13 @@ TEST_F(ModelSyncMouse, ADragReportsItsFramesBeforeAndAfter)
     // an update runs mid-drag
     const int updates = scheduler_.updates();
     for (int step = 1; step <= 4; ++step) {
-        move(SbVec2s(press[0] + 10 * step, press[1] + 10 * step));
+        mouse_->move(SbVec2s(press[0] + 10 * step, press[1] + 10 * step));
         SoDB::getSensorManager()->processDelayQueue(FALSE);
     }
     EXPECT_EQ(scheduler_.updates(), updates + 4);  // one per frame
     // (the manipulator being dragged is not put back by the model's own updates)
     EXPECT_LT((manipulator_->frame().origin - model_.find(plane_)->frame.origin).norm(), kTolerance);
-    button(SbVec2s(press[0] + 40, press[1] + 40), SoButtonEvent::UP);
+    mouse_->release(SbVec2s(press[0] + 40, press[1] + 40));
 
     // Then the finished callback reports the frame at the press and the model's frame at the
     // release, which lies 40 pixels right and up of the start; the drag is over, the curves
@@ -249,9 +213,9 @@ TEST_F(ModelSyncMouse, APressAndReleaseWithoutMotionReportsNoMove)
 {
     const SbVec2s centre = pixelOf(start_.origin);
     const SbVec2s press(centre[0] + 7, centre[1] + 7);
-    button(press, SoButtonEvent::DOWN);
+    mouse_->press(press);
     ASSERT_EQ(started_.size(), 1u);
-    button(press, SoButtonEvent::UP);
+    mouse_->release(press);
     ASSERT_EQ(finished_.size(), 1u);
     EXPECT_EQ(finished_.front().before, finished_.front().after);  // the ui pushes no undo step
 }

@@ -17,6 +17,8 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoTransform.h>
 #include <Inventor/sensors/SoSensorManager.h>
+#include "tests/gui/coin_mouse.h"
+
 #include <gtest/gtest.h>
 
 namespace sculptline::manipulators {
@@ -125,65 +127,24 @@ namespace {
 /// without a window.
 class DraggedWithTheMouse : public ProjectionPlane {
 protected:
-    static constexpr short kWidth = 400, kHeight = 400;
     /// Rounding of the projected centre to whole pixels, on both ends of the drag.
     static constexpr int kPixelTolerance = 1;
 
+    // Look straight down: the jack's centre box lies in the dragger's local XZ plane, which the
+    // placement turns into the world's horizontal plane, so from above it is seen face-on.
     void SetUp() override
     {
         ProjectionPlane::SetUp();
-        scene_ = new SoSeparator;
-        scene_->ref();
-        camera_ = new SoOrthographicCamera;
-        scene_->addChild(camera_);
-        scene_->addChild(manipulator_->root());
-        // Look straight down: the jack's centre box lies in the dragger's local XZ plane, which the
-        // placement turns into the world's horizontal plane, so from above it is seen face-on.
-        camera_->viewAll(scene_, viewport());
+        mouse_ = std::make_unique<guitest::CoinMouse>(std::initializer_list<SoNode*>{manipulator_->root()});
     }
-    void TearDown() override { scene_->unref(); }
+    void TearDown() override { mouse_.reset(); }
 
-    SbViewportRegion viewport() const { return SbViewportRegion(kWidth, kHeight); }
+    SbVec2s pixelOf(const Eigen::Vector3d& p) const { return mouse_->pixelOf(p); }
+    void press(const SbVec2s& pixel) { mouse_->press(pixel); }
+    void move(const SbVec2s& pixel) { mouse_->move(pixel); }
+    void release(const SbVec2s& pixel) { mouse_->release(pixel); }
 
-    /// Pixel (origin bottom-left, as in Coin events) of a world point.
-    SbVec2s pixelOf(const Eigen::Vector3d& p) const
-    {
-        SbVec3f ndc;
-        camera_->getViewVolume(1.0f).projectToScreen(scene::toSb(p), ndc);
-        return SbVec2s(static_cast<short>(ndc[0] * kWidth), static_cast<short>(ndc[1] * kHeight));
-    }
-
-    void send(SoEvent& event, const SbVec2s& pixel)
-    {
-        event.setPosition(pixel);
-        event.setTime(SbTime::getTimeOfDay());
-        SoHandleEventAction action(viewport());
-        action.setEvent(&event);
-        action.apply(scene_);
-    }
-
-    void press(const SbVec2s& pixel)
-    {
-        SoMouseButtonEvent e;
-        e.setButton(SoMouseButtonEvent::BUTTON1);
-        e.setState(SoButtonEvent::DOWN);
-        send(e, pixel);
-    }
-    void move(const SbVec2s& pixel)
-    {
-        SoLocation2Event e;
-        send(e, pixel);
-    }
-    void release(const SbVec2s& pixel)
-    {
-        SoMouseButtonEvent e;
-        e.setButton(SoMouseButtonEvent::BUTTON1);
-        e.setState(SoButtonEvent::UP);
-        send(e, pixel);
-    }
-
-    SoSeparator* scene_ = nullptr;
-    SoOrthographicCamera* camera_ = nullptr;
+    std::unique_ptr<guitest::CoinMouse> mouse_;
 };
 
 TEST_F(DraggedWithTheMouse, PressMoveReleaseMovesThePlane)

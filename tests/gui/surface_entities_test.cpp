@@ -7,7 +7,7 @@
 #include "scene/model_view.h"
 #include "model/document.h"
 #include "solvers/bspline/projection.h"
-#include "surface_test_support.h"
+#include "tests/common/surface_test_support.h"
 
 #include <Inventor/SoDB.h>
 #include <gtest/gtest.h>

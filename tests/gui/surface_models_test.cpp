@@ -8,7 +8,7 @@
 #include "model/model_document.h"
 #include "model/document.h"
 #include "solvers/bspline/projection.h"
-#include "surface_test_support.h"
+#include "tests/common/surface_test_support.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoInput.h>

@@ -4,6 +4,7 @@
 #include "model/model.h"
 #include "model/model_document.h"
 #include "solvers/bspline/projection.h"
+#include "tests/common/surface_test_support.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -27,17 +28,6 @@ solvers::Curve3d wave(double y)
     std::vector<Eigen::Vector3d> p;
     for (int i = 0; i < 6; ++i) p.emplace_back(-50 + 20 * i, y + 8 * std::sin(i), 0);
     return solvers::Curve3d(3, {0, 0, 0, 0, 1, 2, 3, 3, 3, 3}, p);
-}
-
-double distanceToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
-{
-    const solvers::SurfaceProjector projector(surface);
-    double worst = 0.0;
-    for (int k = 0; k <= 20; ++k) {
-        const double u = curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 20.0;
-        worst = std::max(worst, projector.project(curve.evaluate(u)).distance);
-    }
-    return worst;
 }
 
 /// A plane carrying two waves, a loft through them; a second plane with a curve of its own.
@@ -236,8 +226,8 @@ TEST(ModelGraph, APlaneDragFactorsTheSurfaceBuilderOnceAndComesToRestAsAFreshBui
     for (int i = 0; i < 20; ++i) s.movePlane(0.5);
     // Then no event set anything up again, and the loft follows its curves all along
     EXPECT_EQ(s.model.factorizations(), before + 1);
-    EXPECT_LT(distanceToSurface(*s.model.find(s.a)->world, *s.model.find(s.loft)->surface), 1e-6);
-    EXPECT_LT(distanceToSurface(*s.model.find(s.b)->world, *s.model.find(s.loft)->surface), 1e-6);
+    EXPECT_LT(guitest::curveToSurface(*s.model.find(s.a)->world, *s.model.find(s.loft)->surface), 1e-6);
+    EXPECT_LT(guitest::curveToSurface(*s.model.find(s.b)->world, *s.model.find(s.loft)->surface), 1e-6);
     // And the other plane's curve was never recomputed
     EXPECT_EQ(s.model.find(s.alone)->recomputations, 0);
     // When the drag ends, the loft is rebuilt as a fresh build of its curves would be
@@ -276,7 +266,7 @@ TEST(ModelGraph, APullKeepsItsPinsAndFixedPointsAndFactorsOnce)
     EXPECT_LT((s.model.findConstraint(pin)->value - pinned).norm(), kTolerance);
     EXPECT_EQ(a.local->points().front(), start.points().front());
     // And the loft followed, the curve on the other plane did not change
-    EXPECT_LT(distanceToSurface(*a.world, *s.model.find(s.loft)->surface), 1e-6);
+    EXPECT_LT(guitest::curveToSurface(*a.world, *s.model.find(s.loft)->surface), 1e-6);
     EXPECT_EQ(s.model.find(s.alone)->recomputations, 0);
     s.model.endDrag();
     EXPECT_EQ(s.model.dragged(), 0u);

@@ -1,5 +1,5 @@
 #pragma once
-// Shared by the surface entity tests (headless) and the surface model replay checks.
+// Shared by the surface entity tests (headless), the surface model replay checks and the model tests.
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/bspline/projection.h"
 
