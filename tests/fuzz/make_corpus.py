@@ -157,5 +157,17 @@ modes = {
 }
 for name, value in modes.items():
     write("surface", name, dict(value, mode=name.split("_")[0]))
+# plan: documents (inline; a "path" would fuzz the file system), with states and every constraint form.
+for name in ("default_scene", "bench_20_curves_5_planes"):
+    write("plan", name, {"document": load("data/" + name + ".json")})
+write("plan", "constraints", {"document": {
+    "planes": [{"id": 1, "origin": [0, 0, 0], "normal": [0, 0, 1], "size": 100, "state": "fixed"}],
+    "curves": [{"id": 2, "plane": 1, "fixed": [0], **clamped([[0, 0], [10, 5], [20, 5], [30, 0]])},
+               {"id": 3, "plane": 1, **clamped([[0, 20], [10, 25], [20, 25], [30, 20]])}],
+    "surfaces": [{"id": 4, "construction": {"mode": "loft", "curves": [2, 3]}}],
+    "constraints": [{"curve": 2, "type": "position", "u": 0.5},
+                    {"type": "curve-on-surface", "targets": [3, 4]},
+                    {"type": "smoothing", "targets": [4], "weight": 0.5},
+                    {"type": "normal", "targets": [4], "uv": [0.5, 0.5], "value": [0, 0, 1]}]}})
 write("network", "square", {"curves": sq, "loops": [[0, 1, 2, 3]], "fairing": 2})
 write("network", "closed_ring", {"curves": [ring(1, 0)], "loops": [[0]], "edge_length": 0.2})
