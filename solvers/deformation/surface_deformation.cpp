@@ -1,0 +1,556 @@
+#include "solvers/deformation/surface_deformation.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
+#include "solvers/deformation/deformation_region.h"
+#include "solvers/math_constants.h"
+
+#include <Eigen/QR>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace sculptline::solvers::deformation {
+namespace {
+
+// A pivot of the QR of (F R⁻¹)ᵀ below this fraction of the largest marks a dependent row (as in
+// curve_manipulation.cpp: far above round-off of basis values, far below any intended constraint).
+constexpr double kRankRelativeTolerance = 1e-10;
+
+// Force objective: each node is also tied to its rest position by a weak spring of this stiffness
+// relative to the unit bars. Without it a net with no blocked point has rigid translations of zero
+// force change, and one dragged point would translate the whole surface; with it the change decays
+// over about kAnchorSpring^(-1/4) ≈ 5.6 bars around a constraint (the biharmonic length scale of
+// KᵀK + μI), a smooth local fall-off, and H is positive definite (condition ≤ 16²/μ ≈ 2.6e5).
+constexpr double kAnchorSpring = 1e-3;
+
+// Distance constraints are non-linear: chord-Newton steps (the factored row direction kept) stop
+// when the length error is below this fraction of the length, or after kMaxDistanceSteps.
+constexpr double kDistanceRelativeTolerance = 1e-12;
+constexpr int kMaxDistanceSteps = 20;
+
+// A Curve constraint's key points: one more per this much turning of the target (eq. 6-24 asks
+// for more key points where the curve bends; π/8 keeps a quarter circle at four extra points).
+constexpr double kTurningPerKeyPoint = kPi / 8.0;
+
+using Coefficients = std::vector<std::pair<int, double>>;  // (control point index, coefficient)
+
+std::string at(size_t c) { return "constraints[" + std::to_string(c) + "]"; }
+
+void requireInDomain(const Surface3d& s, const Eigen::Vector2d& uv, const std::string& field)
+{
+    if (!uv.allFinite()) throw GeometryError(field + ": not a finite number");
+    const double u0 = s.domainStart(Direction::U), u1 = s.domainEnd(Direction::U);
+    const double v0 = s.domainStart(Direction::V), v1 = s.domainEnd(Direction::V);
+    if (uv.x() < u0 || uv.x() > u1 || uv.y() < v0 || uv.y() > v1) {
+        throw GeometryError(field + ": (" + std::to_string(uv.x()) + ", " + std::to_string(uv.y()) +
+                            ") is outside the surface's domain [" + std::to_string(u0) + ", " + std::to_string(u1) +
+                            "] x [" + std::to_string(v0) + ", " + std::to_string(v1) + "]");
+    }
+}
+
+// Coefficients of ∂^(du+dv) S / ∂u^du ∂v^dv at (u, v) on the control points (du + dv ≤ 1).
+// Rational surfaces keep their weights, so the rows stay linear in the Cartesian points:
+// R = A / W with A = w N_i N_j, R_u = (A_u − R W_u) / W (The NURBS Book eq. 4.9, as in
+// curve_manipulation.cpp).
+Coefficients basisCoefficients(const Surface3d& s, double u, double v, int du, int dv)
+{
+    const int p = s.degreeU(), q = s.degreeV();
+    const int su = findSpan(p, s.knotsU(), u), sv = findSpan(q, s.knotsV(), v);
+    double nu[2 * (kMaxDegree + 1)], nv[2 * (kMaxDegree + 1)];
+    basisDerivatives(su, u, p, 1, s.knotsU(), nu);
+    basisDerivatives(sv, v, q, 1, s.knotsV(), nv);
+    Coefficients out;
+    out.reserve(static_cast<size_t>((p + 1) * (q + 1)));
+    auto value = [&](int a, int b, int ku, int kv) { return nu[ku * (p + 1) + a] * nv[kv * (q + 1) + b]; };
+    if (!s.isRational()) {
+        for (int a = 0; a <= p; ++a) {
+            for (int b = 0; b <= q; ++b) out.emplace_back((su - p + a) * s.countV() + sv - q + b, value(a, b, du, dv));
+        }
+        return out;
+    }
+    double W = 0.0, Wd = 0.0;
+    for (int a = 0; a <= p; ++a) {
+        for (int b = 0; b <= q; ++b) {
+            const double w = s.weight(su - p + a, sv - q + b);
+            W += w * value(a, b, 0, 0);
+            Wd += w * value(a, b, du, dv);
+        }
+    }
+    for (int a = 0; a <= p; ++a) {
+        for (int b = 0; b <= q; ++b) {
+            const double w = s.weight(su - p + a, sv - q + b);
+            const double r = w * value(a, b, 0, 0) / W;
+            const double c = (du + dv == 0) ? r : (w * value(a, b, du, dv) - r * Wd) / W;
+            out.emplace_back((su - p + a) * s.countV() + sv - q + b, c);
+        }
+    }
+    return out;
+}
+
+Coefficients combine(const Coefficients& a, double ca, const Coefficients& b, double cb)
+{
+    Coefficients out;
+    for (const auto& [i, c] : a) out.emplace_back(i, ca * c);
+    for (const auto& [i, c] : b) out.emplace_back(i, cb * c);
+    return out;
+}
+
+// Two unit vectors spanning the plane normal to n.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> complement(const Eigen::Vector3d& n)
+{
+    const Eigen::Vector3d a = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d e1 = n.cross(a).normalized();
+    return {e1, n.cross(e1).normalized()};
+}
+
+int spanIndex(const Surface3d& s, Direction d, double t) { return findSpan(s.degree(d), s.knots(d), t); }
+
+// Spans crossed between two domain points in the dominant direction, counted as in eq. 6-24.
+int spansCrossed(const Surface3d& s, const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+    const double wu = s.domainEnd(Direction::U) - s.domainStart(Direction::U);
+    const double wv = s.domainEnd(Direction::V) - s.domainStart(Direction::V);
+    const bool alongU = std::abs(b.x() - a.x()) / wu >= std::abs(b.y() - a.y()) / wv;
+    const Direction d = alongU ? Direction::U : Direction::V;
+    const int k = alongU ? 0 : 1;
+    return std::abs(spanIndex(s, d, b[k]) - spanIndex(s, d, a[k])) + 1;
+}
+
+template <int Dim>
+double turning(const BSplineCurve<Dim>& c)
+{
+    constexpr int kSamples = 64;
+    double total = 0.0;
+    Eigen::Matrix<double, Dim, 1> prev = Eigen::Matrix<double, Dim, 1>::Zero();
+    for (int k = 0; k <= kSamples; ++k) {
+        const double t = c.domainStart() + (c.domainEnd() - c.domainStart()) * k / kSamples;
+        const Eigen::Matrix<double, Dim, 1> d = c.derivatives(t, 1)[1];
+        if (d.norm() == 0.0) continue;
+        if (prev.norm() > 0.0) total += std::acos(std::clamp(prev.normalized().dot(d.normalized()), -1.0, 1.0));
+        prev = d;
+    }
+    return total;
+}
+
+std::vector<double> uniformParameters(double t0, double t1, int m)
+{
+    std::vector<double> t(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k) t[static_cast<size_t>(k)] = m == 1 ? 0.5 * (t0 + t1) : t0 + (t1 - t0) * k / (m - 1);
+    return t;
+}
+
+}  // namespace
+
+int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const Eigen::Vector2d& footStart,
+                  const Eigen::Vector2d& footEnd)
+{
+    const int bends = static_cast<int>(std::floor(turning(target) / kTurningPerKeyPoint));
+    return std::max(2, spansCrossed(surface, footStart, footEnd) + bends);
+}
+
+// One scalar equation Σ_i c_i (dir · P_i) = target on the control points.
+struct SurfaceDeformationSolver::Row {
+    Coefficients coefficients;
+    Eigen::Vector3d direction;
+};
+
+void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints,
+                                      const DeformationOptions& options)
+{
+    surface_ = surface;
+    factored_ = constraints;
+    options_ = options;
+    if (!(options.stiffness > 0.0 && options.stiffness <= 1.0)) {
+        throw GeometryError("stiffness: " + std::to_string(options.stiffness) + " is outside (0, 1]");
+    }
+    const int nu = surface.countU(), nv = surface.countV();
+    const int n = nu * nv;
+
+    // Free points: not blocked, and inside the bound (eq. 6-22).
+    std::vector<bool> movable = insideBound(surface, options.bound);
+    for (size_t b = 0; b < options.blocked.size(); ++b) {
+        const auto [i, j] = options.blocked[b];
+        if (i < 0 || i >= nu || j < 0 || j >= nv) {
+            throw GeometryError("blocked[" + std::to_string(b) + "]: (" + std::to_string(i) + ", " + std::to_string(j) +
+                                ") outside the " + std::to_string(nu) + " x " + std::to_string(nv) + " net");
+        }
+        movable[static_cast<size_t>(i) * nv + j] = false;
+    }
+    free_.clear();
+    std::vector<int> column(static_cast<size_t>(n), -1);
+    for (int k = 0; k < n; ++k) {
+        if (movable[static_cast<size_t>(k)]) {
+            column[static_cast<size_t>(k)] = static_cast<int>(free_.size());
+            free_.push_back(k);
+        }
+    }
+    const int m = static_cast<int>(free_.size());
+
+    // Rows of Table 6-1's constraints.
+    std::vector<Row> rows;
+    rowOwner_.clear();
+    keyUv_.assign(constraints.size(), {});
+    keyT_.assign(constraints.size(), {});
+    distanceDirection_.assign(constraints.size(), Eigen::Vector3d::Zero());
+    hasDistance_ = false;
+    std::optional<SurfaceProjector> projector;
+    auto add = [&](size_t c, Coefficients coefficients, const Eigen::Vector3d& direction) {
+        rows.push_back({std::move(coefficients), direction});
+        rowOwner_.push_back(static_cast<int>(c));
+    };
+    for (size_t c = 0; c < constraints.size(); ++c) {
+        const SurfaceConstraint& k = constraints[c];
+        switch (k.type) {
+            case SurfaceConstraintType::Position: {
+                requireInDomain(surface, k.uv, at(c) + ".uv");
+                const Coefficients s = basisCoefficients(surface, k.uv.x(), k.uv.y(), 0, 0);
+                for (int axis = 0; axis < 3; ++axis) add(c, s, Eigen::Vector3d::Unit(axis));
+                break;
+            }
+            case SurfaceConstraintType::Normal: {
+                requireInDomain(surface, k.uv, at(c) + ".uv");
+                if (!k.value.allFinite() || k.value.norm() == 0.0) {
+                    throw GeometryError(at(c) + ".value: the normal must be a finite non-zero vector");
+                }
+                const Eigen::Vector3d nrm = k.value.normalized();
+                add(c, basisCoefficients(surface, k.uv.x(), k.uv.y(), 1, 0), nrm);  // S_u · n = 0
+                add(c, basisCoefficients(surface, k.uv.x(), k.uv.y(), 0, 1), nrm);  // S_v · n = 0
+                break;
+            }
+            case SurfaceConstraintType::Curve: {
+                if (!k.target) throw GeometryError(at(c) + ".target: a curve constraint needs a target curve");
+                const BSplineCurve<3>& H = *k.target;
+                std::vector<Eigen::Vector2d>& uvs = keyUv_[c];
+                std::vector<double>& ts = keyT_[c];
+                if (k.domain) {
+                    const BSplineCurve<2>& G = *k.domain;
+                    const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
+                    const int count = k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, a, b);
+                    for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
+                        const double s = (t - G.domainStart()) / (G.domainEnd() - G.domainStart());
+                        uvs.push_back(G.evaluate(t));
+                        ts.push_back(H.domainStart() + s * (H.domainEnd() - H.domainStart()));
+                    }
+                } else {
+                    // Feet of the key points by global projection (thesis §6.2.5: K_s, K_e → P_s, P_e).
+                    if (!projector) projector.emplace(surface);
+                    const auto footOf = [&](double t) {
+                        const SurfaceProjection f = projector->project(H.evaluate(t));
+                        return Eigen::Vector2d(f.u, f.v);
+                    };
+                    const int count = k.keyPoints > 0 ? k.keyPoints
+                                                      : keyPointCount(surface, H, footOf(H.domainStart()),
+                                                                      footOf(H.domainEnd()));
+                    for (double t : uniformParameters(H.domainStart(), H.domainEnd(), count)) {
+                        uvs.push_back(footOf(t));
+                        ts.push_back(t);
+                    }
+                }
+                for (const Eigen::Vector2d& uv : uvs) {
+                    requireInDomain(surface, uv, at(c) + ".domain");
+                    const Coefficients s = basisCoefficients(surface, uv.x(), uv.y(), 0, 0);
+                    for (int axis = 0; axis < 3; ++axis) add(c, s, Eigen::Vector3d::Unit(axis));
+                }
+                break;
+            }
+            case SurfaceConstraintType::CurveTangent: {
+                if (!k.domain) throw GeometryError(at(c) + ".domain: a curve-tangent constraint needs a domain curve");
+                if (!k.value.allFinite() || k.value.norm() == 0.0) {
+                    throw GeometryError(at(c) + ".value: the tangent must be a finite non-zero vector");
+                }
+                const BSplineCurve<2>& G = *k.domain;
+                const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
+                const int count = k.keyPoints > 0 ? k.keyPoints : std::max(2, spansCrossed(surface, a, b));
+                const auto [e1, e2] = complement(k.value.normalized());
+                for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
+                    const auto g = G.derivatives(t, 1);
+                    requireInDomain(surface, g[0], at(c) + ".domain");
+                    if (g[1].norm() == 0.0) throw GeometryError(at(c) + ".domain: the curve has no direction");
+                    // Across G in the domain: G' turned a quarter; the cross tangent is S_u a + S_v b.
+                    const Eigen::Vector2d across = Eigen::Vector2d(-g[1].y(), g[1].x()).normalized();
+                    const Coefficients cross =
+                        combine(basisCoefficients(surface, g[0].x(), g[0].y(), 1, 0), across.x(),
+                                basisCoefficients(surface, g[0].x(), g[0].y(), 0, 1), across.y());
+                    keyUv_[c].push_back(g[0]);
+                    keyT_[c].push_back(t);
+                    add(c, cross, e1);  // cross · e1 = 0 and cross · e2 = 0: cross ∥ value
+                    add(c, cross, e2);
+                }
+                break;
+            }
+            case SurfaceConstraintType::Distance: {
+                requireInDomain(surface, k.uv, at(c) + ".uv");
+                requireInDomain(surface, k.uv2, at(c) + ".uv2");
+                if (!std::isfinite(k.distance) || k.distance < 0.0) {
+                    throw GeometryError(at(c) + ".value: the distance must be a finite number >= 0");
+                }
+                const Eigen::Vector3d e = surface.evaluate(k.uv2.x(), k.uv2.y()) - surface.evaluate(k.uv.x(), k.uv.y());
+                if (e.norm() == 0.0) throw GeometryError(at(c) + ".uv2: the two points coincide; no direction to measure along");
+                distanceDirection_[c] = e.normalized();
+                hasDistance_ = true;
+                // Linearization of |S(uv2) − S(uv)| about the current net: e/|e| · (ΔS2 − ΔS1).
+                add(c,
+                    combine(basisCoefficients(surface, k.uv2.x(), k.uv2.y(), 0, 0), 1.0,
+                            basisCoefficients(surface, k.uv.x(), k.uv.y(), 0, 0), -1.0),
+                    distanceDirection_[c]);
+                break;
+            }
+        }
+    }
+
+    // F over the free points' changes, ordered [x; y; z], and the rows' current values.
+    const int r = static_cast<int>(rows.size());
+    F_ = Eigen::MatrixXd::Zero(r, 3 * m);
+    current_ = Eigen::VectorXd::Zero(r);
+    for (int k = 0; k < r; ++k) {
+        for (const auto& [i, coef] : rows[static_cast<size_t>(k)].coefficients) {
+            const Eigen::Vector3d& dir = rows[static_cast<size_t>(k)].direction;
+            current_[k] += coef * dir.dot(surface.points()[static_cast<size_t>(i)]);
+            const int col = column[static_cast<size_t>(i)];
+            if (col < 0) continue;
+            for (int axis = 0; axis < 3; ++axis) F_(k, axis * m + col) += coef * dir[axis];
+        }
+    }
+    C_ = Eigen::MatrixXd::Zero(3 * m, r);
+    rank_ = 0;
+    if (r == 0 || m == 0) return;
+
+    // Objective ½ dᵀ H d per coordinate. Displacement: H = I. Force: H = KᵀK + μI, K the bar
+    // network's force change Δf_i = Σ_{j~i} q (d_i − d_j) with q = 1 at every node, the nodes
+    // outside the free set included: their rows hold the change and its slope at zero across a
+    // bound or next to blocked points (the C1 fade of §6.2.4).
+    const bool whiten = options.objective == Objective::Force;
+    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
+    Eigen::MatrixXd G = F_.transpose();  // becomes (F R⁻¹)ᵀ = R⁻ᵀ Fᵀ
+    if (whiten) {
+        std::vector<Eigen::Triplet<double>> kt;
+        for (int i = 0; i < nu; ++i) {
+            for (int j = 0; j < nv; ++j) {
+                const int row = i * nv + j;
+                const int me = column[static_cast<size_t>(row)];
+                const int nb[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+                for (const auto& ij : nb) {
+                    if (ij[0] < 0 || ij[0] >= nu || ij[1] < 0 || ij[1] >= nv) continue;
+                    const int other = column[static_cast<size_t>(ij[0] * nv + ij[1])];
+                    if (me >= 0) kt.emplace_back(row, me, 1.0);
+                    if (other >= 0) kt.emplace_back(row, other, -1.0);
+                }
+            }
+        }
+        Eigen::SparseMatrix<double> K(n, m);
+        K.setFromTriplets(kt.begin(), kt.end());
+        Eigen::SparseMatrix<double> H = Eigen::SparseMatrix<double>(K.transpose()) * K;
+        for (int i = 0; i < m; ++i) H.coeffRef(i, i) += kAnchorSpring;
+        llt.compute(H);
+        if (llt.info() != Eigen::Success) throw GeometryError("surface: the force objective is not positive definite");
+        // H = P⁻¹ L Lᵀ P (Eigen's convention), so R = Lᵀ P and R⁻ᵀ x = L⁻¹ P x.
+        for (int axis = 0; axis < 3; ++axis) {
+            Eigen::MatrixXd block = llt.permutationP() * G.middleRows(axis * m, m);
+            llt.matrixL().solveInPlace(block);
+            G.middleRows(axis * m, m) = block;
+        }
+    }
+
+    // Minimum-norm solution of G e = b as in CurveManipulationSolver (eq. 6-9 without forming FFᵀ).
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G);
+    qr.setThreshold(kRankRelativeTolerance);
+    rank_ = static_cast<int>(qr.rank());
+    if (rank_ == 0) return;
+    const Eigen::MatrixXd q1 = qr.householderQ() * Eigen::MatrixXd::Identity(3 * m, rank_);
+    const Eigen::MatrixXd a = qr.matrixR().topRows(rank_).triangularView<Eigen::Upper>().toDenseMatrix().transpose();
+    const Eigen::MatrixXd aPlus = a.householderQr().solve(Eigen::MatrixXd::Identity(r, r));
+    C_ = q1 * (aPlus * qr.colsPermutation().transpose());
+    if (whiten) {
+        // d = R⁻¹ e = P⁻¹ L⁻ᵀ e, once for all targets.
+        for (int axis = 0; axis < 3; ++axis) {
+            Eigen::MatrixXd block = C_.middleRows(axis * m, m);
+            llt.matrixU().solveInPlace(block);
+            C_.middleRows(axis * m, m) = llt.permutationPinv() * block;
+        }
+    }
+}
+
+Eigen::VectorXd SurfaceDeformationSolver::rightHandSide(const std::vector<SurfaceConstraint>& constraints,
+                                                        std::vector<Eigen::Vector3d>* keyPoints) const
+{
+    // b = λ (target − current) row by row (eq. 6-20: D_t = p(u_t) − k_t, f_t = λ D_t).
+    const double lambda = options_.stiffness;
+    Eigen::VectorXd b(F_.rows());
+    std::vector<int> seen(constraints.size(), 0);
+    for (Eigen::Index k = 0; k < F_.rows(); ++k) {
+        const size_t c = static_cast<size_t>(rowOwner_[static_cast<size_t>(k)]);
+        const SurfaceConstraint& s = constraints[c];
+        const int local = seen[c]++;
+        double target = 0.0;  // Normal and CurveTangent rows: zero
+        switch (s.type) {
+            case SurfaceConstraintType::Position:
+                if (!s.value.allFinite()) throw GeometryError(at(c) + ".value: not a finite number");
+                target = s.value[local];
+                break;
+            case SurfaceConstraintType::Curve: {
+                if (!s.target) throw GeometryError(at(c) + ".target: missing");
+                const Eigen::Vector3d h = s.target->evaluate(keyT_[c][static_cast<size_t>(local / 3)]);
+                if (local % 3 == 0 && keyPoints) keyPoints->push_back(h);
+                target = h[local % 3];
+                break;
+            }
+            case SurfaceConstraintType::Distance: {
+                // The row measures e0·(S2 − S1), currently |e0|: first step towards the length.
+                if (!std::isfinite(s.distance) || s.distance < 0.0) throw GeometryError(at(c) + ".value: not a finite number >= 0");
+                target = s.distance;
+                break;
+            }
+            default:
+                break;
+        }
+        b[k] = lambda * (target - current_[k]);
+    }
+    return b;
+}
+
+Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& constraints,
+                                          DeformationReport* report) const
+{
+    if (constraints.size() != factored_.size()) {
+        throw GeometryError("constraints: expected " + std::to_string(factored_.size()) + ", got " +
+                            std::to_string(constraints.size()));
+    }
+    std::vector<Eigen::Vector3d> keyPoints;
+    const Eigen::VectorXd b = rightHandSide(constraints, &keyPoints);
+    const int m = freePoints();
+    Eigen::VectorXd d = C_ * b;
+    // One step of iterative refinement: the force objective's triangular solves leave ~κ(R)·u.
+    d.noalias() += C_ * (b - F_ * d);
+
+    std::vector<Eigen::Vector3d> points = surface_.points();
+    auto apply = [&](const Eigen::VectorXd& dd, std::vector<Eigen::Vector3d>& pts) {
+        pts = surface_.points();
+        for (int i = 0; i < m; ++i) {
+            pts[static_cast<size_t>(free_[static_cast<size_t>(i)])] +=
+                Eigen::Vector3d(dd[i], dd[m + i], dd[2 * m + i]);
+        }
+    };
+    apply(d, points);
+    auto build = [&](std::vector<Eigen::Vector3d> pts) {
+        return Surface3d(surface_.degreeU(), surface_.degreeV(), surface_.knotsU(), surface_.knotsV(),
+                         surface_.countU(), surface_.countV(), std::move(pts), surface_.weights());
+    };
+    Surface3d result = build(points);
+
+    // Distance constraints (non-linear): chord-Newton on the factored rows (Gauss–Newton with the
+    // Jacobian of the start kept, so each step is one more back-substitution): the other rows get
+    // a zero right-hand side and stay met; the distance rows get the remaining length error.
+    int steps = 0;
+    const double lambda = options_.stiffness;
+    auto lengthError = [&](const Surface3d& s, size_t c) {
+        const SurfaceConstraint& k = constraints[c];
+        const double now = (s.evaluate(k.uv2.x(), k.uv2.y()) - s.evaluate(k.uv.x(), k.uv.y())).norm();
+        const double start = (surface_.evaluate(k.uv2.x(), k.uv2.y()) - surface_.evaluate(k.uv.x(), k.uv.y())).norm();
+        return start + lambda * (k.distance - start) - now;
+    };
+    while (hasDistance_ && steps < kMaxDistanceSteps) {
+        Eigen::VectorXd db = Eigen::VectorXd::Zero(F_.rows());
+        double worst = 0.0;
+        for (Eigen::Index k = 0; k < F_.rows(); ++k) {
+            const size_t c = static_cast<size_t>(rowOwner_[static_cast<size_t>(k)]);
+            if (constraints[c].type != SurfaceConstraintType::Distance) continue;
+            db[k] = lengthError(result, c);
+            worst = std::max(worst, std::abs(db[k]) / std::max(1.0, constraints[c].distance));
+        }
+        if (worst <= kDistanceRelativeTolerance) break;
+        d.noalias() += C_ * db;
+        apply(d, points);
+        result = build(points);
+        ++steps;
+    }
+
+    if (report) {
+        const int r = rows();
+        report->constraintRows = r;
+        report->freePoints = m;
+        report->rank = rank_;
+        report->tooFewFreePoints = r > 3 * m;
+        report->compromise = rank_ < r;
+        report->keyPoints = std::move(keyPoints);
+        report->gaussNewtonSteps = steps;
+        report->moved = 0;
+        for (size_t i = 0; i < points.size(); ++i) report->moved += points[i] != surface_.points()[i] ? 1 : 0;
+        report->residuals.assign(constraints.size(), 0.0);
+        for (size_t c = 0; c < constraints.size(); ++c) {
+            const SurfaceConstraint& k = constraints[c];
+            double res = 0.0;
+            switch (k.type) {
+                case SurfaceConstraintType::Position: {
+                    const Eigen::Vector3d start = surface_.evaluate(k.uv.x(), k.uv.y());
+                    res = (result.evaluate(k.uv.x(), k.uv.y()) - (start + lambda * (k.value - start))).norm();
+                    break;
+                }
+                case SurfaceConstraintType::Curve:
+                    for (size_t p = 0; p < keyUv_[c].size(); ++p) {
+                        const Eigen::Vector2d& uv = keyUv_[c][p];
+                        const Eigen::Vector3d start = surface_.evaluate(uv.x(), uv.y());
+                        const Eigen::Vector3d goal = start + lambda * (k.target->evaluate(keyT_[c][p]) - start);
+                        res = std::max(res, (result.evaluate(uv.x(), uv.y()) - goal).norm());
+                    }
+                    break;
+                case SurfaceConstraintType::Normal: {
+                    // λ = 1: the angle (rad) between the normal and ±value; λ < 1: the rows'
+                    // residual S_u·n − (1 − λ) S_u°·n over |S_u| (the sine of the angle left over).
+                    const Eigen::Vector3d nrm = factored_[c].value.normalized();
+                    const auto now = result.derivatives(k.uv.x(), k.uv.y(), 1);
+                    const auto was = surface_.derivatives(k.uv.x(), k.uv.y(), 1);
+                    const double ru = (now[1][0].dot(nrm) - (1.0 - lambda) * was[1][0].dot(nrm)) / now[1][0].norm();
+                    const double rv = (now[0][1].dot(nrm) - (1.0 - lambda) * was[0][1].dot(nrm)) / now[0][1].norm();
+                    if (lambda == 1.0) {
+                        res = std::acos(std::clamp(std::abs(result.normal(k.uv.x(), k.uv.y()).dot(nrm)), 0.0, 1.0));
+                    } else {
+                        res = std::hypot(ru, rv);
+                    }
+                    break;
+                }
+                case SurfaceConstraintType::CurveTangent: {
+                    // The largest angle (rad) between the cross tangent and the line of value.
+                    const Eigen::Vector3d dir = factored_[c].value.normalized();
+                    for (size_t p = 0; p < keyUv_[c].size(); ++p) {
+                        const Eigen::Vector2d g1 = k.domain->derivatives(keyT_[c][p], 1)[1];
+                        const Eigen::Vector2d across = Eigen::Vector2d(-g1.y(), g1.x()).normalized();
+                        const auto der = result.derivatives(keyUv_[c][p].x(), keyUv_[c][p].y(), 1);
+                        const Eigen::Vector3d cross = across.x() * der[1][0] + across.y() * der[0][1];
+                        if (cross.norm() == 0.0) continue;
+                        res = std::max(res, std::acos(std::clamp(std::abs(cross.normalized().dot(dir)), 0.0, 1.0)));
+                    }
+                    break;
+                }
+                case SurfaceConstraintType::Distance:
+                    res = std::abs(lengthError(result, c));
+                    break;
+            }
+            report->residuals[c] = res;
+        }
+        report->maxResidual = report->residuals.empty()
+                                  ? 0.0
+                                  : *std::max_element(report->residuals.begin(), report->residuals.end());
+        report->message.clear();
+        if (report->tooFewFreePoints) {
+            report->message = std::to_string(r) + " constraint rows but only " + std::to_string(m) +
+                              " free control points (x3 coordinates): least-squares compromise";
+        } else if (report->compromise) {
+            report->message = "constraints are dependent or contradictory (rank " + std::to_string(rank_) + " of " +
+                              std::to_string(r) + " rows): least-squares compromise";
+        }
+    }
+    return result;
+}
+
+Surface3d deformSurface(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints,
+                        const DeformationOptions& options, DeformationReport* report)
+{
+    SurfaceDeformationSolver solver;
+    solver.factor(surface, constraints, options);
+    return solver.solve(constraints, report);
+}
+
+}  // namespace sculptline::solvers::deformation
