@@ -5,6 +5,7 @@
 #include "solvers/deformation/deformation_region.h"
 #include "solvers/math_constants.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/QR>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -133,6 +134,12 @@ double turning(const BSplineCurve<Dim>& c)
         prev = d;
     }
     return total;
+}
+
+// Angle (rad) between the lines along a and b, by atan2 (acos loses half the digits near 0).
+double angleBetweenLines(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    return std::atan2(a.cross(b).norm(), std::abs(a.dot(b)));
 }
 
 std::vector<double> uniformParameters(double t0, double t1, int m)
@@ -505,7 +512,7 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
                     const double ru = (now[1][0].dot(nrm) - (1.0 - lambda) * was[1][0].dot(nrm)) / now[1][0].norm();
                     const double rv = (now[0][1].dot(nrm) - (1.0 - lambda) * was[0][1].dot(nrm)) / now[0][1].norm();
                     if (lambda == 1.0) {
-                        res = std::acos(std::clamp(std::abs(result.normal(k.uv.x(), k.uv.y()).dot(nrm)), 0.0, 1.0));
+                        res = angleBetweenLines(result.normal(k.uv.x(), k.uv.y()), nrm);
                     } else {
                         res = std::hypot(ru, rv);
                     }
@@ -520,7 +527,7 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
                         const auto der = result.derivatives(keyUv_[c][p].x(), keyUv_[c][p].y(), 1);
                         const Eigen::Vector3d cross = across.x() * der[1][0] + across.y() * der[0][1];
                         if (cross.norm() == 0.0) continue;
-                        res = std::max(res, std::acos(std::clamp(std::abs(cross.normalized().dot(dir)), 0.0, 1.0)));
+                        res = std::max(res, angleBetweenLines(cross, dir));
                     }
                     break;
                 }
