@@ -149,6 +149,46 @@ std::vector<double> uniformParameters(double t0, double t1, int m)
     return t;
 }
 
+using LltPointer = const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>*;
+
+// The operator C with d = C b solving min dᵀHd s.t. F d = b (least squares when F lacks full row
+// rank), from Fᵀ (blocks·m × rows; H is block-diagonal with `blocks` copies of the m × m matrix
+// factored by `llt`, or I when llt is null). Returns the rank.
+//
+// With H = RᵀR and e = R d this is the minimum-norm problem min ‖e‖ s.t. G e = b, G = F R⁻¹, solved
+// as in CurveManipulationSolver: column-pivoted QR of Gᵀ = Q[R₁ R₂; 0 0]Πᵀ, e = Q₁ y with
+// Π[R₁ᵀ; R₂ᵀ] y = b in least squares (eq. 6-9's d = Fᵀ(FFᵀ)⁻¹b for H = I, never forming FFᵀ).
+int minimumNormOperator(Eigen::MatrixXd G, int blocks, int m, LltPointer llt, Eigen::MatrixXd& C)
+{
+    const Eigen::Index cols = G.rows(), rows = G.cols();
+    C = Eigen::MatrixXd::Zero(cols, rows);
+    if (llt) {
+        // H = P⁻¹ L Lᵀ P (Eigen's convention), so R = Lᵀ P and Gᵀ = R⁻ᵀ Fᵀ = L⁻¹ P Fᵀ.
+        for (int k = 0; k < blocks; ++k) {
+            Eigen::MatrixXd block = llt->permutationP() * G.middleRows(k * m, m);
+            llt->matrixL().solveInPlace(block);
+            G.middleRows(k * m, m) = block;
+        }
+    }
+    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G);
+    qr.setThreshold(kRankRelativeTolerance);
+    const int rank = static_cast<int>(qr.rank());
+    if (rank == 0) return 0;
+    const Eigen::MatrixXd q1 = qr.householderQ() * Eigen::MatrixXd::Identity(cols, rank);
+    const Eigen::MatrixXd a = qr.matrixR().topRows(rank).triangularView<Eigen::Upper>().toDenseMatrix().transpose();
+    const Eigen::MatrixXd aPlus = a.householderQr().solve(Eigen::MatrixXd::Identity(rows, rows));
+    C = q1 * (aPlus * qr.colsPermutation().transpose());
+    if (llt) {
+        // d = R⁻¹ e = P⁻¹ L⁻ᵀ e, once for all targets.
+        for (int k = 0; k < blocks; ++k) {
+            Eigen::MatrixXd block = C.middleRows(k * m, m);
+            llt->matrixU().solveInPlace(block);
+            C.middleRows(k * m, m) = llt->permutationPinv() * block;
+        }
+    }
+    return rank;
+}
+
 }  // namespace
 
 int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const Eigen::Vector2d& footStart,
@@ -322,17 +362,18 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
         }
     }
     C_ = Eigen::MatrixXd::Zero(3 * m, r);
+    C1_ = Eigen::MatrixXd::Zero(m, r / 3);
+    F1_ = Eigen::MatrixXd::Zero(0, m);
     rank_ = 0;
+    separable_ = false;
     if (r == 0 || m == 0) return;
 
     // Objective ½ dᵀ H d per coordinate. Displacement: H = I. Force: H = KᵀK + μI, K the bar
     // network's force change Δf_i = Σ_{j~i} q (d_i − d_j) with q = 1 at every node, the nodes
     // outside the free set included: their rows hold the change and its slope at zero across a
     // bound or next to blocked points (the C1 fade of §6.2.4).
-    const bool whiten = options.objective == Objective::Force;
-    Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt;
-    Eigen::MatrixXd G = F_.transpose();  // becomes (F R⁻¹)ᵀ = R⁻ᵀ Fᵀ
-    if (whiten) {
+    std::optional<Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>> llt;
+    if (options.objective == Objective::Force) {
         std::vector<Eigen::Triplet<double>> kt;
         for (int i = 0; i < nu; ++i) {
             for (int j = 0; j < nv; ++j) {
@@ -351,32 +392,23 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
         K.setFromTriplets(kt.begin(), kt.end());
         Eigen::SparseMatrix<double> H = Eigen::SparseMatrix<double>(K.transpose()) * K;
         for (int i = 0; i < m; ++i) H.coeffRef(i, i) += kAnchorSpring;
-        llt.compute(H);
-        if (llt.info() != Eigen::Success) throw GeometryError("surface: the force objective is not positive definite");
-        // H = P⁻¹ L Lᵀ P (Eigen's convention), so R = Lᵀ P and R⁻ᵀ x = L⁻¹ P x.
-        for (int axis = 0; axis < 3; ++axis) {
-            Eigen::MatrixXd block = llt.permutationP() * G.middleRows(axis * m, m);
-            llt.matrixL().solveInPlace(block);
-            G.middleRows(axis * m, m) = block;
-        }
+        llt.emplace(H);
+        if (llt->info() != Eigen::Success) throw GeometryError("surface: the force objective is not positive definite");
     }
 
-    // Minimum-norm solution of G e = b as in CurveManipulationSolver (eq. 6-9 without forming FFᵀ).
-    Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(G);
-    qr.setThreshold(kRankRelativeTolerance);
-    rank_ = static_cast<int>(qr.rank());
-    if (rank_ == 0) return;
-    const Eigen::MatrixXd q1 = qr.householderQ() * Eigen::MatrixXd::Identity(3 * m, rank_);
-    const Eigen::MatrixXd a = qr.matrixR().topRows(rank_).triangularView<Eigen::Upper>().toDenseMatrix().transpose();
-    const Eigen::MatrixXd aPlus = a.householderQr().solve(Eigen::MatrixXd::Identity(r, r));
-    C_ = q1 * (aPlus * qr.colsPermutation().transpose());
-    if (whiten) {
-        // d = R⁻¹ e = P⁻¹ L⁻ᵀ e, once for all targets.
-        for (int axis = 0; axis < 3; ++axis) {
-            Eigen::MatrixXd block = C_.middleRows(axis * m, m);
-            llt.matrixU().solveInPlace(block);
-            C_.middleRows(axis * m, m) = llt.permutationPinv() * block;
-        }
+    // Position and Curve rows come in (x, y, z) triples with equal coefficients, and H is the same
+    // for each coordinate: then the problem is three copies of one with a third of the rows and
+    // columns (27× less QR work), which is what a dragged point or target curve needs.
+    separable_ = std::all_of(constraints.begin(), constraints.end(), [](const SurfaceConstraint& k) {
+        return k.type == SurfaceConstraintType::Position || k.type == SurfaceConstraintType::Curve;
+    });
+    const LltPointer factorization = llt ? &*llt : nullptr;
+    if (separable_) {
+        F1_.resize(r / 3, m);
+        for (int k = 0; k < r / 3; ++k) F1_.row(k) = F_.block(3 * k, 0, 1, m);
+        rank_ = 3 * minimumNormOperator(F1_.transpose(), 1, m, factorization, C1_);
+    } else {
+        rank_ = minimumNormOperator(F_.transpose(), 3, m, factorization, C_);
     }
 }
 
@@ -428,9 +460,21 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
     std::vector<Eigen::Vector3d> keyPoints;
     const Eigen::VectorXd b = rightHandSide(constraints, &keyPoints);
     const int m = freePoints();
-    Eigen::VectorXd d = C_ * b;
-    // One step of iterative refinement: the force objective's triangular solves leave ~κ(R)·u.
-    d.noalias() += C_ * (b - F_ * d);
+    // d = C b, plus one step of iterative refinement (the force objective's triangular solves
+    // leave ~κ(R)·u). Separable: the rows are (x, y, z) triples, b read as a rows/3 × 3 matrix.
+    Eigen::VectorXd d(3 * m);
+    if (separable_) {
+        using Triples = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>;
+        const Triples B(b.data(), b.size() / 3, 3);
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3>> D(d.data(), m, 3);
+        D.noalias() = C1_ * B;
+        const Eigen::Matrix<double, Eigen::Dynamic, 3> left = B - F1_ * D;
+        D.noalias() += C1_ * left;
+    } else {
+        d.noalias() = C_ * b;
+        const Eigen::VectorXd left = b - F_ * d;
+        d.noalias() += C_ * left;
+    }
 
     std::vector<Eigen::Vector3d> points = surface_.points();
     auto apply = [&](const Eigen::VectorXd& dd, std::vector<Eigen::Vector3d>& pts) {

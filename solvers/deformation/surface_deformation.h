@@ -107,6 +107,8 @@ private:
     Eigen::MatrixXd F_;                                 // rows × 3·free
     Eigen::VectorXd current_;                           // F·(current net) restricted row values
     Eigen::MatrixXd C_;                                 // 3·free × rows: d = C b
+    Eigen::MatrixXd F1_, C1_;                           // separable: one coordinate's F and C
+    bool separable_ = false;                            // only Position/Curve rows: per coordinate
     int rank_ = 0;
     bool hasDistance_ = false;
 };
