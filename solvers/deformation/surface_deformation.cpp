@@ -198,6 +198,38 @@ int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const
     return std::max(2, spansCrossed(surface, footStart, footEnd) + bends);
 }
 
+KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& k, const SurfaceProjector* projector)
+{
+    if (!k.target) throw GeometryError("target: a curve constraint needs a target curve");
+    const BSplineCurve<3>& H = *k.target;
+    KeyPoints out;
+    if (k.domain) {
+        const BSplineCurve<2>& G = *k.domain;
+        const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
+        const int count = k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, a, b);
+        for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
+            const double s = (t - G.domainStart()) / (G.domainEnd() - G.domainStart());
+            out.uv.push_back(G.evaluate(t));
+            out.t.push_back(H.domainStart() + s * (H.domainEnd() - H.domainStart()));
+        }
+        return out;
+    }
+    // Feet of the key points by global projection (thesis §6.2.5: K_s, K_e → P_s, P_e).
+    std::optional<SurfaceProjector> own;
+    if (!projector) projector = &own.emplace(surface);
+    const auto footOf = [&](double t) {
+        const SurfaceProjection f = projector->project(H.evaluate(t));
+        return Eigen::Vector2d(f.u, f.v);
+    };
+    const int count =
+        k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, footOf(H.domainStart()), footOf(H.domainEnd()));
+    for (double t : uniformParameters(H.domainStart(), H.domainEnd(), count)) {
+        out.uv.push_back(footOf(t));
+        out.t.push_back(t);
+    }
+    return out;
+}
+
 // One scalar equation Σ_i c_i (dir · P_i) = target on the control points.
 struct SurfaceDeformationSolver::Row {
     Coefficients coefficients;
@@ -269,33 +301,11 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
             }
             case SurfaceConstraintType::Curve: {
                 if (!k.target) throw GeometryError(at(c) + ".target: a curve constraint needs a target curve");
-                const BSplineCurve<3>& H = *k.target;
-                std::vector<Eigen::Vector2d>& uvs = keyUv_[c];
-                std::vector<double>& ts = keyT_[c];
-                if (k.domain) {
-                    const BSplineCurve<2>& G = *k.domain;
-                    const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
-                    const int count = k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, a, b);
-                    for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
-                        const double s = (t - G.domainStart()) / (G.domainEnd() - G.domainStart());
-                        uvs.push_back(G.evaluate(t));
-                        ts.push_back(H.domainStart() + s * (H.domainEnd() - H.domainStart()));
-                    }
-                } else {
-                    // Feet of the key points by global projection (thesis §6.2.5: K_s, K_e → P_s, P_e).
-                    if (!projector) projector.emplace(surface);
-                    const auto footOf = [&](double t) {
-                        const SurfaceProjection f = projector->project(H.evaluate(t));
-                        return Eigen::Vector2d(f.u, f.v);
-                    };
-                    const int count = k.keyPoints > 0 ? k.keyPoints
-                                                      : keyPointCount(surface, H, footOf(H.domainStart()),
-                                                                      footOf(H.domainEnd()));
-                    for (double t : uniformParameters(H.domainStart(), H.domainEnd(), count)) {
-                        uvs.push_back(footOf(t));
-                        ts.push_back(t);
-                    }
-                }
+                if (!k.domain && !projector) projector.emplace(surface);
+                KeyPoints kp = curveKeyPoints(surface, k, projector ? &*projector : nullptr);
+                keyUv_[c] = std::move(kp.uv);
+                keyT_[c] = std::move(kp.t);
+                const std::vector<Eigen::Vector2d>& uvs = keyUv_[c];
                 for (const Eigen::Vector2d& uv : uvs) {
                     requireInDomain(surface, uv, at(c) + ".domain");
                     const Coefficients s = basisCoefficients(surface, uv.x(), uv.y(), 0, 0);
@@ -529,58 +539,7 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
         report->gaussNewtonSteps = steps;
         report->moved = 0;
         for (size_t i = 0; i < points.size(); ++i) report->moved += points[i] != surface_.points()[i] ? 1 : 0;
-        report->residuals.assign(constraints.size(), 0.0);
-        for (size_t c = 0; c < constraints.size(); ++c) {
-            const SurfaceConstraint& k = constraints[c];
-            double res = 0.0;
-            switch (k.type) {
-                case SurfaceConstraintType::Position: {
-                    const Eigen::Vector3d start = surface_.evaluate(k.uv.x(), k.uv.y());
-                    res = (result.evaluate(k.uv.x(), k.uv.y()) - (start + lambda * (k.value - start))).norm();
-                    break;
-                }
-                case SurfaceConstraintType::Curve:
-                    for (size_t p = 0; p < keyUv_[c].size(); ++p) {
-                        const Eigen::Vector2d& uv = keyUv_[c][p];
-                        const Eigen::Vector3d start = surface_.evaluate(uv.x(), uv.y());
-                        const Eigen::Vector3d goal = start + lambda * (k.target->evaluate(keyT_[c][p]) - start);
-                        res = std::max(res, (result.evaluate(uv.x(), uv.y()) - goal).norm());
-                    }
-                    break;
-                case SurfaceConstraintType::Normal: {
-                    // λ = 1: the angle (rad) between the normal and ±value; λ < 1: the rows'
-                    // residual S_u·n − (1 − λ) S_u°·n over |S_u| (the sine of the angle left over).
-                    const Eigen::Vector3d nrm = factored_[c].value.normalized();
-                    const auto now = result.derivatives(k.uv.x(), k.uv.y(), 1);
-                    const auto was = surface_.derivatives(k.uv.x(), k.uv.y(), 1);
-                    const double ru = (now[1][0].dot(nrm) - (1.0 - lambda) * was[1][0].dot(nrm)) / now[1][0].norm();
-                    const double rv = (now[0][1].dot(nrm) - (1.0 - lambda) * was[0][1].dot(nrm)) / now[0][1].norm();
-                    if (lambda == 1.0) {
-                        res = angleBetweenLines(result.normal(k.uv.x(), k.uv.y()), nrm);
-                    } else {
-                        res = std::hypot(ru, rv);
-                    }
-                    break;
-                }
-                case SurfaceConstraintType::CurveTangent: {
-                    // The largest angle (rad) between the cross tangent and the line of value.
-                    const Eigen::Vector3d dir = factored_[c].value.normalized();
-                    for (size_t p = 0; p < keyUv_[c].size(); ++p) {
-                        const Eigen::Vector2d g1 = k.domain->derivatives(keyT_[c][p], 1)[1];
-                        const Eigen::Vector2d across = Eigen::Vector2d(-g1.y(), g1.x()).normalized();
-                        const auto der = result.derivatives(keyUv_[c][p].x(), keyUv_[c][p].y(), 1);
-                        const Eigen::Vector3d cross = across.x() * der[1][0] + across.y() * der[0][1];
-                        if (cross.norm() == 0.0) continue;
-                        res = std::max(res, angleBetweenLines(cross, dir));
-                    }
-                    break;
-                }
-                case SurfaceConstraintType::Distance:
-                    res = std::abs(lengthError(result, c));
-                    break;
-            }
-            report->residuals[c] = res;
-        }
+        report->residuals = constraintResiduals(surface_, result, factored_, constraints, keyUv_, keyT_, lambda);
         report->maxResidual = report->residuals.empty()
                                   ? 0.0
                                   : *std::max_element(report->residuals.begin(), report->residuals.end());
@@ -594,6 +553,73 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
         }
     }
     return result;
+}
+
+std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d& after,
+                                        const std::vector<SurfaceConstraint>& factored,
+                                        const std::vector<SurfaceConstraint>& constraints,
+                                        const std::vector<std::vector<Eigen::Vector2d>>& keyUv,
+                                        const std::vector<std::vector<double>>& keyT, double lambda)
+{
+    std::vector<double> out(constraints.size(), 0.0);
+    auto lengthError = [&](size_t c) {
+        const SurfaceConstraint& k = constraints[c];
+        const double now = (after.evaluate(k.uv2.x(), k.uv2.y()) - after.evaluate(k.uv.x(), k.uv.y())).norm();
+        const double start = (before.evaluate(k.uv2.x(), k.uv2.y()) - before.evaluate(k.uv.x(), k.uv.y())).norm();
+        return start + lambda * (k.distance - start) - now;
+    };
+    for (size_t c = 0; c < constraints.size(); ++c) {
+        const SurfaceConstraint& k = constraints[c];
+        double res = 0.0;
+        switch (k.type) {
+            case SurfaceConstraintType::Position: {
+                const Eigen::Vector3d start = before.evaluate(k.uv.x(), k.uv.y());
+                res = (after.evaluate(k.uv.x(), k.uv.y()) - (start + lambda * (k.value - start))).norm();
+                break;
+            }
+            case SurfaceConstraintType::Curve:
+                for (size_t p = 0; p < keyUv[c].size(); ++p) {
+                    const Eigen::Vector2d& uv = keyUv[c][p];
+                    const Eigen::Vector3d start = before.evaluate(uv.x(), uv.y());
+                    const Eigen::Vector3d goal = start + lambda * (k.target->evaluate(keyT[c][p]) - start);
+                    res = std::max(res, (after.evaluate(uv.x(), uv.y()) - goal).norm());
+                }
+                break;
+            case SurfaceConstraintType::Normal: {
+                // λ = 1: the angle (rad) between the normal and ±value; λ < 1: the rows'
+                // residual S_u·n − (1 − λ) S_u°·n over |S_u| (the sine of the angle left over).
+                const Eigen::Vector3d nrm = factored[c].value.normalized();
+                const auto now = after.derivatives(k.uv.x(), k.uv.y(), 1);
+                const auto was = before.derivatives(k.uv.x(), k.uv.y(), 1);
+                const double ru = (now[1][0].dot(nrm) - (1.0 - lambda) * was[1][0].dot(nrm)) / now[1][0].norm();
+                const double rv = (now[0][1].dot(nrm) - (1.0 - lambda) * was[0][1].dot(nrm)) / now[0][1].norm();
+                if (lambda == 1.0) {
+                    res = angleBetweenLines(after.normal(k.uv.x(), k.uv.y()), nrm);
+                } else {
+                    res = std::hypot(ru, rv);
+                }
+                break;
+            }
+            case SurfaceConstraintType::CurveTangent: {
+                // The largest angle (rad) between the cross tangent and the line of value.
+                const Eigen::Vector3d dir = factored[c].value.normalized();
+                for (size_t p = 0; p < keyUv[c].size(); ++p) {
+                    const Eigen::Vector2d g1 = k.domain->derivatives(keyT[c][p], 1)[1];
+                    const Eigen::Vector2d across = Eigen::Vector2d(-g1.y(), g1.x()).normalized();
+                    const auto der = after.derivatives(keyUv[c][p].x(), keyUv[c][p].y(), 1);
+                    const Eigen::Vector3d cross = across.x() * der[1][0] + across.y() * der[0][1];
+                    if (cross.norm() == 0.0) continue;
+                    res = std::max(res, angleBetweenLines(cross, dir));
+                }
+                break;
+            }
+            case SurfaceConstraintType::Distance:
+                res = std::abs(lengthError(c));
+                break;
+        }
+        out[c] = res;
+    }
+    return out;
 }
 
 Surface3d deformSurface(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints,

@@ -6,6 +6,7 @@
 // network's external forces ‖K d‖ (the force-density view of §6.2.3, K the net's graph Laplacian
 // with unit force densities), which spreads the change smoothly instead of locally.
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/bspline/projection.h"
 #include "solvers/editing/curve_manipulation.h"
 
 #include <Eigen/Core>
@@ -116,6 +117,25 @@ private:
 /// One-shot: the deformed surface meeting `constraints` (values from the constraints).
 Surface3d deformSurface(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints,
                         const DeformationOptions& options = {}, DeformationReport* report = nullptr);
+
+/// Key points of a Curve constraint: their (u, v) on the surface and parameters t on the target H
+/// (count by eq. 6-24 unless keyPoints > 0; uniform in G's parameter, or in H's with the feet on the
+/// surface by global projection when no domain G is given).
+struct KeyPoints {
+    std::vector<Eigen::Vector2d> uv;
+    std::vector<double> t;
+};
+KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& curve,
+                         const SurfaceProjector* projector = nullptr);
+
+/// Residual of each constraint on `after` against its stiffness-scaled target from `before`:
+/// model units for Position, Curve (largest over the key points `keyUv`/`keyT`) and Distance;
+/// radians for Normal and CurveTangent at stiffness 1 (directions taken from `factored`).
+std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d& after,
+                                        const std::vector<SurfaceConstraint>& factored,
+                                        const std::vector<SurfaceConstraint>& constraints,
+                                        const std::vector<std::vector<Eigen::Vector2d>>& keyUv,
+                                        const std::vector<std::vector<double>>& keyT, double lambda);
 
 /// Number of key points on a target curve H by eq. 6-24: the knot spans crossed between the feet
 /// of H's ends in the dominant direction, plus one per π/8 of H's turning (more where it bends).
