@@ -3,7 +3,8 @@
 //
 //   {"surface": S, "constraints": [..], "bound"?: closed curve (2D points: domain (u, v); 3D: projected
 //    onto the surface), "stiffness"?: λ in (0, 1], "blocked"?: [[i, j]..], "objective"?:
-//    "displacement" | "force" (default), "method"?: "global" (default)}
+//    "displacement" | "force" (default), "method"?: "global" (default) | "isocurves" (thesis eqs.
+//    6-17, 6-18: position and curve constraints only; the objective is not used)}
 //     -> {"surface": S', "residuals": [..], "max_residual", "moved", "key_points": [[x, y, z]..],
 //         "compromise", "message"?, "rank", "rows", "elapsed_ms"}
 //
@@ -14,6 +15,7 @@
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 #include "solvers/bspline/projection.h"
+#include "solvers/deformation/isocurve_deformation.h"
 #include "solvers/deformation/surface_deformation.h"
 
 #include <cmath>
@@ -165,11 +167,14 @@ json run(const json& input, const Options&)
         else
             throw InputError("objective: expected displacement or force, got " + solvers::io::describeValue(o));
     }
+    bool isocurves = false;
     if (input.contains("method")) {
         const json& m = input["method"];
         const std::string name = m.is_string() ? m.get<std::string>() : "";
-        if (name == "isocurves") throw InputError("method: isocurves is not implemented; use global");
-        if (name != "global") throw InputError("method: expected global, got " + solvers::io::describeValue(m));
+        if (name != "global" && name != "isocurves") {
+            throw InputError("method: expected global or isocurves, got " + solvers::io::describeValue(m));
+        }
+        isocurves = name == "isocurves";
     }
     if (input.contains("bound")) options.bound = boundFromJson(input["bound"], surface);
 
@@ -178,7 +183,8 @@ json run(const json& input, const Options&)
     // The solver's messages already name the input field (constraints[i].uv, blocked[k], stiffness).
     const solvers::Surface3d result = [&] {
         try {
-            return dfm::deformSurface(surface, constraints, options, &report);
+            return isocurves ? dfm::deformByIsocurves(surface, constraints, options, &report)
+                             : dfm::deformSurface(surface, constraints, options, &report);
         } catch (const solvers::GeometryError& e) {
             throw InputError(e.what());
         }

@@ -115,3 +115,16 @@ TEST(DeformCli, GivenInvalidInput_WhenRun_ThenExit2WithOneLineNamingTheField)
     const CliResult nan = runCli({"deform"}, R"({"surface": 1, "constraints": [{"type": "position", "uv": [NaN, 0]}]})");
     EXPECT_EQ(nan.status, 2);
 }
+
+TEST(DeformCli, GivenMethodIsocurves_WhenRun_ThenThePointIsMetAsByTheGlobalLeastDisplacement)
+{
+    const json base = {{"surface", flatSurface()}, {"constraints", {pull(1.0)}}};
+    json iso = base;
+    iso["method"] = "isocurves";
+    json global = base;
+    global["objective"] = "displacement";
+    const json a = runOk("deform", iso), b = runOk("deform", global);
+    EXPECT_LT(a["max_residual"].get<double>(), kConstraintTolerance);
+    const auto pa = pointsOf(a["surface"]["points"]), pb = pointsOf(b["surface"]["points"]);
+    for (size_t k = 0; k < pa.size(); ++k) EXPECT_LT((pa[k] - pb[k]).norm(), kConstraintTolerance);
+}

@@ -3,6 +3,7 @@
 
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/deformation/deformation_region.h"
+#include "solvers/deformation/isocurve_deformation.h"
 
 #include "tests/deformation/deformation_fixtures.h"
 
@@ -333,4 +334,45 @@ TEST(SurfaceDeformation, GivenOnePulledPoint_WhenForceObjective_ThenTheChangeIsS
     EXPECT_LT(a.maxResidual, kConstraintTolerance);
     EXPECT_LT(b.maxResidual, kConstraintTolerance);
     EXPECT_LT(forceChange(s, byForce), 0.5 * forceChange(s, byDisplacement));
+}
+
+TEST(IsocurveDeformation, GivenOnePoint_WhenIsocurves_ThenEqualToTheGlobalLeastDisplacement)
+{
+    // The tensor-product row N_i(u)N_j(v) has pseudo-inverse N_i N_j / (ΣN_i² ΣN_j²): the U-curve
+    // step (eq. 6-17) then the V-curve steps (eq. 6-18) produce exactly that.
+    const Surface3d s = wavySurface(9, 7);
+    const std::vector<SurfaceConstraint> cs = {position(0.42, 0.63, s.evaluate(0.42, 0.63) + Eigen::Vector3d(0.3, -0.1, 1))};
+    DeformationOptions displacement;
+    displacement.objective = Objective::Displacement;
+    DeformationReport report;
+    const Surface3d byIsocurves = deformByIsocurves(s, cs, {}, &report);
+    EXPECT_LT(maxChange(byIsocurves, deformSurface(s, cs, displacement)), kSameSolutionTolerance);
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+}
+
+TEST(IsocurveDeformation, GivenPointsAndACurve_WhenIsocurves_ThenAllMetAndBlockedPointsStay)
+{
+    const Surface3d s = wavySurface(14, 12);
+    SurfaceConstraint curve;
+    curve.type = SurfaceConstraintType::Curve;
+    curve.domain = line2({0.2, 0.75}, {0.8, 0.75});
+    curve.target = line3(s.evaluate(0.2, 0.75) + Eigen::Vector3d(0, 0, 0.5), s.evaluate(0.8, 0.75) + Eigen::Vector3d(0, 0, 0.5));
+    const std::vector<SurfaceConstraint> cs = {position(0.3, 0.3, s.evaluate(0.3, 0.3) + Eigen::Vector3d(0, 0, 1)),
+                                               position(0.6, 0.35, s.evaluate(0.6, 0.35) + Eigen::Vector3d(0, 0.2, -0.5)),
+                                               curve};
+    DeformationOptions options;
+    options.blocked = {{0, 0}, {13, 11}};
+    DeformationReport report;
+    const Surface3d out = deformByIsocurves(s, cs, options, &report);
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    EXPECT_FALSE(report.compromise);
+    EXPECT_EQ(out.point(0, 0), s.point(0, 0));
+    EXPECT_EQ(out.point(13, 11), s.point(13, 11));
+    EXPECT_GE(report.keyPoints.size(), 2u);
+}
+
+TEST(IsocurveDeformation, GivenANormalConstraint_WhenIsocurves_ThenAnErrorNamesIt)
+{
+    const Surface3d s = wavySurface(6, 6);
+    EXPECT_THROW(deformByIsocurves(s, {normal(0.5, 0.5, Eigen::Vector3d::UnitZ())}), GeometryError);
 }

@@ -144,6 +144,9 @@ write("deform", "bound_blocked", {"surface": flat, "stiffness": 0.5, "blocked": 
     "bound": {"degree": 1, "knots": [0, 0, 0.25, 0.5, 0.75, 1, 1],
               "points": [[0.2, 0.2], [0.8, 0.2], [0.8, 0.8], [0.2, 0.8], [0.2, 0.2]]},
     "constraints": [{"type": "position", "uv": [0.5, 0.5], "value": [2.5, 2.5, 1]}]})
+write("deform", "isocurves", {"surface": flat, "method": "isocurves", "constraints": [
+    {"type": "position", "uv": [0.3, 0.3], "value": [1.5, 1.5, 1]},
+    {"type": "curve", "target": dict(line, points=[[0.5, 4, 0.3], [4.5, 4, 0.3]])}]})
 
 # Surfaces, one per mode (the inputs of tests/surfaces/surface_cli_test.cpp).
 profile = clamped([[1, 0, 0], [1.5, 0, 1], [0.8, 0, 2], [1, 0, 3]])
