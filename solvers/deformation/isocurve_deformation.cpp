@@ -14,6 +14,13 @@ using editing::ConstraintType;
 using editing::CurveConstraint;
 using editing::CurveManipulationSolver;
 
+// Constraint points whose v differ by less than this fraction of the v domain share one iso-curve:
+// global projection returns the feet of points on one iso-curve with v equal to ~1e-12 only, and
+// separate iso-curves 1e-12 apart would give each column two contradictory pins. A merged point is
+// pinned at the group's v with its target shifted by S(u, v_group) − S(u, v): the error left is
+// |Δv| times the change of S_v, far below 1e-9 of the model.
+constexpr double kSameIsoCurveRelative = 1e-9;
+
 struct Pin {
     double u, v;
     Eigen::Vector3d target;
@@ -95,8 +102,18 @@ Surface3d deformByIsocurves(const Surface3d& surface, const std::vector<SurfaceC
 
     // Stage 1 (eq. 6-17): the U iso-curve through each distinct v, its control points
     // c_i = Σ_j N_j(v) P_ij moved by the least change that meets the points on it.
-    std::map<double, std::vector<const Pin*>> byV;
-    for (const Pin& pn : pins) byV[pn.v].push_back(&pn);
+    std::map<double, std::vector<Pin>> byV;
+    const double sameV =
+        kSameIsoCurveRelative * (surface.domainEnd(Direction::V) - surface.domainStart(Direction::V));
+    for (const Pin& pn : pins) {
+        auto near = byV.lower_bound(pn.v - sameV);
+        if (near != byV.end() && near->first <= pn.v + sameV) {
+            const Eigen::Vector3d shift = surface.evaluate(pn.u, near->first) - surface.evaluate(pn.u, pn.v);
+            near->second.push_back({pn.u, near->first, pn.target + shift});
+        } else {
+            byV[pn.v].push_back(pn);
+        }
+    }
     // Per column i: the V-curve positions C_i(v) = c_i + Δc_i it must reach (eq. 6-18).
     std::vector<std::vector<CurveConstraint<3>>> columnPins(static_cast<size_t>(nu));
     double nvv[kMaxDegree + 1], nuu[kMaxDegree + 1];
@@ -115,13 +132,13 @@ Surface3d deformByIsocurves(const Surface3d& surface, const std::vector<SurfaceC
         const BSplineCurve<3> iso(p, surface.knotsU(), c);
         std::vector<CurveConstraint<3>> onIso;
         std::vector<bool> reached(static_cast<size_t>(nu), false);
-        for (const Pin* pn : group) {
+        for (const Pin& pn : group) {
             CurveConstraint<3> k;
             k.type = ConstraintType::Position;
-            k.u = pn->u;
-            k.value = pn->target;
+            k.u = pn.u;
+            k.value = pn.target;
             onIso.push_back(k);
-            const int firstI = basisAt(p, surface.knotsU(), pn->u, nuu);
+            const int firstI = basisAt(p, surface.knotsU(), pn.u, nuu);
             for (int a = 0; a <= p; ++a) reached[static_cast<size_t>(firstI + a)] = reached[static_cast<size_t>(firstI + a)] || nuu[a] != 0.0;
         }
         ManipulationReport stage;

@@ -128,3 +128,15 @@ TEST(DeformCli, GivenMethodIsocurves_WhenRun_ThenThePointIsMetAsByTheGlobalLeast
     const auto pa = pointsOf(a["surface"]["points"]), pb = pointsOf(b["surface"]["points"]);
     for (size_t k = 0; k < pa.size(); ++k) EXPECT_LT((pa[k] - pb[k]).norm(), kConstraintTolerance);
 }
+
+TEST(DeformCli, GivenIsocurvesAndATargetCurveWithoutDomain_WhenRun_ThenItsKeyPointsAreMet)
+{
+    // The feet of the key points (global projection) share one v up to ~1e-12: one iso-curve.
+    const json target = {{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0.5, 4, 0.3}, {4.5, 4, 0.3}}}};
+    const json out = runOk("deform", {{"surface", flatSurface()},
+                                      {"method", "isocurves"},
+                                      {"constraints", {pull(1.0), {{"type", "curve"}, {"target", target}}}}});
+    EXPECT_FALSE(out["compromise"].get<bool>());
+    EXPECT_LT(out["max_residual"].get<double>(), kConstraintTolerance);
+    EXPECT_GE(out["key_points"].size(), 2u);
+}
