@@ -27,8 +27,11 @@ namespace dfm = solvers::deformation;
 
 // A bound curve's ends must meet to within this fraction of its size (round-off of a written file).
 constexpr double kClosedRelativeTolerance = 1e-9;
-// Bound polygon: samples of the bound curve per unit of its parameter range, per knot span.
+// Bound polygon: samples of the bound curve per knot span, and at most kMaxBoundSamples in all (each
+// 3D sample is one global projection; 4096 keeps the polygon finer than any net's Greville grid
+// while bounding the time a hostile input with thousands of spans can take).
 constexpr int kBoundSamplesPerSpan = 32;
+constexpr int kMaxBoundSamples = 4096;
 
 Eigen::Vector2d uvFromJson(const json& j, const std::string& path, const solvers::Surface3d& s)
 {
@@ -102,7 +105,7 @@ std::vector<dfm::SurfaceConstraint> constraintsFromJson(const json& j, const sol
         }
         if ((k.type == dfm::SurfaceConstraintType::Curve || k.type == dfm::SurfaceConstraintType::CurveTangent) &&
             c.contains("key_points")) {
-            k.keyPoints = solvers::io::integerFromJson(c["key_points"], path + ".key_points", 1, 1000);
+            k.keyPoints = solvers::io::integerFromJson(c["key_points"], path + ".key_points", 1, dfm::kMaxKeyPoints);
         }
         out.push_back(std::move(k));
     }
@@ -120,7 +123,7 @@ std::vector<Eigen::Vector2d> boundFromJson(const json& j, const solvers::Surface
         throw InputError("bound: the curve is not closed (its ends are " + json((a - b).norm()).dump() + " apart)");
     }
     const int spans = std::max(1, static_cast<int>(solvers::interiorBreakpoints(c.degree(), c.knots()).size()) + 1);
-    const int samples = kBoundSamplesPerSpan * spans;
+    const int samples = std::min(kMaxBoundSamples, kBoundSamplesPerSpan * spans);
     std::optional<solvers::SurfaceProjector> projector;
     if (!planar) projector.emplace(s);
     std::vector<Eigen::Vector2d> polygon;

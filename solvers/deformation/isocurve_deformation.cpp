@@ -177,6 +177,7 @@ Surface3d deformByIsocurves(const Surface3d& surface, const std::vector<SurfaceC
     for (size_t i = 0; i < points.size(); ++i) rep.moved += points[i] != surface.points()[i] ? 1 : 0;
     rep.residuals = constraintResiduals(surface, result, constraints, constraints, keyUv, keyT, lambda);
     rep.maxResidual = rep.residuals.empty() ? 0.0 : *std::max_element(rep.residuals.begin(), rep.residuals.end());
+    flagUnmet(surface, constraints, rep);
     return result;
 }
 

@@ -36,6 +36,11 @@ constexpr int kMaxDistanceSteps = 20;
 // for more key points where the curve bends; π/8 keeps a quarter circle at four extra points).
 constexpr double kTurningPerKeyPoint = kPi / 8.0;
 
+// A constraint whose linear rows are met but whose geometric residual exceeds this (radians, or
+// model units per unit of the net's size) is reported as not met: e.g. S_u·n = 0 can be reached by
+// S_u collapsing to zero, which leaves the normal undefined. Met constraints sit at 1e-13 or below.
+constexpr double kUnmetTolerance = 1e-7;
+
 using Coefficients = std::vector<std::pair<int, double>>;  // (control point index, coefficient)
 
 std::string at(size_t c) { return "constraints[" + std::to_string(c) + "]"; }
@@ -195,7 +200,7 @@ int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const
                   const Eigen::Vector2d& footEnd)
 {
     const int bends = static_cast<int>(std::floor(turning(target) / kTurningPerKeyPoint));
-    return std::max(2, spansCrossed(surface, footStart, footEnd) + bends);
+    return std::clamp(spansCrossed(surface, footStart, footEnd) + bends, 2, kMaxKeyPoints);
 }
 
 KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& k, const SurfaceProjector* projector)
@@ -206,7 +211,7 @@ KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& k, c
     if (k.domain) {
         const BSplineCurve<2>& G = *k.domain;
         const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
-        const int count = k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, a, b);
+        const int count = std::min(kMaxKeyPoints, k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, a, b));
         for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
             const double s = (t - G.domainStart()) / (G.domainEnd() - G.domainStart());
             out.uv.push_back(G.evaluate(t));
@@ -221,8 +226,9 @@ KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& k, c
         const SurfaceProjection f = projector->project(H.evaluate(t));
         return Eigen::Vector2d(f.u, f.v);
     };
-    const int count =
-        k.keyPoints > 0 ? k.keyPoints : keyPointCount(surface, H, footOf(H.domainStart()), footOf(H.domainEnd()));
+    const int count = std::min(kMaxKeyPoints, k.keyPoints > 0 ? k.keyPoints
+                                                              : keyPointCount(surface, H, footOf(H.domainStart()),
+                                                                              footOf(H.domainEnd())));
     for (double t : uniformParameters(H.domainStart(), H.domainEnd(), count)) {
         out.uv.push_back(footOf(t));
         out.t.push_back(t);
@@ -320,7 +326,8 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
                 }
                 const BSplineCurve<2>& G = *k.domain;
                 const Eigen::Vector2d a = G.evaluate(G.domainStart()), b = G.evaluate(G.domainEnd());
-                const int count = k.keyPoints > 0 ? k.keyPoints : std::max(2, spansCrossed(surface, a, b));
+                const int count =
+                    std::min(kMaxKeyPoints, k.keyPoints > 0 ? k.keyPoints : std::max(2, spansCrossed(surface, a, b)));
                 const auto [e1, e2] = complement(k.value.normalized());
                 for (double t : uniformParameters(G.domainStart(), G.domainEnd(), count)) {
                     const auto g = G.derivatives(t, 1);
@@ -551,8 +558,29 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
             report->message = "constraints are dependent or contradictory (rank " + std::to_string(rank_) + " of " +
                               std::to_string(r) + " rows): least-squares compromise";
         }
+        flagUnmet(surface_, constraints, *report);
     }
     return result;
+}
+
+void flagUnmet(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints, DeformationReport& report)
+{
+    if (report.compromise) return;
+    Eigen::AlignedBox3d box;
+    for (const auto& p : surface.points()) box.extend(p);
+    const double size = std::max(1.0, box.diagonal().norm());
+    for (size_t c = 0; c < report.residuals.size() && c < constraints.size(); ++c) {
+        const bool angle = constraints[c].type == SurfaceConstraintType::Normal ||
+                           constraints[c].type == SurfaceConstraintType::CurveTangent;
+        const double limit = angle ? kUnmetTolerance : kUnmetTolerance * size;
+        if (report.residuals[c] > limit) {
+            report.compromise = true;
+            report.message = at(c) + " is not met (residual " + std::to_string(report.residuals[c]) +
+                             "): its linear rows hold but the geometry does not follow them (a tangent " +
+                             "collapsed, or the distance steps did not converge)";
+            return;
+        }
+    }
 }
 
 std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d& after,

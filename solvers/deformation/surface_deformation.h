@@ -40,7 +40,7 @@ struct SurfaceConstraint {
     double distance = 0.0;                         ///< Distance only, ≥ 0
     std::optional<BSplineCurve<2>> domain;         ///< G: Curve (optional), CurveTangent (required)
     std::optional<BSplineCurve<3>> target;         ///< H: Curve only
-    int keyPoints = 0;                             ///< Curve/CurveTangent: 0 = decided by eq. 6-24
+    int keyPoints = 0;  ///< Curve/CurveTangent: 0 = decided by eq. 6-24; at most kMaxKeyPoints
 };
 
 struct DeformationOptions {
@@ -136,6 +136,14 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
                                         const std::vector<SurfaceConstraint>& constraints,
                                         const std::vector<std::vector<Eigen::Vector2d>>& keyUv,
                                         const std::vector<std::vector<double>>& keyT, double lambda);
+
+/// Sets report.compromise and its message when a residual shows a constraint not met although its
+/// linearized rows are (a collapsed tangent under a Normal constraint, distance steps not converged).
+void flagUnmet(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints, DeformationReport& report);
+
+/// Most key points one Curve or CurveTangent constraint uses (eq. 6-24's count is capped here: a
+/// wildly turning target would otherwise ask for thousands of rows, each 3 dense rows of F).
+constexpr int kMaxKeyPoints = 256;
 
 /// Number of key points on a target curve H by eq. 6-24: the knot spans crossed between the feet
 /// of H's ends in the dominant direction, plus one per π/8 of H's turning (more where it bends).

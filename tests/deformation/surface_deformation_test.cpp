@@ -404,3 +404,14 @@ TEST(SurfaceDeformation, GivenABound_WhenForceObjective_ThenTheChangeFadesToward
     EXPECT_LT(rim, 0.15 * all);
     EXPECT_GT(rim, 0.0);  // but it does move: the fade is spread, not a step
 }
+
+TEST(SurfaceDeformation, GivenANormalInTheSurfacesPlaneAtACorner_WhenDeformed_ThenNotMetIsReported)
+{
+    // S_u·n = S_v·n = 0 with n along the corner's own S_u: the least change collapses S_u, the rows
+    // hold and the normal is undefined — a compromise, said so, not a silent success.
+    const Surface3d s = wavySurface(6, 6, 0.0);
+    DeformationReport report;
+    deformSurface(s, {normal(0.0, 0.0, Eigen::Vector3d::UnitX())}, {}, &report);
+    EXPECT_TRUE(report.compromise);
+    EXPECT_NE(report.message.find("constraints[0]"), std::string::npos);
+}
