@@ -629,15 +629,27 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
                 break;
             }
             case SurfaceConstraintType::CurveTangent: {
-                // The largest angle (rad) between the cross tangent and the line of value.
+                // λ = 1: the largest angle (rad) between the cross tangent and the line of value;
+                // λ < 1: the rows' residual e·X − (1 − λ) e·X° over |X| (as for Normal).
                 const Eigen::Vector3d dir = factored[c].value.normalized();
+                const auto [e1, e2] = complement(dir);
                 for (size_t p = 0; p < keyUv[c].size(); ++p) {
                     const Eigen::Vector2d g1 = k.domain->derivatives(keyT[c][p], 1)[1];
                     const Eigen::Vector2d across = Eigen::Vector2d(-g1.y(), g1.x()).normalized();
-                    const auto der = after.derivatives(keyUv[c][p].x(), keyUv[c][p].y(), 1);
+                    const Eigen::Vector2d& uv = keyUv[c][p];
+                    const auto der = after.derivatives(uv.x(), uv.y(), 1);
+                    const auto was = before.derivatives(uv.x(), uv.y(), 1);
                     const Eigen::Vector3d cross = across.x() * der[1][0] + across.y() * der[0][1];
-                    if (cross.norm() == 0.0) continue;
-                    res = std::max(res, angleBetweenLines(cross, dir));
+                    const Eigen::Vector3d cross0 = across.x() * was[1][0] + across.y() * was[0][1];
+                    if (cross.norm() == 0.0) {
+                        res = std::max(res, kPi / 2);  // collapsed: no direction at all
+                    } else if (lambda == 1.0) {
+                        res = std::max(res, angleBetweenLines(cross, dir));
+                    } else {
+                        res = std::max(res, std::hypot(e1.dot(cross) - (1.0 - lambda) * e1.dot(cross0),
+                                                       e2.dot(cross) - (1.0 - lambda) * e2.dot(cross0)) /
+                                                cross.norm());
+                    }
                 }
                 break;
             }

@@ -415,3 +415,36 @@ TEST(SurfaceDeformation, GivenANormalInTheSurfacesPlaneAtACorner_WhenDeformed_Th
     EXPECT_TRUE(report.compromise);
     EXPECT_NE(report.message.find("constraints[0]"), std::string::npos);
 }
+
+TEST(SurfaceDeformation, GivenACurveTangentAndStiffness_WhenDeformed_ThenItsRowsMoveThatFractionAndAreMet)
+{
+    const Surface3d s = wavySurface(10, 10);
+    SurfaceConstraint c;
+    c.type = SurfaceConstraintType::CurveTangent;
+    c.domain = line2({0.2, 0.3}, {0.8, 0.3});
+    c.value = Eigen::Vector3d(0, 1, 0.5);
+    const Surface3d full = deformSurface(s, {c});
+    DeformationOptions half;
+    half.stiffness = 0.5;
+    DeformationReport report;
+    const Surface3d out = deformSurface(s, {c}, half, &report);
+    EXPECT_FALSE(report.compromise) << report.message;
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    for (size_t k = 0; k < s.points().size(); ++k) {
+        EXPECT_LT((out.points()[k] - (s.points()[k] + 0.5 * (full.points()[k] - s.points()[k]))).norm(), kSameSolutionTolerance);
+    }
+}
+
+TEST(SurfaceDeformation, GivenABentTarget_WhenKeyPointsAreCounted_ThenMoreThanForAStraightOne)
+{
+    // Eq. 6-24 counts the spans crossed; a target that turns gets one more key point per π/8.
+    const Surface3d s = wavySurface(12, 12);
+    const BSplineCurve<3> straight = line3(Eigen::Vector3d(2, 5, 1), Eigen::Vector3d(9, 5, 1));
+    const BSplineCurve<3> bent(2, {0, 0, 0, 1, 1, 1},
+                               {Eigen::Vector3d(2, 5, 1), Eigen::Vector3d(5.5, 10, 1), Eigen::Vector3d(9, 5, 1)});
+    const Eigen::Vector2d a(2.0 / 11, 5.0 / 11), b(9.0 / 11, 5.0 / 11);
+    const int plain = keyPointCount(s, straight, a, b);
+    const int more = keyPointCount(s, bent, a, b);
+    EXPECT_GE(plain, 5);
+    EXPECT_GE(more, plain + 2);  // the parabola turns ~110°: at least two more
+}
