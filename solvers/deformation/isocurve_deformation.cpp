@@ -1,6 +1,7 @@
 #include "solvers/deformation/isocurve_deformation.h"
 
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/deformation/constraint_geometry.h"
 #include "solvers/deformation/deformation_region.h"
 
 #include <algorithm>
@@ -60,10 +61,7 @@ Surface3d deformByIsocurves(const Surface3d& surface, const std::vector<SurfaceC
     std::vector<Eigen::Vector3d> keyPoints;
     std::vector<Pin> pins;
     auto pin = [&](const Eigen::Vector2d& uv, const Eigen::Vector3d& target, const std::string& field) {
-        if (!uv.allFinite() || uv.x() < surface.domainStart(Direction::U) || uv.x() > surface.domainEnd(Direction::U) ||
-            uv.y() < surface.domainStart(Direction::V) || uv.y() > surface.domainEnd(Direction::V)) {
-            throw GeometryError(field + ": outside the surface's domain");
-        }
+        detail::requireInDomain(surface, uv, field);
         if (!target.allFinite()) throw GeometryError(field + ": target is not a finite number");
         const Eigen::Vector3d now = surface.evaluate(uv.x(), uv.y());
         pins.push_back({uv.x(), uv.y(), now + lambda * (target - now)});
