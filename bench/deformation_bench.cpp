@@ -104,6 +104,31 @@ BENCHMARK(BM_DeformOneShot)
     ->ArgsProduct({{0, 1, 2, 3, 4, 5, 6}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
+// The same with a normal constraint added at the middle of the curve's span: the rows then couple
+// x, y and z, and the general path (three times the columns) runs instead of the per-coordinate one.
+void BM_DeformOneShotWithNormal(benchmark::State& state)
+{
+    const TableRow& row = kTable62[state.range(0)];
+    Problem p = problem(row, 1.0);
+    SurfaceConstraint n;
+    n.type = SurfaceConstraintType::Normal;
+    n.uv = {0.5, 0.25};
+    n.value = p.surface.normal(0.5, 0.25) + Eigen::Vector3d(0.2, 0.0, 0.0);
+    p.constraints.push_back(n);
+    const DeformationOptions options = withObjective(static_cast<int>(state.range(1)));
+    DeformationReport report;
+    for (auto _ : state) {
+        Surface3d out = deformSurface(p.surface, p.constraints, options, &report);
+        benchmark::DoNotOptimize(out);
+    }
+    state.counters["thesis_ms"] = row.thesisSeconds * 1e3;
+    state.counters["goal_ms"] = row.thesisSeconds * 1e3 / 100.0;
+    state.counters["residual"] = report.maxResidual;
+    state.SetLabel(std::to_string(row.nu) + "x" + std::to_string(row.nv) + " key " + std::to_string(row.keyPoints) +
+                   " + normal" + (state.range(1) == 0 ? " displacement" : " force"));
+}
+BENCHMARK(BM_DeformOneShotWithNormal)->ArgsProduct({{0, 6}, {0, 1}})->Unit(benchmark::kMillisecond);
+
 // Drag event: the factorization kept; the target curve moves; solve + new surface + the table's mesh.
 void BM_DeformDragEvent(benchmark::State& state)
 {

@@ -448,3 +448,25 @@ TEST(SurfaceDeformation, GivenABentTarget_WhenKeyPointsAreCounted_ThenMoreThanFo
     EXPECT_GE(plain, 5);
     EXPECT_GE(more, plain + 2);  // the parabola turns ~110°: at least two more
 }
+
+TEST(SurfaceDeformation, GivenADragWithADistance_WhenSolvedPerEvent_ThenEachEqualsTheOneShotSolve)
+{
+    // The distance rows' chord-Newton steps reuse the factorization: a drag stays back-substitution.
+    const Surface3d s = wavySurface(9, 9);
+    SurfaceConstraint distance;
+    distance.type = SurfaceConstraintType::Distance;
+    distance.uv = {0.2, 0.5};
+    distance.uv2 = {0.8, 0.5};
+    std::vector<SurfaceConstraint> cs = {position(0.5, 0.2, s.evaluate(0.5, 0.2)), distance};
+    cs[1].distance = (s.evaluate(0.8, 0.5) - s.evaluate(0.2, 0.5)).norm();
+    SurfaceDeformationSolver solver;
+    solver.factor(s, cs);
+    for (int e = 1; e <= 10; ++e) {
+        cs[0].value = s.evaluate(0.5, 0.2) + Eigen::Vector3d(0, 0, 0.1 * e);
+        cs[1].distance += 0.1;
+        DeformationReport report;
+        const Surface3d a = solver.solve(cs, &report);
+        EXPECT_LT(maxChange(a, deformSurface(s, cs)), kSameSolutionTolerance) << "event " << e;
+        EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    }
+}
