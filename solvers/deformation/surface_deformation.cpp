@@ -29,10 +29,43 @@ constexpr double kRankRelativeTolerance = 1e-10;
 // KᵀK + μI), a smooth local fall-off, and H is positive definite (condition ≤ 16²/μ ≈ 2.6e5).
 constexpr double kAnchorSpring = 1e-3;
 
+// Least displacement with a bound: the weights grow towards the bound over this many rings of
+// control points (a bicubic's support is 4 points wide: 3 rings reach from the bound to where a
+// constraint's support typically starts).
+constexpr int kFadeRings = 3;
+
 // Distance constraints are non-linear: chord-Newton steps (the factored row direction kept) stop
 // when the length error is below this fraction of the length, or after kMaxDistanceSteps.
 constexpr double kDistanceRelativeTolerance = 1e-12;
 constexpr int kMaxDistanceSteps = 20;
+
+// Graph distance (4-neighbour rings) of every control point from the nearest point outside the
+// bound (those are 0; a net with none outside gets a large number everywhere).
+std::vector<int> ringsFromOutside(const std::vector<bool>& inside, int nu, int nv)
+{
+    const int n = nu * nv;
+    std::vector<int> ring(static_cast<size_t>(n), n);
+    std::vector<int> queue;
+    for (int k = 0; k < n; ++k) {
+        if (!inside[static_cast<size_t>(k)]) {
+            ring[static_cast<size_t>(k)] = 0;
+            queue.push_back(k);
+        }
+    }
+    for (size_t head = 0; head < queue.size(); ++head) {
+        const int k = queue[head], i = k / nv, j = k % nv;
+        const int nb[4][2] = {{i - 1, j}, {i + 1, j}, {i, j - 1}, {i, j + 1}};
+        for (const auto& ij : nb) {
+            if (ij[0] < 0 || ij[0] >= nu || ij[1] < 0 || ij[1] >= nv) continue;
+            const int o = ij[0] * nv + ij[1];
+            if (ring[static_cast<size_t>(o)] > ring[static_cast<size_t>(k)] + 1) {
+                ring[static_cast<size_t>(o)] = ring[static_cast<size_t>(k)] + 1;
+                queue.push_back(o);
+            }
+        }
+    }
+    return ring;
+}
 
 using LltPointer = const Eigen::SimplicialLLT<Eigen::SparseMatrix<double>>*;
 
@@ -251,6 +284,20 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
         for (int i = 0; i < m; ++i) H.coeffRef(i, i) += kAnchorSpring;
         llt.emplace(H);
         if (llt->info() != Eigen::Success) throw GeometryError("surface: the force objective is not positive definite");
+    } else if (!options.bound.empty()) {
+        // Least displacement inside a bound, relaxed (§6.2.4): min Σ w_i |d_i|² with w_i = (R / r_i)²
+        // for the points r_i < R rings in from the bound, so that d_i ∝ 1/w_i fades like r² —
+        // value and slope to zero at the bound — and the plain least displacement further in.
+        const std::vector<int> rings = ringsFromOutside(insideBound(surface, options.bound), nu, nv);
+        Eigen::SparseMatrix<double> H(m, m);
+        std::vector<Eigen::Triplet<double>> ht;
+        for (int i = 0; i < m; ++i) {
+            const int r = rings[static_cast<size_t>(free_[static_cast<size_t>(i)])];
+            const double w = r < kFadeRings ? std::pow(static_cast<double>(kFadeRings) / r, 2) : 1.0;
+            ht.emplace_back(i, i, w);
+        }
+        H.setFromTriplets(ht.begin(), ht.end());
+        llt.emplace(H);
     }
 
     // Position and Curve rows come in (x, y, z) triples with equal coefficients, and H is the same

@@ -51,7 +51,8 @@ struct DeformationOptions {
     std::vector<std::array<int, 2>> blocked;
     /// Closed polygon in the domain (u, v) (first point repeated or not); empty = no bound. Control
     /// points whose Greville abscissae lie outside do not move (eq. 6-22), and the change fades to
-    /// zero with its slope at the bound (the bound's force rows enter the objective, §6.2.4).
+    /// zero with its slope at the bound (§6.2.4): Force through the fixed nodes' force rows,
+    /// Displacement through weights (R/r)² on the points r < 3 rings in from the bound.
     std::vector<Eigen::Vector2d> bound;
 };
 

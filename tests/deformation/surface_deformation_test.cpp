@@ -470,3 +470,31 @@ TEST(SurfaceDeformation, GivenADragWithADistance_WhenSolvedPerEvent_ThenEachEqua
         EXPECT_LT(report.maxResidual, kConstraintTolerance);
     }
 }
+
+TEST(SurfaceDeformation, GivenABoundAndLeastDisplacement_WhenAPointNearItIsPulled_ThenTheRimMovesLeast)
+{
+    // The relaxation weights (3/r)² make a point r rings in from the bound move ∝ r²/9 of what the
+    // plain least displacement would give it: the rim (r = 1) gets at most 1/9 of its share.
+    const Surface3d s = wavySurface(16, 16);
+    DeformationOptions options;
+    options.objective = Objective::Displacement;
+    options.bound = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}};
+    const Eigen::Vector2d uv(0.3, 0.5);  // its support reaches the bound's rim on the U side
+    DeformationReport report;
+    const Surface3d out =
+        deformSurface(s, {position(uv.x(), uv.y(), s.evaluate(uv.x(), uv.y()) + Eigen::Vector3d(0, 0, 1))}, options, &report);
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    const std::vector<bool> inside = insideBound(s, options.bound);
+    double rim = 0.0, all = 0.0;
+    for (int i = 0; i < 16; ++i) {
+        for (int j = 0; j < 16; ++j) {
+            const double moved = (out.point(i, j) - s.point(i, j)).norm();
+            all = std::max(all, moved);
+            if (inside[static_cast<size_t>(i * 16 + j)] && i > 0 && !inside[static_cast<size_t>((i - 1) * 16 + j)]) {
+                rim = std::max(rim, moved);
+            }
+        }
+    }
+    EXPECT_GT(rim, 0.0);
+    EXPECT_LT(rim, 0.25 * all);
+}
