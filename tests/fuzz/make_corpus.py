@@ -129,6 +129,25 @@ write("constrain-curve", "distance_curvature", {"curve": open_curve, "insert_kno
 write("constrain-curve", "closed", {"curve": closed, "constraints": [
     {"type": "position", "u": 4.5, "value": [0, 0, 1]}]})
 
+# deform: every constraint type on a flat bicubic 6 x 6 net (tests/deformation/deform_cli_test.cpp).
+flat_knots = [0, 0, 0, 0, 1 / 3, 2 / 3, 1, 1, 1, 1]
+flat = {"degreeU": 3, "degreeV": 3, "knotsU": flat_knots, "knotsV": flat_knots, "countU": 6, "countV": 6,
+        "points": [[i, j, 0] for i in range(6) for j in range(6)]}
+line = {"degree": 1, "knots": [0, 0, 1, 1]}
+write("deform", "all_types", {"surface": flat, "objective": "force", "constraints": [
+    {"type": "position", "uv": [0.5, 0.5], "value": [2.5, 2.5, 1]},
+    {"type": "normal", "uv": [0.2, 0.2], "value": [0.1, 0, 1]},
+    {"type": "curve", "target": dict(line, points=[[0.5, 4, 0.3], [4.5, 4, 0.3]])},
+    {"type": "curve-tangent", "domain": dict(line, points=[[0.2, 0.1], [0.8, 0.1]]), "value": [0, 1, 0.2]},
+    {"type": "distance", "uv": [0.1, 0.9], "uv2": [0.9, 0.9], "value": 4.5}]})
+write("deform", "bound_blocked", {"surface": flat, "stiffness": 0.5, "blocked": [[2, 2]], "objective": "displacement",
+    "bound": {"degree": 1, "knots": [0, 0, 0.25, 0.5, 0.75, 1, 1],
+              "points": [[0.2, 0.2], [0.8, 0.2], [0.8, 0.8], [0.2, 0.8], [0.2, 0.2]]},
+    "constraints": [{"type": "position", "uv": [0.5, 0.5], "value": [2.5, 2.5, 1]}]})
+write("deform", "isocurves", {"surface": flat, "method": "isocurves", "constraints": [
+    {"type": "position", "uv": [0.3, 0.3], "value": [1.5, 1.5, 1]},
+    {"type": "curve", "target": dict(line, points=[[0.5, 4, 0.3], [4.5, 4, 0.3]])}]})
+
 # Surfaces, one per mode (the inputs of tests/surfaces/surface_cli_test.cpp).
 profile = clamped([[1, 0, 0], [1.5, 0, 1], [0.8, 0, 2], [1, 0, 3]])
 section2 = clamped([[0, 1, 0], [0.5, 1, 1], [0, 1.5, 2], [0.2, 1, 3]])
