@@ -127,6 +127,16 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
     c.recipe.mode = *known;
     const ConstructionInfo& info = describe(*known);
     const InputCount count = surfaceInputCount(c.recipe.mode);
+    if (info.baseSurface) {
+        // A sculpt: "base" is the surface it deforms, made before it; "curves" its targets.
+        const int base = io::integerFromJson(io::member(*it, "base", at), at + ".base", 1, 1 << 30);
+        const bool known = std::find(doc.surfaceIds.begin(), doc.surfaceIds.end(), base) != doc.surfaceIds.end() ||
+                           std::any_of(doc.constructed.begin(), doc.constructed.end(),
+                                       [base](const SceneDocument::ConstructedSurface& s) { return s.id == base; });
+        if (!known || (surfaceId != 0 && base >= surfaceId))
+            throw io::InputError(at + ".base: no surface with id " + std::to_string(base) + " comes before this one");
+        c.curves.push_back(base);
+    }
     const json& curves = io::member(*it, "curves", at);
     if (!curves.is_array()) throw io::InputError(at + ".curves: expected an array of curve ids");
     for (size_t k = 0; k < curves.size(); ++k) {
@@ -138,6 +148,17 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         c.curves.push_back(id);
     }
     const int n = static_cast<int>(c.curves.size());
+    if (info.options & kStiffnessOption) {
+        if (const auto s = it->find("stiffness"); s != it->end()) {
+            c.recipe.stiffness = io::numberFromJson(*s, at + ".stiffness");
+            if (!(c.recipe.stiffness > 0.0 && c.recipe.stiffness <= 1.0)) throw io::InputError(at + ".stiffness: must be in (0, 1]");
+        }
+        if (const auto o = it->find("objective"); o != it->end()) {
+            if (!o->is_string() || (*o != "force" && *o != "displacement"))
+                throw io::InputError(at + ".objective: must be \"force\" or \"displacement\"");
+            c.recipe.displacementObjective = *o == "displacement";
+        }
+    }
     if (n < count.min || n > count.max)
         throw io::InputError(at + ".curves: mode " + info.name + " takes " + std::to_string(count.min) + " to " +
                              std::to_string(count.max) + " curves");

@@ -312,9 +312,14 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
                                                             : std::to_string(count.min) + " to " + std::to_string(count.max)) +
                                     " curves, got " + std::to_string(n));
     }
-    for (EntityId c : curves) {
-        const Entity* e = find(c);
-        if (!e || e->kind != EntityKind::Curve) throw std::invalid_argument("entity " + std::to_string(c) + " is not a curve");
+    for (size_t k = 0; k < curves.size(); ++k) {
+        const Entity* e = find(curves[k]);
+        const EntityKind want = k == 0 && info.baseSurface ? EntityKind::Surface : EntityKind::Curve;
+        if (!e || e->kind != want)
+            throw std::invalid_argument("entity " + std::to_string(curves[k]) + " is not a " + kindName(want));
+    }
+    if (info.options & kStiffnessOption) {
+        if (!(recipe.stiffness > 0.0 && recipe.stiffness <= 1.0)) throw std::invalid_argument("stiffness: must be in (0, 1]");
     }
     for (const SurfaceRecipe::Tangent& t : recipe.tangents) {
         const Entity* s = find(t.surface);

@@ -68,7 +68,8 @@ struct Entity {
     /// Surface: a G1 fill's largest angle (degrees) between its normals and those of the surfaces
     /// it is tangent to, across those boundaries; negative otherwise.
     double maxTangentAngle = -1.0;
-    /// Surface: its curve inputs (the inputs that follow are the surfaces a G1 fill is tangent to).
+    /// Surface: the inputs of its construction in the mode's order (curves; a sculpt's base surface
+    /// first); the inputs that follow are the surfaces a G1 fill is tangent to.
     std::vector<std::uint32_t> curveInputs() const
     {
         return std::vector<std::uint32_t>(inputs.begin(), inputs.end() - static_cast<long>(tangentSurfaceCount()));

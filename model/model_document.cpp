@@ -133,7 +133,13 @@ json modelToJson(const Model& model, const GridSpec& grid)
             entry["id"] = id;
             if (e.recipe) {
                 const ConstructionInfo& info = describe(e.recipe->mode);
-                json c{{"mode", info.name}, {"curves", e.curveInputs()}};
+                std::vector<EntityId> inputs = e.curveInputs();
+                json c{{"mode", info.name}};
+                if (info.baseSurface) {
+                    c["base"] = inputs.front();
+                    inputs.erase(inputs.begin());
+                }
+                c["curves"] = inputs;
                 if (!e.recipe->tangents.empty()) {
                     json tangents = json::array();
                     for (const SurfaceRecipe::Tangent& t : e.recipe->tangents) tangents.push_back({{"curve", t.boundary}, {"surface", t.surface}});
@@ -143,6 +149,10 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 if (info.options & kDirectionOption) c["direction"] = io::toJson(e.recipe->direction);
                 if (e.recipe->tolerance > 0.0) c["tolerance"] = e.recipe->tolerance;
                 if (info.options & kUCurvesOption) c["u_curves"] = e.recipe->uCurves;
+                if (info.options & kStiffnessOption) {
+                    c["stiffness"] = e.recipe->stiffness;
+                    c["objective"] = e.recipe->displacementObjective ? "displacement" : "force";
+                }
                 entry["construction"] = std::move(c);
             }
             break;

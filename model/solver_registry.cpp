@@ -1,6 +1,7 @@
 #include "model/solver_registry.h"
 
 #include "model/model.h"
+#include "solvers/deformation/surface_deformation.h"
 #include "solvers/editing/curve_manipulation.h"
 #include "solvers/surfaces/surface_modes.h"
 
@@ -256,6 +257,84 @@ private:
     surf::SurfaceOptions options_;
 };
 
+/// The deformation of a sculpt (thesis ch. 6): one Curve constraint per target curve (key points by
+/// eq. 6-24, their feet by global projection), at the recipe's stiffness and objective.
+struct SculptProblem {
+    const solvers::Surface3d* base = nullptr;
+    std::vector<solvers::deformation::SurfaceConstraint> constraints;
+    solvers::deformation::DeformationOptions options;
+};
+
+SculptProblem sculptProblem(const Model& model, const Entity& e)
+{
+    SculptProblem p;
+    const Entity* base = model.find(e.inputs.front());
+    if (!base || !base->surface) throw std::invalid_argument("base: surface " + std::to_string(e.inputs.front()) + " has no geometry");
+    p.base = &*base->surface;
+    for (solvers::Curve3d& target : worldCurves(model, e)) {
+        solvers::deformation::SurfaceConstraint c;
+        c.type = solvers::deformation::SurfaceConstraintType::Curve;
+        c.target = std::move(target);
+        p.constraints.push_back(std::move(c));
+    }
+    p.options.stiffness = e.recipe->stiffness;
+    p.options.objective = e.recipe->displacementObjective ? solvers::deformation::Objective::Displacement
+                                                          : solvers::deformation::Objective::Force;
+    return p;
+}
+
+void storeSculpt(Entity& e, solvers::Surface3d surface, const solvers::deformation::DeformationReport& report)
+{
+    // The largest residual is the deviation from the construction (the inspector shows it): a
+    // compromise (conflicting targets, too few free points) keeps the least-squares surface.
+    store(e, surf::SurfaceBuild{std::move(surface), report.maxResidual});
+}
+
+/// deformation: a sculpt's solver factored once per drag (F and the objective's factorization for
+/// the key points found at the press); each event moves only the targets: one back-substitution.
+class DeformationStepSolver : public StepSolver {
+public:
+    void factor(const Model& model, const PlanStep& step) override
+    {
+        surface_ = step.solve.front();
+        solver_.reset();
+        const Entity& e = *model.find(surface_);
+        try {
+            const SculptProblem p = sculptProblem(model, e);
+            auto solver = std::make_unique<solvers::deformation::SurfaceDeformationSolver>();
+            solver->factor(*p.base, p.constraints, p.options);
+            solver_ = std::move(solver);
+            base_ = p.base->points();
+        } catch (const std::exception&) {
+            solver_.reset();  // it cannot be solved as it is: each solve then tries afresh
+        }
+    }
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) {
+            Entity& e = entity(model, id);
+            try {
+                const SculptProblem p = sculptProblem(model, e);
+                solvers::deformation::DeformationReport report;
+                // The factorization holds while the base stays; a moved base is set up again.
+                if (solver_ && id == surface_ && p.base->points() == base_) {
+                    storeSculpt(e, solver_->solve(p.constraints, &report), report);
+                } else {
+                    storeSculpt(e, solvers::deformation::deformSurface(*p.base, p.constraints, p.options, &report), report);
+                }
+            } catch (const std::exception& error) {
+                e.buildError = error.what();  // the last good surface stays
+            }
+        }
+    }
+    void reset() override { solver_.reset(); }
+
+private:
+    EntityId surface_ = 0;
+    std::unique_ptr<solvers::deformation::SurfaceDeformationSolver> solver_;
+    std::vector<Eigen::Vector3d> base_;
+};
+
 /// network-mesh: the loop is triangulated afresh (no set-up to keep).
 class MeshSolver : public StepSolver {
 public:
@@ -301,6 +380,12 @@ void buildSurfaceEntity(const Model& model, Entity& e)
         return;
     }
     const ConstructionInfo& info = describe(r.mode);
+    if (r.mode == Construction::Sculpt) {
+        const SculptProblem p = sculptProblem(model, e);
+        solvers::deformation::DeformationReport report;
+        storeSculpt(e, solvers::deformation::deformSurface(*p.base, p.constraints, p.options, &report), report);
+        return;
+    }
     if (!info.solverMode) throw std::invalid_argument(std::string("\"") + info.name + "\" makes a mesh entity from a loop of curves, not a surface");
     const surf::SurfaceOptions options = surfaceOptions(model, e, curves);
     store(e, surf::buildSurface(*info.solverMode, curves, options));
@@ -325,6 +410,7 @@ SolverRegistry::SolverRegistry()
     add("least-change", [] { return std::make_unique<LeastChangeSolver>(); });
     add("surface-builder", [] { return std::make_unique<SurfaceBuilderSolver>(); });
     add("network-mesh", [] { return std::make_unique<MeshSolver>(); });
+    add("deformation", [] { return std::make_unique<DeformationStepSolver>(); });
     add("unsolved", [] { return std::make_unique<UnsolvedCluster>(); });
 }
 
@@ -356,6 +442,7 @@ std::string SolverRegistry::choose(const Model& model, const PlanStep& step) con
         }
     }
     if (other) return "unsolved";
+    if (e->kind == EntityKind::Surface && construction && e->recipe && e->recipe->mode == Construction::Sculpt) return "deformation";
     if (e->kind == EntityKind::Surface && construction) return "surface-builder";
     if (e->kind == EntityKind::Mesh && construction) return "network-mesh";
     if (e->kind == EntityKind::Curve && pins) return "least-change";
@@ -370,7 +457,7 @@ std::vector<std::string> SolverRegistry::keys() const
     return out;
 }
 
-bool SolverRegistry::caches(const std::string& key) const { return key == "surface-builder"; }
+bool SolverRegistry::caches(const std::string& key) const { return key == "surface-builder" || key == "deformation"; }
 
 std::unique_ptr<StepSolver> makePullSolver(double u) { return std::make_unique<LeastChangeSolver>(u); }
 

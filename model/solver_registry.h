@@ -13,6 +13,8 @@
 //   surface-builder a surface's construction (solvers/surfaces/surface_modes.h SurfaceBuilder:
 //                   fill, loft and sweep keep their set-up across a drag; gordon rebuilds)
 //   network-mesh    a mesh's loop of curves (solvers/surfaces/network_mesh.h)
+//   deformation     a sculpt: the base surface deformed onto target curves (thesis ch. 6,
+//                   solvers/deformation), factored once per drag of a target's plane
 //   unsolved        a cluster no registered solver handles yet (coupled constraints between
 //                   several free entities): its entities keep their geometry, and the plan says so
 #include "model/plan.h"

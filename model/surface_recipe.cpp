@@ -8,7 +8,7 @@ namespace {
 
 using solvers::surfaces::SurfaceMode;
 
-const std::array<ConstructionInfo, 9> kConstructions{{
+const std::array<ConstructionInfo, 10> kConstructions{{
     {Construction::Fill, "fill", 2, 4, {"boundary", nullptr, nullptr}, true, kTangentsOption, SurfaceMode::Fill, false},
     {Construction::Revolve, "revolve", 2, 2, {"profile", "axis (a line)", nullptr}, false, kAngleOption, SurfaceMode::Revolve, false},
     {Construction::Extrude, "extrude", 1, 1, {"profile", nullptr, nullptr}, false, kDirectionOption, SurfaceMode::Extrude, false},
@@ -22,11 +22,13 @@ const std::array<ConstructionInfo, 9> kConstructions{{
     {Construction::Gordon, "gordon", 4, 64, {"curve", nullptr, nullptr}, true, kToleranceOption | kUCurvesOption, std::nullopt, false},
     // One closed loop of curves, filled by a triangle mesh.
     {Construction::Network, "network", 1, 64, {"curve", nullptr, nullptr}, true, 0u, std::nullopt, true},
+    // A base surface and 1 to 63 target curves (thesis §5.2.3, §6.2.2).
+    {Construction::Sculpt, "sculpt", 2, 64, {"base surface", "target curve", nullptr}, false, kStiffnessOption, std::nullopt, false, true},
 }};
 
 }  // namespace
 
-const std::array<ConstructionInfo, 9>& constructions() { return kConstructions; }
+const std::array<ConstructionInfo, 10>& constructions() { return kConstructions; }
 
 const ConstructionInfo& describe(Construction mode) { return kConstructions.at(static_cast<size_t>(mode)); }
 
@@ -55,6 +57,7 @@ std::string surfaceInputRole(Construction mode, int index)
         if (mode == Construction::Network) role += " of the loop";
         return role;
     }
+    if (mode == Construction::Sculpt) return index == 0 ? info.roles[0] : std::string(info.roles[1]) + " " + std::to_string(index);
     if (index >= 0 && index < static_cast<int>(info.roles.size()) && info.roles[static_cast<size_t>(index)])
         return info.roles[static_cast<size_t>(index)];
     return "curve " + std::to_string(index + 1);
@@ -63,6 +66,7 @@ std::string surfaceInputRole(Construction mode, int index)
 bool inputLiesOnSurface(Construction mode, int index)
 {
     if (mode == Construction::Revolve || mode == Construction::Sweep) return index == 0;
+    if (mode == Construction::Sculpt) return false;  // targets are approached, not lain on
     return !describe(mode).makesMesh;
 }
 

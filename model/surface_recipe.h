@@ -20,7 +20,9 @@
 namespace sculptline::model {
 
 /// Every way the model builds a surface or mesh from curves.
-enum class Construction { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation, Gordon, Network };
+/// Sculpt (thesis ch. 6): an existing surface (the base, first input) deformed so that its nearest
+/// surface curves move onto target curves (the other inputs), solvers/deformation.
+enum class Construction { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation, Gordon, Network, Sculpt };
 
 /// Options a construction reads (bits of ConstructionInfo::options).
 enum ConstructionOption : unsigned {
@@ -29,6 +31,7 @@ enum ConstructionOption : unsigned {
     kToleranceOption = 1u << 2,  ///< approximating modes: model units
     kTangentsOption = 1u << 3,   ///< fill: G1 to adjacent surfaces
     kUCurvesOption = 1u << 4,    ///< gordon: size of the first family
+    kStiffnessOption = 1u << 5,  ///< sculpt: how far the surface goes to its targets, and the objective
 };
 
 /// One row of the construction table.
@@ -46,10 +49,11 @@ struct ConstructionInfo {
     /// network, which have their own builders.
     std::optional<solvers::surfaces::SurfaceMode> solverMode;
     bool makesMesh;  ///< network: a mesh entity, not a surface
+    bool baseSurface = false;  ///< sculpt: the first input is a surface (the base), the rest curves
 };
 
 /// The whole table, in enum order.
-const std::array<ConstructionInfo, 9>& constructions();
+const std::array<ConstructionInfo, 10>& constructions();
 const ConstructionInfo& describe(Construction mode);
 const char* constructionName(Construction mode);
 /// The mode named `name`, or nothing.
@@ -74,6 +78,10 @@ struct SurfaceRecipe {
     std::vector<Tangent> tangents;
     /// gordon: how many of the curve inputs (the first ones) are the u family; the rest are v.
     int uCurves = 0;
+    /// sculpt: λ in (0, 1] (thesis eq. 6-20), the share of the way to the targets.
+    double stiffness = 1.0;
+    /// sculpt: least change of the net's forces (smooth fall-off, the default) or of the control points.
+    bool displacementObjective = false;
 };
 
 /// Input curves each mode takes, in order: [min, max]. Revolve's last input is its axis (a line

@@ -350,3 +350,109 @@ TEST(ModelGraph, DocumentsWithEveryConstraintTypeRoundTrip)
 
 }  // namespace
 }  // namespace sculptline::model
+
+namespace sculptline::model {
+namespace {
+
+/// A flat bicubic 7 x 7 net over [-60, 60]^2 at z = 0 (the base of a sculpt).
+solvers::Surface3d flatSheet()
+{
+    const solvers::KnotVector knots{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4};
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 7; ++i) {
+        for (int j = 0; j < 7; ++j) points.emplace_back(-60 + 20 * i, -60 + 20 * j, 0);
+    }
+    return solvers::Surface3d(3, 3, knots, knots, 7, 7, points);
+}
+
+/// A base sheet, a vertical plane across it carrying a target arc 12 mm above the sheet, the sculpt.
+struct SculptScene {
+    Model model;
+    EntityId base = 0, plane = 0, target = 0, sculpt = 0;
+    explicit SculptScene(double stiffness = 1.0)
+    {
+        base = model.addSurface(flatSheet());
+        plane = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 150));
+        // An arch across the sheet in the plane y = 0: its ends on the sheet, its middle 12 mm above.
+        const PlaneFrame& f = model.find(plane)->frame;
+        std::vector<Eigen::Vector3d> local;
+        for (int i = 0; i < 5; ++i) {
+            const double x = -40 + 20 * i, h = (i == 0 || i == 4) ? 0.0 : 12.0;
+            Eigen::Vector3d p = f.toLocal(Eigen::Vector3d(x, 0, h));
+            p.z() = 0;
+            local.push_back(p);
+        }
+        target = model.addCurve(plane, solvers::Curve3d(3, {0, 0, 0, 0, 1, 2, 2, 2, 2}, local));
+        SurfaceRecipe recipe;
+        recipe.mode = Construction::Sculpt;
+        recipe.stiffness = stiffness;
+        sculpt = model.addSurface({base, target}, recipe);
+    }
+};
+
+TEST(Sculpt, TheBaseSurfaceMovesOntoTheTargetCurveAndTheDocumentReSolvesIt)
+{
+    SculptScene s;
+    const Entity& sculpt = *s.model.find(s.sculpt);
+    ASSERT_TRUE(sculpt.surface.has_value()) << sculpt.buildError;
+    EXPECT_TRUE(sculpt.buildError.empty()) << sculpt.buildError;
+    // The target curve lies on the sculpted surface at its key points (and near it between them)
+    const solvers::Curve3d& target = *s.model.find(s.target)->world;
+    EXPECT_LT(sculpt.maxDeviation, 1e-6);
+    EXPECT_LT(guitest::curveToSurface(target, *sculpt.surface), 0.5);
+    EXPECT_GT(guitest::curveToSurface(target, *s.model.find(s.base)->surface), 5.0);
+    // The base is unchanged; the plan builds the sculpt by its deformation solver
+    EXPECT_EQ(s.model.find(s.base)->surface->points(), flatSheet().points());
+    EXPECT_EQ(s.model.plan().steps[s.model.plan().stepOf.at(s.sculpt)].solver, "deformation");
+    // Saved and reopened, the sculpt is solved again to the same surface
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(s.model, GridSpec{})), reopened);
+    ASSERT_NE(reopened.find(s.sculpt), nullptr);
+    ASSERT_TRUE(reopened.find(s.sculpt)->recipe);
+    EXPECT_EQ(reopened.find(s.sculpt)->recipe->mode, Construction::Sculpt);
+    EXPECT_EQ(reopened.find(s.sculpt)->surface->points(), sculpt.surface->points());
+}
+
+TEST(Sculpt, DraggingTheTargetsPlaneReSolvesWithOneFactorization)
+{
+    SculptScene s;
+    const int before = s.model.factorizations();
+    s.model.beginDrag(s.plane);
+    EXPECT_EQ(s.model.factorizations(), before + 1);
+    for (int i = 0; i < 10; ++i) {
+        PlaneFrame f = s.model.find(s.plane)->frame;
+        f.origin.y() += 1.0;  // across the sheet
+        s.model.setPlaneFrame(s.plane, f);
+        s.model.update();
+        // The surface follows the moved target at each event
+        EXPECT_LT(guitest::curveToSurface(*s.model.find(s.target)->world, *s.model.find(s.sculpt)->surface), 0.5) << i;
+    }
+    EXPECT_EQ(s.model.factorizations(), before + 1);
+    s.model.endDrag();
+    s.model.update();
+    // At rest it is what a fresh solve gives
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    EXPECT_EQ(s.model.find(s.sculpt)->surface->points(), s.model.makeSurface({s.base, s.target}, recipe).surface->points());
+}
+
+TEST(Sculpt, StiffnessMovesTheSurfaceThatShareOfTheWay)
+{
+    SculptScene full(1.0), half(0.5);
+    const solvers::Surface3d& base = *full.model.find(full.base)->surface;
+    const auto& a = full.model.find(full.sculpt)->surface->points();
+    const auto& b = half.model.find(half.sculpt)->surface->points();
+    for (size_t k = 0; k < a.size(); ++k) {
+        EXPECT_LT(((b[k] - base.points()[k]) - 0.5 * (a[k] - base.points()[k])).norm(), 1e-9) << k;
+    }
+    // And the bad ones are refused
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    recipe.stiffness = 0.0;
+    EXPECT_THROW(full.model.addSurface({full.base, full.target}, recipe), std::invalid_argument);
+    recipe.stiffness = 1.0;
+    EXPECT_THROW(full.model.addSurface({full.target, full.target}, recipe), std::invalid_argument);  // no base
+}
+
+}  // namespace
+}  // namespace sculptline::model
