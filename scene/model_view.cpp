@@ -179,7 +179,10 @@ void ModelView::entityAdded(const model::Entity& e)
         break;
     }
     case model::EntityKind::Curve: addCurveNode(e); break;
-    case model::EntityKind::Surface: surfaces_->addChild(makeSurfaceEntityNode(e)); break;
+    case model::EntityKind::Surface:
+        surfaces_->addChild(makeSurfaceEntityNode(e));
+        refreshSculptBase(e);
+        break;
     case model::EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
     case model::EntityKind::Point: break;  // drawn with the constraints that make them (later issues)
     }
@@ -188,8 +191,8 @@ void ModelView::entityAdded(const model::Entity& e)
 SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuseGrid)
 {
     SoSeparator* node = nullptr;
-    if (!e.surface || !drawable(e)) {
-        node = new SoSeparator;  // a construction that never built: nothing to draw until it does
+    if (!e.surface || !drawable(e) || sculptedAway(e, hiddenIgnoring_)) {
+        node = new SoSeparator;  // a construction that never built (or a sculpt's base): nothing to draw
         grids_.erase(e.id);
     } else if (nurbsNodes_) {
         const solvers::Surface3d& s = *e.surface;
@@ -224,8 +227,30 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuse
     return node;
 }
 
+bool ModelView::sculptedAway(const model::Entity& surface, model::EntityId ignoring) const
+{
+    for (model::EntityId d : model_.dependents(surface.id)) {
+        const model::Entity* s = model_.find(d);
+        if (d != ignoring && s && s->recipe && s->recipe->mode == model::Construction::Sculpt && s->inputs.front() == surface.id) return true;
+    }
+    return false;
+}
+
+void ModelView::refreshSculptBase(const model::Entity& e, model::EntityId ignoring)
+{
+    if (e.kind != model::EntityKind::Surface || !e.recipe || e.recipe->mode != model::Construction::Sculpt) return;
+    const model::Entity* base = model_.find(e.inputs.front());
+    const auto node = base ? nodes_.find(base->id) : nodes_.end();
+    if (node == nodes_.end()) return;
+    SoSeparator* old = node->second;  // makeSurfaceEntityNode replaces the map's entry
+    hiddenIgnoring_ = ignoring;
+    surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(*base));
+    hiddenIgnoring_ = 0;
+}
+
 void ModelView::entityRemoved(const model::Entity& e)
 {
+    refreshSculptBase(e, e.id);  // its base shows again
     const auto it = nodes_.find(e.id);
     if (it == nodes_.end()) return;
     SoGroup* parent = e.kind == model::EntityKind::Plane        ? planeCurves_

@@ -70,6 +70,11 @@ private:
     /// The one gate between the model's geometry and Coin: false (and counted) when a coordinate
     /// of `entity` is not finite; its node is then left empty or unmoved.
     bool drawable(const model::Entity& entity);
+    /// A surface a sculpt deforms (its base) is not drawn: the sculpt shows it. `ignoring`: a sculpt
+    /// being removed.
+    bool sculptedAway(const model::Entity& surface, model::EntityId ignoring = 0) const;
+    /// Rebuilds the node of the base of sculpt `e` (shown or hidden as it now is).
+    void refreshSculptBase(const model::Entity& e, model::EntityId ignoring = 0);
     SoSeparator* planeGroup(model::EntityId plane);
     void addCurveNode(const model::Entity& entity);
     void rebuildCurveNode(const model::Entity& entity);
@@ -100,6 +105,7 @@ private:
     std::map<model::EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
     int nonFiniteRejections_ = 0;
+    model::EntityId hiddenIgnoring_ = 0;  ///< a sculpt being removed, while its base is redrawn
     std::map<model::EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
     model::EntityId highlighted_ = 0;
     std::vector<model::EntityId> marked_;

@@ -200,6 +200,8 @@ void MainWindow::createActions()
     modeAction("mode.lift", tr("Lift"), tr("&Lift a stroke between two curves into space"), QStringLiteral("L"), Mode::Lift);
     modeAction("mode.pull", tr("Pull"), tr("&Pull a curve point"), QStringLiteral("P"), Mode::Pull);
     modeAction("mode.select", tr("Select"), tr("S&elect"), QStringLiteral("E"), Mode::Select);
+    // Thesis ch. 6: strokes near the selected surface become target curves it is deformed onto.
+    modeAction("mode.sculpt", tr("Sculpt"), tr("Scul&pt the selected surface with target curves"), QStringLiteral("Y"), Mode::Sculpt);
     modeMenu->addSeparator();
     // The surface modes (thesis §5.1.3, §5.2; seed 000): pick the curves, the surface follows them.
     auto surfaceAction = [&](const char* name, const QString& label, const QString& text, const QString& key, model::Construction mode) {
@@ -236,7 +238,8 @@ void MainWindow::createDocks()
     auto* modes = new ModesDock({action(QStringLiteral("mode.view")), action(QStringLiteral("mode.sketch")),
                                  action(QStringLiteral("mode.oversketch")), action(QStringLiteral("mode.lift")),
                                  action(QStringLiteral("mode.pull")),
-                                 action(QStringLiteral("mode.select")), action(QStringLiteral("mode.fill")),
+                                 action(QStringLiteral("mode.select")), action(QStringLiteral("mode.sculpt")),
+                                 action(QStringLiteral("mode.fill")),
                                  action(QStringLiteral("mode.revolve")), action(QStringLiteral("mode.extrude")),
                                  action(QStringLiteral("mode.sweep")), action(QStringLiteral("mode.loft")),
                                  action(QStringLiteral("mode.boundaryRotation")), action(QStringLiteral("mode.railRotation")),
@@ -264,10 +267,13 @@ void MainWindow::setMode(Mode mode, std::optional<model::Construction> surfaceMo
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     if (viewer_) viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
-    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift);
+    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift || mode == Mode::Sculpt);
+    // Sculpt works on the surface selected when it starts (a later stroke deforms the last sculpt).
+    document_->setSculptBase(mode == Mode::Sculpt ? document_->selection() : 0);
     document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == model::Construction::Extrude);
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch
                              : mode == Mode::Lift     ? SketchDocument::StrokeMode::Lift
+                             : mode == Mode::Sculpt   ? SketchDocument::StrokeMode::Sculpt
                                                       : SketchDocument::StrokeMode::Sketch);
     for (QAction* a : modes_->actions()) {
         if (a->objectName() == modeActionName()) a->setChecked(true);
@@ -294,6 +300,12 @@ void MainWindow::updateStatus()
                   "and fixed points. Shift+click pins a point.");
         break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
+    case Mode::Sculpt:
+        text = document_->sculptBase() != 0
+                   ? tr("Sculpt surface %1: draw a target curve on the active plane; the surface's nearest curve moves onto it. Drag the plane to move it live.")
+                         .arg(document_->sculptBase())
+                   : tr("Sculpt: select a surface first (E, then click it or pick it in the list), then press Y.");
+        break;
     case Mode::Surface: text = surfaceGuidance(); break;
     }
     statusBar()->showMessage(text);
@@ -308,6 +320,7 @@ QString MainWindow::modeActionName() const
     case Mode::Lift: return QStringLiteral("mode.lift");
     case Mode::Pull: return QStringLiteral("mode.pull");
     case Mode::Select: return QStringLiteral("mode.select");
+    case Mode::Sculpt: return QStringLiteral("mode.sculpt");
     case Mode::Surface: break;
     }
     // "boundary-rotation" -> "mode.boundaryRotation"

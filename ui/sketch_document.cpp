@@ -162,6 +162,12 @@ void SketchDocument::deleteSelection()
     undo_.push(new DeleteEntityCommand(*this, selection_));
 }
 
+void SketchDocument::setSculptBase(model::EntityId surface)
+{
+    const model::Entity* e = model_.find(surface);
+    sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
+}
+
 void SketchDocument::toggleSelectionFixed()
 {
     const model::Entity* e = model_.find(selection_);

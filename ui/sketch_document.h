@@ -88,7 +88,10 @@ public:
     /// What a finished stroke does: becomes a new curve, or over-sketches the curve it was drawn
     /// over (solvers/editing, local-c2 by default).
     /// Lift: a stroke between two curve points becomes a minimum-curvature space curve (seed 004).
-    enum class StrokeMode { Sketch, Oversketch, Lift };
+    enum class StrokeMode { Sketch, Oversketch, Lift, Sculpt };
+    /// Sculpt: the surface the next target curve deforms (0 = none, or not a surface).
+    void setSculptBase(model::EntityId surface);
+    model::EntityId sculptBase() const { return sculptBase_; }
     void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
     StrokeMode strokeMode() const { return strokeMode_; }
 
@@ -210,6 +213,7 @@ private:
     std::optional<solvers::stroke::Recognition> recognition_;
     int candidateInUse_ = -1;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
+    model::EntityId sculptBase_ = 0;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::optional<model::Construction> surfaceMode_;

@@ -154,10 +154,34 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         for (int i : fit.samples) samples.push_back(stroke.points[static_cast<size_t>(i)]);
         for (int i : fit.corners) corners.push_back(stroke.points[static_cast<size_t>(i)]);
         feedback_->show(drawn, samples, corners);
-        const QString text = added.size() > 1 ? tr("Sketch curve on an auxiliary plane") : tr("Sketch curve on plane %1").arg(plane);
+        const bool sculpt = strokeMode_ == StrokeMode::Sculpt && model_.find(sculptBase_);
+        if (sculpt) {
+            // Thesis §5.2.3, ch. 6: the curve is a target; the base surface is deformed onto it, as
+            // a sculpt surface that follows the curve (and its plane's dragger) from now on.
+            model::Entity sculpted;
+            sculpted.kind = model::EntityKind::Surface;
+            sculpted.inputs = {sculptBase_, kPreviousEntity};
+            model::SurfaceRecipe recipe;
+            recipe.mode = model::Construction::Sculpt;
+            sculpted.recipe = recipe;
+            added.push_back(sculpted);
+        }
+        const QString text = sculpt ? tr("Sculpt surface %1 onto a target curve").arg(sculptBase_)
+                             : added.size() > 1 ? tr("Sketch curve on an auxiliary plane")
+                                                : tr("Sketch curve on plane %1").arg(plane);
         undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
-        recognizedCurve_ = selection_;  // the command selects the curve it added
-        const model::Entity* made = model_.find(selection_);
+        if (sculpt) {
+            const model::Entity* made = model_.find(selection_);  // the command selects the sculpt
+            lastStroke_.message += made && made->failed() ? tr("; sculpt not solved: %1").arg(QString::fromStdString(made->buildError))
+                                                          : tr("; surface %1 sculpted onto it (deviation %2 mm at the key points)")
+                                                                .arg(selection_)
+                                                                .arg(made ? made->maxDeviation : 0.0, 0, 'g', 3);
+            sculptBase_ = selection_;  // the next target deforms this sculpt
+        }
+        // The command selects what it added last: the curve, or the sculpt made from it.
+        const model::Entity* last = model_.find(selection_);
+        recognizedCurve_ = sculpt && last && last->inputs.size() > 1 ? last->inputs[1] : selection_;
+        const model::Entity* made = model_.find(recognizedCurve_);
         feedbackPlane_ = made ? made->plane() : 0;
     } catch (const std::exception& e) {
         // A click or a stroke too short to have a shape: nothing to add, say why.

@@ -252,5 +252,59 @@ TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
     EXPECT_TRUE(asked);
 }
 
+TEST(MainWindow, SculptModeDeformsTheSelectedSurfaceOntoAStrokeAndUndoRestoresIt)
+{
+    // Given the default scene (plane 1 at y = 95, surface 3) with the surface selected
+    startApplication();
+    MainWindow window;
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.show();
+    SketchDocument& doc = window.document();
+    const model::EntityId base = 3;
+    ASSERT_NE(doc.model().find(base), nullptr);
+    ASSERT_EQ(doc.model().find(base)->kind, model::EntityKind::Surface);
+    const std::vector<Eigen::Vector3d> before = doc.model().find(base)->surface->points();
+    doc.select(base);
+
+    // When Sculpt mode starts (Y) and a stroke is drawn on the plane
+    window.action(QStringLiteral("mode.sculpt"))->trigger();
+    EXPECT_EQ(window.mode(), Mode::Sculpt);
+    EXPECT_EQ(doc.sculptBase(), base);
+    EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("Sculpt surface 3"))) << window.statusBar()->currentMessage().toStdString();
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
+    manipulators::FinishedStroke stroke;
+    stroke.frame = frame;
+    for (int i = 0; i < 40; ++i) {
+        const double a = 3.14159265358979 * i / 39.0;
+        stroke.points.emplace_back(-40.0 + 80.0 * i / 39.0, 8.0 * std::sin(a), 0.0);
+        stroke.times.push_back(0.01 * i);
+        stroke.rayTimes.push_back(0.01 * i);
+        stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
+        stroke.rayDirections.push_back(-frame.normal());
+    }
+    const int steps = doc.undoStack()->count();
+    doc.addStroke(stroke);
+
+    // Then a sculpt surface of the base and the new curve exists, solved, and one undo step made it
+    const model::Entity* sculpt = doc.model().find(doc.selection());
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_TRUE(sculpt->recipe.has_value());
+    EXPECT_EQ(sculpt->recipe->mode, model::Construction::Sculpt);
+    EXPECT_EQ(sculpt->inputs.front(), base);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    EXPECT_NE(sculpt->surface->points(), before);
+    EXPECT_EQ(doc.model().find(base)->surface->points(), before);  // the base is kept as it was
+    EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("sculpted"))) << doc.lastStroke().message.toStdString();
+    // And the next stroke deforms the sculpt further
+    EXPECT_EQ(doc.sculptBase(), sculpt->id);
+    // And undo takes the sculpt and its curve away
+    const model::EntityId id = sculpt->id;
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.model().find(id), nullptr);
+    EXPECT_EQ(doc.model().find(base)->surface->points(), before);
+}
+
 }  // namespace
 }  // namespace sculptline::ui
