@@ -302,7 +302,35 @@ def networks():
     s.write("networks.json")
 
 
+def sculpt_cap():
+    """Thesis Fig. 6-8 and §6.4: a flat sheet deformed by one target curve into a cap, then the
+    target's plane dragged by its jack: the sculpted surface follows live (the sail of Fig. 6-16)."""
+    # Plane 1 vertical (XZ: local x = X, local y = Z - 60) across the sheet's middle; its jack at
+    # (0, 0, 60) stays clear of the sheet and the arch. The sheet: a flat bicubic 8 x 8 net over
+    # [-70, 70]^2 at z = 0.
+    planes = [plane(1, [0, 0, 60], [0, -1, 0], 160, [1, 0, 0])]
+    knots = [0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5]
+    net = [[-70 + 20 * i, -70 + 20 * j, 0] for i in range(8) for j in range(8)]
+    sheet = {"id": 2, "degreeU": 3, "degreeV": 3, "knotsU": knots, "knotsV": knots, "countU": 8, "countV": 8,
+             "points": net}
+    write_document("sculpt_start.json", planes, (), [sheet])
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])  # the sheet: select it
+    s.action("mode.sculpt")
+    # The target: an arch in plane 1 from one edge of the sheet to the other, 30 mm high.
+    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
+    s.stroke(arch)
+    # Drag plane 1 by its jack 25 mm along -Y in 30 steps: the cap's crest follows.
+    s.action("mode.view")
+    s.action("mode.select")
+    start, end = [0, 0, 60], [0, -25, 60]
+    s.stroke([r([start[k] + (end[k] - start[k]) * i / 30 for k in range(3)]) for i in range(31)], dt=12)
+    s.write("sculpt_cap.json")
+
+
 if __name__ == "__main__":
+    sculpt_cap()
     networks()
     pull_circle()
     pin_pull()

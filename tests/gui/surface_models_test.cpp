@@ -342,4 +342,32 @@ TEST(SurfaceModels, SavedModelsReopenToTheSameSurfaces)
 }
 
 }  // namespace
+TEST(SurfaceModels, TheCapFollowsItsTargetCurveWhenThePlaneIsDragged)
+{
+    // sculpt_cap.json: a flat sheet (2) selected, Sculpt mode, an arch drawn on plane 1 (y = 0) from
+    // x = -60 to 60, 30 mm high; then plane 1 dragged by its jack to y = -25 (data/sessions/make_models.py)
+    const model::Model model = readModel("sculpt_cap.json");
+    const model::Entity* sculpt = nullptr;
+    for (const model::Entity* s : surfaces(model)) {
+        if (s->recipe && s->recipe->mode == model::Construction::Sculpt) sculpt = s;
+    }
+    ASSERT_NE(sculpt, nullptr);
+    EXPECT_EQ(sculpt->inputs.front(), 2u);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    const model::Entity& target = *model.find(sculpt->inputs[1]);
+    // The plane went where the jack was dragged (the pointer reaches it within a few pixels)
+    EXPECT_NEAR(model.find(1)->frame.origin.y(), -25.0, kPointerSlack);
+    // The target moved with it, and the cap passes through it: its key points exactly, the curve
+    // between them within half a millimetre (the solve meets key points; in between the surface's
+    // own smoothness decides)
+    EXPECT_NEAR(target.world->evaluate(0.5 * (target.world->domainStart() + target.world->domainEnd())).y(), -25.0, kPointerSlack);
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    EXPECT_LT(guitest::curveToSurface(*target.world, *sculpt->surface), 0.5);
+    // The crest is about as high as the arch; the base sheet stayed flat
+    double top = 0.0;
+    for (const Eigen::Vector3d& p : sculpt->surface->points()) top = std::max(top, p.z());
+    EXPECT_GT(top, 25.0);
+    for (const Eigen::Vector3d& p : model.find(2)->surface->points()) EXPECT_EQ(p.z(), 0.0);
+}
+
 }  // namespace sculptline
