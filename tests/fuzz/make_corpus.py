@@ -188,5 +188,12 @@ write("plan", "constraints", {"document": {
                     {"type": "curve-on-surface", "targets": [3, 4]},
                     {"type": "smoothing", "targets": [4], "weight": 0.5},
                     {"type": "normal", "targets": [4], "uv": [0.5, 0.5], "value": [0, 0, 1]}]}})
+# A sculpt: a flat sheet deformed onto an arch on a vertical plane (data/models/sculpt_start.json).
+sculpt_doc = load("data/models/sculpt_start.json")
+sculpt_doc["curves"] = [dict(clamped([[-60, -60], [-20, -30], [20, -30], [60, -60]]), id=3, plane=1)]
+sculpt_doc["surfaces"].append({"id": 4, "construction": {"mode": "sculpt", "base": 2, "curves": [3], "stiffness": 0.8,
+                                                         "objective": "displacement"}})
+write("document", "sculpt", sculpt_doc)
+write("plan", "sculpt", {"document": sculpt_doc})
 write("network", "square", {"curves": sq, "loops": [[0, 1, 2, 3]], "fairing": 2})
 write("network", "closed_ring", {"curves": [ring(1, 0)], "loops": [[0]], "edge_length": 0.2})
