@@ -4,10 +4,12 @@
 
 #include <QListWidget>
 #include <QPlainTextEdit>
+#include <QSlider>
 #include <QVBoxLayout>
 #include <QTextStream>
 
 #include <algorithm>
+#include <cmath>
 
 namespace sculptline::ui {
 namespace {
@@ -43,6 +45,19 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
         }
         Q_EMIT fixedPointsEdited(curve_, fixed);
     });
+    // Thesis eq. 6-20, Fig. 6-8 (λ = 1, 0.8, 0.5): how far a sculpt goes to its targets. One undo
+    // step per release (no tracking), 5 % to 100 %.
+    stiffness_ = new QSlider(Qt::Horizontal, box);
+    stiffness_->setObjectName(QStringLiteral("inspector.stiffness"));
+    stiffness_->setRange(5, 100);
+    stiffness_->setTracking(false);
+    stiffness_->setToolTip(tr("Stiffness: how far the sculpted surface goes to its target curves"));
+    stiffness_->setVisible(false);
+    layout->addWidget(stiffness_);
+    connect(stiffness_, &QSlider::valueChanged, this, [this](int percent) {
+        if (filling_ || sculpt_ == 0) return;
+        Q_EMIT stiffnessEdited(sculpt_, percent / 100.0);
+    });
     plot_ = new CurvaturePlot(box);
     layout->addWidget(plot_);
     setWidget(box);
@@ -55,6 +70,9 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
     const model::Entity* e = model.find(id);
     plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e->world : std::nullopt);
     filling_ = true;
+    sculpt_ = e && e->recipe && e->recipe->mode == model::Construction::Sculpt ? id : 0;
+    stiffness_->setVisible(sculpt_ != 0);
+    if (sculpt_ != 0) stiffness_->setValue(static_cast<int>(std::lround(100.0 * e->recipe->stiffness)));
     points_->clear();
     curve_ = e && e->kind == model::EntityKind::Curve ? id : 0;
     points_->setVisible(curve_ != 0);

@@ -9,6 +9,7 @@
 #include <vector>
 
 class QListWidget;
+class QSlider;
 class QPlainTextEdit;
 
 namespace sculptline::ui {
@@ -27,15 +28,21 @@ public:
     QString text() const;
     /// The control point list (one checkable item per unique point of the selected curve).
     QListWidget* pointList() const { return points_; }
+    /// A selected sculpt's stiffness λ in percent (thesis eq. 6-20), hidden for anything else.
+    QSlider* stiffnessSlider() const { return stiffness_; }
 
 Q_SIGNALS:
     /// The designer checked or unchecked a control point of `curve`: `fixed` is the new set.
     void fixedPointsEdited(model::EntityId curve, std::vector<int> fixed);
+    /// The designer set a sculpt's stiffness λ in (0, 1] (released the slider).
+    void stiffnessEdited(model::EntityId surface, double stiffness);
 
 private:
     QPlainTextEdit* text_ = nullptr;
     QListWidget* points_ = nullptr;
     model::EntityId curve_ = 0;  ///< the curve whose points the list shows
+    QSlider* stiffness_ = nullptr;
+    model::EntityId sculpt_ = 0;  ///< the sculpt whose stiffness the slider shows
     bool filling_ = false;
     CurvaturePlot* plot_ = nullptr;
 };

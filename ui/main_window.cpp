@@ -256,6 +256,8 @@ void MainWindow::createDocks()
     addDockWidget(Qt::LeftDockWidgetArea, recognition_);
     connect(inspector_, &InspectorDock::fixedPointsEdited, this,
             [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
+    connect(inspector_, &InspectorDock::stiffnessEdited, this,
+            [this](model::EntityId surface, double stiffness) { document_->setSculptStiffness(surface, stiffness); });
     connect(entities_, &EntityListDock::entityPicked, this, [this](model::EntityId id) { document_->select(id); });
 }
 

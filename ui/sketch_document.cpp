@@ -10,6 +10,8 @@
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include <cmath>
+
 namespace sculptline::ui {
 
 SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
@@ -166,6 +168,15 @@ void SketchDocument::setSculptBase(model::EntityId surface)
 {
     const model::Entity* e = model_.find(surface);
     sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
+}
+
+void SketchDocument::setSculptStiffness(model::EntityId surface, double stiffness)
+{
+    const model::Entity* e = model_.find(surface);
+    if (!e || !e->recipe || e->recipe->mode != model::Construction::Sculpt || e->recipe->stiffness == stiffness) return;
+    model::SurfaceRecipe after = *e->recipe;
+    after.stiffness = stiffness;
+    undo_.push(new SetRecipeCommand(*this, surface, *e->recipe, after, tr("Sculpt stiffness %1 %").arg(std::lround(100 * stiffness))));
 }
 
 void SketchDocument::toggleSelectionFixed()

@@ -91,6 +91,8 @@ public:
     enum class StrokeMode { Sketch, Oversketch, Lift, Sculpt };
     /// Sculpt: the surface the next target curve deforms (0 = none, or not a surface).
     void setSculptBase(model::EntityId surface);
+    /// Sets a sculpt's stiffness λ (undoable); the surface is solved again.
+    void setSculptStiffness(model::EntityId surface, double stiffness);
     model::EntityId sculptBase() const { return sculptBase_; }
     void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
     StrokeMode strokeMode() const { return strokeMode_; }

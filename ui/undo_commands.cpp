@@ -72,6 +72,20 @@ void AddConstraintCommand::undo()
     doc_.notifyChanged();
 }
 
+SetRecipeCommand::SetRecipeCommand(SketchDocument& doc, model::EntityId surface, model::SurfaceRecipe before,
+                                   model::SurfaceRecipe after, const QString& text)
+    : doc_(doc), surface_(surface), before_(std::move(before)), after_(std::move(after))
+{
+    setText(text);
+}
+
+void SetRecipeCommand::apply(const model::SurfaceRecipe& recipe)
+{
+    doc_.model().setSurfaceRecipe(surface_, recipe);
+    doc_.scheduler().flush();
+    doc_.notifyChanged();
+}
+
 RemoveConstraintCommand::RemoveConstraintCommand(SketchDocument& doc, model::Constraint constraint)
     : doc_(doc), constraint_(std::move(constraint))
 {

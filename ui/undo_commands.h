@@ -56,6 +56,22 @@ private:
     model::Constraint constraint_;
 };
 
+/// A surface's new recipe (a sculpt's stiffness); the surface is rebuilt with it.
+class SetRecipeCommand : public QUndoCommand {
+public:
+    SetRecipeCommand(SketchDocument& doc, model::EntityId surface, model::SurfaceRecipe before, model::SurfaceRecipe after,
+                     const QString& text);
+    void redo() override { apply(after_); }
+    void undo() override { apply(before_); }
+
+private:
+    void apply(const model::SurfaceRecipe& recipe);
+
+    SketchDocument& doc_;
+    model::EntityId surface_;
+    model::SurfaceRecipe before_, after_;
+};
+
 /// Removes one of the designer's constraints; undo restores it under its id.
 class RemoveConstraintCommand : public QUndoCommand {
 public:

@@ -299,6 +299,19 @@ TEST(MainWindow, SculptModeDeformsTheSelectedSurfaceOntoAStrokeAndUndoRestoresIt
     EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("sculpted"))) << doc.lastStroke().message.toStdString();
     // And the next stroke deforms the sculpt further
     EXPECT_EQ(doc.sculptBase(), sculpt->id);
+    // And the inspector's stiffness slider (eq. 6-20) takes the sculpt half way, undoably
+    QApplication::processEvents();
+    auto* inspector = window.findChild<InspectorDock*>();
+    ASSERT_NE(inspector, nullptr);
+    ASSERT_TRUE(inspector->stiffnessSlider()->isVisible());
+    EXPECT_EQ(inspector->stiffnessSlider()->value(), 100);
+    const std::vector<Eigen::Vector3d> full = sculpt->surface->points();
+    inspector->stiffnessSlider()->setValue(50);
+    EXPECT_EQ(doc.model().find(sculpt->id)->recipe->stiffness, 0.5);
+    const std::vector<Eigen::Vector3d>& half = doc.model().find(sculpt->id)->surface->points();
+    for (size_t k = 0; k < full.size(); ++k) EXPECT_LT(((half[k] - before[k]) - 0.5 * (full[k] - before[k])).norm(), 1e-9) << k;
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.model().find(sculpt->id)->recipe->stiffness, 1.0);
     // And undo takes the sculpt and its curve away
     const model::EntityId id = sculpt->id;
     doc.undoStack()->undo();
