@@ -454,5 +454,34 @@ TEST(Sculpt, StiffnessMovesTheSurfaceThatShareOfTheWay)
     EXPECT_THROW(full.model.addSurface({full.target, full.target}, recipe), std::invalid_argument);  // no base
 }
 
+TEST(Sculpt, AChangedBaseIsSculptedAnewAndStillMeetsTheTarget)
+{
+    // Given a sculpt whose base is a loft of two curves (the LoftScene), onto a target on the other plane
+    LoftScene s;
+    const EntityId plane = s.model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d(0, 0, 30), Eigen::Vector3d::UnitY(), 150));
+    const PlaneFrame& f = s.model.find(plane)->frame;
+    std::vector<Eigen::Vector3d> local;
+    for (int i = 0; i < 4; ++i) {
+        Eigen::Vector3d p = f.toLocal(Eigen::Vector3d(-30 + 20 * i, 0, 30 + 6 * std::sin(i)));
+        p.z() = 0;
+        local.push_back(p);
+    }
+    const EntityId target = s.model.addCurve(plane, cubic(local));
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    const EntityId sculpt = s.model.addSurface({s.loft, target}, recipe);
+    ASSERT_FALSE(s.model.find(sculpt)->failed()) << s.model.find(sculpt)->buildError;
+    const std::vector<Eigen::Vector3d> first = s.model.find(sculpt)->surface->points();
+    // When the base's first curve is redrawn (its loft rebuilt)
+    s.model.setCurveShape(s.a, wave(-30));
+    s.model.update();
+    // Then the sculpt is solved again on the new base, and still passes through its target's key points
+    const Entity& again = *s.model.find(sculpt);
+    EXPECT_FALSE(again.failed()) << again.buildError;
+    EXPECT_NE(again.surface->points(), first);
+    EXPECT_LT(again.maxDeviation, 1e-6);
+    EXPECT_EQ(again.recomputations, 1);
+}
+
 }  // namespace
 }  // namespace sculptline::model
