@@ -56,23 +56,6 @@ std::vector<double> grid(int n)
     return t;
 }
 
-double forceChange(const Surface3d& before, const Surface3d& after)
-{
-    double sum = 0.0;
-    const int nu = before.countU(), nv = before.countV();
-    auto d = [&](int i, int j) { return Eigen::Vector3d(after.point(i, j) - before.point(i, j)); };
-    for (int i = 0; i < nu; ++i) {
-        for (int j = 0; j < nv; ++j) {
-            Eigen::Vector3d f = Eigen::Vector3d::Zero();
-            if (i > 0) f += d(i, j) - d(i - 1, j);
-            if (i + 1 < nu) f += d(i, j) - d(i + 1, j);
-            if (j > 0) f += d(i, j) - d(i, j - 1);
-            if (j + 1 < nv) f += d(i, j) - d(i, j + 1);
-            sum += f.squaredNorm();
-        }
-    }
-    return std::sqrt(sum);
-}
 
 DeformationOptions withObjective(int objective)
 {

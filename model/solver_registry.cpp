@@ -304,7 +304,7 @@ public:
             auto solver = std::make_unique<solvers::deformation::SurfaceDeformationSolver>();
             solver->factor(*p.base, p.constraints, p.options);
             solver_ = std::move(solver);
-            base_ = p.base->points();
+            baseVersion_ = model.find(e.inputs.front())->shapeVersion;
         } catch (const std::exception&) {
             solver_.reset();  // it cannot be solved as it is: each solve then tries afresh
         }
@@ -316,8 +316,9 @@ public:
             try {
                 const SculptProblem p = sculptProblem(model, e);
                 solvers::deformation::DeformationReport report;
-                // The factorization holds while the base stays; a moved base is set up again.
-                if (solver_ && id == surface_ && p.base->points() == base_) {
+                // The factorization holds while the base stays (its shape version, bumped by each
+                // rebuild); a rebuilt base is solved afresh.
+                if (solver_ && id == surface_ && model.find(e.inputs.front())->shapeVersion == baseVersion_) {
                     storeSculpt(e, solver_->solve(p.constraints, &report), report);
                 } else {
                     storeSculpt(e, solvers::deformation::deformSurface(*p.base, p.constraints, p.options, &report), report);
@@ -332,7 +333,7 @@ public:
 private:
     EntityId surface_ = 0;
     std::unique_ptr<solvers::deformation::SurfaceDeformationSolver> solver_;
-    std::vector<Eigen::Vector3d> base_;
+    int baseVersion_ = -1;
 };
 
 /// network-mesh: the loop is triangulated afresh (no set-up to keep).
@@ -448,13 +449,6 @@ std::string SolverRegistry::choose(const Model& model, const PlanStep& step) con
     if (e->kind == EntityKind::Curve && pins) return "least-change";
     if (e->kind == EntityKind::Curve && placement) return "placement";
     return "unsolved";
-}
-
-std::vector<std::string> SolverRegistry::keys() const
-{
-    std::vector<std::string> out;
-    for (const auto& [key, factory] : factories_) out.push_back(key);
-    return out;
 }
 
 bool SolverRegistry::caches(const std::string& key) const { return key == "surface-builder" || key == "deformation"; }

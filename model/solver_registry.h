@@ -66,7 +66,6 @@ public:
     std::unique_ptr<StepSolver> make(const std::string& key) const;
     /// The key of the solver for `step` of `model`'s plan: what the step solves decides it.
     std::string choose(const Model& model, const PlanStep& step) const;
-    std::vector<std::string> keys() const;
     /// Solvers whose factor() pays off across a drag (the others are made per event).
     bool caches(const std::string& key) const;
 

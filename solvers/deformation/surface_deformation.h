@@ -142,6 +142,11 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
 /// linearized rows are (a collapsed tangent under a Normal constraint, distance steps not converged).
 void flagUnmet(const Surface3d& surface, const std::vector<SurfaceConstraint>& constraints, DeformationReport& report);
 
+/// ‖K d‖ of the change from `before` to `after` (same net): the change of the bar network's external
+/// forces with unit force densities, K the net's graph Laplacian (4-neighbours) — what the Force
+/// objective minimizes, and the smoothness measure of the benchmarks and tests (lower is smoother).
+double forceChange(const Surface3d& before, const Surface3d& after);
+
 /// Most key points one Curve or CurveTangent constraint uses (eq. 6-24's count is capped here: a
 /// wildly turning target would otherwise ask for thousands of rows, each 3 dense rows of F).
 constexpr int kMaxKeyPoints = 256;

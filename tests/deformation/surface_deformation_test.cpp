@@ -59,24 +59,6 @@ double maxChange(const Surface3d& a, const Surface3d& b)
     return worst;
 }
 
-// ‖K d‖ of the change: the external-force change of the bar net with unit force densities.
-double forceChange(const Surface3d& before, const Surface3d& after)
-{
-    const int nu = before.countU(), nv = before.countV();
-    double sum = 0.0;
-    auto d = [&](int i, int j) { return Eigen::Vector3d(after.point(i, j) - before.point(i, j)); };
-    for (int i = 0; i < nu; ++i) {
-        for (int j = 0; j < nv; ++j) {
-            Eigen::Vector3d f = Eigen::Vector3d::Zero();
-            if (i > 0) f += d(i, j) - d(i - 1, j);
-            if (i + 1 < nu) f += d(i, j) - d(i + 1, j);
-            if (j > 0) f += d(i, j) - d(i, j - 1);
-            if (j + 1 < nv) f += d(i, j) - d(i, j + 1);
-            sum += f.squaredNorm();
-        }
-    }
-    return std::sqrt(sum);
-}
 
 }  // namespace
 
