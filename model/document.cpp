@@ -107,6 +107,87 @@ int entityId(const json& j, const std::string& path, std::set<int>& used)
 
 /// A surface's optional "construction"; its curves must be curves of `doc` with smaller ids than
 /// the surface's (inputs are created first).
+Eigen::Vector2d uvFromJson(const json& j, const std::string& path)
+{
+    if (!j.is_array() || j.size() != 2) throw io::InputError(path + ": expected [u, v]");
+    return {io::numberFromJson(j[0], path + "[0]"), io::numberFromJson(j[1], path + "[1]")};
+}
+
+/// A sculpt's handles, bound, blocked points, distances and curve tangents (model/surface_recipe.h):
+/// "points": [{"point": id, "uv": [u, v], "normal"?: bool}] (the points join the inputs after the
+/// target curves), "bound": [[u, v]..], "blocked": [[i, j]..], "distances": [{"uv", "uv2",
+/// "value"}], "curve_tangents": [{"curve": target curve id, "direction": [x, y, z]}].
+void sculptFromJson(const json& construction, const std::string& at, int surfaceId, const SceneDocument& doc,
+                    SceneDocument::ConstructedSurface& c)
+{
+    SurfaceRecipe& r = c.recipe;
+    auto array = [&](const char* name) -> const json* {
+        const auto it = construction.find(name);
+        if (it == construction.end()) return nullptr;
+        if (!it->is_array()) throw io::InputError(at + "." + name + ": expected an array");
+        return &*it;
+    };
+    if (const json* points = array("points")) {
+        for (size_t k = 0; k < points->size(); ++k) {
+            const std::string field = at + ".points[" + std::to_string(k) + "]";
+            const json& h = (*points)[k];
+            if (!h.is_object()) throw io::InputError(field + ": expected {\"point\", \"uv\"}");
+            SurfaceRecipe::Handle handle;
+            const int id = io::integerFromJson(io::member(h, "point", field), field + ".point", 1, 1 << 30);
+            if (std::none_of(doc.points.begin(), doc.points.end(), [id](const SceneDocument::PointSpec& p) { return p.id == id; }))
+                throw io::InputError(field + ".point: no point has id " + std::to_string(id));
+            if (surfaceId != 0 && id >= surfaceId) throw io::InputError(field + ".point: must be smaller than the surface's id");
+            if (std::find(c.curves.begin(), c.curves.end(), id) != c.curves.end()) throw io::InputError(field + ".point: named twice");
+            handle.point = static_cast<std::uint32_t>(id);
+            handle.uv = uvFromJson(io::member(h, "uv", field), field + ".uv");
+            if (const auto n = h.find("normal"); n != h.end()) {
+                if (!n->is_boolean()) throw io::InputError(field + ".normal: expected true or false");
+                handle.holdNormal = n->get<bool>();
+            }
+            r.handles.push_back(handle);
+            c.curves.push_back(id);
+        }
+    }
+    if (const json* bound = array("bound")) {
+        if (bound->size() < 3 || bound->size() > 4096) throw io::InputError(at + ".bound: a closed polygon of 3 to 4096 points [u, v]");
+        for (size_t k = 0; k < bound->size(); ++k) r.bound.push_back(uvFromJson((*bound)[k], at + ".bound[" + std::to_string(k) + "]"));
+    }
+    if (const json* blocked = array("blocked")) {
+        for (size_t k = 0; k < blocked->size(); ++k) {
+            const std::string field = at + ".blocked[" + std::to_string(k) + "]";
+            if (!(*blocked)[k].is_array() || (*blocked)[k].size() != 2) throw io::InputError(field + ": expected [i, j]");
+            r.blocked.push_back({io::integerFromJson((*blocked)[k][0], field + "[0]", 0, 1 << 20),
+                                 io::integerFromJson((*blocked)[k][1], field + "[1]", 0, 1 << 20)});
+        }
+    }
+    if (const json* distances = array("distances")) {
+        for (size_t k = 0; k < distances->size(); ++k) {
+            const std::string field = at + ".distances[" + std::to_string(k) + "]";
+            const json& d = (*distances)[k];
+            SurfaceRecipe::Distance spec;
+            spec.uv = uvFromJson(io::member(d, "uv", field), field + ".uv");
+            spec.uv2 = uvFromJson(io::member(d, "uv2", field), field + ".uv2");
+            spec.distance = io::numberFromJson(io::member(d, "value", field), field + ".value");
+            if (!(spec.distance >= 0.0)) throw io::InputError(field + ".value: a distance must be >= 0");
+            r.distances.push_back(spec);
+        }
+    }
+    if (const json* tangents = array("curve_tangents")) {
+        for (size_t k = 0; k < tangents->size(); ++k) {
+            const std::string field = at + ".curve_tangents[" + std::to_string(k) + "]";
+            const json& t = (*tangents)[k];
+            SurfaceRecipe::CurveTangent spec;
+            const int id = io::integerFromJson(io::member(t, "curve", field), field + ".curve", 1, 1 << 30);
+            if (std::find(c.curves.begin() + 1, c.curves.end(), id) == c.curves.end())
+                throw io::InputError(field + ".curve: curve " + std::to_string(id) + " is not one of this sculpt's target curves");
+            spec.curve = static_cast<std::uint32_t>(id);
+            spec.direction = io::pointFromJson(io::member(t, "direction", field), field + ".direction");
+            if (spec.direction.norm() == 0.0) throw io::InputError(field + ".direction: must not be the zero vector");
+            r.curveTangents.push_back(spec);
+        }
+    }
+}
+
 std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json& surface, const std::string& path,
                                                                       int surfaceId, const SceneDocument& doc)
 {
@@ -147,6 +228,7 @@ std::optional<SceneDocument::ConstructedSurface> constructionFromJson(const json
         if (surfaceId != 0 && id >= surfaceId) throw io::InputError(field + ": must be smaller than the surface's id");
         c.curves.push_back(id);
     }
+    if (info.baseSurface) sculptFromJson(*it, at, surfaceId, doc, c);
     const int n = static_cast<int>(c.curves.size());
     if (info.options & kStiffnessOption) {
         if (const auto s = it->find("stiffness"); s != it->end()) {
@@ -258,6 +340,27 @@ SceneDocument documentFromJson(const json& j)
             throw io::InputError(path + ".id: must be greater than its plane's id");
         }
     }
+    const json& points = optionalArray(j, "points");
+    for (size_t i = 0; i < points.size(); ++i) {
+        const std::string path = "points[" + std::to_string(i) + "]";
+        if (!points[i].is_object()) throw io::InputError(path + ": must be an object");
+        SceneDocument::PointSpec spec;
+        spec.id = entityId(points[i], path, usedIds);
+        if (spec.id == 0) throw io::InputError(path + ".id: a point needs an id (sculpts name their points)");
+        spec.position = io::pointFromJson(io::member(points[i], "position", path), path + ".position");
+        checkExtent(spec.position, path + ".position");
+        if (const auto r = points[i].find("rotation"); r != points[i].end()) {
+            if (!r->is_array() || r->size() != 4) throw io::InputError(path + ".rotation: expected [x, y, z, w]");
+            Eigen::Quaterniond q;
+            q.x() = io::numberFromJson((*r)[0], path + ".rotation[0]");
+            q.y() = io::numberFromJson((*r)[1], path + ".rotation[1]");
+            q.z() = io::numberFromJson((*r)[2], path + ".rotation[2]");
+            q.w() = io::numberFromJson((*r)[3], path + ".rotation[3]");
+            if (q.norm() < 1e-6) throw io::InputError(path + ".rotation: not a rotation (a zero quaternion)");
+            spec.rotation = q.normalized();
+        }
+        doc.points.push_back(spec);
+    }
     const json& surfaces = optionalArray(j, "surfaces");
     for (size_t i = 0; i < surfaces.size(); ++i) {
         const std::string path = "surfaces[" + std::to_string(i) + "]";
@@ -296,6 +399,7 @@ SceneDocument documentFromJson(const json& j)
     for (int id : doc.surfaceIds) kinds[id] = EntityKind::Surface;
     for (const SceneDocument::ConstructedSurface& c : doc.constructed) kinds[c.id] = EntityKind::Surface;
     for (const SceneDocument::MeshSpec& m : doc.meshes) kinds[m.id] = EntityKind::Mesh;
+    for (const SceneDocument::PointSpec& p : doc.points) kinds[p.id] = EntityKind::Point;
     kinds.erase(0);  // entities without an id cannot be named
     auto entityList = [&](const json& c, const char* name, const std::string& path) {
         std::vector<int> ids;
@@ -383,6 +487,7 @@ SceneDocument documentFromJson(const json& j)
         else doc.surfaceStates.push_back(fixed);
     }
     for (size_t i = 0; i < meshes.size(); ++i) doc.meshes[i].fixed = readState(meshes[i], "meshes[" + std::to_string(i) + "]");
+    for (size_t i = 0; i < points.size(); ++i) doc.points[i].fixed = readState(points[i], "points[" + std::to_string(i) + "]");
     return doc;
 }
 

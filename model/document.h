@@ -74,6 +74,15 @@ struct SceneDocument {
     std::vector<bool> curveStates;
     std::vector<bool> surfaceStates;
     std::vector<MeshSpec> meshes;
+    /// Points (a sculpt's handles): {"id", "position": [x, y, z], "rotation"?: [x, y, z, w],
+    /// "state"?}; ids are required (a sculpt names its points).
+    struct PointSpec {
+        int id = 0;
+        Eigen::Vector3d position = Eigen::Vector3d::Zero();
+        Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+        bool fixed = false;
+    };
+    std::vector<PointSpec> points;
 };
 
 /// The document format this program writes: "format": "sculptline", "version": kDocumentVersion.

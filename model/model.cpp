@@ -127,13 +127,27 @@ EntityId Model::addSurface(const solvers::Surface3d& surface, EntityId id)
     return insert(std::move(e), id);
 }
 
-EntityId Model::addPoint(const Eigen::Vector3d& position, EntityId id)
+EntityId Model::addPoint(const Eigen::Vector3d& position, EntityId id, const Eigen::Quaterniond& rotation)
 {
     if (!position.allFinite()) throw std::invalid_argument("a point must have finite coordinates");
+    if (!rotation.coeffs().allFinite() || rotation.norm() == 0.0) throw std::invalid_argument("a point's rotation must be a finite non-zero quaternion");
     Entity e;
     e.kind = EntityKind::Point;
     e.position = position;
+    e.rotation = rotation.normalized();
     return insert(std::move(e), id);
+}
+
+void Model::setPointPose(EntityId point, const Eigen::Vector3d& position, const Eigen::Quaterniond& rotation)
+{
+    auto it = entities_.find(point);
+    if (it == entities_.end() || it->second.kind != EntityKind::Point || it->second.fixed) return;
+    if (!position.allFinite() || !rotation.coeffs().allFinite() || rotation.norm() == 0.0) return;
+    const Eigen::Quaterniond r = rotation.normalized();
+    if (it->second.position == position && it->second.rotation.coeffs() == r.coeffs()) return;
+    it->second.position = position;
+    it->second.rotation = r;
+    markDirty(point);
 }
 
 void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const
@@ -150,9 +164,12 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
     for (size_t k = 0; k < curves.size(); ++k) {
         const Entity* e = find(curves[k]);
         const EntityKind want = k == 0 && info.baseSurface ? EntityKind::Surface : EntityKind::Curve;
-        if (!e || e->kind != want)
+        // A sculpt's targets are curves and handle points.
+        const bool handle = info.baseSurface && k > 0 && e && e->kind == EntityKind::Point;
+        if (!e || (e->kind != want && !handle))
             throw std::invalid_argument("entity " + std::to_string(curves[k]) + " is not a " + kindName(want));
     }
+    checkSculptRecipe(curves, recipe);
     if (info.options & kStiffnessOption) {
         if (!(recipe.stiffness > 0.0 && recipe.stiffness <= 1.0)) throw std::invalid_argument("stiffness: must be in (0, 1]");
     }
@@ -161,6 +178,48 @@ void Model::checkSurfaceInputs(const std::vector<EntityId>& curves, const Surfac
         if (!(info.options & kTangentsOption)) throw std::invalid_argument("only a fill can be tangent to other surfaces");
         if (t.boundary < 0 || t.boundary >= n) throw std::invalid_argument("tangent boundary " + std::to_string(t.boundary) + " is not a boundary");
         if (!s || s->kind != EntityKind::Surface) throw std::invalid_argument("entity " + std::to_string(t.surface) + " is not a surface");
+    }
+}
+
+void Model::checkSculptRecipe(const std::vector<EntityId>& inputs, const SurfaceRecipe& r) const
+{
+    const bool sculpt = describe(r.mode).baseSurface;
+    if (!sculpt) {
+        if (!r.handles.empty() || !r.bound.empty() || !r.blocked.empty() || !r.distances.empty() || !r.curveTangents.empty())
+            throw std::invalid_argument(std::string("only a sculpt takes handles, a bound, blocked points, distances or curve tangents, not ") +
+                                        constructionName(r.mode));
+        return;
+    }
+    auto isInput = [&](EntityId id, EntityKind kind) {
+        const Entity* e = find(id);
+        return e && e->kind == kind && std::find(inputs.begin() + 1, inputs.end(), id) != inputs.end();
+    };
+    auto finiteUv = [](const Eigen::Vector2d& uv) { return uv.allFinite(); };
+    std::set<EntityId> handled;
+    for (size_t k = 0; k < r.handles.size(); ++k) {
+        const SurfaceRecipe::Handle& h = r.handles[k];
+        const std::string at = "handles[" + std::to_string(k) + "]";
+        if (!isInput(h.point, EntityKind::Point)) throw std::invalid_argument(at + ": entity " + std::to_string(h.point) + " is not one of the sculpt's points");
+        if (!handled.insert(h.point).second) throw std::invalid_argument(at + ": point " + std::to_string(h.point) + " has two handles");
+        if (!finiteUv(h.uv)) throw std::invalid_argument(at + ".uv: not a finite number");
+    }
+    for (size_t k = 1; k < inputs.size(); ++k) {
+        const Entity* e = find(inputs[k]);
+        if (e && e->kind == EntityKind::Point && !handled.count(inputs[k]))
+            throw std::invalid_argument("point " + std::to_string(inputs[k]) + " has no handle (where on the surface it pulls)");
+    }
+    if (!r.bound.empty() && r.bound.size() < 3) throw std::invalid_argument("bound: a closed bound needs 3 points or more, got " + std::to_string(r.bound.size()));
+    if (!std::all_of(r.bound.begin(), r.bound.end(), finiteUv)) throw std::invalid_argument("bound: not a finite number");
+    for (const auto& b : r.blocked) {
+        if (b[0] < 0 || b[1] < 0) throw std::invalid_argument("blocked: negative control point index");
+    }
+    for (const SurfaceRecipe::Distance& d : r.distances) {
+        if (!finiteUv(d.uv) || !finiteUv(d.uv2) || !std::isfinite(d.distance) || d.distance < 0.0)
+            throw std::invalid_argument("distances: two finite (u, v) and a finite distance >= 0 are needed");
+    }
+    for (const SurfaceRecipe::CurveTangent& t : r.curveTangents) {
+        if (!isInput(t.curve, EntityKind::Curve)) throw std::invalid_argument("curve tangent: entity " + std::to_string(t.curve) + " is not one of the sculpt's target curves");
+        if (!t.direction.allFinite() || t.direction.norm() == 0.0) throw std::invalid_argument("curve tangent: the direction must be a finite non-zero vector");
     }
 }
 
@@ -264,7 +323,7 @@ EntityId Model::restore(const Entity& e)
     case EntityKind::Plane: id = addPlane(e.frame, e.id); break;
     case EntityKind::Curve: id = addCurve(e.plane(), *e.local, e.id); break;
     case EntityKind::Mesh: id = addMesh(e.inputs, e.id, true); break;
-    case EntityKind::Point: id = addPoint(e.position, e.id); break;
+    case EntityKind::Point: id = addPoint(e.position, e.id, e.rotation); break;
     case EntityKind::Surface:
         id = e.recipe ? restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : addSurface(*e.surface, e.id);
         break;

@@ -56,6 +56,11 @@ struct Entity {
     std::optional<SurfaceRecipe> recipe;
     /// Point: where it is, world coordinates.
     Eigen::Vector3d position = Eigen::Vector3d::Zero();
+    /// Point: how it is turned from where it was made (a sculpt handle tilts the normal by it).
+    Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    /// Surface: what the solver remarked on its last build although it succeeded (a compromise
+    /// between conflicting constraints, a target outside the bound); empty when nothing.
+    std::string solveMessage;
     /// Surface, mesh: why the last rebuild failed (the curves no longer meet, ...), empty when it
     /// succeeded; the last good surface is kept meanwhile. A surface whose build never succeeded
     /// (a document whose construction cannot be rebuilt) has no `surface` at all.
@@ -135,8 +140,13 @@ public:
     /// curve when plane = 0. @throws std::invalid_argument when `plane` is not a plane.
     EntityId addCurve(EntityId plane, const solvers::Curve3d& local, EntityId id = 0);
     EntityId addSurface(const solvers::Surface3d& surface, EntityId id = 0);
-    /// Adds a point (world coordinates). @throws std::invalid_argument when it is not finite.
-    EntityId addPoint(const Eigen::Vector3d& position, EntityId id = 0);
+    /// Adds a point (world coordinates), turned by `rotation` (normalized).
+    /// @throws std::invalid_argument when it is not finite or the rotation is zero.
+    EntityId addPoint(const Eigen::Vector3d& position, EntityId id = 0,
+                      const Eigen::Quaterniond& rotation = Eigen::Quaterniond::Identity());
+    /// Moves and turns a point: marks it changed (a sculpt handle's dragger). A fixed point, or a
+    /// non-finite or zero pose, is refused (the point stays).
+    void setPointPose(EntityId point, const Eigen::Vector3d& position, const Eigen::Quaterniond& rotation);
     /// Adds a surface built from `curves` (world forms) by `recipe`, rebuilt whenever one of them
     /// changes. When the first build fails, `saved` (the surface as it was saved or before an undo)
     /// stands in with buildError set; without it nothing is added.
@@ -274,6 +284,10 @@ private:
     void recompute(Entity& entity);
     /// @throws std::invalid_argument when `curves` do not fit `recipe` (count, kinds).
     void checkSurfaceInputs(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
+    /// A sculpt's handles, bound, blocked points, distances and curve tangents against its inputs
+    /// (one handle per point input, finite values, a bound of three points or more).
+    /// @throws std::invalid_argument saying what does not fit.
+    void checkSculptRecipe(const std::vector<EntityId>& inputs, const SurfaceRecipe& recipe) const;
     /// A surface entity over `curves` with `recipe`, checked but not built yet.
     Entity unbuiltSurface(const std::vector<EntityId>& curves, const SurfaceRecipe& recipe) const;
     void markDirty(EntityId id);

@@ -22,7 +22,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface, Constructed, Mesh };
+    enum class Kind { Plane, Curve, Surface, Constructed, Mesh, Point };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -40,6 +40,7 @@ void populateModel(const SceneDocument& doc, Model& model)
         if (doc.meshes[i].id != 0) byId[doc.meshes[i].id] = {Kind::Mesh, i};
         else unnumbered.push_back({Kind::Mesh, i});
     }
+    for (size_t i = 0; i < doc.points.size(); ++i) byId[doc.points[i].id] = {Kind::Point, i};
     for (size_t i = 0; i < doc.constructed.size(); ++i) {
         if (doc.constructed[i].id != 0) byId[doc.constructed[i].id] = {Kind::Constructed, i};
         else unnumbered.push_back({Kind::Constructed, i});
@@ -63,6 +64,10 @@ void populateModel(const SceneDocument& doc, Model& model)
         case Kind::Surface:
             made = model.addSurface(doc.surfaces[i], id);
             fixed = flag(doc.surfaceStates, i);
+            break;
+        case Kind::Point:
+            made = model.addPoint(doc.points[i].position, id, doc.points[i].rotation);
+            fixed = doc.points[i].fixed;
             break;
         case Kind::Mesh: {
             const std::vector<EntityId> curves(doc.meshes[i].curves.begin(), doc.meshes[i].curves.end());
@@ -98,10 +103,41 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.update();
 }
 
+namespace {
+
+/// The sculpt's handles, bound, blocked points, distances and curve tangents, as the reader takes them.
+void sculptToJson(const Model&, const SurfaceRecipe& r, json& c)
+{
+    auto uv = [](const Eigen::Vector2d& p) { return json::array({p.x(), p.y()}); };
+    if (!r.handles.empty()) {
+        json handles = json::array();
+        for (const SurfaceRecipe::Handle& h : r.handles) handles.push_back({{"point", h.point}, {"uv", uv(h.uv)}, {"normal", h.holdNormal}});
+        c["points"] = std::move(handles);
+    }
+    if (!r.bound.empty()) {
+        json bound = json::array();
+        for (const Eigen::Vector2d& p : r.bound) bound.push_back(uv(p));
+        c["bound"] = std::move(bound);
+    }
+    if (!r.blocked.empty()) c["blocked"] = r.blocked;
+    if (!r.distances.empty()) {
+        json distances = json::array();
+        for (const SurfaceRecipe::Distance& d : r.distances) distances.push_back({{"uv", uv(d.uv)}, {"uv2", uv(d.uv2)}, {"value", d.distance}});
+        c["distances"] = std::move(distances);
+    }
+    if (!r.curveTangents.empty()) {
+        json tangents = json::array();
+        for (const SurfaceRecipe::CurveTangent& t : r.curveTangents) tangents.push_back({{"curve", t.curve}, {"direction", io::toJson(t.direction)}});
+        c["curve_tangents"] = std::move(tangents);
+    }
+}
+
+}  // namespace
+
 json modelToJson(const Model& model, const GridSpec& grid)
 {
     json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array(),
-         meshes = json::array();
+         meshes = json::array(), points = json::array();
     for (const auto& [id, e] : model.entities()) {
         json entry;
         switch (e.kind) {
@@ -126,7 +162,11 @@ json modelToJson(const Model& model, const GridSpec& grid)
             break;
         }
         case EntityKind::Mesh: entry = {{"id", id}, {"curves", e.inputs}}; break;
-        case EntityKind::Point: continue;  // points come with the constraints that make them (later issues)
+        case EntityKind::Point:
+            entry = {{"id", id}, {"position", io::toJson(e.position)}};
+            if (!e.rotation.isApprox(Eigen::Quaterniond::Identity(), 0.0))
+                entry["rotation"] = {e.rotation.x(), e.rotation.y(), e.rotation.z(), e.rotation.w()};
+            break;
         case EntityKind::Surface: {
             // A construction that never built has no geometry: the construction alone is saved.
             entry = e.surface ? io::toJson(*e.surface) : json::object();
@@ -138,6 +178,11 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 if (info.baseSurface) {
                     c["base"] = inputs.front();
                     inputs.erase(inputs.begin());
+                    sculptToJson(model, *e.recipe, c);
+                    // The points are named by the handles; "curves" keeps the target curves.
+                    inputs.erase(std::remove_if(inputs.begin(), inputs.end(),
+                                                [&](EntityId in) { return model.find(in)->kind == EntityKind::Point; }),
+                                 inputs.end());
                 }
                 c["curves"] = inputs;
                 if (!e.recipe->tangents.empty()) {
@@ -164,7 +209,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
         case EntityKind::Curve: curves.push_back(std::move(entry)); break;
         case EntityKind::Mesh: meshes.push_back(std::move(entry)); break;
         case EntityKind::Surface: surfaces.push_back(std::move(entry)); break;
-        case EntityKind::Point: break;
+        case EntityKind::Point: points.push_back(std::move(entry)); break;
         }
     }
     for (const auto& [id, c] : model.constraints()) {
@@ -190,7 +235,8 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 {"curves", curves},
                 {"surfaces", surfaces},
                 {"constraints", constraints},
-                {"meshes", meshes}};
+                {"meshes", meshes},
+                {"points", points}};
 }
 
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path)

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace sculptline::model {
@@ -258,36 +259,102 @@ private:
 };
 
 /// The deformation of a sculpt (thesis ch. 6): one Curve constraint per target curve (key points by
-/// eq. 6-24, their feet by global projection), at the recipe's stiffness and objective.
+/// eq. 6-24, their feet by global projection), a Position (and with its normal held, Tangents)
+/// constraint per handle point, the recipe's distances and curve tangents, at the recipe's
+/// stiffness, objective, bound and blocked points.
 struct SculptProblem {
     const solvers::Surface3d* base = nullptr;
     std::vector<solvers::deformation::SurfaceConstraint> constraints;
     solvers::deformation::DeformationOptions options;
 };
 
-SculptProblem sculptProblem(const Model& model, const Entity& e)
+/// The domain curve G along which a curve tangent acts: the feet of the target curve on the base
+/// (global projection), joined as a polyline in the domain.
+solvers::BSplineCurve<2> footCurve(const solvers::Surface3d& base, const solvers::Curve3d& target)
 {
+    // Enough feet to follow a target across a few dozen spans; the key points along it are found
+    // on this polyline (eq. 6-24 counts spans crossed, at most a few per span).
+    constexpr int kFeet = 33;
+    const solvers::SurfaceProjector projector(base);
+    std::vector<Eigen::Vector2d> feet;
+    for (int k = 0; k < kFeet; ++k) {
+        const double t = target.domainStart() + (target.domainEnd() - target.domainStart()) * k / (kFeet - 1);
+        const solvers::SurfaceProjection f = projector.project(target.evaluate(t));
+        feet.emplace_back(f.u, f.v);
+    }
+    std::vector<double> knots{0.0, 0.0};
+    for (int k = 1; k < kFeet - 1; ++k) knots.push_back(static_cast<double>(k) / (kFeet - 1));
+    knots.insert(knots.end(), {1.0, 1.0});
+    return solvers::BSplineCurve<2>(1, knots, feet);
+}
+
+/// `withDomains`: compute the curve tangents' domain curves (a set-up: factor() and one-shot
+/// builds); a drag's events read values only and skip it.
+SculptProblem sculptProblem(const Model& model, const Entity& e, bool withDomains = true)
+{
+    namespace dfm = solvers::deformation;
     SculptProblem p;
     const Entity* base = model.find(e.inputs.front());
     if (!base || !base->surface) throw std::invalid_argument("base: surface " + std::to_string(e.inputs.front()) + " has no geometry");
     p.base = &*base->surface;
-    for (solvers::Curve3d& target : worldCurves(model, e)) {
-        solvers::deformation::SurfaceConstraint c;
-        c.type = solvers::deformation::SurfaceConstraintType::Curve;
-        c.target = std::move(target);
+    const SurfaceRecipe& r = *e.recipe;
+    std::map<EntityId, solvers::Curve3d> targets;
+    for (size_t k = 1; k < e.inputs.size(); ++k) {
+        const Entity* in = model.find(e.inputs[k]);
+        if (!in || in->kind != EntityKind::Curve) continue;
+        dfm::SurfaceConstraint c;
+        c.type = dfm::SurfaceConstraintType::Curve;
+        c.target = *in->world;
+        targets.emplace(in->id, *in->world);
         p.constraints.push_back(std::move(c));
     }
-    p.options.stiffness = e.recipe->stiffness;
-    p.options.objective = e.recipe->displacementObjective ? solvers::deformation::Objective::Displacement
-                                                          : solvers::deformation::Objective::Force;
+    for (const SurfaceRecipe::Handle& h : r.handles) {
+        const Entity& point = *model.find(h.point);
+        dfm::SurfaceConstraint c;
+        c.type = dfm::SurfaceConstraintType::Position;
+        c.uv = h.uv;
+        c.value = point.position;
+        p.constraints.push_back(c);
+        if (!h.holdNormal) continue;
+        // The tangent plane turned with the handle: S_u, S_v of the base rotated by the point's
+        // rotation (linear rows whose values alone change when it turns: one factorization a drag).
+        const auto der = p.base->derivatives(std::clamp(h.uv.x(), p.base->domainStart(solvers::Direction::U), p.base->domainEnd(solvers::Direction::U)),
+                                             std::clamp(h.uv.y(), p.base->domainStart(solvers::Direction::V), p.base->domainEnd(solvers::Direction::V)), 1);
+        c.type = dfm::SurfaceConstraintType::Tangents;
+        c.value = point.rotation * der[1][0];
+        c.value2 = point.rotation * der[0][1];
+        p.constraints.push_back(c);
+    }
+    for (const SurfaceRecipe::Distance& d : r.distances) {
+        dfm::SurfaceConstraint c;
+        c.type = dfm::SurfaceConstraintType::Distance;
+        c.uv = d.uv;
+        c.uv2 = d.uv2;
+        c.distance = d.distance;
+        p.constraints.push_back(c);
+    }
+    for (const SurfaceRecipe::CurveTangent& t : r.curveTangents) {
+        dfm::SurfaceConstraint c;
+        c.type = dfm::SurfaceConstraintType::CurveTangent;
+        c.value = t.direction;
+        const auto it = targets.find(t.curve);
+        if (withDomains && it != targets.end()) c.domain = footCurve(*p.base, it->second);
+        p.constraints.push_back(std::move(c));
+    }
+    p.options.stiffness = r.stiffness;
+    p.options.objective = r.displacementObjective ? dfm::Objective::Displacement : dfm::Objective::Force;
+    p.options.bound = r.bound;
+    p.options.blocked = r.blocked;
     return p;
 }
 
 void storeSculpt(Entity& e, solvers::Surface3d surface, const solvers::deformation::DeformationReport& report)
 {
     // The largest residual is the deviation from the construction (the inspector shows it): a
-    // compromise (conflicting targets, too few free points) keeps the least-squares surface.
+    // compromise (conflicting targets, too few free points) keeps the least-squares surface, and
+    // says so in solveMessage.
     store(e, surf::SurfaceBuild{std::move(surface), report.maxResidual});
+    e.solveMessage = report.message;
 }
 
 /// deformation: a sculpt's solver factored once per drag (F and the objective's factorization for
@@ -314,13 +381,14 @@ public:
         for (EntityId id : step.solve) {
             Entity& e = entity(model, id);
             try {
-                const SculptProblem p = sculptProblem(model, e);
                 solvers::deformation::DeformationReport report;
                 // The factorization holds while the base stays (its shape version, bumped by each
                 // rebuild); a rebuilt base is solved afresh.
                 if (solver_ && id == surface_ && model.find(e.inputs.front())->shapeVersion == baseVersion_) {
-                    storeSculpt(e, solver_->solve(p.constraints, &report), report);
+                    const SculptProblem values = sculptProblem(model, e, false);
+                    storeSculpt(e, solver_->solve(values.constraints, &report), report);
                 } else {
+                    const SculptProblem p = sculptProblem(model, e);
                     storeSculpt(e, solvers::deformation::deformSurface(*p.base, p.constraints, p.options, &report), report);
                 }
             } catch (const std::exception& error) {

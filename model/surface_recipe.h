@@ -21,7 +21,8 @@ namespace sculptline::model {
 
 /// Every way the model builds a surface or mesh from curves.
 /// Sculpt (thesis ch. 6): an existing surface (the base, first input) deformed so that its nearest
-/// surface curves move onto target curves (the other inputs), solvers/deformation.
+/// surface curves move onto target curves and its handle points onto Point entities (the other
+/// inputs), within a bound, solvers/deformation.
 enum class Construction { Fill, Revolve, Extrude, Sweep, Loft, BoundaryRotation, RailRotation, Gordon, Network, Sculpt };
 
 /// Options a construction reads (bits of ConstructionInfo::options).
@@ -82,6 +83,37 @@ struct SurfaceRecipe {
     double stiffness = 1.0;
     /// sculpt: least change of the net's forces (smooth fall-off, the default) or of the control points.
     bool displacementObjective = false;
+
+    // Sculpt constraints beside its target curves (thesis ch. 6, Table 6-1). Parameters (u, v) are in
+    // the base surface's domain; they locate a constraint and stay put while its value moves.
+    /// A point handle (Fig. 6-5 c–d): S(uv) goes to the Point entity `point` (one of the inputs);
+    /// with `holdNormal`, the tangent plane there turns with the point's rotation (S_u, S_v become
+    /// R S_u°, R S_v° of the base: the normal tilts by R).
+    struct Handle {
+        std::uint32_t point = 0;
+        Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+        bool holdNormal = true;
+    };
+    std::vector<Handle> handles;
+    /// A bound curve as a closed polygon in the domain (eq. 6-22, §6.3): control points whose
+    /// Greville abscissae lie outside never move, and target curves act only inside. Empty = none.
+    std::vector<Eigen::Vector2d> bound;
+    /// Control points (i, j) of the base's net that never move (Fig. 6-7).
+    std::vector<std::array<int, 2>> blocked;
+    /// Two surface points held `distance` apart.
+    struct Distance {
+        Eigen::Vector2d uv = Eigen::Vector2d::Zero();
+        Eigen::Vector2d uv2 = Eigen::Vector2d::Zero();
+        double distance = 0.0;
+    };
+    std::vector<Distance> distances;
+    /// Along a target curve (`curve`, one of the inputs), the surface's tangent across it points
+    /// along `direction` (world; Fig. 6-4 d).
+    struct CurveTangent {
+        std::uint32_t curve = 0;
+        Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+    };
+    std::vector<CurveTangent> curveTangents;
 };
 
 /// Input curves each mode takes, in order: [min, max]. Revolve's last input is its axis (a line

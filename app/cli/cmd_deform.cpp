@@ -9,7 +9,8 @@
 //         "compromise", "message"?, "rank", "rows", "elapsed_ms"}
 //
 // Constraints (../shared/interfaces.md): position {uv, value}, normal {uv, value}, curve {target,
-// domain?, key_points?}, curve-tangent {domain, value, key_points?}, distance {uv, uv2, value}.
+// domain?, key_points?}, curve-tangent {domain, value, key_points?}, distance {uv, uv2, value}; and
+// (README) tangents {uv, du, dv}: the tangent values S_u, S_v there (Table 6-1).
 // Residuals: model units for position, curve (largest over the key points) and distance; radians
 // for normal and curve-tangent (at stiffness 1).
 #include "app/cli/cli_support.h"
@@ -93,6 +94,11 @@ std::vector<dfm::SurfaceConstraint> constraintsFromJson(const json& j, const sol
             k.domain = domainCurve(solvers::io::member(c, "domain", path), path + ".domain", s);
             k.value = solvers::io::pointFromJson(solvers::io::member(c, "value", path), path + ".value");
             if (k.value.norm() == 0.0) throw InputError(path + ".value: the tangent must not be the zero vector");
+        } else if (t == "tangents") {
+            k.type = dfm::SurfaceConstraintType::Tangents;
+            k.uv = uvFromJson(solvers::io::member(c, "uv", path), path + ".uv", s);
+            k.value = solvers::io::pointFromJson(solvers::io::member(c, "du", path), path + ".du");
+            k.value2 = solvers::io::pointFromJson(solvers::io::member(c, "dv", path), path + ".dv");
         } else if (t == "distance") {
             k.type = dfm::SurfaceConstraintType::Distance;
             k.uv = uvFromJson(solvers::io::member(c, "uv", path), path + ".uv", s);
@@ -100,7 +106,7 @@ std::vector<dfm::SurfaceConstraint> constraintsFromJson(const json& j, const sol
             k.distance = solvers::io::numberFromJson(solvers::io::member(c, "value", path), path + ".value");
             if (k.distance < 0.0) throw InputError(path + ".value: a distance must be >= 0");
         } else {
-            throw InputError(path + ".type: expected position, normal, curve, curve-tangent or distance, got " +
+            throw InputError(path + ".type: expected position, normal, curve, curve-tangent, tangents or distance, got " +
                              solvers::io::describeValue(type));
         }
         if ((k.type == dfm::SurfaceConstraintType::Curve || k.type == dfm::SurfaceConstraintType::CurveTangent) &&
@@ -201,6 +207,11 @@ json run(const json& input, const Options&)
     out["key_points"] = toJson(report.keyPoints);
     out["compromise"] = report.compromise || report.tooFewFreePoints;
     if (!report.message.empty()) out["message"] = report.message;
+    if (!options.bound.empty() && !isocurves) {
+        json cases = json::array();
+        for (dfm::BoundCase c : report.boundCases) cases.push_back(dfm::boundCaseName(c));
+        out["bound_cases"] = std::move(cases);
+    }
     if (!isocurves) out["rank"] = report.rank;  // the iso-curve method solves many small systems
     out["rows"] = report.constraintRows;
     out["elapsed_ms"] = ms;

@@ -189,7 +189,8 @@ void flagUnmet(const Surface3d& surface, const std::vector<SurfaceConstraint>& c
     const double size = std::max(1.0, box.diagonal().norm());
     for (size_t c = 0; c < report.residuals.size() && c < constraints.size(); ++c) {
         const bool angle = constraints[c].type == SurfaceConstraintType::Normal ||
-                           constraints[c].type == SurfaceConstraintType::CurveTangent;
+                           constraints[c].type == SurfaceConstraintType::CurveTangent ||
+                           constraints[c].type == SurfaceConstraintType::Tangents;
         const double limit = angle ? kUnmetTolerance : kUnmetTolerance * size;
         if (report.residuals[c] > limit) {
             report.compromise = true;
@@ -252,7 +253,8 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
                 const Eigen::Vector3d dir = factored[c].value.normalized();
                 const auto [e1, e2] = complement(dir);
                 for (size_t p = 0; p < keyUv[c].size(); ++p) {
-                    const Eigen::Vector2d g1 = k.domain->derivatives(keyT[c][p], 1)[1];
+                    // The factored domain: a drag's per-event constraints carry values only.
+                    const Eigen::Vector2d g1 = factored[c].domain->derivatives(keyT[c][p], 1)[1];
                     const Eigen::Vector2d across = Eigen::Vector2d(-g1.y(), g1.x()).normalized();
                     const Eigen::Vector2d& uv = keyUv[c][p];
                     const auto der = after.derivatives(uv.x(), uv.y(), 1);
@@ -269,6 +271,17 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
                                                 cross.norm());
                     }
                 }
+                break;
+            }
+            case SurfaceConstraintType::Tangents: {
+                // Relative: |S_u − goal_u| / |goal_u|, the larger of u and v (the sine of the angle
+                // off, for a small one), dimensionless like the angles.
+                const auto now = after.derivatives(k.uv.x(), k.uv.y(), 1);
+                const auto was = before.derivatives(k.uv.x(), k.uv.y(), 1);
+                const Eigen::Vector3d gu = was[1][0] + lambda * (k.value - was[1][0]);
+                const Eigen::Vector3d gv = was[0][1] + lambda * (k.value2 - was[0][1]);
+                res = std::max((now[1][0] - gu).norm() / std::max(gu.norm(), 1e-300),
+                               (now[0][1] - gv).norm() / std::max(gv.norm(), 1e-300));
                 break;
             }
             case SurfaceConstraintType::Distance:

@@ -109,6 +109,17 @@ int minimumNormOperator(Eigen::MatrixXd G, int blocks, int m, LltPointer llt, Ei
 
 }  // namespace
 
+const char* boundCaseName(BoundCase c)
+{
+    switch (c) {
+        case BoundCase::Over: return "over";
+        case BoundCase::Under: return "under";
+        case BoundCase::Well: return "well";
+        case BoundCase::Unbounded: break;
+    }
+    return "unbounded";
+}
+
 // One scalar equation Σ_i c_i (dir · P_i) = target on the control points.
 struct SurfaceDeformationSolver::Row {
     Coefficients coefficients;
@@ -153,6 +164,7 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
     keyUv_.assign(constraints.size(), {});
     keyT_.assign(constraints.size(), {});
     distanceDirection_.assign(constraints.size(), Eigen::Vector3d::Zero());
+    boundCases_.assign(constraints.size(), BoundCase::Unbounded);
     hasDistance_ = false;
     std::optional<SurfaceProjector> projector;
     auto add = [&](size_t c, Coefficients coefficients, const Eigen::Vector3d& direction) {
@@ -182,6 +194,30 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
                 if (!k.target) throw GeometryError(at(c) + ".target: a curve constraint needs a target curve");
                 if (!k.domain && !projector) projector.emplace(surface);
                 KeyPoints kp = curveKeyPoints(surface, k, projector ? &*projector : nullptr);
+                if (!options.bound.empty()) {
+                    // §6.3: only the key points well inside the bound act — those whose every
+                    // supporting control point is free, so that each can be met and the rest of
+                    // the target (the relaxation interval out to the bound) fades to the parent
+                    // surface. Under-constrained: the target's inside span; over-constrained:
+                    // none, and the surface is not affected.
+                    auto supported = [&](const Eigen::Vector2d& uv) {
+                        if (!insidePolygon(options.bound, uv)) return false;
+                        for (const auto& [i, coef] : basisCoefficients(surface, uv.x(), uv.y(), 0, 0)) {
+                            if (coef != 0.0 && !movable[static_cast<size_t>(i)]) return false;
+                        }
+                        return true;
+                    };
+                    KeyPoints inside;
+                    for (size_t p = 0; p < kp.uv.size(); ++p) {
+                        if (!supported(kp.uv[p])) continue;
+                        inside.uv.push_back(kp.uv[p]);
+                        inside.t.push_back(kp.t[p]);
+                    }
+                    boundCases_[c] = inside.uv.empty()                  ? BoundCase::Over
+                                     : inside.uv.size() < kp.uv.size() ? BoundCase::Under
+                                                                       : BoundCase::Well;
+                    kp = std::move(inside);
+                }
                 keyUv_[c] = std::move(kp.uv);
                 keyT_[c] = std::move(kp.t);
                 const std::vector<Eigen::Vector2d>& uvs = keyUv_[c];
@@ -216,6 +252,15 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
                     add(c, cross, e1);  // cross · e1 = 0 and cross · e2 = 0: cross ∥ value
                     add(c, cross, e2);
                 }
+                break;
+            }
+            case SurfaceConstraintType::Tangents: {
+                requireInDomain(surface, k.uv, at(c) + ".uv");
+                if (!k.value.allFinite() || !k.value2.allFinite()) throw GeometryError(at(c) + ".value: not a finite number");
+                const Coefficients su = basisCoefficients(surface, k.uv.x(), k.uv.y(), 1, 0);
+                const Coefficients sv = basisCoefficients(surface, k.uv.x(), k.uv.y(), 0, 1);
+                for (int axis = 0; axis < 3; ++axis) add(c, su, Eigen::Vector3d::Unit(axis));
+                for (int axis = 0; axis < 3; ++axis) add(c, sv, Eigen::Vector3d::Unit(axis));
                 break;
             }
             case SurfaceConstraintType::Distance: {
@@ -300,11 +345,12 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
         llt.emplace(H);
     }
 
-    // Position and Curve rows come in (x, y, z) triples with equal coefficients, and H is the same
-    // for each coordinate: then the problem is three copies of one with a third of the rows and
-    // columns (27× less QR work), which is what a dragged point or target curve needs.
+    // Position, Curve and Tangents rows come in (x, y, z) triples with equal coefficients, and H is
+    // the same for each coordinate: then the problem is three copies of one with a third of the rows
+    // and columns (27× less QR work), which is what a dragged point or target curve needs.
     separable_ = std::all_of(constraints.begin(), constraints.end(), [](const SurfaceConstraint& k) {
-        return k.type == SurfaceConstraintType::Position || k.type == SurfaceConstraintType::Curve;
+        return k.type == SurfaceConstraintType::Position || k.type == SurfaceConstraintType::Curve ||
+               k.type == SurfaceConstraintType::Tangents;
     });
     const LltPointer factorization = llt ? &*llt : nullptr;
     if (separable_) {
@@ -340,6 +386,10 @@ Eigen::VectorXd SurfaceDeformationSolver::rightHandSide(const std::vector<Surfac
                 target = h[local % 3];
                 break;
             }
+            case SurfaceConstraintType::Tangents:
+                if (!s.value.allFinite() || !s.value2.allFinite()) throw GeometryError(at(c) + ".value: not a finite number");
+                target = local < 3 ? s.value[local] : s.value2[local - 3];
+                break;
             case SurfaceConstraintType::Distance: {
                 // The row measures e0·(S2 − S1), currently |e0|: first step towards the length.
                 if (!std::isfinite(s.distance) || s.distance < 0.0) throw GeometryError(at(c) + ".value: not a finite number >= 0");
@@ -431,6 +481,7 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
         report->compromise = rank_ < r;
         report->keyPoints = std::move(keyPoints);
         report->gaussNewtonSteps = steps;
+        report->boundCases = boundCases_;
         report->moved = 0;
         for (size_t i = 0; i < points.size(); ++i) report->moved += points[i] != surface_.points()[i] ? 1 : 0;
         report->residuals = constraintResiduals(surface_, result, factored_, constraints, keyUv_, keyT_, lambda);
@@ -446,6 +497,11 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
                               std::to_string(r) + " rows): least-squares compromise";
         }
         flagUnmet(surface_, constraints, *report);
+        for (size_t c = 0; c < boundCases_.size() && report->message.empty(); ++c) {
+            if (boundCases_[c] == BoundCase::Over) {
+                report->message = at(c) + " lies outside the bound: it does not affect the surface (over-constrained, §6.3)";
+            }
+        }
     }
     return result;
 }

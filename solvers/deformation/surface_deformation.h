@@ -24,7 +24,17 @@ enum class SurfaceConstraintType {
     Curve,         ///< S(G(t_k)) = H(t_k) at m key points (eq. 6-24)      (3 rows per key point)
     CurveTangent,  ///< along G the cross tangent S_u a + S_v b ∥ value     (2 rows per key point)
     Distance,      ///< |S(uv2) − S(uv)| = distance: linearized, a few chord-Newton steps (1 row)
+    Tangents,      ///< S_u(uv) = value, S_v(uv) = value2: tangent values (Table 6-1), linear (6 rows);
+                   ///< a point handle turned by R holds R S_u°, R S_v°: its normal tilts with it, and
+                   ///< a new turn changes only the right-hand side (no new factorization mid-drag)
 };
+
+/// Where a target curve lies against a bound curve (thesis §6.3): over-constrained when all of it
+/// lies outside (the surface is not affected), under-constrained when partly inside (only the
+/// inside span acts), well-constrained when inside. Unbounded deformations and other constraint
+/// types are Unbounded.
+enum class BoundCase { Unbounded, Over, Under, Well };
+const char* boundCaseName(BoundCase c);
 
 enum class Objective {
     Displacement,  ///< least adjustment of the free control points, min ‖d‖ (eqs. 6-4..6-9)
@@ -36,7 +46,8 @@ struct SurfaceConstraint {
     SurfaceConstraintType type = SurfaceConstraintType::Position;
     Eigen::Vector2d uv = Eigen::Vector2d::Zero();
     Eigen::Vector2d uv2 = Eigen::Vector2d::Zero();  ///< Distance only
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< point (Position), direction (Normal, CurveTangent)
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< point (Position), direction (Normal, CurveTangent), S_u (Tangents)
+    Eigen::Vector3d value2 = Eigen::Vector3d::Zero();  ///< S_v (Tangents only)
     double distance = 0.0;                         ///< Distance only, ≥ 0
     std::optional<BSplineCurve<2>> domain;         ///< G: Curve (optional), CurveTangent (required)
     std::optional<BSplineCurve<3>> target;         ///< H: Curve only
@@ -61,6 +72,9 @@ struct DeformationReport : ManipulationReport {
     std::vector<Eigen::Vector3d> keyPoints;  ///< the 3D targets of Curve constraints' key points
     int moved = 0;                           ///< control points whose position changed
     int gaussNewtonSteps = 0;                ///< chord-Newton steps taken for Distance constraints
+    /// Per constraint: where it lies against the bound (§6.3); Over ones add no rows and leave the
+    /// surface alone (residual 0), Under ones act with their key points inside the bound only.
+    std::vector<BoundCase> boundCases;
 };
 
 /// Stateful solver for a drag, like CurveManipulationSolver: factor() sets up F and the objective's
@@ -106,6 +120,7 @@ private:
     std::vector<std::vector<Eigen::Vector2d>> keyUv_;   // per constraint
     std::vector<std::vector<double>> keyT_;             // per constraint: parameters on H
     std::vector<Eigen::Vector3d> distanceDirection_;    // per constraint (Distance): linearization
+    std::vector<BoundCase> boundCases_;                 // per constraint
     Eigen::MatrixXd F_;                                 // rows × 3·free
     Eigen::VectorXd current_;                           // F·(current net) restricted row values
     Eigen::MatrixXd C_;                                 // 3·free × rows: d = C b

@@ -140,3 +140,26 @@ TEST(DeformCli, GivenIsocurvesAndATargetCurveWithoutDomain_WhenRun_ThenItsKeyPoi
     EXPECT_LT(out["max_residual"].get<double>(), kConstraintTolerance);
     EXPECT_GE(out["key_points"].size(), 2u);
 }
+
+TEST(DeformCli, GivenTangentValuesAndABound_WhenRun_ThenMetAndTheBoundCasesAreReported)
+{
+    // S_u = (1.2, 0, 0.3) and S_v = (0, 1, 0) at the middle, and a target partly inside a bound.
+    const json bound = {{"degree", 1},
+                        {"knots", {0, 0, 0.25, 0.5, 0.75, 1, 1}},
+                        {"points", {{0.1, 0.1}, {0.9, 0.1}, {0.9, 0.9}, {0.1, 0.9}, {0.1, 0.1}}}};
+    const json input = {
+        {"surface", flatSurface()},
+        {"constraints",
+         {{{"type", "tangents"}, {"uv", {0.5, 0.5}}, {"du", {5.0, 0, 1.0}}, {"dv", {0, 5.0, 0}}},
+          {{"type", "curve"}, {"target", {{"degree", 1}, {"knots", {0, 0, 1, 1}}, {"points", {{0, 0, 0}, {5, 0, 0}}}}}}}},
+        {"bound", bound}};
+    const json out = runOk("deform", input);
+    EXPECT_LT(out["max_residual"].get<double>(), kConstraintTolerance);
+    ASSERT_EQ(out["bound_cases"].size(), 2u);
+    EXPECT_EQ(out["bound_cases"][0], "unbounded");  // a tangent is no target curve
+    EXPECT_EQ(out["bound_cases"][1], "over");       // the edge v = 0 lies outside the bound
+    const json missing = {{"surface", flatSurface()}, {"constraints", {{{"type", "tangents"}, {"uv", {0.5, 0.5}}, {"du", {1, 0, 0}}}}}};
+    const CliResult bad = runDeform(missing);
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("constraints[0].dv"), std::string::npos) << bad.err;
+}

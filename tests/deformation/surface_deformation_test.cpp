@@ -480,3 +480,67 @@ TEST(SurfaceDeformation, GivenABoundAndLeastDisplacement_WhenAPointNearItIsPulle
     EXPECT_GT(rim, 0.0);
     EXPECT_LT(rim, 0.25 * all);
 }
+
+TEST(SurfaceDeformation, GivenTangentValues_WhenDeformed_ThenSuAndSvAreMetAndATurnNeedsNoNewFactorization)
+{
+    // Given: a point handle's tangent plane turned by R about the point (Tangents = R S_u°, R S_v°).
+    const Surface3d s = wavySurface(9, 9);
+    const Eigen::Vector2d uv(0.5, 0.5);
+    const auto der = s.derivatives(uv.x(), uv.y(), 1);
+    auto handle = [&](double angle) {
+        const Eigen::Matrix3d r = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 0).normalized()).toRotationMatrix();
+        SurfaceConstraint p = position(uv.x(), uv.y(), s.evaluate(uv.x(), uv.y()) + Eigen::Vector3d(0, 0, angle));
+        SurfaceConstraint t = p;
+        t.type = SurfaceConstraintType::Tangents;
+        t.value = r * der[1][0];
+        t.value2 = r * der[0][1];
+        return std::vector<SurfaceConstraint>{p, t};
+    };
+    SurfaceDeformationSolver solver;
+    solver.factor(s, handle(0.0));
+    for (double angle : {0.1, 0.25, 0.4}) {
+        // When: solved per event with the factorization of the unturned handle
+        const std::vector<SurfaceConstraint> cs = handle(angle);
+        DeformationReport report;
+        const Surface3d out = solver.solve(cs, &report);
+        // Then: S_u and S_v are the turned ones, the normal turned by R, and it equals a one-shot solve
+        const auto now = out.derivatives(uv.x(), uv.y(), 1);
+        EXPECT_LT((now[1][0] - cs[1].value).norm(), kConstraintTolerance);
+        EXPECT_LT((now[0][1] - cs[1].value2).norm(), kConstraintTolerance);
+        const Eigen::Vector3d turned = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 0).normalized()) * s.normal(uv.x(), uv.y());
+        EXPECT_LT(std::acos(std::clamp(out.normal(uv.x(), uv.y()).dot(turned), -1.0, 1.0)), kAngleTolerance);
+        EXPECT_LT(report.maxResidual, kConstraintTolerance);
+        EXPECT_LT(maxChange(out, deformSurface(s, cs)), kSameSolutionTolerance);
+    }
+}
+
+TEST(SurfaceDeformation, GivenABoundAndTargets_WhenFactored_ThenEachIsClassifiedOverUnderOrWell)
+{
+    // Given: a 16 × 16 net, a bound around the middle, three straight targets 0.5 above the surface:
+    // one across the middle inside the bound, one crossing the bound, one in a corner outside it.
+    const Surface3d s = wavySurface(16, 16, 0.0);
+    DeformationOptions options;
+    options.bound = {{0.2, 0.2}, {0.8, 0.2}, {0.8, 0.8}, {0.2, 0.8}};
+    auto target = [&](double u0, double u1, double v) {
+        SurfaceConstraint c;
+        c.type = SurfaceConstraintType::Curve;
+        c.target = line3(s.evaluate(u0, v) + Eigen::Vector3d(0, 0, 0.5), s.evaluate(u1, v) + Eigen::Vector3d(0, 0, 0.5));
+        return c;
+    };
+    const std::vector<SurfaceConstraint> cs = {target(0.4, 0.6, 0.5), target(0.05, 0.6, 0.4), target(0.02, 0.1, 0.05)};
+    // When
+    DeformationReport report;
+    const Surface3d out = deformSurface(s, cs, options, &report);
+    // Then: well, under and over; the over one adds nothing (residual 0), the others are met
+    ASSERT_EQ(report.boundCases.size(), 3u);
+    EXPECT_EQ(report.boundCases[0], BoundCase::Well);
+    EXPECT_EQ(report.boundCases[1], BoundCase::Under);
+    EXPECT_EQ(report.boundCases[2], BoundCase::Over);
+    EXPECT_LT(report.maxResidual, kConstraintTolerance);
+    EXPECT_NE(report.message.find("constraints[2] lies outside the bound"), std::string::npos) << report.message;
+    // And a lone target outside the bound leaves the surface exactly as it was (§6.3)
+    DeformationReport alone;
+    EXPECT_EQ(deformSurface(s, {cs[2]}, options, &alone).points(), s.points());
+    EXPECT_EQ(alone.moved, 0);
+    EXPECT_GT(maxChange(out, s), 0.4);
+}

@@ -5,6 +5,7 @@
 #include "model/model_document.h"
 #include "solvers/bspline/projection.h"
 #include "tests/common/surface_test_support.h"
+#include "tests/model/sculpt_scene.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -353,42 +354,6 @@ TEST(ModelGraph, DocumentsWithEveryConstraintTypeRoundTrip)
 
 namespace sculptline::model {
 namespace {
-
-/// A flat bicubic 7 x 7 net over [-60, 60]^2 at z = 0 (the base of a sculpt).
-solvers::Surface3d flatSheet()
-{
-    const solvers::KnotVector knots{0, 0, 0, 0, 1, 2, 3, 4, 4, 4, 4};
-    std::vector<Eigen::Vector3d> points;
-    for (int i = 0; i < 7; ++i) {
-        for (int j = 0; j < 7; ++j) points.emplace_back(-60 + 20 * i, -60 + 20 * j, 0);
-    }
-    return solvers::Surface3d(3, 3, knots, knots, 7, 7, points);
-}
-
-/// A base sheet, a vertical plane across it carrying a target arc 12 mm above the sheet, the sculpt.
-struct SculptScene {
-    Model model;
-    EntityId base = 0, plane = 0, target = 0, sculpt = 0;
-    explicit SculptScene(double stiffness = 1.0)
-    {
-        base = model.addSurface(flatSheet());
-        plane = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY(), 150));
-        // An arch across the sheet in the plane y = 0: its ends on the sheet, its middle 12 mm above.
-        const PlaneFrame& f = model.find(plane)->frame;
-        std::vector<Eigen::Vector3d> local;
-        for (int i = 0; i < 5; ++i) {
-            const double x = -40 + 20 * i, h = (i == 0 || i == 4) ? 0.0 : 12.0;
-            Eigen::Vector3d p = f.toLocal(Eigen::Vector3d(x, 0, h));
-            p.z() = 0;
-            local.push_back(p);
-        }
-        target = model.addCurve(plane, solvers::Curve3d(3, {0, 0, 0, 0, 1, 2, 2, 2, 2}, local));
-        SurfaceRecipe recipe;
-        recipe.mode = Construction::Sculpt;
-        recipe.stiffness = stiffness;
-        sculpt = model.addSurface({base, target}, recipe);
-    }
-};
 
 TEST(Sculpt, TheBaseSurfaceMovesOntoTheTargetCurveAndTheDocumentReSolvesIt)
 {

@@ -1,0 +1,329 @@
+// A sculpt's constraints beside its target curves (issue 13 §1, thesis ch. 6): point handles that
+// move and turn (position, and the tangent plane turned with the handle), a bound curve (§6.3's
+// over-, under- and well-constrained targets), blocked control points, distances and curve
+// tangents; their drags factored once, their documents re-solved on opening.
+#include "model/document.h"
+#include "model/model.h"
+#include "model/model_document.h"
+#include "solvers/deformation/deformation_region.h"
+#include "solvers/io/geometry_json.h"
+#include "tests/common/surface_test_support.h"
+#include "tests/model/sculpt_scene.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace sculptline::model {
+namespace {
+
+/// Round-off of the solves at the 100 mm scale of the sheet (met constraints sit near 1e-13).
+constexpr double kTolerance = 1e-9;
+/// The issue's bound on a held normal's angle.
+constexpr double kAngleTolerance = 1e-6;
+
+double angleBetween(const Eigen::Vector3d& a, const Eigen::Vector3d& b)
+{
+    return std::atan2(a.cross(b).norm(), a.dot(b));
+}
+
+/// The sheet's centre (0, 0, 0) is (u, v) = (2, 2) of its [0, 4]² domain.
+const Eigen::Vector2d kCentre(2.0, 2.0);
+
+struct HandleScene {
+    Model model;
+    EntityId base = 0, point = 0, sculpt = 0;
+    SurfaceRecipe recipe;
+    explicit HandleScene(bool holdNormal = true, Eigen::Vector2d uv = kCentre)
+    {
+        base = model.addSurface(flatSheet());
+        point = model.addPoint(flatSheet().evaluate(uv.x(), uv.y()));
+        recipe.mode = Construction::Sculpt;
+        recipe.handles = {{point, uv, holdNormal}};
+        sculpt = model.addSurface({base, point}, recipe);
+    }
+    const solvers::Surface3d& surface() const { return *model.find(sculpt)->surface; }
+};
+
+double largestChange(const solvers::Surface3d& a, const solvers::Surface3d& b)
+{
+    double worst = 0.0;
+    for (size_t k = 0; k < a.points().size(); ++k) worst = std::max(worst, (a.points()[k] - b.points()[k]).norm());
+    return worst;
+}
+
+TEST(SculptHandle, ThePointPullsTheSurfaceAndItsRotationTiltsTheNormal)
+{
+    HandleScene s;
+    ASSERT_FALSE(s.model.find(s.sculpt)->failed()) << s.model.find(s.sculpt)->buildError;
+    // A handle dropped where the surface is, unturned, changes nothing
+    EXPECT_LT(largestChange(s.surface(), flatSheet()), 1e-12);
+    // When it is lifted 10 mm and turned 20° about x
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(20.0 * M_PI / 180.0, Eigen::Vector3d::UnitX()));
+    s.model.setPointPose(s.point, Eigen::Vector3d(0, 0, 10), turn);
+    s.model.update();
+    // Then the surface passes through it, with its normal turned the same way
+    EXPECT_LT((s.surface().evaluate(2, 2) - Eigen::Vector3d(0, 0, 10)).norm(), kTolerance);
+    EXPECT_LT(angleBetween(s.surface().normal(2, 2), turn * Eigen::Vector3d::UnitZ()), kAngleTolerance);
+    EXPECT_LT(s.model.find(s.sculpt)->maxDeviation, kAngleTolerance);
+    // And saved and reopened, the point keeps its pose and the sculpt re-solves to the same surface
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(s.model, GridSpec{})), reopened);
+    ASSERT_NE(reopened.find(s.point), nullptr);
+    EXPECT_EQ(reopened.find(s.point)->position, Eigen::Vector3d(0, 0, 10));
+    EXPECT_LT(reopened.find(s.point)->rotation.angularDistance(turn), 1e-15);
+    EXPECT_EQ(reopened.find(s.sculpt)->surface->points(), s.surface().points());
+}
+
+TEST(SculptHandle, WithoutItsNormalOnlyThePointIsHeldAndTheTangentPlaneIsFree)
+{
+    HandleScene held(true), free(false);
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitY()));
+    for (HandleScene* s : {&held, &free}) {
+        s->model.setPointPose(s->point, Eigen::Vector3d(0, 0, 10), turn);
+        s->model.update();
+        EXPECT_LT((s->surface().evaluate(2, 2) - Eigen::Vector3d(0, 0, 10)).norm(), kTolerance);
+    }
+    // The free one's normal stays vertical at the top of its symmetric bump; the held one tilts 0.3 rad
+    EXPECT_LT(angleBetween(free.surface().normal(2, 2), Eigen::Vector3d::UnitZ()), kAngleTolerance);
+    EXPECT_NEAR(angleBetween(held.surface().normal(2, 2), Eigen::Vector3d::UnitZ()), 0.3, kAngleTolerance);
+}
+
+TEST(SculptHandle, ADragIsFactoredOnceAndEveryEventEqualsAFreshSolve)
+{
+    HandleScene s;
+    const int before = s.model.factorizations();
+    s.model.beginDrag(s.point);
+    EXPECT_EQ(s.model.factorizations(), before + 1);
+    for (int i = 1; i <= 8; ++i) {
+        const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.05 * i, Eigen::Vector3d(1, 1, 0).normalized()));
+        const Eigen::Vector3d at(1.5 * i, -i, 2.0 * i);
+        s.model.setPointPose(s.point, at, turn);
+        s.model.update();
+        // Each event meets the handle and equals what a fresh solve of the same sculpt gives
+        EXPECT_LT((s.surface().evaluate(2, 2) - at).norm(), kTolerance) << i;
+        EXPECT_LT(largestChange(s.surface(), *s.model.makeSurface({s.base, s.point}, s.recipe).surface), kTolerance) << i;
+    }
+    EXPECT_EQ(s.model.factorizations(), before + 1);  // a turn changes values, not the factorization
+    s.model.endDrag();
+    s.model.update();
+    EXPECT_EQ(s.surface().points(), s.model.makeSurface({s.base, s.point}, s.recipe).surface->points());
+}
+
+TEST(SculptHandle, AFixedPointRefusesToMove)
+{
+    HandleScene s;
+    const Eigen::Vector3d start = s.model.find(s.point)->position;
+    s.model.setFixed(s.point, true);
+    s.model.setPointPose(s.point, Eigen::Vector3d(0, 0, 10), Eigen::Quaterniond::Identity());
+    EXPECT_EQ(s.model.find(s.point)->position, start);
+    // Nor does a non-finite pose move a free one
+    s.model.setFixed(s.point, false);
+    s.model.setPointPose(s.point, Eigen::Vector3d(NAN, 0, 0), Eigen::Quaterniond::Identity());
+    s.model.setPointPose(s.point, Eigen::Vector3d(0, 0, 1), Eigen::Quaterniond(0, 0, 0, 0));
+    EXPECT_EQ(s.model.find(s.point)->position, start);
+}
+
+/// A 13 x 13 sheet (domain [0, 10]²; enough free columns under a bound for the arch's key points).
+constexpr int kFineNet = 13;
+
+/// The sculpt of SculptScene (a target arch across the sheet at v = 5, over the middle two thirds
+/// in u) within a square bound [lo, hi]² of the domain.
+Entity boundedSculpt(SculptScene& s, double lo, double hi)
+{
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    recipe.bound = {{lo, lo}, {hi, lo}, {hi, hi}, {lo, hi}};
+    return s.model.makeSurface({s.base, s.target}, recipe);
+}
+
+TEST(SculptBound, OnlyTheInsideMovesAndATargetPartlyInsideActsThere)
+{
+    // Given a bound around the middle of the sheet, the target arch crossing it (under-constrained)
+    SculptScene s(1.0, kFineNet);
+    const solvers::Surface3d sheet = flatSheet(kFineNet);
+    const Entity e = boundedSculpt(s, 2.5, 7.5);
+    ASSERT_FALSE(e.failed()) << e.buildError;
+    const std::vector<bool> inside = solvers::deformation::insideBound(sheet, e.recipe->bound);
+    int moved = 0;
+    for (size_t k = 0; k < inside.size(); ++k) {
+        // Then the control points outside it stay bit for bit, and some inside move
+        if (!inside[k]) EXPECT_EQ(e.surface->points()[k], sheet.points()[k]) << k;
+        if (inside[k] && e.surface->points()[k] != sheet.points()[k]) ++moved;
+    }
+    EXPECT_GT(moved, 0);
+    // And the inside span of the arch (12 mm high) is met
+    EXPECT_NEAR(e.surface->evaluate(5, 5).z(), 12.0, 0.5);
+    EXPECT_LT(e.maxDeviation, 1e-6);
+    EXPECT_TRUE(e.solveMessage.empty()) << e.solveMessage;
+}
+
+TEST(SculptBound, ATargetWhollyOutsideLeavesTheSurfaceAloneAndSaysSo)
+{
+    // Given a bound in a corner of the domain, away from the target (over-constrained, §6.3)
+    SculptScene s(1.0, kFineNet);
+    const Entity e = boundedSculpt(s, 0.5, 3.0);
+    // Then the surface is the base, and the designer is told why
+    ASSERT_TRUE(e.surface);
+    EXPECT_EQ(e.surface->points(), flatSheet(kFineNet).points());
+    EXPECT_NE(e.solveMessage.find("outside the bound"), std::string::npos) << e.solveMessage;
+    EXPECT_FALSE(e.failed());
+}
+
+TEST(SculptBound, ATargetWellInsideHasAllItsKeyPointsMet)
+{
+    SculptScene s(1.0, kFineNet);
+    const Entity e = boundedSculpt(s, 0.5, 9.5);
+    ASSERT_FALSE(e.failed()) << e.buildError;
+    EXPECT_LT(e.maxDeviation, 1e-6);  // every key point met, as without a bound
+    EXPECT_TRUE(e.solveMessage.empty()) << e.solveMessage;
+}
+
+TEST(SculptBlocked, BlockedControlPointsStayExactly)
+{
+    SculptScene s;
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    recipe.blocked = {{3, 3}, {2, 3}};  // under the arch's middle
+    const Entity e = s.model.makeSurface({s.base, s.target}, recipe);
+    EXPECT_EQ(e.surface->point(3, 3), flatSheet().point(3, 3));
+    EXPECT_EQ(e.surface->point(2, 3), flatSheet().point(2, 3));
+    EXPECT_NE(e.surface->point(4, 3), flatSheet().point(4, 3));
+    // An index beyond the net is a failed build that says which
+    recipe.blocked = {{7, 0}};
+    EXPECT_THROW(s.model.makeSurface({s.base, s.target}, recipe), std::invalid_argument);
+}
+
+TEST(SculptDistance, TwoSurfacePointsAreHeldThatFarApart)
+{
+    // Given two points 40 mm apart across the middle (u = 4/3 and 8/3 at v = 2), held 30 apart
+    HandleScene s;
+    SurfaceRecipe recipe = s.recipe;
+    recipe.distances = {{{4.0 / 3.0, 2.0}, {8.0 / 3.0, 2.0}, 30.0}};
+    s.model.setPointPose(s.point, Eigen::Vector3d(0, 0, 5), Eigen::Quaterniond::Identity());
+    s.model.update();
+    const Entity e = s.model.makeSurface({s.base, s.point}, recipe);
+    ASSERT_FALSE(e.failed()) << e.buildError;
+    EXPECT_NEAR((e.surface->evaluate(8.0 / 3.0, 2) - e.surface->evaluate(4.0 / 3.0, 2)).norm(), 30.0, kTolerance);
+    EXPECT_LT((e.surface->evaluate(2, 2) - Eigen::Vector3d(0, 0, 5)).norm(), kTolerance);
+}
+
+TEST(SculptCurveTangent, AlongTheTargetTheCrossTangentPointsAlongTheDirection)
+{
+    // Given the arch, with the surface's tangent across it asked to point along (0, 1, 1)
+    SculptScene s;
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    const Eigen::Vector3d direction = Eigen::Vector3d(0, 1, 1).normalized();
+    recipe.curveTangents = {{s.target, direction}};
+    const Entity e = s.model.makeSurface({s.base, s.target}, recipe);
+    ASSERT_FALSE(e.failed()) << e.buildError;
+    // Then every constraint's residual (key points in mm, the cross tangent's angle in rad) is met
+    EXPECT_LT(e.maxDeviation, kAngleTolerance);
+    EXPECT_TRUE(e.solveMessage.empty()) << e.solveMessage;
+    // And under the arch's middle the tangent across (S_v, the arch runs along u) leans that way
+    const Eigen::Vector3d across = e.surface->derivatives(2, 2, 1)[0][1];
+    EXPECT_LT(angleBetween(across, direction), 0.1);
+    EXPECT_NEAR(angleBetween(flatSheet().derivatives(2, 2, 1)[0][1], direction), M_PI / 4, 1e-12);
+}
+
+TEST(SculptDocument, EveryConstraintIsSavedAndReSolvedOnOpening)
+{
+    SculptScene s;
+    const EntityId point = s.model.addPoint(Eigen::Vector3d(-20, 30, 4), 0,
+                                            Eigen::Quaterniond(Eigen::AngleAxisd(0.2, Eigen::Vector3d::UnitY())));
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    recipe.stiffness = 0.8;
+    recipe.handles = {{point, {4.0 / 3.0, 3.5}, true}};
+    recipe.bound = {{0.2, 0.2}, {3.8, 0.2}, {3.8, 3.8}, {0.2, 3.8}};
+    recipe.blocked = {{0, 0}};
+    recipe.distances = {{{1.0, 1.0}, {3.0, 1.0}, 41.0}};
+    recipe.curveTangents = {{s.target, Eigen::Vector3d(0, 1, 0.5)}};
+    const EntityId sculpt = s.model.addSurface({s.base, s.target, point}, recipe);
+    ASSERT_FALSE(s.model.find(sculpt)->failed()) << s.model.find(sculpt)->buildError;
+    Model reopened;
+    populateModel(documentFromJson(modelToJson(s.model, GridSpec{})), reopened);
+    const Entity& again = *reopened.find(sculpt);
+    ASSERT_TRUE(again.recipe);
+    const SurfaceRecipe& r = *again.recipe;
+    EXPECT_EQ(again.inputs, s.model.find(sculpt)->inputs);
+    ASSERT_EQ(r.handles.size(), 1u);
+    EXPECT_EQ(r.handles[0].point, point);
+    EXPECT_EQ(r.handles[0].uv, recipe.handles[0].uv);
+    EXPECT_EQ(r.bound, recipe.bound);
+    EXPECT_EQ(r.blocked, recipe.blocked);
+    ASSERT_EQ(r.distances.size(), 1u);
+    EXPECT_EQ(r.distances[0].distance, 41.0);
+    ASSERT_EQ(r.curveTangents.size(), 1u);
+    EXPECT_EQ(r.curveTangents[0].direction, recipe.curveTangents[0].direction);
+    EXPECT_EQ(r.stiffness, 0.8);
+    EXPECT_EQ(again.surface->points(), s.model.find(sculpt)->surface->points());
+}
+
+TEST(SculptDocument, BadSculptFieldsAreRefusedNamingTheField)
+{
+    SculptScene s;
+    const EntityId point = s.model.addPoint(Eigen::Vector3d(0, 0, 0));
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    recipe.handles = {{point, kCentre, true}};
+    s.model.addSurface({s.base, s.target, point}, recipe);
+    const nlohmann::json good = modelToJson(s.model, GridSpec{});
+    auto refused = [&](const std::function<void(nlohmann::json&)>& spoil, const std::string& field) {
+        nlohmann::json j = good;
+        spoil(j);
+        try {
+            documentFromJson(j);
+            ADD_FAILURE() << "accepted; expected an error naming " << field;
+        } catch (const solvers::io::InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+        }
+    };
+    auto construction = [](nlohmann::json& j) -> nlohmann::json& { return j["surfaces"].back()["construction"]; };
+    refused([&](nlohmann::json& j) { construction(j)["points"][0]["point"] = 999; }, "construction.points[0].point");
+    refused([&](nlohmann::json& j) { construction(j)["points"][0]["uv"] = {1}; }, "construction.points[0].uv");
+    refused([&](nlohmann::json& j) { construction(j)["points"][0]["normal"] = "yes"; }, "construction.points[0].normal");
+    refused([&](nlohmann::json& j) { construction(j)["bound"] = {{0, 0}, {1, 1}}; }, "construction.bound");
+    refused([&](nlohmann::json& j) { construction(j)["blocked"] = {{0}}; }, "construction.blocked[0]");
+    refused([&](nlohmann::json& j) { construction(j)["distances"] = {{{"uv", {1, 1}}, {"uv2", {2, 2}}, {"value", -1}}}; },
+            "construction.distances[0].value");
+    refused([&](nlohmann::json& j) { construction(j)["curve_tangents"] = {{{"curve", 1}, {"direction", {0, 0, 1}}}}; },
+            "construction.curve_tangents[0].curve");
+    refused([&](nlohmann::json& j) { j["points"][0]["rotation"] = {0, 0, 0, 0}; }, "points[0].rotation");
+    refused([&](nlohmann::json& j) { j["points"][0]["position"] = {0, 0, 1e300}; }, "points[0].position");
+    refused([&](nlohmann::json& j) { j["points"][0].erase("id"); }, "points[0].id");
+}
+
+TEST(SculptRecipe, RecipesThatDoNotFitTheirInputsAreRefused)
+{
+    SculptScene s;
+    const EntityId point = s.model.addPoint(Eigen::Vector3d(0, 0, 0));
+    SurfaceRecipe recipe;
+    recipe.mode = Construction::Sculpt;
+    // A point among the inputs without a handle saying where it pulls
+    EXPECT_THROW(s.model.addSurface({s.base, point}, recipe), std::invalid_argument);
+    // A handle on a point that is not an input
+    recipe.handles = {{point, kCentre, true}};
+    EXPECT_THROW(s.model.addSurface({s.base, s.target}, recipe), std::invalid_argument);
+    // A curve tangent along a curve that is not a target
+    recipe.handles.clear();
+    recipe.curveTangents = {{s.plane, Eigen::Vector3d::UnitZ()}};
+    EXPECT_THROW(s.model.addSurface({s.base, s.target}, recipe), std::invalid_argument);
+    // A bound of two points, and a handle on a fill
+    recipe.curveTangents.clear();
+    recipe.bound = {{0, 0}, {1, 1}};
+    EXPECT_THROW(s.model.addSurface({s.base, s.target}, recipe), std::invalid_argument);
+    SurfaceRecipe fill;
+    fill.handles = {{point, kCentre, true}};
+    EXPECT_THROW(s.model.makeSurface({s.target}, fill), std::invalid_argument);
+    // A handle off the base's domain is a failed build that says so, not a crash
+    recipe.bound.clear();
+    recipe.handles = {{point, {9, 9}, true}};
+    EXPECT_THROW(s.model.addSurface({s.base, point}, recipe), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sculptline::model
