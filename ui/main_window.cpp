@@ -226,6 +226,31 @@ void MainWindow::createActions()
     make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return),
          [this]() { document_->buildSurface(); });
     make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() { document_->cancelSurface(); });
+    // Sculpt mode's tools (thesis ch. 6): what a stroke or a click on the surface does.
+    QMenu* sculptMenu = menuBar()->addMenu(tr("Scul&pt"));
+    auto* sculptTools = new QActionGroup(this);
+    auto sculptTool = [&](const char* name, const QString& text, const QString& key, SketchDocument::SculptTool tool) {
+        QAction* a = make(sculptMenu, name, text, QKeySequence(key), [this, tool]() {
+            document_->setSculptTool(tool);
+            if (mode_ != Mode::Sculpt) setMode(Mode::Sculpt);
+            updateStatus();
+        });
+        a->setCheckable(true);
+        a->setChecked(document_->sculptTool() == tool);
+        sculptTools->addAction(a);
+    };
+    using Tool = SketchDocument::SculptTool;
+    sculptTool("sculpt.target", tr("&Target curves: a stroke near the surface pulls it"), QStringLiteral("Alt+T"), Tool::Target);
+    sculptTool("sculpt.bound", tr("&Bound: a closed stroke over the surface limits the sculpt"), QStringLiteral("Alt+B"), Tool::Bound);
+    sculptTool("sculpt.handle", tr("&Handles: a click on the surface drops a point to drag and turn"), QStringLiteral("Alt+H"), Tool::Handle);
+    sculptTool("sculpt.block", tr("B&lock: a click blocks or frees the nearest control point"), QStringLiteral("Alt+K"), Tool::Block);
+    sculptTool("sculpt.distance", tr("&Distance: two clicks hold two surface points apart"), QStringLiteral("Alt+D"), Tool::Distance);
+    sculptMenu->addSeparator();
+    QAction* holdTangent = make(sculptMenu, "sculpt.holdTangent", tr("Hold the surface's tangent &across the last target curve"),
+                                QKeySequence(QStringLiteral("Alt+G")), [this](bool on) {
+                                    document_->setSculptCurveTangent(document_->sculptBase(), document_->recognizedCurve(), on);
+                                });
+    holdTangent->setCheckable(true);
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
@@ -302,12 +327,32 @@ void MainWindow::updateStatus()
                   "and fixed points. Shift+click pins a point.");
         break;
     case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
-    case Mode::Sculpt:
-        text = document_->sculptBase() != 0
-                   ? tr("Sculpt surface %1: draw a target curve on the active plane; the surface's nearest curve moves onto it. Drag the plane to move it live.")
-                         .arg(document_->sculptBase())
-                   : tr("Sculpt: select a surface first (E, then click it or pick it in the list), then press Y.");
+    case Mode::Sculpt: {
+        if (document_->sculptBase() == 0) {
+            text = tr("Sculpt: select a surface first (E, then click it or pick it in the list), then press Y.");
+            break;
+        }
+        const model::EntityId s = document_->sculptBase();
+        switch (document_->sculptTool()) {
+        case SketchDocument::SculptTool::Target:
+            text = tr("Sculpt surface %1: draw a target curve on the active plane; the surface's nearest curve moves onto it. Drag the plane to move it live. "
+                      "Alt+B bound, Alt+H handles, Alt+K block, Alt+D distance.").arg(s);
+            break;
+        case SketchDocument::SculptTool::Bound:
+            text = tr("Sculpt surface %1: draw a closed loop over the surface; only the region inside deforms (Alt+T: back to targets).").arg(s);
+            break;
+        case SketchDocument::SculptTool::Handle:
+            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its ball to tilt the normal.").arg(s);
+            break;
+        case SketchDocument::SculptTool::Block:
+            text = tr("Sculpt surface %1: click near a control point to block it (it never moves) or free it again.").arg(s);
+            break;
+        case SketchDocument::SculptTool::Distance:
+            text = tr("Sculpt surface %1: click two surface points; their distance is held (set it in the inspector).").arg(s);
+            break;
+        }
         break;
+    }
     case Mode::Surface: text = surfaceGuidance(); break;
     }
     statusBar()->showMessage(text);

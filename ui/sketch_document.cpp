@@ -168,6 +168,7 @@ void SketchDocument::setSculptBase(model::EntityId surface)
 {
     const model::Entity* e = model_.find(surface);
     sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
+    pendingBound_.clear();
 }
 
 void SketchDocument::setSculptStiffness(model::EntityId surface, double stiffness)

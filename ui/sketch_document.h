@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 #include <optional>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -94,6 +95,28 @@ public:
     /// Sets a sculpt's stiffness λ (undoable); the surface is solved again.
     void setSculptStiffness(model::EntityId surface, double stiffness);
     model::EntityId sculptBase() const { return sculptBase_; }
+    /// What Sculpt mode's input does (thesis ch. 6): a stroke becomes a target curve, or the bound
+    /// of the sculpt (a closed stroke over the surface); a click drops a point handle, blocks or
+    /// frees the nearest control point, or picks one end of a distance.
+    enum class SculptTool { Target, Bound, Handle, Block, Distance };
+    void setSculptTool(SculptTool tool) { sculptTool_ = tool; }
+    SculptTool sculptTool() const { return sculptTool_; }
+    /// Adds a target (the last of `added`: a curve from a stroke, or a handle's point) to the sculpt
+    /// of the sculpt base, and `edit`s its recipe (a new target's id reads kPreviousEntity until it
+    /// is added). A base that is a sculpt nothing depends on is replaced by one with this target
+    /// too (all its targets solved together, each plane's drag re-solving one factorization);
+    /// otherwise a new sculpt of the base is made. One undo step; the sculpt becomes the selection
+    /// and the next base. Returns the sculpt, 0 when there is no base.
+    model::EntityId sculptWith(std::vector<model::Entity> added, const std::function<void(model::SurfaceRecipe&)>& edit,
+                               const QString& text);
+    /// The sculpt base's bound from a closed stroke (world points; projected onto the base surface,
+    /// the nearest points). Sets lastStroke().message to what happened.
+    void setSculptBound(const std::vector<Eigen::Vector3d>& world);
+    /// Along the sculpt base's target curve `curve`, holds the surface's tangent across it at the
+    /// direction it has now in the middle (Fig. 6-4 d), or releases it; undoable.
+    void setSculptCurveTangent(model::EntityId sculpt, model::EntityId curve, bool hold);
+    /// The curve the last stroke made (a sculpt's newest target curve in Sculpt mode), or 0.
+    model::EntityId recognizedCurve() const { return model_.find(recognizedCurve_) ? recognizedCurve_ : 0; }
     void setStrokeMode(StrokeMode mode) { strokeMode_ = mode; }
     StrokeMode strokeMode() const { return strokeMode_; }
 
@@ -216,6 +239,9 @@ private:
     int candidateInUse_ = -1;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     model::EntityId sculptBase_ = 0;
+    SculptTool sculptTool_ = SculptTool::Target;
+    /// A bound drawn on a surface not sculpted yet, for its first sculpt.
+    std::vector<Eigen::Vector2d> pendingBound_;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::optional<model::Construction> surfaceMode_;

@@ -102,6 +102,12 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         }
     }
     if (stroke.points.size() < 2) return;
+    if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Bound) {
+        std::vector<Eigen::Vector3d> world;
+        for (const Eigen::Vector3d& p : stroke.points) world.push_back(stroke.frame.toWorld(p));
+        setSculptBound(world);
+        return;
+    }
     std::vector<model::Entity> added;
     model::EntityId plane = strokeOnPlane_;
     if (plane == 0) {
@@ -155,32 +161,34 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         for (int i : fit.corners) corners.push_back(stroke.points[static_cast<size_t>(i)]);
         feedback_->show(drawn, samples, corners);
         const bool sculpt = strokeMode_ == StrokeMode::Sculpt && model_.find(sculptBase_);
-        if (sculpt) {
-            // Thesis §5.2.3, ch. 6: the curve is a target; the base surface is deformed onto it, as
-            // a sculpt surface that follows the curve (and its plane's dragger) from now on.
-            model::Entity sculpted;
-            sculpted.kind = model::EntityKind::Surface;
-            sculpted.inputs = {sculptBase_, kPreviousEntity};
-            model::SurfaceRecipe recipe;
-            recipe.mode = model::Construction::Sculpt;
-            sculpted.recipe = recipe;
-            added.push_back(sculpted);
-        }
         const QString text = sculpt ? tr("Sculpt surface %1 onto a target curve").arg(sculptBase_)
                              : added.size() > 1 ? tr("Sketch curve on an auxiliary plane")
                                                 : tr("Sketch curve on plane %1").arg(plane);
-        undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         if (sculpt) {
-            const model::Entity* made = model_.find(selection_);  // the command selects the sculpt
+            // Thesis §5.2.3, ch. 6: the curve is a target; the base surface is deformed onto it, by
+            // a sculpt that follows the curve (and its plane's dragger) from now on — the same
+            // sculpt as the targets before it, so that all are met together.
+            sculptWith(std::move(added), {}, text);
+            const model::Entity* made = model_.find(selection_);  // the sculpt
             lastStroke_.message += made && made->failed() ? tr("; sculpt not solved: %1").arg(QString::fromStdString(made->buildError))
-                                                          : tr("; surface %1 sculpted onto it (deviation %2 mm at the key points)")
-                                                                .arg(selection_)
-                                                                .arg(made ? made->maxDeviation : 0.0, 0, 'g', 3);
-            sculptBase_ = selection_;  // the next target deforms this sculpt
+                                   : made && !made->solveMessage.empty()
+                                       ? tr("; surface %1 sculpted: %2").arg(selection_).arg(QString::fromStdString(made->solveMessage))
+                                       : tr("; surface %1 sculpted onto it (deviation %2 mm at the key points)")
+                                             .arg(selection_)
+                                             .arg(made ? made->maxDeviation : 0.0, 0, 'g', 3);
+        } else {
+            undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         }
         // The command selects what it added last: the curve, or the sculpt made from it.
         const model::Entity* last = model_.find(selection_);
-        recognizedCurve_ = sculpt && last && last->inputs.size() > 1 ? last->inputs[1] : selection_;
+        recognizedCurve_ = selection_;
+        if (sculpt && last) {
+            // The sculpt's newest target curve: the last curve among its inputs.
+            for (model::EntityId id : last->inputs) {
+                const model::Entity* in = model_.find(id);
+                if (in && in->kind == model::EntityKind::Curve) recognizedCurve_ = id;
+            }
+        }
         const model::Entity* made = model_.find(recognizedCurve_);
         feedbackPlane_ = made ? made->plane() : 0;
     } catch (const std::exception& e) {

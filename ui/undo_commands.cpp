@@ -18,8 +18,14 @@ void AddEntitiesCommand::redo()
 {
     for (size_t i = 0; i < entities_.size(); ++i) {
         model::Entity& e = entities_[i];
-        for (model::EntityId& input : e.inputs) {
-            if (input == kPreviousEntity && i > 0) input = entities_[i - 1].id;
+        auto resolve = [&](model::EntityId& id) {
+            if (id == kPreviousEntity && i > 0) id = entities_[i - 1].id;
+        };
+        for (model::EntityId& input : e.inputs) resolve(input);
+        if (e.recipe) {
+            // A sculpt's handle or curve tangent on the target added just before it.
+            for (auto& h : e.recipe->handles) resolve(h.point);
+            for (auto& t : e.recipe->curveTangents) resolve(t.curve);
         }
         // First run: the model assigns the id (0 asks for a fresh one); later runs reuse it.
         e.id = doc_.model().restore(e);
