@@ -10,7 +10,8 @@
 //
 // Constraints (../shared/interfaces.md): position {uv, value}, normal {uv, value}, curve {target,
 // domain?, key_points?}, curve-tangent {domain, value, key_points?}, distance {uv, uv2, value}; and
-// (README) tangents {uv, du, dv}: the tangent values S_u, S_v there (Table 6-1).
+// (README) tangents {uv, du, dv}: the tangent values S_u, S_v there (Table 6-1); angle {uv, value,
+// angle}: the normal there makes `angle` degrees with value (non-linear, chord-Newton steps).
 // Residuals: model units for position, curve (largest over the key points) and distance; radians
 // for normal and curve-tangent (at stiffness 1).
 #include "app/cli/cli_support.h"
@@ -18,6 +19,7 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/deformation/isocurve_deformation.h"
 #include "solvers/deformation/surface_deformation.h"
+#include "solvers/math_constants.h"
 
 #include <cmath>
 
@@ -94,6 +96,14 @@ std::vector<dfm::SurfaceConstraint> constraintsFromJson(const json& j, const sol
             k.domain = domainCurve(solvers::io::member(c, "domain", path), path + ".domain", s);
             k.value = solvers::io::pointFromJson(solvers::io::member(c, "value", path), path + ".value");
             if (k.value.norm() == 0.0) throw InputError(path + ".value: the tangent must not be the zero vector");
+        } else if (t == "angle") {
+            k.type = dfm::SurfaceConstraintType::Angle;
+            k.uv = uvFromJson(solvers::io::member(c, "uv", path), path + ".uv", s);
+            k.value = solvers::io::pointFromJson(solvers::io::member(c, "value", path), path + ".value");
+            if (k.value.norm() == 0.0) throw InputError(path + ".value: the direction must not be the zero vector");
+            const double degrees = solvers::io::numberFromJson(solvers::io::member(c, "angle", path), path + ".angle");
+            if (!(degrees >= 0.0 && degrees <= 180.0)) throw InputError(path + ".angle: must be in [0, 180] degrees");
+            k.angle = degrees * solvers::kPi / 180.0;
         } else if (t == "tangents") {
             k.type = dfm::SurfaceConstraintType::Tangents;
             k.uv = uvFromJson(solvers::io::member(c, "uv", path), path + ".uv", s);
@@ -106,7 +116,7 @@ std::vector<dfm::SurfaceConstraint> constraintsFromJson(const json& j, const sol
             k.distance = solvers::io::numberFromJson(solvers::io::member(c, "value", path), path + ".value");
             if (k.distance < 0.0) throw InputError(path + ".value: a distance must be >= 0");
         } else {
-            throw InputError(path + ".type: expected position, normal, curve, curve-tangent, tangents or distance, got " +
+            throw InputError(path + ".type: expected position, normal, curve, curve-tangent, tangents, angle or distance, got " +
                              solvers::io::describeValue(type));
         }
         if ((k.type == dfm::SurfaceConstraintType::Curve || k.type == dfm::SurfaceConstraintType::CurveTangent) &&

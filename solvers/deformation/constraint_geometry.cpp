@@ -190,7 +190,8 @@ void flagUnmet(const Surface3d& surface, const std::vector<SurfaceConstraint>& c
     for (size_t c = 0; c < report.residuals.size() && c < constraints.size(); ++c) {
         const bool angle = constraints[c].type == SurfaceConstraintType::Normal ||
                            constraints[c].type == SurfaceConstraintType::CurveTangent ||
-                           constraints[c].type == SurfaceConstraintType::Tangents;
+                           constraints[c].type == SurfaceConstraintType::Tangents ||
+                           constraints[c].type == SurfaceConstraintType::Angle;
         const double limit = angle ? kUnmetTolerance : kUnmetTolerance * size;
         if (report.residuals[c] > limit) {
             report.compromise = true;
@@ -287,6 +288,20 @@ std::vector<double> constraintResiduals(const Surface3d& before, const Surface3d
             case SurfaceConstraintType::Distance:
                 res = std::abs(lengthError(c));
                 break;
+            case SurfaceConstraintType::Angle: {
+                // λ = 1: radians between the angle reached and the one asked for; λ < 1: Normal's
+                // row measure with the goal normal n* of factor() (value2).
+                const Eigen::Vector3d a = factored[c].value.normalized(), goal = factored[c].value2;
+                if (lambda == 1.0) {
+                    res = std::abs(std::acos(std::clamp(after.normal(k.uv.x(), k.uv.y()).dot(a), -1.0, 1.0)) - k.angle);
+                } else {
+                    const auto now = after.derivatives(k.uv.x(), k.uv.y(), 1);
+                    const auto was = before.derivatives(k.uv.x(), k.uv.y(), 1);
+                    res = std::hypot((now[1][0].dot(goal) - (1.0 - lambda) * was[1][0].dot(goal)) / now[1][0].norm(),
+                                     (now[0][1].dot(goal) - (1.0 - lambda) * was[0][1].dot(goal)) / now[0][1].norm());
+                }
+                break;
+            }
         }
         out[c] = res;
     }

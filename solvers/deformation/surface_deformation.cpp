@@ -4,6 +4,7 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/deformation/constraint_geometry.h"
 #include "solvers/deformation/deformation_region.h"
+#include "solvers/math_constants.h"
 
 #include <Eigen/Geometry>
 #include <Eigen/QR>
@@ -165,7 +166,7 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
     keyT_.assign(constraints.size(), {});
     distanceDirection_.assign(constraints.size(), Eigen::Vector3d::Zero());
     boundCases_.assign(constraints.size(), BoundCase::Unbounded);
-    hasDistance_ = false;
+    nonLinear_ = false;
     std::optional<SurfaceProjector> projector;
     auto add = [&](size_t c, Coefficients coefficients, const Eigen::Vector3d& direction) {
         rows.push_back({std::move(coefficients), direction});
@@ -254,6 +255,27 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
                 }
                 break;
             }
+            case SurfaceConstraintType::Angle: {
+                // The normal n* nearest to the present one that makes the angle with value: in
+                // the plane of value and the present normal (of value and S_u when they are
+                // parallel), then Normal's linear rows S_u·n* = S_v·n* = 0 — met exactly, no
+                // iteration (the cosine's own linearization is singular where n ∥ value).
+                requireInDomain(surface, k.uv, at(c) + ".uv");
+                if (!k.value.allFinite() || k.value.norm() == 0.0) throw GeometryError(at(c) + ".value: the direction must be a finite non-zero vector");
+                if (!std::isfinite(k.angle) || k.angle < 0.0 || k.angle > kPi) throw GeometryError(at(c) + ".angle: must be in [0, 180] degrees");
+                const auto der = surface.derivatives(k.uv.x(), k.uv.y(), 1);
+                const Eigen::Vector3d N = der[1][0].cross(der[0][1]);
+                if (N.norm() == 0.0) throw GeometryError(at(c) + ".uv: the surface has no normal there");
+                const Eigen::Vector3d a = k.value.normalized();
+                Eigen::Vector3d tilt = N.normalized() - a * a.dot(N.normalized());
+                if (tilt.norm() < 1e-9) tilt = der[1][0] - a * a.dot(der[1][0]);
+                if (tilt.norm() == 0.0) throw GeometryError(at(c) + ".uv: the surface has no tangent there to tilt along");
+                const Eigen::Vector3d goal = std::cos(k.angle) * a + std::sin(k.angle) * tilt.normalized();
+                factored_[c].value2 = goal;  // the residual measures against it
+                add(c, basisCoefficients(surface, k.uv.x(), k.uv.y(), 1, 0), goal);
+                add(c, basisCoefficients(surface, k.uv.x(), k.uv.y(), 0, 1), goal);
+                break;
+            }
             case SurfaceConstraintType::Tangents: {
                 requireInDomain(surface, k.uv, at(c) + ".uv");
                 if (!k.value.allFinite() || !k.value2.allFinite()) throw GeometryError(at(c) + ".value: not a finite number");
@@ -272,7 +294,7 @@ void SurfaceDeformationSolver::factor(const Surface3d& surface, const std::vecto
                 const Eigen::Vector3d e = surface.evaluate(k.uv2.x(), k.uv2.y()) - surface.evaluate(k.uv.x(), k.uv.y());
                 if (e.norm() == 0.0) throw GeometryError(at(c) + ".uv2: the two points coincide; no direction to measure along");
                 distanceDirection_[c] = e.normalized();
-                hasDistance_ = true;
+                nonLinear_ = true;
                 // Linearization of |S(uv2) − S(uv)| about the current net: e/|e| · (ΔS2 − ΔS1).
                 add(c,
                     combine(basisCoefficients(surface, k.uv2.x(), k.uv2.y(), 0, 0), 1.0,
@@ -456,7 +478,7 @@ Surface3d SurfaceDeformationSolver::solve(const std::vector<SurfaceConstraint>& 
         const double start = (surface_.evaluate(k.uv2.x(), k.uv2.y()) - surface_.evaluate(k.uv.x(), k.uv.y())).norm();
         return start + lambda * (k.distance - start) - now;
     };
-    while (hasDistance_ && steps < kMaxDistanceSteps) {
+    while (nonLinear_ && steps < kMaxDistanceSteps) {
         Eigen::VectorXd db = Eigen::VectorXd::Zero(F_.rows());
         double worst = 0.0;
         for (Eigen::Index k = 0; k < F_.rows(); ++k) {

@@ -24,6 +24,7 @@ enum class SurfaceConstraintType {
     Curve,         ///< S(G(t_k)) = H(t_k) at m key points (eq. 6-24)      (3 rows per key point)
     CurveTangent,  ///< along G the cross tangent S_u a + S_v b ∥ value     (2 rows per key point)
     Distance,      ///< |S(uv2) − S(uv)| = distance: linearized, a few chord-Newton steps (1 row)
+    Angle,         ///< ∠(normal at uv, value) = angle: the nearest such normal n*, then Normal's rows (2 rows)
     Tangents,      ///< S_u(uv) = value, S_v(uv) = value2: tangent values (Table 6-1), linear (6 rows);
                    ///< a point handle turned by R holds R S_u°, R S_v°: its normal tilts with it, and
                    ///< a new turn changes only the right-hand side (no new factorization mid-drag)
@@ -47,8 +48,9 @@ struct SurfaceConstraint {
     Eigen::Vector2d uv = Eigen::Vector2d::Zero();
     Eigen::Vector2d uv2 = Eigen::Vector2d::Zero();  ///< Distance only
     Eigen::Vector3d value = Eigen::Vector3d::Zero();  ///< point (Position), direction (Normal, CurveTangent), S_u (Tangents)
-    Eigen::Vector3d value2 = Eigen::Vector3d::Zero();  ///< S_v (Tangents only)
+    Eigen::Vector3d value2 = Eigen::Vector3d::Zero();  ///< S_v (Tangents only); set by factor() for Angle: n*
     double distance = 0.0;                         ///< Distance only, ≥ 0
+    double angle = 0.0;                            ///< Angle only: radians in [0, π]
     std::optional<BSplineCurve<2>> domain;         ///< G: Curve (optional), CurveTangent (required)
     std::optional<BSplineCurve<3>> target;         ///< H: Curve only
     int keyPoints = 0;  ///< Curve/CurveTangent: 0 = decided by eq. 6-24; at most kMaxKeyPoints
@@ -127,7 +129,7 @@ private:
     Eigen::MatrixXd F1_, C1_;                           // separable: one coordinate's F and C
     bool separable_ = false;                            // only Position/Curve rows: per coordinate
     int rank_ = 0;
-    bool hasDistance_ = false;
+    bool nonLinear_ = false;  // Distance rows: chord-Newton steps after the linear solve
 };
 
 /// One-shot: the deformed surface meeting `constraints` (values from the constraints).

@@ -163,3 +163,17 @@ TEST(DeformCli, GivenTangentValuesAndABound_WhenRun_ThenMetAndTheBoundCasesAreRe
     EXPECT_EQ(bad.status, 2);
     EXPECT_NE(bad.err.find("constraints[0].dv"), std::string::npos) << bad.err;
 }
+
+TEST(DeformCli, GivenAnAngle_WhenRun_ThenTheNormalMakesItWithTheDirection)
+{
+    // The flat surface's normal is z; asked to make 25° with z at the middle.
+    const json input = {{"surface", flatSurface()},
+                        {"constraints", {{{"type", "angle"}, {"uv", {0.5, 0.5}}, {"value", {0, 0, 1}}, {"angle", 25.0}}}}};
+    const json out = runOk("deform", input);
+    EXPECT_LT(out["max_residual"].get<double>(), 1e-6);  // radians
+    const json bad = {{"surface", flatSurface()},
+                      {"constraints", {{{"type", "angle"}, {"uv", {0.5, 0.5}}, {"value", {0, 0, 1}}, {"angle", 190.0}}}}};
+    const CliResult r = runDeform(bad);
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("constraints[0].angle"), std::string::npos) << r.err;
+}

@@ -4,6 +4,7 @@
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/deformation/deformation_region.h"
 #include "solvers/deformation/isocurve_deformation.h"
+#include "solvers/math_constants.h"
 
 #include "tests/deformation/deformation_fixtures.h"
 
@@ -543,4 +544,39 @@ TEST(SurfaceDeformation, GivenABoundAndTargets_WhenFactored_ThenEachIsClassified
     EXPECT_EQ(deformSurface(s, {cs[2]}, options, &alone).points(), s.points());
     EXPECT_EQ(alone.moved, 0);
     EXPECT_GT(maxChange(out, s), 0.4);
+}
+
+TEST(SurfaceDeformation, GivenAnAngleConstraint_WhenDeformed_ThenTheNormalMakesThatAngleWithTheDirection)
+{
+    // Given: the normal near the middle of a gentle bump (almost vertical there), asked to make 30°
+    // with z and then 60° (tilted in the plane of z and the present normal), a point held beside.
+    const Surface3d s = wavySurface(9, 9);
+    for (double degrees : {30.0, 60.0}) {
+        SurfaceConstraint angle;
+        angle.type = SurfaceConstraintType::Angle;
+        angle.uv = {0.45, 0.5};
+        angle.value = Eigen::Vector3d::UnitZ();
+        angle.angle = degrees * kPi / 180.0;
+        const std::vector<SurfaceConstraint> cs = {angle, position(0.2, 0.2, s.evaluate(0.2, 0.2))};
+        // When
+        DeformationReport report;
+        const Surface3d out = deformSurface(s, cs, {}, &report);
+        // Then
+        const double reached = std::acos(std::clamp(out.normal(0.45, 0.5).dot(Eigen::Vector3d::UnitZ()), -1.0, 1.0));
+        EXPECT_NEAR(reached, angle.angle, kAngleTolerance) << degrees;
+        EXPECT_LT(report.maxResidual, kAngleTolerance) << report.message;
+        EXPECT_LT((out.evaluate(0.2, 0.2) - s.evaluate(0.2, 0.2)).norm(), kConstraintTolerance);
+    }
+    // An angle outside [0, π] is refused, naming the field
+    SurfaceConstraint bad;
+    bad.type = SurfaceConstraintType::Angle;
+    bad.uv = {0.5, 0.5};
+    bad.value = Eigen::Vector3d::UnitZ();
+    bad.angle = 4.0;
+    try {
+        deformSurface(s, {bad});
+        ADD_FAILURE() << "accepted";
+    } catch (const GeometryError& e) {
+        EXPECT_NE(std::string(e.what()).find("constraints[0].angle"), std::string::npos) << e.what();
+    }
 }
