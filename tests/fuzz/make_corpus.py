@@ -195,5 +195,17 @@ sculpt_doc["surfaces"].append({"id": 4, "construction": {"mode": "sculpt", "base
                                                          "objective": "displacement"}})
 write("document", "sculpt", sculpt_doc)
 write("plan", "sculpt", {"document": sculpt_doc})
+# A sculpt with every constraint beside its target: a handle point, a bound, blocked points, a distance
+# and a curve tangent (tests/model/sculpt_constraints_test.cpp).
+handles_doc = json.loads(json.dumps(sculpt_doc))
+handles_doc["surfaces"].pop()
+handles_doc["points"] = [{"id": 4, "position": [0, 0, 12], "rotation": [0.1, 0, 0, 0.995]}]
+handles_doc["surfaces"].append({"id": 5, "construction": {
+    "mode": "sculpt", "base": 2, "curves": [3], "points": [{"point": 4, "uv": [2.5, 2.5], "normal": True}],
+    "bound": [[0.5, 0.5], [4.5, 0.5], [4.5, 4.5], [0.5, 4.5]], "blocked": [[0, 0], [7, 7]],
+    "distances": [{"uv": [1, 1], "uv2": [4, 1], "value": 40}],
+    "curve_tangents": [{"curve": 3, "direction": [0, 1, 1]}]}})
+write("document", "sculpt_handles", handles_doc)
+write("plan", "sculpt_handles", {"document": handles_doc})
 write("network", "square", {"curves": sq, "loops": [[0, 1, 2, 3]], "fairing": 2})
 write("network", "closed_ring", {"curves": [ring(1, 0)], "loops": [[0]], "edge_length": 0.2})
