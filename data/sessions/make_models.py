@@ -329,7 +329,22 @@ def sculpt_cap():
     s.write("sculpt_cap.json")
 
 
+def sculpt_tangent():
+    """Thesis Fig. 6-4 d: the sheet sculpted by the cap's arch, then Sculpt > Hold the tangent across
+    the last target (Alt+G): along the arch the surface's cross tangent keeps the direction it has at
+    the arch's middle."""
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])
+    s.action("mode.sculpt")
+    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
+    s.stroke(arch)
+    s.action("sculpt.holdTangent")
+    s.write("sculpt_tangent.json")
+
+
 if __name__ == "__main__":
+    sculpt_tangent()
     sculpt_cap()
     networks()
     pull_circle()

@@ -370,4 +370,27 @@ TEST(SurfaceModels, TheCapFollowsItsTargetCurveWhenThePlaneIsDragged)
     for (const Eigen::Vector3d& p : model.find(2)->surface->points()) EXPECT_EQ(p.z(), 0.0);
 }
 
+TEST(SurfaceModels, HoldingTheTangentAcrossTheTargetKeepsItsDirectionAlongTheArch)
+{
+    // sculpt_tangent.json: the cap's arch drawn in Sculpt mode, then Sculpt > Hold the tangent across
+    // the last target (Alt+G) (data/sessions/make_models.py)
+    const model::Model model = readModel("sculpt_tangent.json");
+    const model::Entity* sculpt = nullptr;
+    for (const model::Entity* s : surfaces(model)) {
+        if (s->recipe && s->recipe->mode == model::Construction::Sculpt) sculpt = s;
+    }
+    ASSERT_NE(sculpt, nullptr);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    ASSERT_EQ(sculpt->recipe->curveTangents.size(), 1u);
+    const model::Entity& target = *model.find(sculpt->recipe->curveTangents[0].curve);
+    EXPECT_EQ(target.kind, model::EntityKind::Curve);
+    // Every constraint is met: the arch's key points (mm) and the cross tangent's angle (rad)
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    EXPECT_TRUE(sculpt->solveMessage.empty()) << sculpt->solveMessage;
+    // The direction held is across the arch (the arch runs along x in the plane y = 0): no x part
+    const Eigen::Vector3d held = sculpt->recipe->curveTangents[0].direction;
+    EXPECT_LT(std::abs(held.normalized().x()), 1e-3);
+    EXPECT_LT(guitest::curveToSurface(*target.world, *sculpt->surface), 0.5);
+}
+
 }  // namespace sculptline
