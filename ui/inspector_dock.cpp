@@ -8,6 +8,8 @@
 #include <QVBoxLayout>
 #include <QTextStream>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
@@ -129,6 +131,8 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
         if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
     } else if (e->kind == model::EntityKind::Point) {
         s << tr("At %1").arg(point(e->position)) << "\n";
+        const Eigen::AngleAxisd turn(e->rotation);
+        s << tr("Turned %1 degrees about %2").arg(turn.angle() * 180.0 / M_PI, 0, 'f', 1).arg(point(turn.axis())) << "\n";
     } else {
         if (e->recipe) {
             QStringList inputs;
@@ -138,6 +142,19 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
+            if (e->recipe->mode == model::Construction::Sculpt) {
+                // What the sculpt holds beside its target curves (thesis ch. 6).
+                const model::SurfaceRecipe& r = *e->recipe;
+                s << tr("Sculpt of surface %1: %2 handles, %3, %4 blocked points, %5 distances, %6 curve tangents")
+                         .arg(e->inputs.front())
+                         .arg(r.handles.size())
+                         .arg(r.bound.empty() ? tr("no bound") : tr("bound of %1 points").arg(r.bound.size()))
+                         .arg(r.blocked.size())
+                         .arg(r.distances.size())
+                         .arg(r.curveTangents.size())
+                  << "\n";
+            }
+            if (!e->solveMessage.empty()) s << tr("Solver: %1").arg(QString::fromStdString(e->solveMessage)) << "\n";
             if (e->failed() && e->surface) s << tr("Not rebuilt (the last surface is shown): %1").arg(QString::fromStdString(e->buildError)) << "\n";
             if (e->failed() && !e->surface) s << tr("Failed: %1").arg(QString::fromStdString(e->buildError)) << "\n";
         } else {
