@@ -154,7 +154,14 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         for (int i : fit.samples) samples.push_back(stroke.points[static_cast<size_t>(i)]);
         for (int i : fit.corners) corners.push_back(stroke.points[static_cast<size_t>(i)]);
         feedback_->show(drawn, samples, corners);
-        const bool sculpt = strokeMode_ == StrokeMode::Sculpt && model_.find(sculptBase_);
+        const model::Entity* base = strokeMode_ == StrokeMode::Sculpt ? model_.find(sculptBase_) : nullptr;
+        const bool sculpt = base != nullptr;
+        // A further target on a sculpt (that nothing is built from) joins its targets: one sculpt
+        // meets them all at once (thesis §6.4, Fig. 6-16: two target curves on two planes, each
+        // with its dragger). A sculpt of the sculpt would meet only its own target and pull the
+        // surface off the earlier ones.
+        const bool join = sculpt && base->recipe && base->recipe->mode == model::Construction::Sculpt &&
+                          model_.dependents(base->id).empty();
         if (sculpt) {
             // Thesis §5.2.3, ch. 6: the curve is a target; the base surface is deformed onto it, as
             // a sculpt surface that follows the curve (and its plane's dragger) from now on.
@@ -163,13 +170,27 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
             sculpted.inputs = {sculptBase_, kPreviousEntity};
             model::SurfaceRecipe recipe;
             recipe.mode = model::Construction::Sculpt;
+            if (join) {
+                sculpted.inputs = base->inputs;
+                sculpted.inputs.push_back(kPreviousEntity);
+                recipe = *base->recipe;  // its stiffness and objective
+            }
             sculpted.recipe = recipe;
             added.push_back(sculpted);
         }
-        const QString text = sculpt ? tr("Sculpt surface %1 onto a target curve").arg(sculptBase_)
+        const QString text = join     ? tr("Sculpt surface %1 onto one more target curve").arg(sculptBase_)
+                             : sculpt ? tr("Sculpt surface %1 onto a target curve").arg(sculptBase_)
                              : added.size() > 1 ? tr("Sketch curve on an auxiliary plane")
                                                 : tr("Sketch curve on plane %1").arg(plane);
-        undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+        if (join) {
+            // One undo step: the sculpt is replaced by one with the new target among its inputs.
+            undo_.beginMacro(text);
+            undo_.push(new DeleteEntityCommand(*this, sculptBase_));
+            undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+            undo_.endMacro();
+        } else {
+            undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+        }
         if (sculpt) {
             const model::Entity* made = model_.find(selection_);  // the command selects the sculpt
             lastStroke_.message += made && made->failed() ? tr("; sculpt not solved: %1").arg(QString::fromStdString(made->buildError))
