@@ -469,10 +469,10 @@ def sail():
         w, d = half[k], depth[k]
         sections.append(dict(cubic([[x, -w, 40], [x, -w, 40 - d], [x, w, 40 - d], [x, w, 40]]), id=10 + k))
     hull = {"id": 15, "construction": {"mode": "loft", "curves": [10 + k for k in range(5)]}}
-    # The sail: a flat bicubic 6 x 6 net in y = 0 between the mast (x = -40) and the leech, from
+    # The sail: a flat bicubic 12 x 12 net in y = 0 between the mast (x = -40) and the leech, from
     # the boom (z = 45) to the head (z = 150).
-    n = 6
-    knots = [0, 0, 0, 0, 1, 2, 3, 3, 3, 3]
+    n = 12
+    knots = uniform_knots(n)
     net = []
     for i in range(n):
         for j in range(n):
@@ -499,6 +499,7 @@ def sail():
         end = [start[0], start[1] + SAIL_DRAGS[k], start[2]]
         s.stroke([r([start[c] + (end[c] - start[c]) * i / 30 for c in range(3)]) for i in range(31)], dt=12)
     s.action("mode.view")
+    s.turn_view(220, 90)  # from above the stern's side: the sail's camber and both planes, for the picture
     s.write("sail.json")
 
 
