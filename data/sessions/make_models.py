@@ -46,6 +46,16 @@ class Session:
         self.click(origin)
         self.action("mode.sketch")
 
+    def turn_view(self, dx, dy, at=(400, 300)):
+        """View mode's drag from the viewport's centre (pixels): the examiner turns the camera. The
+        pointer rests before the release, so the view does not keep spinning."""
+        x, y = at
+        self.events.append({"type": "press", "x": x, "y": y, "button": "left", "t": self.tick(50)})
+        for k in range(1, 21):
+            self.events.append({"type": "move", "x": x + dx * k // 20, "y": y + dy * k // 20, "t": self.tick(15)})
+        self.events.append({"type": "move", "x": x + dx, "y": y + dy, "t": self.tick(400)})
+        self.events.append({"type": "release", "x": x + dx, "y": y + dy, "button": "left", "t": self.tick(400)})
+
     def write(self, name):
         with open(os.path.join(HERE, name), "w") as f:
             json.dump({"size": [800, 600], "events": self.events + [{"type": "wait", "ms": 50}]}, f, indent=1)
@@ -341,11 +351,185 @@ def sculpt_tangent():
     s.stroke(arch)
     s.action("sculpt.holdTangent")
     s.write("sculpt_tangent.json")
+def fish_fins():
+    """Thesis Fig. 6-14 (the fish's fins): the fish of fish() as a start document, its body selected,
+    Sculpt mode, and one target curve drawn over its back: the dorsal fin is pulled out of the body.
+    The tail is fish()'s boundary rotation of its outlines on the side plane. The body is a bicubic
+    net on ellipses between fish()'s body outlines, 30 x 33 points: a sculpt's change falls off
+    over a few rings of control points (solvers/deformation, force objective), and the boundary
+    rotation's 9 points around would carry the belly up with the fin."""
+    # The side plane (XZ, y = 0): local x = X - 10, local y = Z - 100; its jack above the fin.
+    o = [10, 0, 100]
+    planes = [plane(1, o, [0, -1, 0], 160, [1, 0, 0])]
+
+    def local(ctrl):
+        return [[p[0] - o[0], p[1] - o[2]] for p in ctrl]
+    curves = [dict(cubic(local(c)), id=k + 2, plane=1) for k, c in enumerate((FISH_TAIL_TOP, FISH_TAIL_BOTTOM))]
+    nu, nv = 30, 33
+    net = []
+    for i in range(nu):
+        x = -59 + 99 * i / (nu - 1)
+        top, bottom = bezier_z(FISH_TOP, x), bezier_z(FISH_BOTTOM, x)
+        centre, half = 0.5 * (top + bottom), 0.5 * (top - bottom)
+        for j in range(nv):
+            a = -math.pi + 2 * math.pi * j / (nv - 1)  # 0 on the back, +-pi on the belly
+            net.append(r([x, -FISH_WIDTH * half * math.sin(a), centre + half * math.cos(a)]))
+    body = {"id": 4, "degreeU": 3, "degreeV": 3, "knotsU": uniform_knots(nu), "knotsV": uniform_knots(nv),
+            "countU": nu, "countV": nv, "points": net}
+    surfaces = [body, {"id": 5, "construction": {"mode": "boundary-rotation", "curves": [2, 3]}}]
+    write_document("fish_fins_start.json", planes, curves, surfaces)
+    s = Session()
+    s.action("mode.select")
+    s.click([-10, -12, 44])  # the body's flank facing the viewer: select it
+    s.action("mode.sculpt")
+    s.stroke([[x, 0, z] for x, z in fish_fin()])
+    s.action("mode.view")
+    s.turn_view(170, 20)  # the fish from its side, for the picture
+    s.write("fish_fins.json")
+
+
+def uniform_knots(n, degree=3):
+    return [0] * degree + list(range(n - degree + 1)) + [n - degree] * degree
+
+
+def bezier_z(ctrl, x):
+    """z of the planar Bezier curve ctrl ([x, z] points, x increasing) at x."""
+    lo, hi = 0.0, 1.0
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if bezier_at(ctrl, mid)[0] < x:
+            lo = mid
+        else:
+            hi = mid
+    return bezier_at(ctrl, lo)[1]
+
+
+FISH_TOP = [[-60, 42], [-50, 72], [20, 70], [40, 43]]
+FISH_BOTTOM = [[-60, 38], [-45, 14], [15, 18], [40, 37]]
+FISH_TAIL_TOP = [[47, 43], [58, 48], [66, 62], [78, 66]]
+FISH_TAIL_BOTTOM = [[47, 37], [58, 32], [66, 20], [78, 14]]
+FISH_WIDTH = 0.6  # the body's half width, relative to its half height
+
+
+def fish_fin(x0=-44, x1=6, lift=2, height=20, n=40):
+    """The dorsal fin's target in the side plane, [x, z]: `lift` above the back at both ends and
+    `height` more in the middle (z = back(x) + lift + height sin(pi t))."""
+    out = []
+    for i in range(n):
+        t = i / (n - 1)
+        x = x0 + (x1 - x0) * t
+        out.append(r([x, bezier_z(FISH_TOP, x) + lift + height * math.sin(math.pi * t)]))
+    return out
+
+
+def bezier_at(ctrl, t):
+    pts = [list(c) for c in ctrl]
+    while len(pts) > 1:
+        pts = [[(1 - t) * a + t * b for a, b in zip(p, q)] for p, q in zip(pts, pts[1:])]
+    return pts[0]
+
+
+def penguin():
+    """Thesis Fig. 6-14 (the penguin's mouth): a penguin's body and head, a bicubic net on circles
+    about the vertical axis (a revolved shape, 32 x 33 points: the revolve mode's exact circles
+    have 9 points around, and a sculpt's change falls off over a few rings of them: the whole
+    body would lean towards the beak), selected; Sculpt mode, and one target curve drawn in front
+    of the face on the vertical plane through the axis: the beak is pulled out of the head."""
+    # Plane 1 vertical (XZ, y = 0): local x = X, local y = Z - 45; its jack inside the body.
+    o = [0, 0, 45]
+    planes = [plane(1, o, [0, -1, 0], 150, [1, 0, 0])]
+    nu, nv = 32, 33
+    net = []
+    for i in range(nu):
+        f = i / (nu - 1) * (len(PENGUIN_PROFILE) - 1)
+        k = min(int(f), len(PENGUIN_PROFILE) - 2)
+        f -= k
+        radius, z = [(1 - f) * a + f * b for a, b in zip(PENGUIN_PROFILE[k], PENGUIN_PROFILE[k + 1])]
+        for j in range(nv):
+            a = -math.pi + 2 * math.pi * j / (nv - 1)  # 0 at the front (+X), +-pi at the back
+            net.append(r([radius * math.cos(a), radius * math.sin(a), z]))
+    body = {"id": 2, "degreeU": 3, "degreeV": 3, "knotsU": uniform_knots(nu), "knotsV": uniform_knots(nv),
+            "countU": nu, "countV": nv, "points": net}
+    write_document("penguin_start.json", planes, (), [body])
+    s = Session()
+    s.action("mode.select")
+    s.click([8, -24, 30])  # the front of the body, facing the viewer: select it
+    s.action("mode.sculpt")
+    s.stroke(bezier([[x, 0, z] for x, z in PENGUIN_BEAK], 40))
+    s.action("mode.view")
+    s.turn_view(130, 0)  # the head from its side, the beak in profile, for the picture
+    s.write("penguin.json")
+
+
+# The body's profile, [radius, z] from the feet to the top of the head (the net's rows follow it).
+PENGUIN_PROFILE = [[30, 0], [34, 14], [31, 30], [24, 44], [21, 54], [25, 66], [24, 78], [16, 90], [4, 97], [0.5, 98]]
+# The beak's target (Bezier control points in plane 1, [x, z]): from the face above the mouth out to
+# the tip and back below it.
+PENGUIN_BEAK = [[22, 88], [38, 80], [44, 68], [22, 52]]
+
+
+def sail():
+    """Thesis Fig. 6-16 and §6.4: a sail above the boat's hull with two target curves on two
+    planes across it (one sculpt, two targets), then each plane dragged by its jack in turn: the
+    sail follows live and meets both moved targets."""
+    # The hull of boat(): its five sections as world curves (no planes) lofted.
+    xs = [-70, -35, 0, 35, 70]
+    half = [6, 26, 32, 28, 14]
+    depth = [24, 22, 20, 19, 16]
+    sections = []
+    for k, x in enumerate(xs):
+        w, d = half[k], depth[k]
+        sections.append(dict(cubic([[x, -w, 40], [x, -w, 40 - d], [x, w, 40 - d], [x, w, 40]]), id=10 + k))
+    hull = {"id": 15, "construction": {"mode": "loft", "curves": [10 + k for k in range(5)]}}
+    # The sail: a flat bicubic 12 x 12 net in y = 0 between the mast (x = -40) and the leech, from
+    # the boom (z = 45) to the head (z = 150).
+    n = 12
+    knots = uniform_knots(n)
+    net = []
+    for i in range(n):
+        for j in range(n):
+            s_, t = i / (n - 1), j / (n - 1)
+            net.append(r([(1 - s_) * -40 + s_ * (40 - 60 * t), 0, 45 + 105 * t]))
+    sheet = {"id": 3, "degreeU": 3, "degreeV": 3, "knotsU": knots, "knotsV": knots, "countU": n, "countV": n,
+             "points": net}
+    # Planes A and B: vertical, across the sail (YZ: normal +X, local x = Y, local y = Z), their
+    # jacks in front of the sail.
+    planes = [plane(1, SAIL_JACKS[0], [1, 0, 0], 140, [0, 1, 0]), plane(2, SAIL_JACKS[1], [1, 0, 0], 140, [0, 1, 0])]
+    write_document("sail_start.json", planes, sections, [sheet, hull])
+    s = Session()
+    s.action("mode.select")
+    for k in range(2):
+        s.click(SAIL_JACKS[k])     # plane k: the active plane
+        s.click(SAIL_CLICKS[k])    # the sail (then the sculpt): what is sculpted
+        s.action("mode.sculpt")
+        x, z0, z1, bulge = SAIL_TARGETS[k]
+        s.stroke([r([x, bulge * math.sin(math.pi * i / 40), z0 + (z1 - z0) * i / 40]) for i in range(41)])
+        s.action("mode.select")
+    # Drag plane A by its jack, then plane B: the sail follows each.
+    for k in range(2):
+        start = SAIL_JACKS[k]
+        end = [start[0], start[1] + SAIL_DRAGS[k], start[2]]
+        s.stroke([r([start[c] + (end[c] - start[c]) * i / 30 for c in range(3)]) for i in range(31)], dt=12)
+    s.action("mode.view")
+    s.turn_view(220, 90)  # from above the stern's side: the sail's camber and both planes, for the picture
+    s.write("sail.json")
+
+
+# The sail's planes (jack positions: high and in front, so that no jack hides where a stroke or a
+# click begins), where the session clicks the sail to select it, the targets
+# ([x, z from, z to, bulge in +y]: y = bulge * sin(pi t)) and the drags along +Y (mm).
+SAIL_JACKS = [[-20, -30, 120], [10, -30, 120]]
+SAIL_CLICKS = [[0, 0, 60], [0, 0, 60]]
+SAIL_TARGETS = [[-20, 62, 145, 14], [10, 62, 92, 10]]
+SAIL_DRAGS = [12, 10]
 
 
 if __name__ == "__main__":
     sculpt_tangent()
     sculpt_cap()
+    fish_fins()
+    penguin()
+    sail()
     networks()
     pull_circle()
     pin_pull()

@@ -145,7 +145,17 @@ int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const
                   const Eigen::Vector2d& footEnd)
 {
     const int bends = static_cast<int>(std::floor(turning(target) / kTurningPerKeyPoint));
-    return std::clamp(spansCrossed(surface, footStart, footEnd) + bends, 2, kMaxKeyPoints);
+    const int spans = spansCrossed(surface, footStart, footEnd);
+    // But no more than the net can meet along the feet: the spans crossed hold spans + p basis
+    // functions in that direction, and with as many key points as functions, or one fewer, the
+    // collocation is so ill-conditioned that the net swings far away to meet them exactly (a fin
+    // drawn over a fish's back, 17 key points on 17 functions: control points moved 4.6e5 mm for a
+    // 9 mm fin). Two fewer than the functions keeps the solve exact and the change the target's size.
+    const double wu = surface.domainEnd(Direction::U) - surface.domainStart(Direction::U);
+    const double wv = surface.domainEnd(Direction::V) - surface.domainStart(Direction::V);
+    const bool alongU = std::abs(footEnd.x() - footStart.x()) / wu >= std::abs(footEnd.y() - footStart.y()) / wv;
+    const int degree = surface.degree(alongU ? Direction::U : Direction::V);
+    return std::clamp(std::min(spans + bends, spans + degree - 2), 2, kMaxKeyPoints);
 }
 
 KeyPoints curveKeyPoints(const Surface3d& surface, const SurfaceConstraint& k, const SurfaceProjector* projector)

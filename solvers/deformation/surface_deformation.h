@@ -169,7 +169,8 @@ double forceChange(const Surface3d& before, const Surface3d& after);
 constexpr int kMaxKeyPoints = 256;
 
 /// Number of key points on a target curve H by eq. 6-24: the knot spans crossed between the feet
-/// of H's ends in the dominant direction, plus one per π/8 of H's turning (more where it bends).
+/// of H's ends in the dominant direction, plus one per π/8 of H's turning (more where it bends),
+/// at most the spans crossed + the degree in that direction − 2 (what the net can meet well).
 int keyPointCount(const Surface3d& surface, const BSplineCurve<3>& target, const Eigen::Vector2d& footStart,
                   const Eigen::Vector2d& footEnd);
 

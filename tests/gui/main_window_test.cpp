@@ -319,5 +319,72 @@ TEST(MainWindow, SculptModeDeformsTheSelectedSurfaceOntoAStrokeAndUndoRestoresIt
     EXPECT_EQ(doc.model().find(base)->surface->points(), before);
 }
 
+
+TEST(MainWindow, ASecondTargetInSculptModeJoinsTheSculptsTargetsInOneUndoStep)
+{
+    // Given the default scene (plane 1 at y = 95, surface 3), the surface sculpted onto one arch
+    startApplication();
+    MainWindow window;
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    window.show();
+    SketchDocument& doc = window.document();
+    const model::EntityId base = 3;
+    doc.select(base);
+    window.action(QStringLiteral("mode.sculpt"))->trigger();
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
+    const auto arch = [&frame](double x0, double x1, double height) {
+        manipulators::FinishedStroke stroke;
+        stroke.frame = frame;
+        for (int i = 0; i < 40; ++i) {
+            stroke.points.emplace_back(x0 + (x1 - x0) * i / 39.0, height * std::sin(3.14159265358979 * i / 39.0), 0.0);
+            stroke.times.push_back(0.01 * i);
+            stroke.rayTimes.push_back(0.01 * i);
+            stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
+            stroke.rayDirections.push_back(-frame.normal());
+        }
+        return stroke;
+    };
+    doc.addStroke(arch(-40.0, -5.0, 8.0));
+    const model::EntityId first = doc.selection();
+    const model::EntityId firstTarget = doc.model().find(first)->inputs[1];
+    const std::vector<Eigen::Vector3d> once = doc.model().find(first)->surface->points();
+    const int steps = doc.undoStack()->count();
+
+    // When a second target is drawn
+    doc.addStroke(arch(5.0, 40.0, 6.0));
+
+    // Then one sculpt of the base meets both (thesis §6.4: several targets at once), not a sculpt
+    // of the sculpt that would meet only the second; one undo step made it
+    const model::Entity* sculpt = doc.model().find(doc.selection());
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_TRUE(sculpt->recipe.has_value());
+    EXPECT_EQ(sculpt->recipe->mode, model::Construction::Sculpt);
+    ASSERT_EQ(sculpt->inputs.size(), 3u);
+    EXPECT_EQ(sculpt->inputs[0], base);
+    EXPECT_EQ(sculpt->inputs[1], firstTarget);
+    EXPECT_EQ(doc.model().find(first), nullptr);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+    EXPECT_EQ(doc.sculptBase(), sculpt->id);
+    int sculpts = 0;
+    for (const auto& [id, e] : doc.model().entities()) sculpts += e.recipe && e.recipe->mode == model::Construction::Sculpt ? 1 : 0;
+    EXPECT_EQ(sculpts, 1);
+
+    // And undo brings back the one-target sculpt as it was, without the second curve
+    const model::EntityId joined = sculpt->id, secondTarget = sculpt->inputs[2];
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.model().find(joined), nullptr);
+    EXPECT_EQ(doc.model().find(secondTarget), nullptr);
+    ASSERT_NE(doc.model().find(first), nullptr);
+    EXPECT_EQ(doc.model().find(first)->inputs.size(), 2u);
+    EXPECT_EQ(doc.model().find(first)->surface->points(), once);
+    // And redo joins them again
+    doc.undoStack()->redo();
+    ASSERT_NE(doc.model().find(joined), nullptr);
+    EXPECT_EQ(doc.model().find(joined)->inputs.size(), 3u);
+    EXPECT_EQ(doc.model().find(first), nullptr);
+}
+
 }  // namespace
 }  // namespace sculptline::ui

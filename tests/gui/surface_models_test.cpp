@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -391,6 +392,178 @@ TEST(SurfaceModels, HoldingTheTangentAcrossTheTargetKeepsItsDirectionAlongTheArc
     const Eigen::Vector3d held = sculpt->recipe->curveTangents[0].direction;
     EXPECT_LT(std::abs(held.normalized().x()), 1e-3);
     EXPECT_LT(guitest::curveToSurface(*target.world, *sculpt->surface), 0.5);
+}
+
+namespace {
+
+/// The one sculpt surface of a replayed document (null when there is none or several).
+const model::Entity* theSculpt(const model::Model& model)
+{
+    const model::Entity* found = nullptr;
+    for (const model::Entity* s : surfaces(model)) {
+        if (!s->recipe || s->recipe->mode != model::Construction::Sculpt) continue;
+        if (found) return nullptr;
+        found = s;
+    }
+    return found;
+}
+
+/// The largest move of a control point (i, j) between two nets of one layout, over the points
+/// `where(i, j)` picks.
+template <class Where>
+double largestMove(const solvers::Surface3d& before, const solvers::Surface3d& after, Where where)
+{
+    double worst = 0.0;
+    const int nv = before.countV();
+    for (int i = 0; i < before.countU(); ++i) {
+        for (int j = 0; j < nv; ++j) {
+            if (!where(i, j)) continue;
+            const size_t k = static_cast<size_t>(i * nv + j);
+            worst = std::max(worst, (after.points()[k] - before.points()[k]).norm());
+        }
+    }
+    return worst;
+}
+
+/// The sample of 201 along `curve` that maximises `key` (its tip, its highest point, ...).
+template <class Key>
+Eigen::Vector3d extremePoint(const solvers::Curve3d& curve, Key key)
+{
+    Eigen::Vector3d best = curve.evaluate(curve.domainStart());
+    for (int k = 0; k <= 200; ++k) {
+        const Eigen::Vector3d p = curve.evaluate(curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 200.0);
+        if (key(p) > key(best)) best = p;
+    }
+    return best;
+}
+
+double distanceTo(const solvers::Surface3d& surface, const Eigen::Vector3d& p)
+{
+    return solvers::SurfaceProjector(surface).project(p).distance;
+}
+
+}  // namespace
+
+TEST(SurfaceModels, AFinIsPulledOutOfTheFishsBack)
+{
+    // fish_fins.json (thesis Fig. 6-14): the fish's body (a 30 x 33 net, surface 4) selected, Sculpt
+    // mode, one target drawn in the side plane (y = 0) over the back, 2 mm above it at x = -44 and
+    // x = 6 and 22 mm above it in the middle (data/sessions/make_models.py fish_fin)
+    const model::Model model = readModel("fish_fins.json");
+    const model::Entity* sculpt = theSculpt(model);
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_EQ(sculpt->inputs.size(), 2u);
+    EXPECT_EQ(sculpt->inputs.front(), 4u);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    const solvers::Surface3d& body = *model.find(4)->surface;
+    const solvers::Curve3d& target = *model.find(sculpt->inputs[1])->world;
+    // The sculpt meets its key points; between them the surface's own smoothness decides
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    const double along = guitest::curveToSurface(target, *sculpt->surface);
+    EXPECT_LT(along, 0.5);
+    // The fin's tip is on the sculpted back, and far above the body it was pulled out of
+    const Eigen::Vector3d tip = extremePoint(target, [](const Eigen::Vector3d& p) { return p.z(); });
+    EXPECT_GT(tip.z(), 80.0);
+    EXPECT_LT(distanceTo(*sculpt->surface, tip), 0.5);
+    EXPECT_GT(distanceTo(body, tip), 15.0);
+    // The belly (the net's first and last columns, j = 0 and 32) and the nose stayed; the change
+    // fades over a few rings of the net (force objective), the tail end 45 mm behind the fin moves
+    // a little more
+    const int nv = body.countV(), nu = body.countU();
+    const double belly = largestMove(body, *sculpt->surface, [&](int, int j) { return j == 0 || j == nv - 1; });
+    const double nose = largestMove(body, *sculpt->surface, [](int i, int) { return i == 0; });
+    const double tail = largestMove(body, *sculpt->surface, [&](int i, int) { return i == nu - 1; });
+    EXPECT_LT(belly, 4.0);
+    EXPECT_LT(nose, 5.0);
+    EXPECT_LT(tail, 10.0);
+    std::cout << "fish fin: key-point deviation " << sculpt->maxDeviation << " mm, target to surface " << along
+              << " mm, tip " << distanceTo(body, tip) << " mm out of the body; belly moved " << belly << ", nose "
+              << nose << ", tail end " << tail << " mm\n";
+    EXPECT_GT(surfacePixels("fish_fins.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, APenguinsBeakIsPulledOutOfItsHead)
+{
+    // penguin.json (thesis Fig. 6-14): the penguin's body (a 32 x 33 net on circles about the Z axis,
+    // surface 2) selected, Sculpt mode, one target drawn in the plane y = 0 in front of the face,
+    // from the forehead (z = 88) out to about x = 37 and back to the chin (z = 52)
+    const model::Model model = readModel("penguin.json");
+    const model::Entity* sculpt = theSculpt(model);
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_EQ(sculpt->inputs.size(), 2u);
+    EXPECT_EQ(sculpt->inputs.front(), 2u);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    const solvers::Surface3d& head = *model.find(2)->surface;
+    const solvers::Curve3d& target = *model.find(sculpt->inputs[1])->world;
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    const double along = guitest::curveToSurface(target, *sculpt->surface);
+    EXPECT_LT(along, 0.5);
+    // The beak's tip is on the sculpt, well in front of the face it came from
+    const Eigen::Vector3d tip = extremePoint(target, [](const Eigen::Vector3d& p) { return p.x(); });
+    EXPECT_GT(tip.x(), 33.0);
+    EXPECT_LT(distanceTo(*sculpt->surface, tip), 0.5);
+    EXPECT_GT(distanceTo(head, tip), 8.0);
+    // The back of the head and body (the net's seam columns), the top of the head and the feet stayed
+    const int nv = head.countV(), nu = head.countU();
+    const double back = largestMove(head, *sculpt->surface, [&](int, int j) { return j == 0 || j == nv - 1; });
+    const double top = largestMove(head, *sculpt->surface, [&](int i, int) { return i == nu - 1; });
+    const double feet = largestMove(head, *sculpt->surface, [](int i, int) { return i == 0; });
+    EXPECT_LT(back, 2.5);
+    EXPECT_LT(top, 2.5);
+    EXPECT_LT(feet, 7.0);
+    std::cout << "penguin beak: key-point deviation " << sculpt->maxDeviation << " mm, target to surface " << along
+              << " mm, tip " << distanceTo(head, tip) << " mm out of the head; back moved " << back << ", top " << top
+              << ", feet " << feet << " mm\n";
+    EXPECT_GT(surfacePixels("penguin.png"), kMinSurfacePixels);
+}
+
+TEST(SurfaceModels, TheSailMeetsBothTargetsAfterEachPlaneIsDragged)
+{
+    // sail.json (thesis Fig. 6-16, §6.4): the sail (surface 3) above the boat's hull; a target on
+    // plane 1 (x = -20, bulging 14 mm in +Y) and, with the sculpt selected, one on plane 2 (x = 10,
+    // bulging 10 mm): one sculpt with two targets. Then plane 1 dragged by its jack 12 mm along +Y,
+    // then plane 2 by 10 mm (data/sessions/make_models.py sail)
+    const model::Model model = readModel("sail.json");
+    const model::Entity* sculpt = theSculpt(model);
+    ASSERT_NE(sculpt, nullptr);  // one sculpt, not a sculpt of a sculpt
+    ASSERT_EQ(sculpt->inputs.size(), 3u);
+    EXPECT_EQ(sculpt->inputs[0], 3u);
+    const model::Entity& a = *model.find(sculpt->inputs[1]);
+    const model::Entity& b = *model.find(sculpt->inputs[2]);
+    EXPECT_EQ(a.plane(), 1u);
+    EXPECT_EQ(b.plane(), 2u);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    // Each plane went where its jack was dragged, and its target with it
+    EXPECT_NEAR(model.find(1)->frame.origin.y(), -30.0 + 12.0, kPointerSlack);
+    EXPECT_NEAR(model.find(2)->frame.origin.y(), -30.0 + 10.0, kPointerSlack);
+    const auto middle = [](const solvers::Curve3d& c) { return c.evaluate(0.5 * (c.domainStart() + c.domainEnd())); };
+    EXPECT_NEAR(middle(*a.world).y(), 14.0 + 12.0, kPointerSlack);
+    EXPECT_NEAR(middle(*b.world).y(), 10.0 + 10.0, kPointerSlack);
+    // After both drags the sail meets both moved targets: the first one's too, though its plane was
+    // dragged before the second
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    const double alongA = guitest::curveToSurface(*a.world, *sculpt->surface);
+    const double alongB = guitest::curveToSurface(*b.world, *sculpt->surface);
+    EXPECT_LT(alongA, 0.5);
+    EXPECT_LT(alongB, 0.5);
+    // The flat sail was far from them
+    const solvers::Surface3d& flat = *model.find(3)->surface;
+    EXPECT_GT(distanceTo(flat, middle(*a.world)), 20.0);
+    EXPECT_GT(distanceTo(flat, middle(*b.world)), 15.0);
+    // The hull is untouched by the sculpt
+    for (const model::Entity* s : surfaces(model)) {
+        if (s->recipe && s->recipe->mode == model::Construction::Loft) expectCurvesMet(model, *s);
+    }
+    // Both drags were live: the replay measured their pointer moves
+    std::ifstream in(file("sail_stats.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    ASSERT_TRUE(stats.contains("drag_move")) << stats.dump();
+    EXPECT_GE(stats["drag_move"]["count"].get<int>(), 60);
+    std::cout << "sail: key-point deviation " << sculpt->maxDeviation << " mm, target A to surface " << alongA
+              << " mm, target B " << alongB << " mm; drag move p50 " << stats["drag_move"]["p50_ms"].get<double>()
+              << " ms, max " << stats["drag_move"]["max_ms"].get<double>() << " ms\n";
+    EXPECT_GT(surfacePixels("sail.png"), kMinSurfacePixels);
 }
 
 }  // namespace sculptline
