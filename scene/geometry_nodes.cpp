@@ -124,15 +124,17 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     return makeSurfaceNode(surface, solvers::tessellate(surface), style);
 }
 
-SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style)
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style,
+                             SurfaceNodeFields* fields)
 {
-    SoSeparator* root = makeMeshNode(mesh.vertices, mesh.normals, mesh.triangles, style);
+    SoSeparator* root = makeMeshNode(mesh.vertices, mesh.normals, mesh.triangles, style, fields);
     root->addChild(makeIsoLines(surface, mesh, style.color));
     return root;
 }
 
 SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3d>& normals,
-                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style)
+                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style,
+                          SurfaceNodeFields* fields)
 {
     SoSeparator* root = surfaceRoot(style);
     auto* coords = new SoCoordinate3;
@@ -158,6 +160,7 @@ SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const st
     }
     faces->coordIndex.finishEditing();
     root->addChild(faces);
+    if (fields) *fields = {coords, normalNode};
     return root;
 }
 
