@@ -14,6 +14,8 @@
 
 #include <Inventor/SoDB.h>
 #include <Inventor/SoPath.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoNormal.h>
@@ -149,7 +151,17 @@ TEST(SurfaceEntity, AnInPlaceRedrawIsTheMeshOnTheKeptGridAndTheRestingMeshIsAFre
         s.model.update();
         // Then the same node shows exactly the moved surface's mesh on the kept grid
         EXPECT_EQ(view.nodeOf(s.revolved), node);
-        EXPECT_EQ(drawnMesh(view, s.revolved), asDrawn(solvers::meshOnGrid(*s.model.find(s.revolved)->surface, before.u, before.v)));
+        const solvers::GridMesh kept = solvers::meshOnGrid(*s.model.find(s.revolved)->surface, before.u, before.v);
+        EXPECT_EQ(drawnMesh(view, s.revolved), asDrawn(kept));
+        // and its bounding box (the live face set's own) is the one of a plain node of that mesh
+        SoSeparator* plain = makeSurfaceNode(*s.model.find(s.revolved)->surface, kept);
+        plain->ref();
+        SoGetBoundingBoxAction live(SbViewportRegion(100, 100)), reference(SbViewportRegion(100, 100));
+        live.apply(node);
+        reference.apply(plain);
+        EXPECT_EQ(live.getBoundingBox().getMin(), reference.getBoundingBox().getMin());
+        EXPECT_EQ(live.getBoundingBox().getMax(), reference.getBoundingBox().getMax());
+        plain->unref();
     }
     EXPECT_EQ(view.inPlaceUpdates(), 2);
     // And once adapted again (the drag's end) the mesh is the one a fresh build draws
