@@ -183,4 +183,39 @@ void BM_DeformHandleDragEvent(benchmark::State& state)
 }
 BENCHMARK(BM_DeformHandleDragEvent)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
+// The GUI's per-event mesh of the 18x135 net during a drag: the surface's control points move, its
+// knots stay, and it is redrawn on the grid of its last adaptive tessellation (61 x 529 here).
+// Arg 0: meshOnGrid (basis of every grid line, vertices, normals, triangles made anew; the path of
+// a rebuilt node); arg 1: GridBasis::evaluate with the basis kept (vertices and normals only, the
+// path of the view's in-place update). Both give the same vertices and normals.
+void BM_DeformKeptGridMesh18x135(benchmark::State& state)
+{
+    const TableRow& row = kTable62[6];
+    Surface3d surface = sculptline::deformtest::wavySurface(row.nu, row.nv);
+    const GridMesh adaptive = tessellate(surface);
+    const GridBasis basis(surface, adaptive.u, adaptive.v);
+    std::vector<Eigen::Vector3d> vertices, normals;
+    std::vector<Eigen::Vector3d> points = surface.points();
+    int event = 0;
+    for (auto _ : state) {
+        // One drag event's new net: every control point moved a little (as a sculpt's solve does).
+        const double lift = 0.01 * (++event % 100);
+        for (size_t k = 0; k < points.size(); ++k) points[k].z() = surface.points()[k].z() + lift * std::sin(0.1 * k);
+        const Surface3d moved(surface.degreeU(), surface.degreeV(), surface.knotsU(), surface.knotsV(), surface.countU(),
+                              surface.countV(), points);
+        if (state.range(0) == 0) {
+            GridMesh mesh = meshOnGrid(moved, adaptive.u, adaptive.v);
+            benchmark::DoNotOptimize(mesh);
+        } else {
+            basis.evaluate(moved, vertices, normals);
+            benchmark::DoNotOptimize(vertices.data());
+            benchmark::DoNotOptimize(normals.data());
+        }
+    }
+    state.counters["vertices"] = static_cast<double>(adaptive.u.size() * adaptive.v.size());
+    state.SetLabel(std::to_string(adaptive.u.size()) + "x" + std::to_string(adaptive.v.size()) +
+                   (state.range(0) == 0 ? " meshOnGrid" : " kept basis"));
+}
+BENCHMARK(BM_DeformKeptGridMesh18x135)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 }  // namespace

@@ -3,7 +3,11 @@
 #include "scene/eigen_coin.h"
 #include "solvers/bspline/tessellation.h"
 
+#include <Inventor/actions/SoAction.h>
+#include <Inventor/elements/SoCoordinateElement.h>
+#include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoSubNode.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoCoordinate4.h>
 #include <Inventor/nodes/SoNurbsCurve.h>
@@ -24,7 +28,49 @@
 #include <vector>
 
 namespace sculptline::scene {
+namespace detail {
+
+/// The faces of a live surface node. Its bounding box is the box of the coordinates in the state:
+/// every vertex of a grid mesh belongs to a face, so it is the box SoIndexedFaceSet computes by
+/// visiting its 4 indices per triangle (256,000 for the 18x135 net's 61x529 grid), at an eighth of
+/// the visits. The viewer computes the scene's box for its clipping planes at every frame, and a
+/// surface redrawn in place during a drag invalidates its cached box at every event.
+class SurfaceFaceSet : public SoIndexedFaceSet {
+    SO_NODE_HEADER(SurfaceFaceSet);
+
+public:
+    static void initClass() { SO_NODE_INIT_CLASS(SurfaceFaceSet, SoIndexedFaceSet, "IndexedFaceSet"); }
+    SurfaceFaceSet() { SO_NODE_CONSTRUCTOR(SurfaceFaceSet); }
+
+    void computeBBox(SoAction* action, SbBox3f& box, SbVec3f& center) override
+    {
+        const SoCoordinateElement* coords = SoCoordinateElement::getInstance(action->getState());
+        if (vertexProperty.getValue() || coordIndex.getNum() == 0 || !coords->is3D() || coords->getNum() == 0) {
+            SoIndexedFaceSet::computeBBox(action, box, center);
+            return;
+        }
+        const SbVec3f* p = coords->getArrayPtr3();
+        SbVec3f lo = p[0], hi = p[0];
+        for (int i = 1; i < coords->getNum(); ++i) {
+            for (int k = 0; k < 3; ++k) {
+                lo[k] = std::min(lo[k], p[i][k]);
+                hi[k] = std::max(hi[k], p[i][k]);
+            }
+        }
+        box.setBounds(lo, hi);
+        center = box.getCenter();
+    }
+
+private:
+    ~SurfaceFaceSet() override = default;
+};
+
+SO_NODE_SOURCE(SurfaceFaceSet)
+
+}  // namespace detail
+
 namespace {
+
 
 /// Iso-lines darken the surface colour by this factor: visible on it, clearly part of it.
 constexpr float kIsoLineShade = 0.55f;
@@ -124,15 +170,17 @@ SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceSty
     return makeSurfaceNode(surface, solvers::tessellate(surface), style);
 }
 
-SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style)
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style,
+                             SurfaceNodeFields* fields)
 {
-    SoSeparator* root = makeMeshNode(mesh.vertices, mesh.normals, mesh.triangles, style);
+    SoSeparator* root = makeMeshNode(mesh.vertices, mesh.normals, mesh.triangles, style, fields);
     root->addChild(makeIsoLines(surface, mesh, style.color));
     return root;
 }
 
 SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3d>& normals,
-                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style)
+                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style,
+                          SurfaceNodeFields* fields)
 {
     SoSeparator* root = surfaceRoot(style);
     auto* coords = new SoCoordinate3;
@@ -147,7 +195,11 @@ SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const st
     root->addChild(binding);
     // Pushes the faces back in depth so the iso-lines drawn on them are not half hidden.
     root->addChild(new SoPolygonOffset);
-    auto* faces = new SoIndexedFaceSet;
+    // A live node (fields wanted: its vertices will be rewritten in place) takes the face set whose
+    // box costs one visit per vertex; exported and other nodes stay plain SoIndexedFaceSets.
+    using detail::SurfaceFaceSet;
+    if (fields && SurfaceFaceSet::getClassTypeId() == SoType::badType()) SurfaceFaceSet::initClass();
+    SoIndexedFaceSet* faces = fields ? new SurfaceFaceSet : new SoIndexedFaceSet;
     faces->coordIndex.setNum(static_cast<int>(triangles.size() * 4));
     int32_t* index = faces->coordIndex.startEditing();
     for (const Eigen::Vector3i& t : triangles) {
@@ -158,6 +210,7 @@ SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const st
     }
     faces->coordIndex.finishEditing();
     root->addChild(faces);
+    if (fields) *fields = {coords, normalNode};
     return root;
 }
 

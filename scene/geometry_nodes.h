@@ -7,6 +7,8 @@
 
 #include <Inventor/SbColor.h>
 
+class SoCoordinate3;
+class SoNormal;
 class SoSeparator;
 
 namespace sculptline::scene {
@@ -29,12 +31,21 @@ SoSeparator* makeCurveNode(const solvers::Curve3d& curve, const CurveStyle& styl
 /// SoSeparator { SoMaterial SoShapeHints SoCoordinate3 SoNormal SoNormalBinding SoIndexedFaceSet }
 /// with the kernel's per-vertex normals; both sides lit. Reference count 0, as above.
 SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const SurfaceStyle& style = {});
-/// The same from a mesh of `surface` already made (solvers::tessellate or solvers::meshOnGrid).
-SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style = {});
+/// The vertex and normal nodes of a surface node, for changing its shape in place (same grid, same
+/// indices: a drag) without rebuilding it.
+struct SurfaceNodeFields {
+    SoCoordinate3* coordinates = nullptr;
+    SoNormal* normals = nullptr;
+};
+/// The same from a mesh of `surface` already made (solvers::tessellate or solvers::meshOnGrid);
+/// `fields`, when given, receives its vertex and normal nodes.
+SoSeparator* makeSurfaceNode(const solvers::Surface3d& surface, const solvers::GridMesh& mesh, const SurfaceStyle& style = {},
+                             SurfaceNodeFields* fields = nullptr);
 /// A shaded triangle mesh (per-vertex normals, counter-clockwise triangles): the faces of a surface
 /// node without its iso-lines, or a curve network's mesh.
 SoSeparator* makeMeshNode(const std::vector<Eigen::Vector3d>& vertices, const std::vector<Eigen::Vector3d>& normals,
-                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style = {});
+                          const std::vector<Eigen::Vector3i>& triangles, const SurfaceStyle& style = {},
+                          SurfaceNodeFields* fields = nullptr);
 
 /// The same looks drawn by Coin's own NURBS nodes (SoNurbsCurve / SoNurbsSurface, tessellated by
 /// GLU at render time), for measuring the kernel-tessellation path against them (issue 5 §4).

@@ -11,6 +11,7 @@
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoNormal.h>
 #include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSwitch.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -211,13 +212,20 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuse
                                 it->second.v.front() == s.domainStart(solvers::Direction::V) &&
                                 it->second.v.back() == s.domainEnd(solvers::Direction::V);
         if (reuseGrid && sameDomain) {
-            node = makeSurfaceNode(s, solvers::meshOnGrid(s, it->second.u, it->second.v));
-            it->second.adaptive = false;
+            SurfaceGrid& grid = it->second;
+            node = makeSurfaceNode(s, solvers::meshOnGrid(s, grid.u, grid.v), {}, &grid.fields);
+            grid.adaptive = false;
+            grid.node = node;
+            grid.basis.reset();  // the knots changed (or may have): made anew when next needed
             ++gridReuses_;
         } else {
             solvers::GridMesh mesh = solvers::tessellate(s);
-            node = makeSurfaceNode(s, mesh);
-            grids_[e.id] = SurfaceGrid{std::move(mesh.u), std::move(mesh.v), true};
+            SurfaceGrid grid;
+            node = makeSurfaceNode(s, mesh, {}, &grid.fields);
+            grid.u = std::move(mesh.u);
+            grid.v = std::move(mesh.v);
+            grid.node = node;
+            grids_[e.id] = std::move(grid);
         }
     }
     ++nodeBuilds_;
@@ -276,7 +284,7 @@ void ModelView::entityUpdated(const model::Entity& e)
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeMeshEntityNode(e));
     }
-    if (e.kind == model::EntityKind::Surface && builtShape_[e.id] != e.shapeVersion) {
+    if (e.kind == model::EntityKind::Surface && builtShape_[e.id] != e.shapeVersion && !updateSurfaceInPlace(e)) {
         // A built surface follows its curves: re-tessellated once per update that rebuilt it.
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeSurfaceEntityNode(e, true));
@@ -284,6 +292,46 @@ void ModelView::entityUpdated(const model::Entity& e)
     if (e.kind != model::EntityKind::Plane || !drawable(e)) return;
     setFrame(frames_.at(e.id), e.frame);
     ++transformWrites_;
+}
+
+bool ModelView::updateSurfaceInPlace(const model::Entity& e)
+{
+    // Only the control points (or weights) moved, as in a drag: the grid, the triangles, the
+    // iso-lines and the basis of every grid line stay; the vertices and normals are a dense product
+    // of the kept basis with the new net, written into the node's fields. Anything else (new
+    // knots or net size, a node drawn differently, nothing drawn) takes the rebuild.
+    if (nurbsNodes_ || !e.surface) return false;
+    const auto it = grids_.find(e.id);
+    const auto node = nodes_.find(e.id);
+    if (it == grids_.end() || node == nodes_.end()) return false;
+    SurfaceGrid& grid = it->second;
+    if (grid.node != node->second || !grid.fields.coordinates || !grid.fields.normals) return false;
+    const solvers::Surface3d& s = *e.surface;
+    if (grid.basis && !grid.basis->fits(s)) return false;
+    if (!model::hasFiniteGeometry(e) || sculptedAway(e)) return false;  // the rebuild counts or hides it
+    if (!grid.basis) {
+        // The kept grid came from this surface's knots: a surface with other knots (an
+        // approximating mode added sections) has a domain the grid may not sample.
+        if (grid.u.empty() || grid.v.empty() || grid.u.front() != s.domainStart(solvers::Direction::U) ||
+            grid.u.back() != s.domainEnd(solvers::Direction::U) || grid.v.front() != s.domainStart(solvers::Direction::V) ||
+            grid.v.back() != s.domainEnd(solvers::Direction::V))
+            return false;
+        grid.basis = std::make_shared<solvers::GridBasis>(s, grid.u, grid.v);
+    }
+    grid.basis->evaluate(s, grid.vertices, grid.normals);
+    const int count = static_cast<int>(grid.vertices.size());
+    if (grid.fields.coordinates->point.getNum() != count || grid.fields.normals->vector.getNum() != count) return false;
+    SbVec3f* points = grid.fields.coordinates->point.startEditing();
+    for (int i = 0; i < count; ++i) points[i] = toSb(grid.vertices[static_cast<size_t>(i)]);
+    grid.fields.coordinates->point.finishEditing();
+    SbVec3f* normals = grid.fields.normals->vector.startEditing();
+    for (int i = 0; i < count; ++i) normals[i] = toSb(grid.normals[static_cast<size_t>(i)]);
+    grid.fields.normals->vector.finishEditing();
+    grid.adaptive = false;
+    builtShape_[e.id] = e.shapeVersion;
+    ++gridReuses_;
+    ++inPlaceUpdates_;
+    return true;
 }
 
 void ModelView::constraintAdded(const model::Constraint& c)

@@ -12,6 +12,7 @@
 #include "model/model.h"
 
 #include <map>
+#include <memory>
 #include <vector>
 
 class SoCoordinate3;
@@ -50,6 +51,9 @@ public:
     int refineSurfaces();
     /// Surface nodes built on a reused parameter grid since construction.
     int gridReuses() const { return gridReuses_; }
+    /// Live rebuilds drawn by rewriting the surface node's vertices and normals in place (same
+    /// grid, same knots: no node, index or basis made anew); each also counts as a grid reuse.
+    int inPlaceUpdates() const { return inPlaceUpdates_; }
     /// Entities not drawn (or not moved) because a coordinate was not finite (model::hasFiniteGeometry).
     int nonFiniteRejections() const { return nonFiniteRejections_; }
 
@@ -85,10 +89,18 @@ private:
     /// A curve network mesh's node, named and registered.
     SoSeparator* makeMeshEntityNode(const model::Entity& entity);
 
+    /// Rewrites the vertices and normals of surface `e`'s node on its kept grid when only its
+    /// control points (or weights) changed; false (nothing done) when it cannot.
+    bool updateSurfaceInPlace(const model::Entity& entity);
+
     /// The parameter grid a surface was last tessellated on.
     struct SurfaceGrid {
         std::vector<double> u, v;
         bool adaptive = true;  ///< false: the node was built on a reused grid
+        SoSeparator* node = nullptr;  ///< the node drawn on this grid, and its vertex and normal nodes
+        SurfaceNodeFields fields;
+        std::shared_ptr<solvers::GridBasis> basis;  ///< made at the first in-place update
+        std::vector<Eigen::Vector3d> vertices, normals;  ///< scratch of the in-place updates
     };
     CurveStyle curveStyle(model::EntityId id) const;
 
@@ -104,6 +116,7 @@ private:
     std::map<model::ConstraintId, std::pair<SoSeparator*, SoCoordinate3*>> pins_;
     std::map<model::EntityId, SurfaceGrid> grids_;
     int gridReuses_ = 0;
+    int inPlaceUpdates_ = 0;
     int nonFiniteRejections_ = 0;
     model::EntityId hiddenIgnoring_ = 0;  ///< a sculpt being removed, while its base is redrawn
     std::map<model::EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from

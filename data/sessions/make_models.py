@@ -9,6 +9,7 @@ the window frames the scene. Units: mm, Z up."""
 import json
 import math
 import os
+import re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MODELS = os.path.join(os.path.dirname(HERE), "models")
@@ -88,12 +89,16 @@ def plane(pid, origin, normal, size, x_axis):
     return {"id": pid, "origin": origin, "normal": normal, "size": size, "xAxis": x_axis}
 
 
-def write_document(name, planes, curves=(), surfaces=()):
+def write_document(name, planes, curves=(), surfaces=(), compact=False):
+    """compact: lists of numbers on one line each (a large control net stays a small file)."""
     doc = {"units": "mm", "grid": {"size": 200, "spacing": 10}, "planes": planes,
            "curves": list(curves), "surfaces": list(surfaces)}
+    text = json.dumps(doc, indent=1)
+    if compact:
+        text = re.sub(r"\[\s*(-?[0-9.e+-]+(?:,\s*-?[0-9.e+-]+)*)\s*\]",
+                      lambda m: "[" + ",".join(v.strip() for v in m.group(1).split(",")) + "]", text)
     with open(os.path.join(MODELS, name), "w") as f:
-        json.dump(doc, f, indent=1)
-        f.write("\n")
+        f.write(text + "\n")
 
 
 def bottle():
@@ -524,7 +529,39 @@ SAIL_TARGETS = [[-20, 62, 145, 14], [10, 62, 92, 10]]
 SAIL_DRAGS = [12, 10]
 
 
+def sculpt_18x135():
+    """Table 6-2's largest net in the GUI (issue 13 §3): a long, gently curved strip with an 18 x 135
+    bicubic control net (18 across, in Y; 135 along, in X), sculpted by one target arch on plane 1
+    (facing +X, at x = -100, across the strip); the session drags that plane by its jack 150 mm
+    along the strip in 60 moves, the sculpted bump following at every event."""
+    # Plane 1: normal +X, local x = world Y, local y = world Z - 70; its jack at (-100, 0, 70) clear
+    # of the strip (at most 20 high) and of the arch (about 33 high).
+    planes = [plane(1, [-100, 0, 70], [1, 0, 0], 120, [0, 1, 0])]
+    cu, cv = 18, 135
+    knots_u = [0] * 4 + list(range(1, cu - 3)) + [cu - 3] * 4
+    knots_v = [0] * 4 + list(range(1, cv - 3)) + [cv - 3] * 4
+    net = []
+    for i in range(cu):
+        y = -40 + 80 * i / (cu - 1)
+        for j in range(cv):
+            x = -200 + 400 * j / (cv - 1)
+            net.append(r([x, y, 20 * (1 - (x / 200) ** 2) - 0.002 * y * y]))
+    strip = {"id": 2, "degreeU": 3, "degreeV": 3, "knotsU": knots_u, "knotsV": knots_v, "countU": cu,
+             "countV": cv, "points": net}
+    # The target (curve 3, in plane 1's frame): a cubic arch across the strip, its ends near the
+    # surface (z about 12.5 at y = +-35), its crest about 33 mm high.
+    arch = dict(cubic([[-35, -57.5], [-15, -30], [15, -30], [35, -57.5]]), id=3, plane=1)
+    sculpt = {"id": 4, "construction": {"mode": "sculpt", "base": 2, "curves": [3]}}
+    write_document("sculpt_18x135.json", planes, [arch], [strip, sculpt], compact=True)
+    s = Session()
+    s.action("mode.select")
+    start, end = [-100, 0, 70], [50, 0, 70]
+    s.stroke([r([start[k] + (end[k] - start[k]) * i / 60 for k in range(3)]) for i in range(61)], dt=12)
+    s.write("sculpt_18x135_drag.json")
+
+
 if __name__ == "__main__":
+    sculpt_18x135()
     sculpt_tangent()
     sculpt_cap()
     fish_fins()

@@ -189,14 +189,9 @@ double smallestGap(const std::vector<double>& p)
 
 /// Values and first derivatives of the degree+1 basis functions at each parameter (A2.3 once per
 /// grid line, not once per vertex).
-struct LineBasis {
-    int span = 0;
-    Eigen::MatrixXd d;  ///< row 0 values, row 1 first derivatives
-};
-
-std::vector<LineBasis> lineBases(int degree, const KnotVector& knots, const std::vector<double>& params)
+std::vector<GridBasis::Line> lineBases(int degree, const KnotVector& knots, const std::vector<double>& params)
 {
-    std::vector<LineBasis> out;
+    std::vector<GridBasis::Line> out;
     out.reserve(params.size());
     for (double t : params) {
         const int span = findSpan(degree, knots, t);
@@ -213,13 +208,17 @@ constexpr double kFastNormalGuard = 1e-9;
 /// Points and normals of `mesh`'s grid by tensor contraction (The NURBS Book A3.5/A4.4 with the
 /// basis of each row and column computed once): per row the control net is contracted over u, then
 /// per vertex over v, in homogeneous coordinates; rational derivatives by A4.4's quotient rule.
-void evaluateGrid(const Surface3d& surface, GridMesh& mesh)
+void evaluateGrid(const Surface3d& surface, const std::vector<GridBasis::Line>& bu, const std::vector<GridBasis::Line>& bv,
+                  const std::vector<double>& us, const std::vector<double>& vs, std::vector<Eigen::Vector3d>& vertices,
+                  std::vector<Eigen::Vector3d>& normals)
 {
     const int p = surface.degreeU(), q = surface.degreeV();
     const int countV = surface.countV();
     const bool rational = surface.isRational();
-    const std::vector<LineBasis> bu = lineBases(p, surface.knotsU(), mesh.u);
-    const std::vector<LineBasis> bv = lineBases(q, surface.knotsV(), mesh.v);
+    vertices.clear();
+    normals.clear();
+    vertices.reserve(bu.size() * bv.size());
+    normals.reserve(bu.size() * bv.size());
     std::vector<Eigen::Vector4d> net(surface.points().size());
     for (size_t k = 0; k < net.size(); ++k) {
         const double w = rational ? surface.weights()[k] : 1.0;
@@ -227,7 +226,7 @@ void evaluateGrid(const Surface3d& surface, GridMesh& mesh)
     }
     std::vector<Eigen::Vector4d> row(static_cast<size_t>(countV)), rowU(static_cast<size_t>(countV));
     for (size_t r = 0; r < bu.size(); ++r) {
-        const LineBasis& a = bu[r];
+        const GridBasis::Line& a = bu[r];
         for (int j = 0; j < countV; ++j) {
             Eigen::Vector4d s = Eigen::Vector4d::Zero(), su = Eigen::Vector4d::Zero();
             for (int k = 0; k <= p; ++k) {
@@ -239,7 +238,7 @@ void evaluateGrid(const Surface3d& surface, GridMesh& mesh)
             rowU[j] = su;
         }
         for (size_t c = 0; c < bv.size(); ++c) {
-            const LineBasis& b = bv[c];
+            const GridBasis::Line& b = bv[c];
             Eigen::Vector4d s = Eigen::Vector4d::Zero(), su = Eigen::Vector4d::Zero(), sv = Eigen::Vector4d::Zero();
             for (int l = 0; l <= q; ++l) {
                 const size_t j = static_cast<size_t>(b.span - q + l);
@@ -253,13 +252,54 @@ void evaluateGrid(const Surface3d& surface, GridMesh& mesh)
             const Eigen::Vector3d n = du.cross(dv);
             const double lu = du.norm(), lv = dv.norm();
             const bool regular = lu > kFastNormalGuard * lv && lv > kFastNormalGuard * lu && n.norm() > kFastNormalGuard * lu * lv;
-            mesh.vertices.push_back(x);
-            mesh.normals.push_back(regular ? Eigen::Vector3d(n.normalized()) : surface.normal(mesh.u[r], mesh.v[c]));
+            vertices.push_back(x);
+            normals.push_back(regular ? Eigen::Vector3d(n.normalized()) : surface.normal(us[r], vs[c]));
         }
     }
 }
 
+/// Where the kernel defines no normal (a point with no tangent plane at all), the average of the
+/// adjacent faces (two triangles per cell, (p00, p10, p11) and (p00, p11, p01), face normal ~ Su x
+/// Sv) is what shading needs; left zero only if the faces are degenerate too.
+void fillUndefinedNormals(int rows, int cols, const std::vector<Eigen::Vector3d>& vertices, std::vector<Eigen::Vector3d>& normals)
+{
+    if (std::none_of(normals.begin(), normals.end(), [](const Eigen::Vector3d& n) { return n.squaredNorm() == 0.0; })) return;
+    std::vector<Eigen::Vector3d> faceSum(vertices.size(), Eigen::Vector3d::Zero());
+    for (int r = 0; r + 1 < rows; ++r) {
+        for (int c = 0; c + 1 < cols; ++c) {
+            const int i00 = r * cols + c, i10 = (r + 1) * cols + c, i11 = i10 + 1, i01 = i00 + 1;
+            for (const Eigen::Vector3i& t : {Eigen::Vector3i(i00, i10, i11), Eigen::Vector3i(i00, i11, i01)}) {
+                const Eigen::Vector3d n = (vertices[t[1]] - vertices[t[0]]).cross(vertices[t[2]] - vertices[t[0]]);
+                for (int k = 0; k < 3; ++k) faceSum[t[k]] += n;
+            }
+        }
+    }
+    for (size_t i = 0; i < normals.size(); ++i) {
+        if (normals[i].squaredNorm() == 0.0 && faceSum[i].squaredNorm() > 0.0) normals[i] = faceSum[i].normalized();
+    }
+}
+
 }  // namespace
+
+GridBasis::GridBasis(const Surface3d& surface, std::vector<double> u, std::vector<double> v)
+    : degreeU_(surface.degreeU()), degreeV_(surface.degreeV()), countU_(surface.countU()), countV_(surface.countV()),
+      knotsU_(surface.knotsU()), knotsV_(surface.knotsV()), u_(std::move(u)), v_(std::move(v)),
+      bu_(lineBases(degreeU_, knotsU_, u_)), bv_(lineBases(degreeV_, knotsV_, v_))
+{
+}
+
+bool GridBasis::fits(const Surface3d& surface) const
+{
+    return surface.degreeU() == degreeU_ && surface.degreeV() == degreeV_ && surface.countU() == countU_ &&
+           surface.countV() == countV_ && surface.knotsU() == knotsU_ && surface.knotsV() == knotsV_;
+}
+
+void GridBasis::evaluate(const Surface3d& surface, std::vector<Eigen::Vector3d>& vertices,
+                         std::vector<Eigen::Vector3d>& normals) const
+{
+    evaluateGrid(surface, bu_, bv_, u_, v_, vertices, normals);
+    fillUndefinedNormals(static_cast<int>(u_.size()), static_cast<int>(v_.size()), vertices, normals);
+}
 
 double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b)
 {
@@ -308,32 +348,20 @@ GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& toler
 
 GridMesh meshOnGrid(const Surface3d& surface, std::vector<double> u, std::vector<double> v)
 {
+    const GridBasis basis(surface, std::move(u), std::move(v));
     GridMesh mesh;
-    mesh.u = std::move(u);
-    mesh.v = std::move(v);
+    mesh.u = basis.u();
+    mesh.v = basis.v();
     const int rows = mesh.rows();
     const int cols = mesh.cols();
-    mesh.vertices.reserve(static_cast<size_t>(rows) * cols);
-    mesh.normals.reserve(static_cast<size_t>(rows) * cols);
-    evaluateGrid(surface, mesh);
+    basis.evaluate(surface, mesh.vertices, mesh.normals);
     // Two triangles per cell; (p00, p10, p11) has face normal ~ Su x Sv, the kernel's normal side.
-    std::vector<Eigen::Vector3d> faceSum(mesh.vertices.size(), Eigen::Vector3d::Zero());
+    mesh.triangles.reserve(2 * static_cast<size_t>(std::max(rows - 1, 0)) * static_cast<size_t>(std::max(cols - 1, 0)));
     for (int r = 0; r + 1 < rows; ++r) {
         for (int c = 0; c + 1 < cols; ++c) {
             const int i00 = r * cols + c, i10 = (r + 1) * cols + c, i11 = i10 + 1, i01 = i00 + 1;
-            for (const Eigen::Vector3i& t : {Eigen::Vector3i(i00, i10, i11), Eigen::Vector3i(i00, i11, i01)}) {
-                mesh.triangles.push_back(t);
-                const Eigen::Vector3d n =
-                    (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]);
-                for (int k = 0; k < 3; ++k) faceSum[t[k]] += n;
-            }
-        }
-    }
-    // Where the kernel defines no normal (a point with no tangent plane at all), the average of the
-    // adjacent faces is what shading needs; leave it zero only if the faces are degenerate too.
-    for (size_t i = 0; i < mesh.normals.size(); ++i) {
-        if (mesh.normals[i].squaredNorm() == 0.0 && faceSum[i].squaredNorm() > 0.0) {
-            mesh.normals[i] = faceSum[i].normalized();
+            mesh.triangles.emplace_back(i00, i10, i11);
+            mesh.triangles.emplace_back(i00, i11, i01);
         }
     }
     return mesh;

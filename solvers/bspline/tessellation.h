@@ -78,6 +78,33 @@ GridMesh tessellate(const Surface3d& surface, const TessellationTolerance& toler
 /// O(vertices) instead of the refinement's probes.
 GridMesh meshOnGrid(const Surface3d& surface, std::vector<double> u, std::vector<double> v);
 
+/// The basis functions (values and first derivatives) of a kept grid's rows and columns for
+/// surfaces of given degrees and knots. While only the control points (or weights) of a surface
+/// change, as in a drag, its mesh on the same grid is a small dense product of these with the net:
+/// evaluate() writes exactly the vertices and normals meshOnGrid() makes, without recomputing the
+/// basis or the triangles.
+class GridBasis {
+public:
+    struct Line {
+        int span = 0;
+        Eigen::MatrixXd d;  ///< row 0 values, row 1 first derivatives of the degree+1 functions
+    };
+    GridBasis(const Surface3d& surface, std::vector<double> u, std::vector<double> v);
+    /// True when `surface` has the degrees, knots and control-net size this basis was made for.
+    bool fits(const Surface3d& surface) const;
+    const std::vector<double>& u() const { return u_; }
+    const std::vector<double>& v() const { return v_; }
+    /// Vertices and normals (rows x cols, index r * cols + c) of `surface` on the grid, as
+    /// meshOnGrid() makes them. `surface` must fit().
+    void evaluate(const Surface3d& surface, std::vector<Eigen::Vector3d>& vertices,
+                  std::vector<Eigen::Vector3d>& normals) const;
+
+private:
+    int degreeU_ = 0, degreeV_ = 0, countU_ = 0, countV_ = 0;
+    KnotVector knotsU_, knotsV_;
+    std::vector<double> u_, v_;
+    std::vector<Line> bu_, bv_;
+};
 /// Distance from p to the segment [a, b] (a == b allowed).
 double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 

@@ -9,7 +9,17 @@
 #include "solvers/bspline/projection.h"
 #include "tests/common/surface_test_support.h"
 
+#include "scene/eigen_coin.h"
+#include "solvers/bspline/tessellation.h"
+
 #include <Inventor/SoDB.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoNormal.h>
+#include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -90,15 +100,75 @@ TEST(SurfaceEntity, TheViewRedrawsALiveRebuildOnItsLastGridAndAdaptsItWhenAsked)
     Scene s;
     ModelView view(s.model);
     const int builds = view.nodeBuilds();
-    // When plane 1 moves (a drag event): only the revolve is rebuilt, on its last adaptive grid
+    // When plane 1 moves (a drag event): only the revolve is redrawn, on its last adaptive grid,
+    // in place (its knots did not change: no node is built)
     s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(5, 0, 60)));
     s.model.update();
-    EXPECT_EQ(view.nodeBuilds(), builds + 1);
+    EXPECT_EQ(view.nodeBuilds(), builds);
     EXPECT_EQ(view.gridReuses(), 1);
+    EXPECT_EQ(view.inPlaceUpdates(), 1);
     // Then, when the drag ends, that one surface is tessellated adaptively again, and only once
     EXPECT_EQ(view.refineSurfaces(), 1);
     EXPECT_EQ(view.refineSurfaces(), 0);
     EXPECT_EQ(view.gridReuses(), 1);
+}
+
+/// The vertices and normals of the surface node of `id`.
+std::pair<std::vector<SbVec3f>, std::vector<SbVec3f>> drawnMesh(const ModelView& view, model::EntityId id)
+{
+    SoSearchAction search;
+    search.setType(SoCoordinate3::getClassTypeId());
+    search.apply(view.nodeOf(id));
+    const auto* coords = static_cast<SoCoordinate3*>(search.getPath()->getTail());
+    search.reset();
+    search.setType(SoNormal::getClassTypeId());
+    search.apply(view.nodeOf(id));
+    const auto* normals = static_cast<SoNormal*>(search.getPath()->getTail());
+    return {std::vector<SbVec3f>(coords->point.getValues(0), coords->point.getValues(0) + coords->point.getNum()),
+            std::vector<SbVec3f>(normals->vector.getValues(0), normals->vector.getValues(0) + normals->vector.getNum())};
+}
+
+std::pair<std::vector<SbVec3f>, std::vector<SbVec3f>> asDrawn(const solvers::GridMesh& mesh)
+{
+    std::pair<std::vector<SbVec3f>, std::vector<SbVec3f>> out;
+    for (const Eigen::Vector3d& p : mesh.vertices) out.first.push_back(toSb(p));
+    for (const Eigen::Vector3d& n : mesh.normals) out.second.push_back(toSb(n));
+    return out;
+}
+
+TEST(SurfaceEntity, AnInPlaceRedrawIsTheMeshOnTheKeptGridAndTheRestingMeshIsAFreshOne)
+{
+    // Given the revolve drawn on its adaptive grid
+    SoDB::init();
+    Scene s;
+    ModelView view(s.model);
+    const solvers::GridMesh before = solvers::tessellate(*s.model.find(s.revolved)->surface);
+    SoSeparator* node = view.nodeOf(s.revolved);
+    EXPECT_EQ(drawnMesh(view, s.revolved), asDrawn(before));
+    // When plane 1 moves twice (two drag events)
+    for (double x : {5.0, 12.0}) {
+        s.model.setPlaneFrame(s.plane, verticalFrame(Eigen::Vector3d(x, 0, 60)));
+        s.model.update();
+        // Then the same node shows exactly the moved surface's mesh on the kept grid
+        EXPECT_EQ(view.nodeOf(s.revolved), node);
+        const solvers::GridMesh kept = solvers::meshOnGrid(*s.model.find(s.revolved)->surface, before.u, before.v);
+        EXPECT_EQ(drawnMesh(view, s.revolved), asDrawn(kept));
+        // and its bounding box (the live face set's own) is the one of a plain node of that mesh
+        SoSeparator* plain = makeSurfaceNode(*s.model.find(s.revolved)->surface, kept);
+        plain->ref();
+        SoGetBoundingBoxAction live(SbViewportRegion(100, 100)), reference(SbViewportRegion(100, 100));
+        live.apply(node);
+        reference.apply(plain);
+        EXPECT_EQ(live.getBoundingBox().getMin(), reference.getBoundingBox().getMin());
+        EXPECT_EQ(live.getBoundingBox().getMax(), reference.getBoundingBox().getMax());
+        plain->unref();
+    }
+    EXPECT_EQ(view.inPlaceUpdates(), 2);
+    // And once adapted again (the drag's end) the mesh is the one a fresh build draws
+    EXPECT_EQ(view.refineSurfaces(), 1);
+    EXPECT_EQ(drawnMesh(view, s.revolved), asDrawn(solvers::tessellate(*s.model.find(s.revolved)->surface)));
+    ModelView fresh(s.model);
+    EXPECT_EQ(drawnMesh(view, s.revolved), drawnMesh(fresh, s.revolved));
 }
 
 TEST(SurfaceEntity, ANewCurveShapeRebuildsItsSurfacesOnce)

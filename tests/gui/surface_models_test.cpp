@@ -566,4 +566,56 @@ TEST(SurfaceModels, TheSailMeetsBothTargetsAfterEachPlaneIsDragged)
     EXPECT_GT(surfacePixels("sail.png"), kMinSurfacePixels);
 }
 
+TEST(SurfaceModels, TheLongStripsBumpFollowsItsTargetCurveAcrossTheStrip)
+{
+    // sculpt_18x135.json: Table 6-2's largest net, an 18 x 135 strip along X (2) sculpted by an
+    // arch (3) on plane 1, which faces +X at x = -100; the session drags plane 1 by its jack to
+    // x = 50 in 60 moves (data/sessions/make_models.py)
+    const model::Model model = readModel("sculpt_18x135.json");
+    const model::Entity* sculpt = model.find(4);
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_TRUE(sculpt->recipe && sculpt->recipe->mode == model::Construction::Sculpt);
+    EXPECT_FALSE(sculpt->failed()) << sculpt->buildError;
+    const model::Entity& base = *model.find(2);
+    ASSERT_EQ(base.surface->countU(), 18);
+    ASSERT_EQ(base.surface->countV(), 135);
+    // The plane and its arch went where the jack was dragged
+    EXPECT_NEAR(model.find(1)->frame.origin.x(), 50.0, kPointerSlack);
+    const solvers::Curve3d& target = *model.find(3)->world;
+    EXPECT_NEAR(target.evaluate(0.5 * (target.domainStart() + target.domainEnd())).x(), 50.0, kPointerSlack);
+    // The strip passes through the arch where it now stands: key points exactly, the curve between
+    // them within half a millimetre
+    EXPECT_LT(sculpt->maxDeviation, 1e-6);
+    EXPECT_LT(curveToSurface(target, *sculpt->surface), 0.5);
+    // The bump moved with it: the net changed under the arch's new place and hardly where it began
+    // (control column j lies at x = -200 + 400 j / 134)
+    const auto largestChangeNear = [&](double x) {
+        double change = 0.0;
+        for (int i = 0; i < 18; ++i) {
+            for (int j = 0; j < 135; ++j) {
+                if (std::abs(-200.0 + 400.0 * j / 134.0 - x) > 15.0) continue;
+                const size_t k = static_cast<size_t>(i * 135 + j);
+                change = std::max(change, (sculpt->surface->points()[k] - base.surface->points()[k]).norm());
+            }
+        }
+        return change;
+    };
+    EXPECT_GT(largestChangeNear(50.0), 8.0);
+    EXPECT_LT(largestChangeNear(-100.0), 0.1);
+    // The resting sculpt the program saved after the drag is the one a fresh build makes on opening
+    std::ifstream in(file("sculpt_18x135.json"));
+    const nlohmann::json saved = nlohmann::json::parse(in);
+    const nlohmann::json* savedSculpt = nullptr;
+    for (const nlohmann::json& s : saved.at("surfaces")) {
+        if (s.at("id") == 4) savedSculpt = &s;
+    }
+    ASSERT_NE(savedSculpt, nullptr);
+    ASSERT_EQ(savedSculpt->at("points").size(), sculpt->surface->points().size());
+    for (size_t k = 0; k < sculpt->surface->points().size(); ++k) {
+        for (int c = 0; c < 3; ++c) {
+            ASSERT_EQ(savedSculpt->at("points")[k][c].get<double>(), sculpt->surface->points()[k][c]) << k;
+        }
+    }
+}
+
 }  // namespace sculptline

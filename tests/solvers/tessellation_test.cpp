@@ -215,6 +215,38 @@ TEST(SurfaceTessellation, MeshOnAGivenGridMatchesTheKernelIncludingRationalAndCo
     }
 }
 
+TEST(SurfaceTessellation, AKeptGridBasisGivesTheMeshOfAMovedNetBitForBit)
+{
+    // Given a grid basis made for a polynomial patch and for a rational cone (collapsed apex edge)
+    for (const Surface3d& s : {bumpySurface(), rationalCone()}) {
+        const GridMesh adaptive = tessellate(s);
+        const GridBasis basis(s, adaptive.u, adaptive.v);
+        ASSERT_TRUE(basis.fits(s));
+        // When the control points move (the knots, degrees and weights stay), as in a drag
+        std::vector<Eigen::Vector3d> points = s.points();
+        // (the cone's apex row moved as one, so that its edge stays collapsed)
+        for (size_t k = 0; k < points.size(); ++k) {
+            const double t = k < static_cast<size_t>(s.countV()) ? 0.0 : static_cast<double>(k);
+            points[k] += Eigen::Vector3d(0.3 * std::sin(t) + 1.0, 0.2 * t, 1.5 * std::cos(3.0 * t));
+        }
+        const Surface3d moved(s.degreeU(), s.degreeV(), s.knotsU(), s.knotsV(), s.countU(), s.countV(), points, s.weights());
+        ASSERT_TRUE(basis.fits(moved));
+        std::vector<Eigen::Vector3d> vertices, normals;
+        basis.evaluate(moved, vertices, normals);
+        // Then the vertices and normals are exactly those of a mesh made anew on that grid
+        const GridMesh fresh = meshOnGrid(moved, adaptive.u, adaptive.v);
+        EXPECT_EQ(vertices, fresh.vertices);
+        EXPECT_EQ(normals, fresh.normals);
+    }
+    // And a basis does not fit a surface with other knots or another net size
+    const Surface3d a = bumpySurface();
+    const GridBasis basis(a, {a.domainStart(Direction::U), a.domainEnd(Direction::U)}, {a.domainStart(Direction::V), a.domainEnd(Direction::V)});
+    EXPECT_FALSE(basis.fits(rationalCone()));
+    KnotVector knots = a.knotsU();
+    knots[knots.size() / 2] += 1e-3;
+    EXPECT_FALSE(basis.fits(Surface3d(a.degreeU(), a.degreeV(), knots, a.knotsV(), a.countU(), a.countV(), a.points())));
+}
+
 TEST(SurfaceTessellation, NormalsAgreeWithTriangleWinding)
 {
     const GridMesh mesh = tessellate(bumpySurface());
