@@ -2,6 +2,9 @@
 
 #include "ui/curvature_plot.h"
 
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QSlider>
@@ -58,6 +61,23 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
         if (filling_ || sculpt_ == 0) return;
         Q_EMIT stiffnessEdited(sculpt_, percent / 100.0);
     });
+    // Thesis Fig. 6-5 c–d: a handle holds its point only, or its normal too (turned with the point).
+    holdNormals_ = new QCheckBox(tr("Hold normals at handles"), box);
+    holdNormals_->setObjectName(QStringLiteral("inspector.holdNormals"));
+    holdNormals_->setToolTip(tr("Checked: the surface's normal at each handle turns with the handle; unchecked: only the point is held"));
+    holdNormals_->setVisible(false);
+    layout->addWidget(holdNormals_);
+    connect(holdNormals_, &QCheckBox::toggled, this, [this](bool on) {
+        if (filling_ || sculpt_ == 0) return;
+        Q_EMIT holdNormalsEdited(sculpt_, on);
+    });
+    // The sculpt's distance constraints, one value each (undoable, the surface re-solves).
+    distanceBox_ = new QWidget(box);
+    distanceBox_->setObjectName(QStringLiteral("inspector.distances"));
+    distanceForm_ = new QFormLayout(distanceBox_);
+    distanceForm_->setContentsMargins(0, 0, 0, 0);
+    distanceBox_->setVisible(false);
+    layout->addWidget(distanceBox_);
     plot_ = new CurvaturePlot(box);
     layout->addWidget(plot_);
     setWidget(box);
@@ -73,6 +93,34 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
     sculpt_ = e && e->recipe && e->recipe->mode == model::Construction::Sculpt ? id : 0;
     stiffness_->setVisible(sculpt_ != 0);
     if (sculpt_ != 0) stiffness_->setValue(static_cast<int>(std::lround(100.0 * e->recipe->stiffness)));
+    const bool handles = sculpt_ != 0 && !e->recipe->handles.empty();
+    holdNormals_->setVisible(handles);
+    if (handles) {
+        const bool all = std::all_of(e->recipe->handles.begin(), e->recipe->handles.end(), [](const auto& h) { return h.holdNormal; });
+        holdNormals_->setChecked(all);
+    }
+    const size_t distanceCount = sculpt_ != 0 ? e->recipe->distances.size() : 0;
+    if (distances_.size() != distanceCount) {
+        while (distanceForm_->rowCount() > 0) distanceForm_->removeRow(0);
+        distances_.clear();
+        for (size_t k = 0; k < distanceCount; ++k) {
+            auto* spin = new QDoubleSpinBox(distanceBox_);
+            spin->setObjectName(QStringLiteral("inspector.distance%1").arg(k + 1));
+            spin->setRange(0.0, 1e5);
+            spin->setDecimals(2);
+            spin->setSuffix(QStringLiteral(" mm"));
+            spin->setKeyboardTracking(false);  // one undo step per value, not per digit typed
+            const int index = static_cast<int>(k);
+            connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, index](double value) {
+                if (filling_ || sculpt_ == 0) return;
+                Q_EMIT distanceEdited(sculpt_, index, value);
+            });
+            distanceForm_->addRow(tr("Distance %1").arg(k + 1), spin);
+            distances_.push_back(spin);
+        }
+    }
+    for (size_t k = 0; k < distanceCount; ++k) distances_[k]->setValue(e->recipe->distances[k].distance);
+    distanceBox_->setVisible(distanceCount > 0);
     points_->clear();
     curve_ = e && e->kind == model::EntityKind::Curve ? id : 0;
     points_->setVisible(curve_ != 0);

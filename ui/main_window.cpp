@@ -283,6 +283,10 @@ void MainWindow::createDocks()
             [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
     connect(inspector_, &InspectorDock::stiffnessEdited, this,
             [this](model::EntityId surface, double stiffness) { document_->setSculptStiffness(surface, stiffness); });
+    connect(inspector_, &InspectorDock::holdNormalsEdited, this,
+            [this](model::EntityId surface, bool hold) { document_->setSculptHoldNormals(surface, hold); });
+    connect(inspector_, &InspectorDock::distanceEdited, this,
+            [this](model::EntityId surface, int index, double distance) { document_->setSculptDistance(surface, index, distance); });
     connect(entities_, &EntityListDock::entityPicked, this, [this](model::EntityId id) { document_->select(id); });
 }
 

@@ -7,6 +7,8 @@
 #include "ui/undo_commands.h"
 
 #include <algorithm>
+#include <array>
+#include <limits>
 
 namespace sculptline::ui {
 namespace {
@@ -18,7 +20,141 @@ constexpr double kClosedStrokeFraction = 0.15;
 /// once per control point and key point when a sculpt is factored.
 constexpr size_t kMaxBoundPoints = 128;
 
+/// The Greville abscissae of a knot vector: where each control point "sits" in the domain.
+std::vector<double> greville(const std::vector<double>& knots, int degree, int count)
+{
+    std::vector<double> out(static_cast<size_t>(count), 0.0);
+    for (int i = 0; i < count; ++i) {
+        double sum = 0.0;
+        for (int k = 1; k <= degree; ++k) sum += knots[static_cast<size_t>(i + k)];
+        out[static_cast<size_t>(i)] = degree > 0 ? sum / degree : knots[static_cast<size_t>(i)];
+    }
+    return out;
+}
+
 }  // namespace
+
+const model::Entity* SketchDocument::currentSculpt() const
+{
+    const model::Entity* e = model_.find(sculptBase_);
+    return e && e->recipe && e->recipe->mode == model::Construction::Sculpt && e->surface ? e : nullptr;
+}
+
+void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d& point)
+{
+    lastStroke_ = {};
+    const model::Entity* base = model_.find(sculptBase_);
+    const model::Entity* sculpt = currentSculpt();
+    if (sculpt) base = model_.find(sculpt->inputs.front());
+    const model::Entity* clicked = model_.find(surface);
+    if (!base || !base->surface || !clicked || !clicked->surface || (clicked->id != base->id && (!sculpt || clicked->id != sculpt->id))) {
+        lastStroke_.message = base ? tr("Click on surface %1 (the surface being sculpted)").arg(sculpt ? sculpt->id : base->id)
+                                   : tr("Sculpt: select a surface first, then press Y");
+        Q_EMIT strokeFinished();
+        return;
+    }
+    // (u, v) where the click is, on the surface that was clicked: a sculpt keeps its base's knots
+    // (the deformation moves control points only), so its domain is the base's, and the point on
+    // the sculpt under the pointer is S(u, v) of the sculpt as it is now (a handle dropped there
+    // holds the surface where it is, nothing jumps).
+    const solvers::SurfaceProjection at = solvers::SurfaceProjector(*clicked->surface).project(point);
+    const Eigen::Vector2d uv(at.u, at.v);
+    switch (sculptTool_) {
+    case SculptTool::Handle: {
+        model::Entity p;
+        p.kind = model::EntityKind::Point;
+        p.position = at.point;
+        const model::EntityId made = sculptWith({p}, [uv](model::SurfaceRecipe& r) { r.handles.push_back({kPreviousEntity, uv, true}); },
+                                                tr("Drop a handle on surface %1").arg(clicked->id));
+        const model::Entity* s = model_.find(made);
+        lastStroke_.message = s ? tr("Handle at (u, v) = (%1, %2) on sculpt %3: drag its jack to pull the surface, turn its ball to tilt it")
+                                      .arg(uv.x(), 0, 'f', 3).arg(uv.y(), 0, 'f', 3).arg(made)
+                                : tr("No handle: nothing to sculpt");
+        break;
+    }
+    case SculptTool::Block: {
+        if (!sculpt) {
+            lastStroke_.message = tr("Blocking needs a sculpt: draw a target curve (Alt+T) or drop a handle (Alt+H) on surface %1 first").arg(base->id);
+            break;
+        }
+        const solvers::Surface3d& b = *base->surface;
+        const std::vector<double> gu = greville(b.knotsU(), b.degreeU(), b.countU());
+        const std::vector<double> gv = greville(b.knotsV(), b.degreeV(), b.countV());
+        // Nearest by Greville abscissae, each direction measured relative to its domain's length.
+        const double su = b.domainEnd(solvers::Direction::U) - b.domainStart(solvers::Direction::U);
+        const double sv = b.domainEnd(solvers::Direction::V) - b.domainStart(solvers::Direction::V);
+        int bi = 0, bj = 0;
+        double best = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < b.countU(); ++i) {
+            for (int j = 0; j < b.countV(); ++j) {
+                const double du = (gu[static_cast<size_t>(i)] - uv.x()) / su, dv = (gv[static_cast<size_t>(j)] - uv.y()) / sv;
+                if (du * du + dv * dv < best) {
+                    best = du * du + dv * dv;
+                    bi = i;
+                    bj = j;
+                }
+            }
+        }
+        model::SurfaceRecipe after = *sculpt->recipe;
+        const std::array<int, 2> ij{bi, bj};
+        auto it = std::find(after.blocked.begin(), after.blocked.end(), ij);
+        const bool block = it == after.blocked.end();
+        if (block) after.blocked.push_back(ij);
+        else after.blocked.erase(it);
+        undo_.push(new SetRecipeCommand(*this, sculpt->id, *sculpt->recipe, after,
+                                        block ? tr("Block control point (%1, %2)").arg(bi).arg(bj) : tr("Free control point (%1, %2)").arg(bi).arg(bj)));
+        lastStroke_.message = block ? tr("Control point (%1, %2) of surface %3 blocked: it never moves").arg(bi).arg(bj).arg(base->id)
+                                    : tr("Control point (%1, %2) of surface %3 free again").arg(bi).arg(bj).arg(base->id);
+        break;
+    }
+    case SculptTool::Distance: {
+        if (!sculpt) {
+            lastStroke_.message = tr("A distance needs a sculpt: draw a target curve (Alt+T) or drop a handle (Alt+H) on surface %1 first").arg(base->id);
+            break;
+        }
+        if (!pendingDistance_) {
+            pendingDistance_ = uv;
+            lastStroke_.message = tr("Distance: first end at (u, v) = (%1, %2); click the second").arg(uv.x(), 0, 'f', 3).arg(uv.y(), 0, 'f', 3);
+            break;
+        }
+        const Eigen::Vector2d first = *pendingDistance_;
+        pendingDistance_.reset();
+        const double d = (sculpt->surface->evaluate(first.x(), first.y()) - sculpt->surface->evaluate(uv.x(), uv.y())).norm();
+        model::SurfaceRecipe after = *sculpt->recipe;
+        after.distances.push_back({first, uv, d});
+        undo_.push(new SetRecipeCommand(*this, sculpt->id, *sculpt->recipe, after, tr("Hold a distance of %1 mm").arg(d, 0, 'f', 2)));
+        lastStroke_.message = tr("Distance of %1 mm held on sculpt %2 (change it in the inspector)").arg(d, 0, 'f', 2).arg(sculpt->id);
+        break;
+    }
+    case SculptTool::Target:
+    case SculptTool::Bound: return;
+    }
+    notifyChanged();
+    Q_EMIT strokeFinished();
+}
+
+void SketchDocument::setSculptHoldNormals(model::EntityId sculpt, bool hold)
+{
+    const model::Entity* e = model_.find(sculpt);
+    if (!e || !e->recipe || e->recipe->mode != model::Construction::Sculpt || e->recipe->handles.empty()) return;
+    model::SurfaceRecipe after = *e->recipe;
+    for (auto& h : after.handles) h.holdNormal = hold;
+    if (after.handles.size() == e->recipe->handles.size() &&
+        std::equal(after.handles.begin(), after.handles.end(), e->recipe->handles.begin(), [](const auto& a, const auto& b) { return a.holdNormal == b.holdNormal; }))
+        return;
+    undo_.push(new SetRecipeCommand(*this, sculpt, *e->recipe, after, hold ? tr("Hold normals at handles") : tr("Release normals at handles")));
+}
+
+void SketchDocument::setSculptDistance(model::EntityId sculpt, int index, double distance)
+{
+    const model::Entity* e = model_.find(sculpt);
+    if (!e || !e->recipe || e->recipe->mode != model::Construction::Sculpt || index < 0 ||
+        index >= static_cast<int>(e->recipe->distances.size()) || !(distance >= 0.0) || e->recipe->distances[static_cast<size_t>(index)].distance == distance)
+        return;
+    model::SurfaceRecipe after = *e->recipe;
+    after.distances[static_cast<size_t>(index)].distance = distance;
+    undo_.push(new SetRecipeCommand(*this, sculpt, *e->recipe, after, tr("Distance %1 set to %2 mm").arg(index + 1).arg(distance, 0, 'f', 2)));
+}
 
 model::EntityId SketchDocument::sculptWith(std::vector<model::Entity> added, const std::function<void(model::SurfaceRecipe&)>& edit,
                                            const QString& text)
