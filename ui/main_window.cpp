@@ -346,7 +346,7 @@ void MainWindow::updateStatus()
             text = tr("Sculpt surface %1: draw a closed loop over the surface; only the region inside deforms (Alt+T: back to targets).").arg(s);
             break;
         case SketchDocument::SculptTool::Handle:
-            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its ball to tilt the normal.").arg(s);
+            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its axes' ends to tilt the normal.").arg(s);
             break;
         case SketchDocument::SculptTool::Block:
             text = tr("Sculpt surface %1: click near a control point to block it (it never moves) or free it again.").arg(s);

@@ -178,6 +178,7 @@ void SketchDocument::deleteSelection()
 
 void SketchDocument::setSculptBase(model::EntityId surface)
 {
+    pendingDistance_.reset();
     const model::Entity* e = model_.find(surface);
     sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
     pendingBound_.clear();

@@ -6,6 +6,8 @@
 #include "solvers/bspline/projection.h"
 #include "ui/undo_commands.h"
 
+#include <Eigen/SVD>
+
 #include <algorithm>
 #include <array>
 #include <limits>
@@ -30,6 +32,35 @@ std::vector<double> greville(const std::vector<double>& knots, int degree, int c
         out[static_cast<size_t>(i)] = degree > 0 ? sum / degree : knots[static_cast<size_t>(i)];
     }
     return out;
+}
+
+/// Relative mismatch below which a surface's tangents at a point count as the base's turned.
+constexpr double kRigidTolerance = 1e-9;
+
+/// The rotation R that best carries the base's tangents S_u°, S_v° at `uv` onto the surface's S_u,
+/// S_v (least squares, Kabsch): identity where the surface is the base. `mismatch`: what is left,
+/// ‖R [S_u° S_v°] − [S_u S_v]‖ / ‖[S_u S_v]‖ (0 where the surface is only turned there).
+Eigen::Quaterniond tangentRotation(const solvers::Surface3d& base, const solvers::Surface3d& surface, const Eigen::Vector2d& uv,
+                                   double& mismatch)
+{
+    mismatch = 0.0;
+    const auto a = base.derivatives(uv.x(), uv.y(), 1);
+    const auto b = surface.derivatives(uv.x(), uv.y(), 1);
+    Eigen::Matrix<double, 3, 2> from, to;
+    from << a[1][0], a[0][1];
+    to << b[1][0], b[0][1];
+    if (from == to || !from.allFinite() || !to.allFinite()) return Eigen::Quaterniond::Identity();
+    const Eigen::Matrix3d h = from * to.transpose();
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+    Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+    d(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+    const Eigen::Matrix3d r = svd.matrixV() * d * svd.matrixU().transpose();
+    if (!r.allFinite()) {
+        mismatch = 1.0;
+        return Eigen::Quaterniond::Identity();
+    }
+    mismatch = (r * from - to).norm() / std::max(to.norm(), 1e-300);
+    return Eigen::Quaterniond(r).normalized();
 }
 
 }  // namespace
@@ -64,12 +95,27 @@ void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d&
         model::Entity p;
         p.kind = model::EntityKind::Point;
         p.position = at.point;
-        const model::EntityId made = sculptWith({p}, [uv](model::SurfaceRecipe& r) { r.handles.push_back({kPreviousEntity, uv, true}); },
+        // Turned as the clicked surface is turned from the base there (the rotation that carries the
+        // base's S_u, S_v onto the clicked surface's), so that a handle dropped on a sculpted region
+        // holds its tangent plane where it is; on the base itself, unturned.
+        double mismatch = 0.0;
+        p.rotation = tangentRotation(*base->surface, *clicked->surface, uv, mismatch);
+        // Its normal held as the sculpt's other handles' (the inspector's check box is for all of
+        // them), unless the sculpt is stretched there: held tangents are the base's turned (S_u, S_v
+        // = R S_u°, R S_v°), and no turn gives the stretched ones, so the surface would jump.
+        bool hold = mismatch < kRigidTolerance;
+        if (sculpt) {
+            for (const auto& h : sculpt->recipe->handles) hold = hold && h.holdNormal;
+        }
+        const model::EntityId made = sculptWith({p}, [uv, hold](model::SurfaceRecipe& r) { r.handles.push_back({kPreviousEntity, uv, hold}); },
                                                 tr("Drop a handle on surface %1").arg(clicked->id));
         const model::Entity* s = model_.find(made);
-        lastStroke_.message = s ? tr("Handle at (u, v) = (%1, %2) on sculpt %3: drag its jack to pull the surface, turn its ball to tilt it")
-                                      .arg(uv.x(), 0, 'f', 3).arg(uv.y(), 0, 'f', 3).arg(made)
-                                : tr("No handle: nothing to sculpt");
+        lastStroke_.message = !s ? tr("No handle: nothing to sculpt")
+                              : hold ? tr("Handle at (u, v) = (%1, %2) on sculpt %3: drag its jack to pull the surface, turn its axes to tilt it")
+                                           .arg(uv.x(), 0, 'f', 3).arg(uv.y(), 0, 'f', 3).arg(made)
+                                     : tr("Handle at (u, v) = (%1, %2) on sculpt %3 holds its point only (the surface is stretched there, or "
+                                          "the normals are released): check \"Hold normals at handles\" to hold them")
+                                           .arg(uv.x(), 0, 'f', 3).arg(uv.y(), 0, 'f', 3).arg(made);
         break;
     }
     case SculptTool::Block: {

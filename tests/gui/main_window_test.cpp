@@ -431,6 +431,22 @@ TEST(MainWindow, SculptClickToolsDropHandlesBlockPointsAndHoldDistancesUndoably)
     EXPECT_LT(meets(up), 1e-6);
     doc.undoStack()->undo();
     EXPECT_NEAR(apart(), d.distance, 1e-6);
+
+    // When a second handle is dropped on the lifted and turned sheet, which the least-force solve
+    // also stretched: it holds its point only, turned as the sheet is there at best, and the sheet
+    // does not jump
+    window.action(QStringLiteral("sculpt.handle"))->trigger();
+    const std::vector<Eigen::Vector3d> was = doc.model().find(sculptId)->surface->points();
+    doc.sculptClick(sculptId, doc.model().find(sculptId)->surface->evaluate(3.0, 1.0));
+    const model::Entity* two = doc.model().find(doc.sculptBase());
+    ASSERT_NE(two, nullptr);
+    ASSERT_EQ(two->recipe->handles.size(), 2u);
+    EXPECT_FALSE(two->recipe->handles.back().holdNormal);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("holds its point only"))) << doc.lastStroke().message.toStdString();
+    EXPECT_LT(doc.model().find(two->recipe->handles.back().point)->rotation.angularDistance(turn), 0.5);
+    double jump = 0.0;
+    for (size_t k = 0; k < was.size(); ++k) jump = std::max(jump, (two->surface->points()[k] - was[k]).norm());
+    EXPECT_LT(jump, 1e-9);
 }
 
 }  // namespace
