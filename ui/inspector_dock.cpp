@@ -184,6 +184,21 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
             s << tr("Made by: %1 of curves %2").arg(QString::fromLatin1(model::constructionName(e->recipe->mode)), inputs.join(QStringLiteral(", "))) << "\n";
             for (const model::SurfaceRecipe::Tangent& t : e->recipe->tangents)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
+            if (e->recipe->mode == model::Construction::Sculpt) {
+                // Its constraints beside the target curves (thesis Table 6-1).
+                for (const model::SurfaceRecipe::Handle& h : e->recipe->handles)
+                    s << tr("Handle: point %1 at (u, v) = (%2, %3)%4").arg(h.point).arg(h.uv.x(), 0, 'f', 3).arg(h.uv.y(), 0, 'f', 3)
+                             .arg(h.holdNormal ? tr(", normal held") : QString()) << "\n";
+                if (!e->recipe->bound.empty()) s << tr("Bound: a polygon of %1 points").arg(e->recipe->bound.size()) << "\n";
+                if (!e->recipe->blocked.empty()) {
+                    QStringList blocked;
+                    for (const auto& ij : e->recipe->blocked) blocked << QStringLiteral("(%1, %2)").arg(ij[0]).arg(ij[1]);
+                    s << tr("Blocked control points: %1").arg(blocked.join(QStringLiteral(", "))) << "\n";
+                }
+                for (const model::SurfaceRecipe::Distance& d : e->recipe->distances)
+                    s << tr("Distance %1 mm between (%2, %3) and (%4, %5)").arg(d.distance, 0, 'f', 2).arg(d.uv.x(), 0, 'f', 3).arg(d.uv.y(), 0, 'f', 3)
+                             .arg(d.uv2.x(), 0, 'f', 3).arg(d.uv2.y(), 0, 'f', 3) << "\n";
+            }
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
             if (e->failed() && e->surface) s << tr("Not rebuilt (the last surface is shown): %1").arg(QString::fromStdString(e->buildError)) << "\n";

@@ -58,8 +58,12 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(planeDraggers_->root());
     // Sculpt mode's click tools: a click on the surface drops a handle, blocks a point, picks a
     // distance's end; those tools draw no strokes.
-    strokeInput_->setClickCallback([this](const manipulators::PointerClick& c) { if (strokeMode_ == StrokeMode::Sculpt) sculptClick(c.surface, c.point); },
-                                   [this]() { return strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound; });
+    auto clickTool = [this]() { return strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound; };
+    strokeInput_->setClickCallback(
+        [this, clickTool](const manipulators::PointerClick& c) {
+            if (clickTool()) sculptClick(c.surface, c.point);
+        },
+        clickTool);
     model_.addObserver(this);
 }
 

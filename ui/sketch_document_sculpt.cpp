@@ -73,6 +73,7 @@ const model::Entity* SketchDocument::currentSculpt() const
 
 void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d& point)
 {
+    if (sculptTool_ == SculptTool::Target || sculptTool_ == SculptTool::Bound) return;  // stroke tools
     lastStroke_ = {};
     const model::Entity* base = model_.find(sculptBase_);
     const model::Entity* sculpt = currentSculpt();
@@ -173,7 +174,7 @@ void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d&
         break;
     }
     case SculptTool::Target:
-    case SculptTool::Bound: return;
+    case SculptTool::Bound: break;
     }
     notifyChanged();
     Q_EMIT strokeFinished();

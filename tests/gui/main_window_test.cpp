@@ -386,6 +386,7 @@ TEST(MainWindow, SculptClickToolsDropHandlesBlockPointsAndHoldDistancesUndoably)
     auto* inspector = window.findChild<InspectorDock*>();
     ASSERT_NE(inspector, nullptr);
     ASSERT_TRUE(inspector->holdNormalsBox()->isVisible());
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("Handle: point %1").arg(point))) << inspector->text().toStdString();
     EXPECT_TRUE(inspector->holdNormalsBox()->isChecked());
     inspector->holdNormalsBox()->setChecked(false);
     EXPECT_FALSE(doc.model().find(sculptId)->recipe->handles.front().holdNormal);
