@@ -81,6 +81,7 @@ StrokeInput::~StrokeInput()
 void StrokeInput::setEnabled(bool enabled)
 {
     if (!enabled && drawing_) endStroke(false);
+    if (!enabled) clicking_ = false;
     enabled_ = enabled;
 }
 
@@ -134,6 +135,36 @@ StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view)
     return result;
 }
 
+PointerClick pickSurface(SoEventCallback* node, const Eigen::Vector3d& view)
+{
+    PointerClick result;
+    result.view = view;
+    SoHandleEventAction* action = node->getAction();
+    SoRayPickAction pick(action->getViewportRegion());
+    pick.setPoint(node->getEvent()->getPosition());
+    pick.setRadius(1.0f);
+    pick.setPickAll(TRUE);
+    pick.apply(action->getPickRoot());
+    const SoPickedPointList& points = pick.getPickedPointList();
+    for (int k = 0; k < points.getLength(); ++k) {
+        if (pathHasDragger(points[k])) continue;
+        if (const auto surface = scene::entityAt(points[k]->getPath(), {model::EntityKind::Surface})) {
+            result.surface = surface->id;
+            result.point = scene::toEigen(points[k]->getPoint());
+            return result;
+        }
+    }
+    return result;
+}
+
+void StrokeInput::click(SoEventCallback* node)
+{
+    if (!clicked_) return;
+    Eigen::Vector3d from, direction;
+    if (!ray(node, from, direction)) return;
+    clicked_(pickSurface(node, direction));
+}
+
 std::optional<Eigen::Vector3d> intersectPlane(const model::PlaneFrame& frame, const Eigen::Vector3d& from,
                                               const Eigen::Vector3d& direction)
 {
@@ -173,17 +204,37 @@ void StrokeInput::onEvent(SoEventCallback* node)
         if (!ray(node, from, direction)) return;
         const StrokeHit start = hit(node, direction);
         const std::optional<model::PlaneFrame> plane = plane_ ? plane_(start) : std::nullopt;
-        if (!plane) return;
+        const SbVec2s at = event->getPosition();
+        pixelBox_[0] = pixelBox_[2] = at[0];
+        pixelBox_[1] = pixelBox_[3] = at[1];
+        if (!plane) {
+            // No stroke here; the press may still be a click (Sculpt mode's click tools).
+            if (!clicked_ || !clickOnly_ || !clickOnly_()) return;
+            clicking_ = true;
+            node->setHandled();
+            return;
+        }
         drawing_ = true;
         startTime_ = now;
         stroke_ = {};
         stroke_.frame = *plane;
         stroke_.start = start;
-        const SbVec2s at = event->getPosition();
-        pixelBox_[0] = pixelBox_[2] = at[0];
-        pixelBox_[1] = pixelBox_[3] = at[1];
         addSample(node, 0.0);
         node->setHandled();
+    } else if (clicking_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
+        const SbVec2s at = event->getPosition();
+        pixelBox_[0] = std::min<int>(pixelBox_[0], at[0]);
+        pixelBox_[1] = std::min<int>(pixelBox_[1], at[1]);
+        pixelBox_[2] = std::max<int>(pixelBox_[2], at[0]);
+        pixelBox_[3] = std::max<int>(pixelBox_[3], at[1]);
+        node->setHandled();
+    } else if (clicking_ && SO_MOUSE_RELEASE_EVENT(event, BUTTON1)) {
+        clicking_ = false;
+        const SbVec2s at = event->getPosition();
+        node->setHandled();
+        if (std::max(pixelBox_[2], int(at[0])) - std::min(pixelBox_[0], int(at[0])) < kClickPixels &&
+            std::max(pixelBox_[3], int(at[1])) - std::min(pixelBox_[1], int(at[1])) < kClickPixels)
+            click(node);
     } else if (drawing_ && event->isOfType(SoLocation2Event::getClassTypeId())) {
         addSample(node, now - startTime_);
         node->setHandled();
@@ -192,7 +243,7 @@ void StrokeInput::onEvent(SoEventCallback* node)
         Eigen::Vector3d from, direction;
         if (ray(node, from, direction)) stroke_.end = hit(node, direction);
         node->setHandled();
-        endStroke(true);
+        if (endStroke(true)) click(node);
     }
 }
 
@@ -222,7 +273,7 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     if (sampled_) sampled_();
 }
 
-void StrokeInput::endStroke(bool keep)
+bool StrokeInput::endStroke(bool keep)
 {
     drawing_ = false;
     const FinishedStroke stroke = std::move(stroke_);
@@ -231,6 +282,7 @@ void StrokeInput::endStroke(bool keep)
     previewLine_->numVertices.setNum(0);
     const bool click = pixelBox_[2] - pixelBox_[0] < kClickPixels && pixelBox_[3] - pixelBox_[1] < kClickPixels;
     if (keep && finished_ && stroke.rayOrigins.size() >= 2 && !click) finished_(stroke);
+    return keep && click;
 }
 
 }  // namespace sculptline::manipulators

@@ -30,6 +30,17 @@ struct StrokeHit {
     bool shift = false;  ///< Shift was held at the press (pull mode: pin instead of pull)
 };
 
+/// A click (press and release within a few pixels, nothing drawn): the nearest surface under the
+/// pointer, if any (sculpt handles, blocked points and distances are placed by clicks).
+struct PointerClick {
+    std::uint32_t surface = 0;  ///< entity id; 0 = no surface under the pointer
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< picked point on it, world
+    Eigen::Vector3d view = -Eigen::Vector3d::UnitZ();  ///< eye -> point direction, unit
+};
+
+/// The nearest surface (scene::entityAt on the pick path) under the pointer, not through a dragger.
+PointerClick pickSurface(SoEventCallback* node, const Eigen::Vector3d& view);
+
 /// The plane a stroke is previewed on, chosen when the pen goes down (knowing whether it went
 /// down on a curve); empty = no stroke.
 using ActivePlane = std::function<std::optional<model::PlaneFrame>(const StrokeHit& start)>;
@@ -83,6 +94,15 @@ public:
     /// Where sample times come from, seconds; default: the Coin event's time stamp. A replay sets
     /// the recorded times, so a replayed stroke is sampled, and fitted, exactly as recorded.
     void setClock(std::function<double()> clock) { clock_ = std::move(clock); }
+    /// Called on a click (a press and release within a few pixels): also when no plane takes a
+    /// stroke (the active-plane callback returned none), so a tool that only clicks can refuse strokes.
+    /// `clickOnly` says whether a press that no plane takes is kept for a click (default: no, the
+    /// press goes on to the rest of the scene).
+    void setClickCallback(std::function<void(const PointerClick&)> f, std::function<bool()> clickOnly = {})
+    {
+        clicked_ = std::move(f);
+        clickOnly_ = std::move(clickOnly);
+    }
     /// Called after each accepted pointer sample (stroke latency statistics).
     void setSampleCallback(std::function<void()> f) { sampled_ = std::move(f); }
 
@@ -93,7 +113,9 @@ private:
     bool ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vector3d& direction) const;
     StrokeHit hit(SoEventCallback* node, const Eigen::Vector3d& view) const;
     void addSample(SoEventCallback* node, double time);
-    void endStroke(bool keep);
+    /// Ends the stroke; true when it was a click (nothing drawn).
+    bool endStroke(bool keep);
+    void click(SoEventCallback* node);
 
     SoSeparator* root_ = nullptr;
     SoEventCallback* callback_ = nullptr;
@@ -101,6 +123,7 @@ private:
     SoLineSet* previewLine_ = nullptr;
     bool enabled_ = false;
     bool drawing_ = false;
+    bool clicking_ = false;  ///< a press that no plane took: it can only become a click
     double startTime_ = 0.0;
     /// The pointer's pixel bounding box over the stroke (x0, y0, x1, y1): a click that jittered.
     int pixelBox_[4] = {0, 0, 0, 0};
@@ -109,6 +132,8 @@ private:
     ActivePlane plane_;
     std::function<void(const FinishedStroke&)> finished_;
     std::function<void()> sampled_;
+    std::function<void(const PointerClick&)> clicked_;
+    std::function<bool()> clickOnly_;
     std::function<double()> clock_;
 };
 

@@ -38,6 +38,83 @@ const SbColor kPolygonColor(0.75f, 0.78f, 0.85f);
 constexpr float kPolygonPointSize = 5.0f;
 constexpr float kHighlightWidth = 5.0f;
 
+/// A sculpt's bound (a polyline on the surface) and its blocked control points (Fig. 6-7).
+const SbColor kBoundColor(0.2f, 0.95f, 0.45f);
+constexpr float kBoundWidth = 3.0f;
+const SbColor kBlockedColor(0.95f, 0.1f, 0.1f);
+constexpr float kBlockedSize = 9.0f;
+/// Overlays on a surface are drawn lifted off it to both sides by this fraction of its extent, so
+/// the depth test neither hides them nor makes them flicker against the shading.
+constexpr double kLiftFraction = 0.004;
+/// Points of the bound polyline per edge of its polygon (it bends with the surface).
+constexpr int kBoundSamplesPerEdge = 4;
+
+/// The sculpt's marks: its bound polygon (domain of the base, which the sculpt shares) evaluated on
+/// the sculpted surface, and its blocked control points; an unpickable overlay.
+SoSeparator* makeSculptMarks(const model::Entity& e)
+{
+    auto* marks = makeOverlayRoot();
+    marks->setName("SculptMarks");
+    const solvers::Surface3d& s = *e.surface;
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& p : s.points()) box.extend(p);
+    const double lift = kLiftFraction * box.diagonal().norm();
+    auto normalAt = [&s](double u, double v) {
+        const Eigen::Vector3d n = s.normal(u, v);
+        return n.allFinite() && n.norm() > 0.0 ? Eigen::Vector3d(n.normalized()) : Eigen::Vector3d::Zero();
+    };
+    const std::vector<Eigen::Vector2d>& bound = e.recipe->bound;
+    if (bound.size() >= 3) {
+        const double u0 = s.domainStart(solvers::Direction::U), u1 = s.domainEnd(solvers::Direction::U);
+        const double v0 = s.domainStart(solvers::Direction::V), v1 = s.domainEnd(solvers::Direction::V);
+        std::vector<Eigen::Vector3d> on, normals;
+        for (size_t k = 0; k < bound.size(); ++k) {
+            const Eigen::Vector2d& a = bound[k];
+            const Eigen::Vector2d& b = bound[(k + 1) % bound.size()];
+            for (int i = 0; i < kBoundSamplesPerEdge; ++i) {
+                const Eigen::Vector2d uv = a + (b - a) * (static_cast<double>(i) / kBoundSamplesPerEdge);
+                const double u = std::clamp(uv.x(), u0, u1), v = std::clamp(uv.y(), v0, v1);
+                on.push_back(s.evaluate(u, v));
+                normals.push_back(normalAt(u, v));
+            }
+        }
+        on.push_back(on.front());
+        normals.push_back(normals.front());
+        auto* group = new SoSeparator;
+        SoCoordinate3* coords = addStyledCoordinates(group, kBoundColor, 0.0f, kBoundWidth);
+        auto* lines = new SoLineSet;
+        const int n = static_cast<int>(on.size());
+        for (int side = 0; side < 2; ++side) {
+            for (int k = 0; k < n; ++k) coords->point.set1Value(side * n + k, toSb(on[k] + (side == 0 ? lift : -lift) * normals[k]));
+            lines->numVertices.set1Value(side, n);
+        }
+        group->addChild(lines);
+        group->setName("SculptBound");
+        marks->addChild(group);
+    }
+    if (!e.recipe->blocked.empty()) {
+        auto* group = new SoSeparator;
+        group->setName("SculptBlocked");
+        SoCoordinate3* coords = addStyledCoordinates(group, kBlockedColor, kBlockedSize, 0.0f);
+        int n = 0;
+        for (const auto& ij : e.recipe->blocked) {
+            if (ij[0] < 0 || ij[1] < 0 || ij[0] >= s.countU() || ij[1] >= s.countV()) continue;
+            const Eigen::Vector3d p = s.point(ij[0], ij[1]);
+            if (!p.allFinite()) continue;
+            // Lifted along the net's local normal (the cross of its neighbouring edges).
+            const Eigen::Vector3d du = s.point(std::min(ij[0] + 1, s.countU() - 1), ij[1]) - s.point(std::max(ij[0] - 1, 0), ij[1]);
+            const Eigen::Vector3d dv = s.point(ij[0], std::min(ij[1] + 1, s.countV() - 1)) - s.point(ij[0], std::max(ij[1] - 1, 0));
+            Eigen::Vector3d normal = du.cross(dv);
+            normal = normal.norm() > 0.0 && normal.allFinite() ? Eigen::Vector3d(normal.normalized()) : Eigen::Vector3d::Zero();
+            coords->point.set1Value(n++, toSb(p + lift * normal));
+            coords->point.set1Value(n++, toSb(p - lift * normal));
+        }
+        group->addChild(new SoPointSet);
+        marks->addChild(group);
+    }
+    return marks;
+}
+
 void setFrame(SoTransform* transform, const model::PlaneFrame& frame)
 {
     transform->translation = toSb(frame.origin);
@@ -228,6 +305,9 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuse
             grids_[e.id] = std::move(grid);
         }
     }
+    if (e.surface && drawable(e) && e.recipe && e.recipe->mode == model::Construction::Sculpt && node->getNumChildren() > 0 &&
+        (!e.recipe->bound.empty() || !e.recipe->blocked.empty()))
+        node->addChild(makeSculptMarks(e));
     ++nodeBuilds_;
     node->setName(entityNodeName(model::EntityKind::Surface, e.id).c_str());
     nodes_[e.id] = node;
@@ -328,6 +408,14 @@ bool ModelView::updateSurfaceInPlace(const model::Entity& e)
     for (int i = 0; i < count; ++i) normals[i] = toSb(grid.normals[static_cast<size_t>(i)]);
     grid.fields.normals->vector.finishEditing();
     grid.adaptive = false;
+    // A sculpt's marks (its bound, its blocked points) lie on its surface and follow its recipe:
+    // made anew beside the rewritten mesh (a polyline and a few points).
+    SoSeparator* surfaceNode = node->second;
+    for (int k = surfaceNode->getNumChildren() - 1; k >= 0; --k) {
+        if (surfaceNode->getChild(k)->getName() == SbName("SculptMarks")) surfaceNode->removeChild(k);
+    }
+    if (e.recipe && e.recipe->mode == model::Construction::Sculpt && (!e.recipe->bound.empty() || !e.recipe->blocked.empty()))
+        surfaceNode->addChild(makeSculptMarks(e));
     builtShape_[e.id] = e.shapeVersion;
     ++gridReuses_;
     ++inPlaceUpdates_;

@@ -2,6 +2,9 @@
 
 #include "ui/curvature_plot.h"
 
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
 #include <QListWidget>
 #include <QPlainTextEdit>
 #include <QSlider>
@@ -60,6 +63,23 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
         if (filling_ || sculpt_ == 0) return;
         Q_EMIT stiffnessEdited(sculpt_, percent / 100.0);
     });
+    // Thesis Fig. 6-5 c–d: a handle holds its point only, or its normal too (turned with the point).
+    holdNormals_ = new QCheckBox(tr("Hold normals at handles"), box);
+    holdNormals_->setObjectName(QStringLiteral("inspector.holdNormals"));
+    holdNormals_->setToolTip(tr("Checked: the surface's normal at each handle turns with the handle; unchecked: only the point is held"));
+    holdNormals_->setVisible(false);
+    layout->addWidget(holdNormals_);
+    connect(holdNormals_, &QCheckBox::toggled, this, [this](bool on) {
+        if (filling_ || sculpt_ == 0) return;
+        Q_EMIT holdNormalsEdited(sculpt_, on);
+    });
+    // The sculpt's distance constraints, one value each (undoable, the surface re-solves).
+    distanceBox_ = new QWidget(box);
+    distanceBox_->setObjectName(QStringLiteral("inspector.distances"));
+    distanceForm_ = new QFormLayout(distanceBox_);
+    distanceForm_->setContentsMargins(0, 0, 0, 0);
+    distanceBox_->setVisible(false);
+    layout->addWidget(distanceBox_);
     plot_ = new CurvaturePlot(box);
     layout->addWidget(plot_);
     setWidget(box);
@@ -75,6 +95,34 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
     sculpt_ = e && e->recipe && e->recipe->mode == model::Construction::Sculpt ? id : 0;
     stiffness_->setVisible(sculpt_ != 0);
     if (sculpt_ != 0) stiffness_->setValue(static_cast<int>(std::lround(100.0 * e->recipe->stiffness)));
+    const bool handles = sculpt_ != 0 && !e->recipe->handles.empty();
+    holdNormals_->setVisible(handles);
+    if (handles) {
+        const bool all = std::all_of(e->recipe->handles.begin(), e->recipe->handles.end(), [](const auto& h) { return h.holdNormal; });
+        holdNormals_->setChecked(all);
+    }
+    const size_t distanceCount = sculpt_ != 0 ? e->recipe->distances.size() : 0;
+    if (distances_.size() != distanceCount) {
+        while (distanceForm_->rowCount() > 0) distanceForm_->removeRow(0);
+        distances_.clear();
+        for (size_t k = 0; k < distanceCount; ++k) {
+            auto* spin = new QDoubleSpinBox(distanceBox_);
+            spin->setObjectName(QStringLiteral("inspector.distance%1").arg(k + 1));
+            spin->setRange(0.0, 1e5);
+            spin->setDecimals(2);
+            spin->setSuffix(QStringLiteral(" mm"));
+            spin->setKeyboardTracking(false);  // one undo step per value, not per digit typed
+            const int index = static_cast<int>(k);
+            connect(spin, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this, index](double value) {
+                if (filling_ || sculpt_ == 0) return;
+                Q_EMIT distanceEdited(sculpt_, index, value);
+            });
+            distanceForm_->addRow(tr("Distance %1").arg(k + 1), spin);
+            distances_.push_back(spin);
+        }
+    }
+    for (size_t k = 0; k < distanceCount; ++k) distances_[k]->setValue(e->recipe->distances[k].distance);
+    distanceBox_->setVisible(distanceCount > 0);
     points_->clear();
     curve_ = e && e->kind == model::EntityKind::Curve ? id : 0;
     points_->setVisible(curve_ != 0);
@@ -140,6 +188,21 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
             s << tr("Made by: %1 of curves %2").arg(QString::fromLatin1(model::constructionName(e->recipe->mode)), inputs.join(QStringLiteral(", "))) << "\n";
             for (const model::SurfaceRecipe::Tangent& t : e->recipe->tangents)
                 s << tr("Tangent (G1) to surface %1 along curve %2").arg(t.surface).arg(e->inputs[static_cast<size_t>(t.boundary)]) << "\n";
+            if (e->recipe->mode == model::Construction::Sculpt) {
+                // Its constraints beside the target curves (thesis Table 6-1).
+                for (const model::SurfaceRecipe::Handle& h : e->recipe->handles)
+                    s << tr("Handle: point %1 at (u, v) = (%2, %3)%4").arg(h.point).arg(h.uv.x(), 0, 'f', 3).arg(h.uv.y(), 0, 'f', 3)
+                             .arg(h.holdNormal ? tr(", normal held") : QString()) << "\n";
+                if (!e->recipe->bound.empty()) s << tr("Bound: a polygon of %1 points").arg(e->recipe->bound.size()) << "\n";
+                if (!e->recipe->blocked.empty()) {
+                    QStringList blocked;
+                    for (const auto& ij : e->recipe->blocked) blocked << QStringLiteral("(%1, %2)").arg(ij[0]).arg(ij[1]);
+                    s << tr("Blocked control points: %1").arg(blocked.join(QStringLiteral(", "))) << "\n";
+                }
+                for (const model::SurfaceRecipe::Distance& d : e->recipe->distances)
+                    s << tr("Distance %1 mm between (%2, %3) and (%4, %5)").arg(d.distance, 0, 'f', 2).arg(d.uv.x(), 0, 'f', 3).arg(d.uv.y(), 0, 'f', 3)
+                             .arg(d.uv2.x(), 0, 'f', 3).arg(d.uv2.y(), 0, 'f', 3) << "\n";
+            }
             if (e->maxTangentAngle >= 0.0) s << tr("Largest normal angle across those: %1 degrees").arg(e->maxTangentAngle, 0, 'g', 2) << "\n";
             if (e->maxDeviation >= 0.0) s << tr("Deviation from the construction: %1 mm").arg(e->maxDeviation, 0, 'g', 3) << "\n";
             if (e->recipe->mode == model::Construction::Sculpt) {

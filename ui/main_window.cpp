@@ -283,6 +283,10 @@ void MainWindow::createDocks()
             [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
     connect(inspector_, &InspectorDock::stiffnessEdited, this,
             [this](model::EntityId surface, double stiffness) { document_->setSculptStiffness(surface, stiffness); });
+    connect(inspector_, &InspectorDock::holdNormalsEdited, this,
+            [this](model::EntityId surface, bool hold) { document_->setSculptHoldNormals(surface, hold); });
+    connect(inspector_, &InspectorDock::distanceEdited, this,
+            [this](model::EntityId surface, int index, double distance) { document_->setSculptDistance(surface, index, distance); });
     connect(entities_, &EntityListDock::entityPicked, this, [this](model::EntityId id) { document_->select(id); });
 }
 
@@ -342,7 +346,7 @@ void MainWindow::updateStatus()
             text = tr("Sculpt surface %1: draw a closed loop over the surface; only the region inside deforms (Alt+T: back to targets).").arg(s);
             break;
         case SketchDocument::SculptTool::Handle:
-            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its ball to tilt the normal.").arg(s);
+            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its axes' ends to tilt the normal.").arg(s);
             break;
         case SketchDocument::SculptTool::Block:
             text = tr("Sculpt surface %1: click near a control point to block it (it never moves) or free it again.").arg(s);

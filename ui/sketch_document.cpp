@@ -2,6 +2,7 @@
 
 #include "manipulators/curve_pull.h"
 #include "manipulators/plane_binding.h"
+#include "manipulators/point_handles.h"
 #include "manipulators/stroke_input.h"
 #include "scene/ground_grid.h"
 #include "scene/iv_export.h"
@@ -48,7 +49,21 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     planeDraggers_->setDragCallbacks([this](model::EntityId plane) { dragStarted(plane); },
                                      [this](model::EntityId plane, const model::PlaneFrame& before,
                                             const model::PlaneFrame& after) { dragFinished(plane, before, after); });
+    // Sculpt handles' jacks: opaque, before the translucent planes.
+    pointHandles_ = std::make_unique<manipulators::PointHandles>(model_, *scheduler_);
+    pointHandles_->setDragCallbacks([this](model::EntityId) {},
+                                    [this](model::EntityId point, const manipulators::PointPose& before,
+                                           const manipulators::PointPose& after) { pointDragFinished(point, before, after); });
+    root_->addChild(pointHandles_->root());
     root_->addChild(planeDraggers_->root());
+    // Sculpt mode's click tools: a click on the surface drops a handle, blocks a point, picks a
+    // distance's end; those tools draw no strokes.
+    auto clickTool = [this]() { return strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound; };
+    strokeInput_->setClickCallback(
+        [this, clickTool](const manipulators::PointerClick& c) {
+            if (clickTool()) sculptClick(c.surface, c.point);
+        },
+        clickTool);
     model_.addObserver(this);
 }
 
@@ -57,6 +72,7 @@ SketchDocument::~SketchDocument()
     undo_.clear();
     model_.endDrag();
     model_.removeObserver(this);
+    pointHandles_.reset();
     planeDraggers_.reset();
     pullBinding_.reset();
     scheduler_.reset();
@@ -166,6 +182,7 @@ void SketchDocument::deleteSelection()
 
 void SketchDocument::setSculptBase(model::EntityId surface)
 {
+    pendingDistance_.reset();
     const model::Entity* e = model_.find(surface);
     sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
     pendingBound_.clear();
@@ -219,7 +236,15 @@ void SketchDocument::entityUpdated(const model::Entity& e)
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
 }
 
-bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0; }
+bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0; }
+
+void SketchDocument::pointDragFinished(model::EntityId point, const manipulators::PointPose& before, const manipulators::PointPose& after)
+{
+    view_->refineSurfaces();
+    if (model_.find(point) && after != before)
+        undo_.push(new MovePointCommand(*this, point, {before.position, before.rotation}, {after.position, after.rotation}));
+    Q_EMIT entitiesChanged();
+}
 
 // planeDraggers_ ran the pending update before either call, so the frames are the model's.
 void SketchDocument::dragStarted(model::EntityId plane) { select(plane); }

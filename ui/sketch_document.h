@@ -29,6 +29,9 @@ class SoSeparator;
 
 namespace sculptline::manipulators {
 class PlaneDraggers;
+class PointHandles;
+struct PointerClick;
+struct PointPose;
 class StrokeInput;
 class CurvePull;
 class CurvePullBinding;
@@ -99,7 +102,11 @@ public:
     /// of the sculpt (a closed stroke over the surface); a click drops a point handle, blocks or
     /// frees the nearest control point, or picks one end of a distance.
     enum class SculptTool { Target, Bound, Handle, Block, Distance };
-    void setSculptTool(SculptTool tool) { sculptTool_ = tool; }
+    void setSculptTool(SculptTool tool)
+    {
+        sculptTool_ = tool;
+        pendingDistance_.reset();
+    }
     SculptTool sculptTool() const { return sculptTool_; }
     /// Adds a target (the last of `added`: a curve from a stroke, or a handle's point) to the sculpt
     /// of the sculpt base, and `edit`s its recipe (a new target's id reads kPreviousEntity until it
@@ -112,6 +119,20 @@ public:
     /// The sculpt base's bound from a closed stroke (world points; projected onto the base surface,
     /// the nearest points). Sets lastStroke().message to what happened.
     void setSculptBound(const std::vector<Eigen::Vector3d>& world);
+    /// A click in Sculpt mode with the Handle, Block or Distance tool on the surface being sculpted
+    /// (or its base), at `point` (world) on surface `surface` (0 = the click missed every surface).
+    /// Handle: a Point at the surface point and a handle there (one undo step, sculptWith). Block:
+    /// the base's control point nearest by Greville abscissae is blocked, or freed when it was.
+    /// Distance: the first click picks one end, the second the other; the distance between them is
+    /// held at what it is. Sets lastStroke().message to what happened.
+    void sculptClick(model::EntityId surface, const Eigen::Vector3d& point);
+    /// A sculpt's handles hold their normals (thesis Fig. 6-5 d) or only their positions; undoable.
+    void setSculptHoldNormals(model::EntityId sculpt, bool hold);
+    /// A sculpt's distance constraint `index` set to `distance` (model units); undoable.
+    void setSculptDistance(model::EntityId sculpt, int index, double distance);
+    /// The first end of a distance being picked (Distance tool), if any.
+    const std::optional<Eigen::Vector2d>& pendingDistance() const { return pendingDistance_; }
+    manipulators::PointHandles& pointHandles() { return *pointHandles_; }
     /// Along the sculpt base's target curve `curve`, holds the surface's tangent across it at the
     /// direction it has now in the middle (Fig. 6-4 d), or releases it; undoable.
     void setSculptCurveTangent(model::EntityId sculpt, model::EntityId curve, bool hold);
@@ -208,6 +229,9 @@ private:
     void setSurfaceMessage(const QString& message);
     /// For each boundary another surface was built through: that surface (G1 fill).
     std::vector<model::SurfaceRecipe::Tangent> adjacentSurfaces(const std::vector<model::EntityId>& boundaries) const;
+    void pointDragFinished(model::EntityId point, const manipulators::PointPose& before, const manipulators::PointPose& after);
+    /// The sculpt of the sculpt base (the base itself when it is a sculpt), or null.
+    const model::Entity* currentSculpt() const;
     void dragStarted(model::EntityId plane);
     /// One undo step for the drag (when the plane moved).
     void dragFinished(model::EntityId plane, const model::PlaneFrame& before, const model::PlaneFrame& after);
@@ -221,6 +245,7 @@ private:
     std::unique_ptr<scene::StrokeFeedback> feedback_;
     std::unique_ptr<manipulators::CurvePullBinding> pullBinding_;
     std::unique_ptr<manipulators::PlaneDraggers> planeDraggers_;  ///< one dragger per plane, bound to the model
+    std::unique_ptr<manipulators::PointHandles> pointHandles_;  ///< one jack per point (sculpt handles)
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     QUndoStack undo_;
@@ -242,6 +267,8 @@ private:
     SculptTool sculptTool_ = SculptTool::Target;
     /// A bound drawn on a surface not sculpted yet, for its first sculpt.
     std::vector<Eigen::Vector2d> pendingBound_;
+    /// Distance tool: the (u, v) of the first end picked, on the sculpt's domain.
+    std::optional<Eigen::Vector2d> pendingDistance_;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::optional<model::Construction> surfaceMode_;

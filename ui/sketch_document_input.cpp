@@ -34,6 +34,8 @@ std::optional<model::PlaneFrame> SketchDocument::strokePlane(const manipulators:
     feedback_->clear();
     strokeOnPlane_ = 0;
     oversketchTarget_ = 0;
+    // Sculpt mode's Handle, Block and Distance tools take clicks on the surface, no strokes.
+    if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound) return std::nullopt;
     if (strokeMode_ == StrokeMode::Lift) {
         // Drawn in the view plane through the starting curve point (seed 004 lifts an image-plane
         // stroke); the depths come from the curve points at its ends.

@@ -151,6 +151,29 @@ void MovePlaneCommand::apply(const model::PlaneFrame& frame)
     doc_.scheduler().flush();
 }
 
+MovePointCommand::MovePointCommand(SketchDocument& doc, model::EntityId point, const Pose& before, const Pose& after)
+    : doc_(doc), point_(point), before_(before), after_(after)
+{
+    setText(QStringLiteral("Move point %1").arg(point));
+}
+
+void MovePointCommand::redo()
+{
+    if (applied_) {
+        applied_ = false;
+        return;
+    }
+    apply(after_);
+}
+
+void MovePointCommand::undo() { apply(before_); }
+
+void MovePointCommand::apply(const Pose& pose)
+{
+    doc_.model().setPointPose(point_, pose.position, pose.rotation);
+    doc_.scheduler().flush();
+}
+
 }  // namespace sculptline::ui
 
 namespace sculptline::ui {

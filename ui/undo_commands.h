@@ -115,6 +115,27 @@ private:
     bool applied_ = true;
 };
 
+/// One drag of a sculpt handle's point (moved and turned), from press to release. The drag has
+/// already moved the model when the command is pushed, so the first redo does nothing.
+class MovePointCommand : public QUndoCommand {
+public:
+    struct Pose {
+        Eigen::Vector3d position = Eigen::Vector3d::Zero();
+        Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+    };
+    MovePointCommand(SketchDocument& doc, model::EntityId point, const Pose& before, const Pose& after);
+    void redo() override;
+    void undo() override;
+
+private:
+    void apply(const Pose& pose);
+
+    SketchDocument& doc_;
+    model::EntityId point_;
+    Pose before_, after_;
+    bool applied_ = true;
+};
+
 /// A curve's new shape (an over-sketch); the first redo applies it.
 class ReplaceCurveCommand : public QUndoCommand {
 public:

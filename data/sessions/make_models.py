@@ -560,7 +560,92 @@ def sculpt_18x135():
     s.write("sculpt_18x135_drag.json")
 
 
+def sculpt_sheet():
+    """The flat bicubic 8 x 8 sheet of the sculpt sessions, over [-70, 70]^2 at z = 0 (id 2)."""
+    knots = [0, 0, 0, 0, 1, 2, 3, 4, 5, 5, 5, 5]
+    net = [[-70 + 20 * i, -70 + 20 * j, 0] for i in range(8) for j in range(8)]
+    return {"id": 2, "degreeU": 3, "degreeV": 3, "knotsU": knots, "knotsV": knots, "countU": 8, "countV": 8,
+            "points": net}
+
+
+def jack_drag(s, start, end, steps=25, dt=12):
+    """A press on a handle's jack at `start`, moved in `steps` to `end`, released."""
+    s.stroke([r([start[k] + (end[k] - start[k]) * i / steps for k in range(3)]) for i in range(steps + 1)], dt=dt)
+
+
+def sculpt_handles():
+    """Thesis Fig. 6-5 c-d: a point handle dropped on the sheet (Sculpt mode, Alt+H, a click), its
+    jack dragged up 20 mm, then its ball turned; the sculpt passes through the point. The second
+    session is the same followed by two undos (the turn, then the drag): the sheet is flat again."""
+    handle = [-10, 20, 0]
+    for undo in (False, True):
+        s = Session()
+        s.action("mode.select")
+        s.click([45, 45, 0])  # the sheet (2): select it
+        s.action("mode.sculpt")
+        s.action("sculpt.handle")
+        s.click(handle)
+        top = [handle[0], handle[1], 20]
+        jack_drag(s, handle, top)
+        # The turn: a press on the end of the jack's x axis (its rotator's lines reach 1.5 jack
+        # units, its translator's 1.1; the jack is 0.04 of the sheet's 198 mm diagonal per unit),
+        # carried 30 degrees up around the point.
+        arm = 1.35 * 0.04 * math.hypot(140, 140)
+        turn = [r([top[0] + arm * math.cos(math.radians(a)), top[1], top[2] + arm * math.sin(math.radians(a))])
+                for a in range(0, 31, 2)]
+        s.stroke(turn, dt=12)
+        if undo:
+            s.key("Ctrl+Z")
+            s.key("Ctrl+Z")
+        s.write("sculpt_handle_undo.json" if undo else "sculpt_handle.json")
+
+
+def sculpt_bump():
+    """Thesis Figs. 6-9 and 6-13: a local bump. A bound drawn around the sheet's middle (Alt+B, a
+    closed loop on the horizontal plane 1 through the sheet), a handle dropped in its centre (Alt+H)
+    and pulled 25 mm up by its jack: only the control points inside the bound move."""
+    # Plane 1 horizontal through the sheet (z = 0), small and in a corner: its jack stays clear of
+    # the sheet; strokes meet its (unbounded) plane anywhere.
+    planes = [plane(1, [-95, -95, 0], [0, 0, 1], 30, [1, 0, 0])]
+    write_document("sculpt_bump_start.json", planes, (), [sculpt_sheet()])
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])
+    s.action("mode.sculpt")
+    s.action("sculpt.bound")
+    s.stroke(circle([0, 0, 0], [1, 0, 0], [0, 1, 0], 38, 64))
+    s.action("sculpt.handle")
+    s.click([0, 0, 0])
+    jack_drag(s, [0, 0, 0], [0, 0, 25])
+    s.write("sculpt_bump.json")
+
+
+def sculpt_constraints():
+    """Thesis Fig. 6-7 and Table 6-1's distance: on the sheet, a handle dropped at its middle, a
+    control point blocked (Alt+K, a click at control point (4, 4), (10, 10, 0)), two points picked
+    for a distance (Alt+D, two clicks 40 mm apart), then the handle's jack pulled 20 mm up: the
+    blocked point stays and the two points stay 40 mm apart."""
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])
+    s.action("mode.sculpt")
+    s.action("sculpt.handle")
+    s.click([-10, -10, 0])
+    s.action("sculpt.block")
+    s.click([10, 10, 0])
+    s.action("sculpt.distance")
+    s.click([-30, -50, 0])
+    s.click([10, -50, 0])
+    s.action("sculpt.handle")
+    jack_drag(s, [-10, -10, 0], [-10, -10, 20])
+    s.write("sculpt_constraints.json")
+
+
+
 if __name__ == "__main__":
+    sculpt_handles()
+    sculpt_bump()
+    sculpt_constraints()
     sculpt_18x135()
     sculpt_tangent()
     sculpt_cap()

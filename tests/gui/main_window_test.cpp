@@ -2,6 +2,7 @@
 // is named, the entity list and the inspector show the selected entity, the curvature plot samples
 // the selected curve, and modes switch the viewer between viewing and interaction. Writes the whole
 // window to $SCULPTLINE_WINDOW_SHOT (when set) so a person can look at the docks.
+#include "manipulators/point_handles.h"
 #include "manipulators/stroke_input.h"
 #include "model/document.h"
 #include "ui/curvature_plot.h"
@@ -9,11 +10,14 @@
 #include "ui/inspector_dock.h"
 #include "ui/main_window.h"
 #include "ui/sketch_document.h"
+#include "ui/undo_commands.h"
 
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 
 #include <QAbstractButton>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QAction>
 #include <QApplication>
 #include <QListWidget>
@@ -384,6 +388,133 @@ TEST(MainWindow, ASecondTargetInSculptModeJoinsTheSculptsTargetsInOneUndoStep)
     ASSERT_NE(doc.model().find(joined), nullptr);
     EXPECT_EQ(doc.model().find(joined)->inputs.size(), 3u);
     EXPECT_EQ(doc.model().find(first), nullptr);
+}
+
+TEST(MainWindow, SculptClickToolsDropHandlesBlockPointsAndHoldDistancesUndoably)
+{
+    // Given the sculpt sheet (2, flat, [-70, 70]^2 at z = 0) selected, in Sculpt mode with the Handle tool
+    startApplication();
+    MainWindow window;
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/models/sculpt_start.json"), QString());
+    window.show();
+    SketchDocument& doc = window.document();
+    doc.select(2);
+    window.action(QStringLiteral("mode.sculpt"))->trigger();
+    window.action(QStringLiteral("sculpt.handle"))->trigger();
+    EXPECT_EQ(doc.sculptTool(), SketchDocument::SculptTool::Handle);
+    const std::vector<Eigen::Vector3d> flat = doc.model().find(2)->surface->points();
+
+    // When the sheet is clicked at (-10, 20, 0): one undo step adds a point there and a sculpt with its handle
+    const int steps = doc.undoStack()->count();
+    doc.sculptClick(2, Eigen::Vector3d(-10, 20, 0));
+    EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+    const model::Entity* sculpt = doc.model().find(doc.sculptBase());
+    ASSERT_NE(sculpt, nullptr);
+    ASSERT_TRUE(sculpt->recipe && sculpt->recipe->mode == model::Construction::Sculpt);
+    ASSERT_EQ(sculpt->recipe->handles.size(), 1u);
+    const model::EntityId sculptId = sculpt->id;
+    const model::SurfaceRecipe::Handle handle = sculpt->recipe->handles.front();
+    const model::EntityId point = handle.point;
+    ASSERT_NE(doc.model().find(point), nullptr);
+    EXPECT_LT((doc.model().find(point)->position - Eigen::Vector3d(-10, 20, 0)).norm(), 1e-6);
+    EXPECT_EQ(doc.pointHandles().size(), 1u);
+    // A click beside the sculpt's surface (another entity) changes nothing and says so
+    doc.sculptClick(0, Eigen::Vector3d(500, 0, 0));
+    EXPECT_EQ(doc.undoStack()->count(), steps + 1);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("Click on surface"))) << doc.lastStroke().message.toStdString();
+
+    // When the point is dragged (as its jack does) and the drag is pushed as MovePointCommand
+    const Eigen::Vector3d start = doc.model().find(point)->position;
+    const Eigen::Vector3d up = start + Eigen::Vector3d(0, 0, 15);
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()));
+    doc.model().beginDrag(point);
+    doc.model().setPointPose(point, up, turn);
+    doc.scheduler().flush();
+    doc.model().endDrag();
+    doc.scheduler().flush();
+    doc.undoStack()->push(new MovePointCommand(doc, point, {start, Eigen::Quaterniond::Identity()}, {up, turn}));
+    auto meets = [&](const Eigen::Vector3d& p) {
+        return (doc.model().find(sculptId)->surface->evaluate(handle.uv.x(), handle.uv.y()) - p).norm();
+    };
+    // Then the first redo left the drag's result, undo puts the point and the sheet back, redo moves them again
+    EXPECT_EQ(doc.model().find(point)->position, up);
+    EXPECT_LT(meets(up), 1e-9);
+    doc.undoStack()->undo();
+    EXPECT_EQ(doc.model().find(point)->position, start);
+    EXPECT_EQ(doc.model().find(point)->rotation.coeffs(), Eigen::Quaterniond::Identity().coeffs());
+    for (size_t k = 0; k < flat.size(); ++k) EXPECT_LT((doc.model().find(sculptId)->surface->points()[k] - flat[k]).norm(), 1e-9) << k;
+    doc.undoStack()->redo();
+    EXPECT_EQ(doc.model().find(point)->position, up);
+    EXPECT_LT(meets(up), 1e-9);
+
+    // When the inspector's "Hold normals at handles" is unchecked: the handles let their normals go, undoably
+    doc.select(sculptId);
+    QApplication::processEvents();
+    auto* inspector = window.findChild<InspectorDock*>();
+    ASSERT_NE(inspector, nullptr);
+    ASSERT_TRUE(inspector->holdNormalsBox()->isVisible());
+    EXPECT_TRUE(inspector->text().contains(QStringLiteral("Handle: point %1").arg(point))) << inspector->text().toStdString();
+    EXPECT_TRUE(inspector->holdNormalsBox()->isChecked());
+    inspector->holdNormalsBox()->setChecked(false);
+    EXPECT_FALSE(doc.model().find(sculptId)->recipe->handles.front().holdNormal);
+    EXPECT_LT(meets(up), 1e-9);
+    doc.undoStack()->undo();
+    EXPECT_TRUE(doc.model().find(sculptId)->recipe->handles.front().holdNormal);
+
+    // When the Block tool clicks at control point (4, 4), (10, 10, 0) of the base: it is blocked, a second click frees it
+    window.action(QStringLiteral("sculpt.block"))->trigger();
+    const Eigen::Vector3d near44 = doc.model().find(sculptId)->surface->evaluate(3.0, 3.0);  // its Greville abscissae
+    doc.sculptClick(sculptId, near44);
+    ASSERT_EQ(doc.model().find(sculptId)->recipe->blocked.size(), 1u);
+    EXPECT_EQ(doc.model().find(sculptId)->recipe->blocked.front(), (std::array<int, 2>{4, 4}));
+    EXPECT_EQ(doc.model().find(sculptId)->surface->point(4, 4), doc.model().find(2)->surface->point(4, 4));
+    doc.sculptClick(sculptId, near44);
+    EXPECT_TRUE(doc.model().find(sculptId)->recipe->blocked.empty());
+
+    // When the Distance tool clicks two points: their distance is held, and the inspector's spin box changes it
+    window.action(QStringLiteral("sculpt.distance"))->trigger();
+    const solvers::Surface3d now = *doc.model().find(sculptId)->surface;
+    doc.sculptClick(sculptId, now.evaluate(1.0, 0.5));
+    EXPECT_TRUE(doc.pendingDistance().has_value());
+    doc.sculptClick(sculptId, now.evaluate(3.0, 0.5));
+    EXPECT_FALSE(doc.pendingDistance().has_value());
+    ASSERT_EQ(doc.model().find(sculptId)->recipe->distances.size(), 1u);
+    const model::SurfaceRecipe::Distance d = doc.model().find(sculptId)->recipe->distances.front();
+    auto apart = [&]() {
+        const solvers::Surface3d& s = *doc.model().find(sculptId)->surface;
+        return (s.evaluate(d.uv.x(), d.uv.y()) - s.evaluate(d.uv2.x(), d.uv2.y())).norm();
+    };
+    EXPECT_NEAR(apart(), d.distance, 1e-6);
+    doc.select(0);
+    doc.select(sculptId);
+    QApplication::processEvents();
+    ASSERT_EQ(inspector->distanceBoxes().size(), 1u);
+    QDoubleSpinBox* box = inspector->distanceBoxes().front();
+    EXPECT_NEAR(box->value(), d.distance, 0.005);
+    const int before = doc.undoStack()->count();
+    box->setValue(d.distance + 10.0);
+    EXPECT_EQ(doc.undoStack()->count(), before + 1);
+    EXPECT_NEAR(doc.model().find(sculptId)->recipe->distances.front().distance, box->value(), 1e-12);
+    EXPECT_NEAR(apart(), box->value(), 1e-6);
+    EXPECT_LT(meets(up), 1e-6);
+    doc.undoStack()->undo();
+    EXPECT_NEAR(apart(), d.distance, 1e-6);
+
+    // When a second handle is dropped on the lifted and turned sheet, which the least-force solve
+    // also stretched: it holds its point only, turned as the sheet is there at best, and the sheet
+    // does not jump
+    window.action(QStringLiteral("sculpt.handle"))->trigger();
+    const std::vector<Eigen::Vector3d> was = doc.model().find(sculptId)->surface->points();
+    doc.sculptClick(sculptId, doc.model().find(sculptId)->surface->evaluate(3.0, 1.0));
+    const model::Entity* two = doc.model().find(doc.sculptBase());
+    ASSERT_NE(two, nullptr);
+    ASSERT_EQ(two->recipe->handles.size(), 2u);
+    EXPECT_FALSE(two->recipe->handles.back().holdNormal);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("holds its point only"))) << doc.lastStroke().message.toStdString();
+    EXPECT_LT(doc.model().find(two->recipe->handles.back().point)->rotation.angularDistance(turn), 0.5);
+    double jump = 0.0;
+    for (size_t k = 0; k < was.size(); ++k) jump = std::max(jump, (two->surface->points()[k] - was[k]).norm());
+    EXPECT_LT(jump, 1e-9);
 }
 
 }  // namespace

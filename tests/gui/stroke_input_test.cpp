@@ -9,6 +9,7 @@
 #include <Inventor/actions/SoHandleEventAction.h>
 #include <Inventor/events/SoLocation2Event.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
+#include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoOrthographicCamera.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -112,6 +113,50 @@ TEST_F(StrokeInputTest, AClickThatTremblesAPixelOrTwoDrawsNothing)
     EXPECT_TRUE(strokes_.empty());
     // But three pixels are a (short) stroke
     drawLine(SbViewportRegion(800, 600), SbVec2s(400, 300), SbVec2s(403, 300), 3);
+    EXPECT_EQ(strokes_.size(), 1u);
+}
+
+TEST_F(StrokeInputTest, AClickReportsTheSurfaceUnderThePointerEvenWhereNoPlaneTakesAStroke)
+{
+    // Given a surface entity's node (a 20-unit block named "Surface9", its top at z = 1) under the pointer
+    auto* surface = new SoSeparator;
+    surface->setName("Surface9");
+    auto* block = new SoCube;
+    block->width = 20;
+    block->height = 20;
+    block->depth = 2;
+    surface->addChild(block);
+    root_->addChild(surface);
+    camera_->farDistance = 200.0f;  // the block at z = 0 within the view volume (the pick clips to it)
+    std::vector<PointerClick> clicks;
+    bool clickOnly = false;
+    input_->setClickCallback([&](const PointerClick& c) { clicks.push_back(c); }, [&]() { return clickOnly; });
+    const SbViewportRegion viewport(800, 600);  // 6 pixels per unit, (0, 0) at the centre
+    // When it is clicked (a pixel of tremble): the click names the surface and the point on its top
+    drawLine(viewport, SbVec2s(400, 300), SbVec2s(401, 300), 1);
+    ASSERT_EQ(clicks.size(), 1u);
+    EXPECT_EQ(clicks[0].surface, 9u);
+    EXPECT_NEAR(clicks[0].point.z(), 1.0, kTolerance);
+    EXPECT_TRUE(strokes_.empty());
+    // A click beside it names no surface
+    drawLine(viewport, SbVec2s(700, 300), SbVec2s(700, 300), 1);
+    ASSERT_EQ(clicks.size(), 2u);
+    EXPECT_EQ(clicks[1].surface, 0u);
+    // A stroke is no click
+    drawLine(viewport, SbVec2s(400, 300), SbVec2s(430, 300), 5);
+    EXPECT_EQ(clicks.size(), 2u);
+    EXPECT_EQ(strokes_.size(), 1u);
+    // When no plane takes strokes (a click tool): a click still arrives when the tool wants clicks only
+    input_->setActivePlane([](const StrokeHit&) { return std::optional<model::PlaneFrame>(); });
+    drawLine(viewport, SbVec2s(400, 300), SbVec2s(400, 301), 1);
+    EXPECT_EQ(clicks.size(), 2u);  // not wanted: the press goes on to the rest of the scene
+    clickOnly = true;
+    drawLine(viewport, SbVec2s(400, 300), SbVec2s(400, 301), 1);
+    ASSERT_EQ(clicks.size(), 3u);
+    EXPECT_EQ(clicks[2].surface, 9u);
+    // And a drag there is neither a click nor a stroke
+    drawLine(viewport, SbVec2s(400, 300), SbVec2s(440, 300), 5);
+    EXPECT_EQ(clicks.size(), 3u);
     EXPECT_EQ(strokes_.size(), 1u);
 }
 
