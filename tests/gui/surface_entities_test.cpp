@@ -463,3 +463,54 @@ TEST(SurfaceDocument, AnUnknownModeIsRefused)
 
 }  // namespace
 }  // namespace sculptline::scene
+
+namespace sculptline::scene {
+namespace {
+
+TEST(SurfaceEntity, ADragDrawsALargeSurfaceOnAThinnedGridThatKeepsItsKnotLinesAndRestsOnAFreshOne)
+{
+    // Given the 18 x 135 strip's sculpt (4), drawn at rest on its adaptive grid (61 x 529 points)
+    SoDB::init();
+    model::Model model;
+    model::populateModel(model::loadDocument(SCULPTLINE_DATA_DIR "/models/sculpt_18x135.json"), model);
+    ModelView view(model);
+    const model::EntityId sculpt = 4, plane = 1;
+    const solvers::GridMesh resting = solvers::tessellate(*model.find(sculpt)->surface);
+    ASSERT_GT(resting.u.size() * resting.v.size(), 12000u);
+    // When the target's plane is dragged (two events)
+    model.beginDrag(plane);
+    model::PlaneFrame frame = model.find(plane)->frame;
+    for (int event = 0; event < 2; ++event) {
+        frame.origin.x() += 5.0;
+        model.setPlaneFrame(plane, frame);
+        model.update();
+    }
+    // Then it is drawn on a grid of at most 12,000 points: the resting grid's knot lines and every
+    // other line between them, the mesh of that grid exactly, redrawn in place at the second event
+    const solvers::Surface3d& s = *model.find(sculpt)->surface;
+    auto thin = [](const std::vector<double>& lines, const solvers::KnotVector& knots) {
+        std::vector<double> out;
+        int since = 0;
+        for (size_t k = 0; k < lines.size(); ++k) {
+            const bool knot = k == 0 || k + 1 == lines.size() || std::binary_search(knots.begin(), knots.end(), lines[k]);
+            if (knot || ++since % 2 == 0) out.push_back(lines[k]);
+            if (knot) since = 0;
+        }
+        return out;
+    };
+    const std::vector<double> u = thin(resting.u, s.knotsU()), v = thin(resting.v, s.knotsV());
+    EXPECT_LE(u.size() * v.size(), 12000u);
+    for (double knot : s.knotsU()) EXPECT_TRUE(std::binary_search(u.begin(), u.end(), knot)) << knot;
+    for (double knot : s.knotsV()) EXPECT_TRUE(std::binary_search(v.begin(), v.end(), knot)) << knot;
+    EXPECT_EQ(drawnMesh(view, sculpt), asDrawn(solvers::meshOnGrid(s, u, v)));
+    EXPECT_EQ(view.inPlaceUpdates(), 1);
+    // And at the release it rests on the adaptive grid a fresh view draws
+    model.endDrag();
+    model.update();
+    view.refineSurfaces();
+    ModelView fresh(model);
+    EXPECT_EQ(drawnMesh(view, sculpt), drawnMesh(fresh, sculpt));
+}
+
+}  // namespace
+}  // namespace sculptline::scene
