@@ -642,7 +642,26 @@ def sculpt_constraints():
 
 
 
+def sculpt_oversketch():
+    """Issue 13 §1: the cap's target arch over-sketched (Over-sketch mode, O): its middle redrawn
+    10 mm higher, and the sculpt follows the changed target."""
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])
+    s.action("mode.sculpt")
+    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
+    s.stroke(arch)
+    s.action("mode.oversketch")
+
+    def height(x):
+        return 30 * math.sin(math.pi * (x + 60) / 120)
+    over = [r([x, 0, height(x) + 10 * math.sin(math.pi * (x + 25) / 50)]) for x in [-25 + 50 * i / 30 for i in range(31)]]
+    s.stroke(over)
+    s.write("sculpt_oversketch.json")
+
+
 if __name__ == "__main__":
+    sculpt_oversketch()
     sculpt_handles()
     sculpt_bump()
     sculpt_constraints()
