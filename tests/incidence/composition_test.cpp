@@ -1,0 +1,176 @@
+// H = A F by exact composition: A F is the surface curve F(G) (seed 000 §2.1, Fig. 4).
+#include "solvers/incidence/bernstein.h"
+#include "solvers/incidence/composition.h"
+
+#include "solvers/bspline/geometry_error.h"
+#include "tests/incidence/incidence_fixtures.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+using namespace sculptline::solvers;
+using namespace sculptline::solvers::incidence;
+using namespace sculptline::incidence_test;
+
+namespace {
+
+// Exact up to round-off: relative to the surface's control size (about 130 model units here).
+constexpr double kExactRelative = 1e-12;
+constexpr int kSamples = 2000;
+
+double surfaceSize(const Surface3d& f)
+{
+    Eigen::AlignedBox3d box;
+    for (const auto& p : f.points()) box.extend(p);
+    return box.diagonal().norm();
+}
+
+// max |H(t) - F(G(t))| over kSamples + 1 parameters, relative to the surface's size.
+double compositionError(const Surface3d& f, const Curve2d& g, const Curve3d& h)
+{
+    double worst = 0.0;
+    for (int k = 0; k <= kSamples; ++k) {
+        const double t = g.domainStart() + (g.domainEnd() - g.domainStart()) * k / kSamples;
+        const Eigen::Vector2d uv = g.evaluate(t);
+        worst = std::max(worst, (h.evaluate(t) - f.evaluate(uv.x(), uv.y())).norm());
+    }
+    return worst / surfaceSize(f);
+}
+
+}  // namespace
+
+TEST(IncidenceBernstein, ProductIsThePolynomialProduct)
+{
+    // Given two Bernstein polynomials of degrees 3 and 4
+    const Eigen::VectorXd a = (Eigen::VectorXd(4) << 1.0, -2.0, 0.5, 3.0).finished();
+    const Eigen::VectorXd b = (Eigen::VectorXd(5) << 0.3, 1.0, -1.0, 2.0, 0.7).finished();
+    // When multiplied
+    const Eigen::VectorXd c = bernsteinProduct(a, b);
+    // Then the product has degree 7 and its values are the products of the values
+    ASSERT_EQ(c.size(), 8);
+    for (double s : {0.0, 0.13, 0.5, 0.77, 1.0})
+        EXPECT_NEAR(bernsteinValue(c, s), bernsteinValue(a, s) * bernsteinValue(b, s), 1e-14);
+}
+
+TEST(IncidenceBernstein, RootsOfSimpleTangentialAndEndRoots)
+{
+    // (s - 0.3)(s - 0.7) in Bernstein form of degree 2: b0 = 0.21, b1 = 0.21 - 0.5 = -0.29, b2 = 0.21
+    const Eigen::VectorXd two = (Eigen::VectorXd(3) << 0.21, -0.29, 0.21).finished();
+    const std::vector<double> roots = bernsteinRoots(two, 1e-15);
+    ASSERT_EQ(roots.size(), 2u);
+    EXPECT_NEAR(roots[0], 0.3, 1e-15);
+    EXPECT_NEAR(roots[1], 0.7, 1e-15);
+    // (s - 0.5)^2 touches zero: found to the subdivision's resolution
+    const Eigen::VectorXd touch = (Eigen::VectorXd(3) << 0.25, -0.25, 0.25).finished();
+    const std::vector<double> t = bernsteinRoots(touch, 1e-15);
+    ASSERT_FALSE(t.empty());
+    for (double s : t) EXPECT_NEAR(s, 0.5, 1e-7);
+    // s (1 - s): zeros at both ends, none inside
+    const Eigen::VectorXd ends = (Eigen::VectorXd(3) << 0.0, 0.5, 0.0).finished();
+    EXPECT_EQ(bernsteinRoots(ends, 1e-15), (std::vector<double>{0.0, 1.0}));
+    // identically zero: a curve along the line, no crossing
+    EXPECT_TRUE(bernsteinRoots(Eigen::VectorXd::Zero(4), 1e-15).empty());
+}
+
+TEST(IncidenceComposition, DiagonalCurveOfFigureFourIsExact)
+{
+    // Given Fig. 4's 8x10 bicubic surface and its cubic 8-point diagonal domain curve
+    const Surface3d f = figureFourSurface();
+    const Curve2d g = diagonalCurve(8);
+    // When A is composed and applied to F's control points
+    const Composition c = compose(SurfaceStructure::of(f), g);
+    const Curve3d h = applyComposition(c, f);
+    // Then H has degree (3 + 3) 3 = 18, Bezier pieces, and is F(G) to round-off
+    EXPECT_EQ(c.space.degree, 18);
+    EXPECT_EQ(c.space.pointCount(), c.space.pieceCount() * 18 + 1);
+    EXPECT_EQ(c.matrix.rows(), c.space.pointCount());
+    EXPECT_EQ(c.matrix.cols(), 80);
+    EXPECT_LT(compositionError(f, g, h), kExactRelative);
+    // The diagonal crosses the 4 interior u lines and 6 interior v lines once each
+    EXPECT_EQ(c.space.crossings.size(), 10u);
+    std::cout << "Fig. 4 exact composition: degree " << c.space.degree << ", " << c.space.pieceCount() << " pieces ("
+              << c.space.crossings.size() << " knot-line crossings, " << g.pointCount() - 4 << " knots of G), "
+              << c.space.pointCount() << " rows x " << c.matrix.cols() << " columns, " << c.matrix.nonZeros()
+              << " non-zeros; error " << compositionError(f, g, h) << " of the surface size\n";
+}
+
+TEST(IncidenceComposition, CurvedCurveOnUnevenKnotsIsExact)
+{
+    const Surface3d f = wavySurface(8, 10, 0.6);
+    const Curve2d g = curvedCurve(9);
+    const Composition c = compose(SurfaceStructure::of(f), g);
+    EXPECT_LT(compositionError(f, g, applyComposition(c, f)), kExactRelative);
+    EXPECT_GT(c.space.crossings.size(), 10u);  // the S crosses the v lines several times
+}
+
+TEST(IncidenceComposition, CrossingsAreWhereTheLineMeetsTheKnotLines)
+{
+    // Given a straight domain line of degree 1, G(t) = (0.1 + 0.8 t, 0.15 + 0.7 t)
+    const Surface3d f = wavySurface(8, 10, 0.4);
+    const Curve2d g(1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector2d(0.1, 0.15), Eigen::Vector2d(0.9, 0.85)});
+    // When its space is made
+    const CompositionSpace space = compositionSpace(SurfaceStructure::of(f), g);
+    // Then every interior knot line it meets is a breakpoint, at the parameter solved by hand
+    std::vector<double> expected;
+    for (double u : interiorBreakpoints(3, f.knotsU()))
+        if (u > 0.1 && u < 0.9) expected.push_back((u - 0.1) / 0.8);
+    for (double v : interiorBreakpoints(3, f.knotsV()))
+        if (v > 0.15 && v < 0.85) expected.push_back((v - 0.15) / 0.7);
+    std::sort(expected.begin(), expected.end());
+    ASSERT_EQ(space.crossings.size(), expected.size());
+    for (size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(space.crossings[i], expected[i], 1e-15);
+    EXPECT_EQ(space.degree, 6);
+}
+
+TEST(IncidenceComposition, IsoparametricCurveIsTheIsoCurve)
+{
+    const Surface3d f = figureFourSurface();
+    const SurfaceStructure s = SurfaceStructure::of(f);
+    // Inside a span, and along an interior knot line of F
+    for (double u0 : {0.37, interiorBreakpoints(3, f.knotsU())[1]}) {
+        const Curve2d g = isoCurveU(u0);
+        const Composition c = compose(s, g);
+        const Curve3d h = applyComposition(c, f);
+        const Curve3d iso = f.isoCurve(Direction::U, u0);  // runs along v: t = v here
+        double worst = 0.0;
+        for (int k = 0; k <= kSamples; ++k) {
+            const double t = static_cast<double>(k) / kSamples;
+            worst = std::max(worst, (h.evaluate(t) - iso.evaluate(t)).norm());
+        }
+        EXPECT_LT(worst / surfaceSize(f), kExactRelative) << "u0 = " << u0;
+        // Along the line no u line is crossed: only the v lines break H
+        EXPECT_EQ(c.space.crossings.size(), interiorBreakpoints(3, f.knotsV()).size()) << "u0 = " << u0;
+    }
+}
+
+TEST(IncidenceComposition, TouchingAKnotLineIsExact)
+{
+    // Given a domain parabola that touches the knot line u = u_2 at t = 0.5 without crossing it
+    const Surface3d f = figureFourSurface();
+    const double line = interiorBreakpoints(3, f.knotsU())[1];
+    // u(t) = line + 0.4 (t - 0.5)^2: Bezier points line + 0.1, line - 0.1, line + 0.1; v(t) = t
+    const Curve2d g(2, {0, 0, 0, 1, 1, 1},
+                    {Eigen::Vector2d(line + 0.1, 0.05), Eigen::Vector2d(line - 0.1, 0.5), Eigen::Vector2d(line + 0.1, 0.95)});
+    const Composition c = compose(SurfaceStructure::of(f), g);
+    EXPECT_LT(compositionError(f, g, applyComposition(c, f)), kExactRelative);
+}
+
+TEST(IncidenceComposition, RowsArePartitionsOfUnity)
+{
+    // Given any composition, a surface with all control points at one place maps to that place:
+    // each row of A sums to 1 (and so A F is affine invariant)
+    const Composition c = compose(SurfaceStructure::of(figureFourSurface()), curvedCurve());
+    const Eigen::VectorXd sums = c.matrix * Eigen::VectorXd::Ones(c.matrix.cols());
+    EXPECT_LT((sums.array() - 1.0).abs().maxCoeff(), 1e-13);
+}
+
+TEST(IncidenceComposition, RefusesCurvesLeavingTheDomainAndRationalOnes)
+{
+    const SurfaceStructure s = SurfaceStructure::of(figureFourSurface());
+    const Curve2d outside(1, {0, 0, 1, 1}, {Eigen::Vector2d(0.5, 0.5), Eigen::Vector2d(1.2, 0.5)});
+    EXPECT_THROW(compose(s, outside), GeometryError);
+    const Curve2d rational(1, {0, 0, 1, 1}, {Eigen::Vector2d(0.2, 0.5), Eigen::Vector2d(0.8, 0.5)}, {1.0, 2.0});
+    EXPECT_THROW(compose(s, rational), GeometryError);
+}
