@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace sculptline::solvers::incidence {
 
@@ -74,10 +75,18 @@ double bisect(const Eigen::VectorXd& c, double s0, double s1)
     return s0 + (s1 - s0) * 0.5 * (a + b);
 }
 
+// Roots as intervals [first, second]: a point for a simple root, a range where the polynomial stays
+// within the tolerance of zero (a touch, or close roots that no subdivision separates).
+using Range = std::pair<double, double>;
+
 void isolate(const Eigen::VectorXd& c, double s0, double s1, double tol, double width, int budget,
-             std::vector<double>& roots)
+             std::vector<Range>& roots)
 {
     const int n = static_cast<int>(c.size()) - 1;
+    if (c.cwiseAbs().maxCoeff() <= tol) {  // the piece runs along the level: one root for all of it
+        roots.emplace_back(s0, s1);
+        return;
+    }
     // A zero at an end of the piece is already reported (by the caller or the split that made
     // it): leave that coefficient out of the convex hull test, or the recursion would chase it.
     const int lo = std::abs(c[0]) <= tol ? 1 : 0;
@@ -86,17 +95,18 @@ void isolate(const Eigen::VectorXd& c, double s0, double s1, double tol, double 
     const Eigen::VectorXd inner = c.segment(lo, hi - lo + 1);
     if (inner.minCoeff() > tol || inner.maxCoeff() < -tol) return;  // convex hull: no zero here
     if (lo == 0 && hi == n && c[0] * c[n] < 0.0 && signChanges(c, tol) == 1) {
-        roots.push_back(bisect(c, s0, s1));
+        const double r = bisect(c, s0, s1);
+        roots.emplace_back(r, r);
         return;
     }
-    if (s1 - s0 <= width || budget == 0) {  // a tangential or multiple root, to `width`
-        roots.push_back(0.5 * (s0 + s1));
+    if (s1 - s0 <= width || budget == 0) {  // a root that no subdivision isolates, to `width`
+        roots.emplace_back(s0, s1);
         return;
     }
     Eigen::VectorXd left, right;
     bernsteinSplit(c, 0.5, left, right);
     const double mid = 0.5 * (s0 + s1);
-    if (std::abs(right[0]) <= tol) roots.push_back(mid);
+    if (std::abs(right[0]) <= tol) roots.emplace_back(mid, mid);
     isolate(left, s0, mid, tol, width, budget - 1, roots);
     isolate(right, mid, s1, tol, width, budget - 1, roots);
 }
@@ -108,10 +118,19 @@ std::vector<double> bernsteinRoots(const Eigen::VectorXd& c, double zeroToleranc
     std::vector<double> roots;
     if (c.size() == 0 || c.cwiseAbs().maxCoeff() <= zeroTolerance) return roots;
     const int n = static_cast<int>(c.size()) - 1;
-    if (std::abs(c[0]) <= zeroTolerance) roots.push_back(0.0);
-    if (std::abs(c[n]) <= zeroTolerance) roots.push_back(1.0);
-    isolate(c, 0.0, 1.0, zeroTolerance, width, 64, roots);
-    std::sort(roots.begin(), roots.end());
+    std::vector<Range> ranges;
+    if (std::abs(c[0]) <= zeroTolerance) ranges.emplace_back(0.0, 0.0);
+    if (std::abs(c[n]) <= zeroTolerance) ranges.emplace_back(1.0, 1.0);
+    isolate(c, 0.0, 1.0, zeroTolerance, width, 64, ranges);
+    std::sort(ranges.begin(), ranges.end());
+    // Ranges that touch are one root (a touch found as several neighbouring pieces): its middle.
+    for (size_t i = 0; i < ranges.size();) {
+        Range merged = ranges[i];
+        size_t j = i + 1;
+        while (j < ranges.size() && ranges[j].first <= merged.second) merged.second = std::max(merged.second, ranges[j++].second);
+        roots.push_back(merged.first == 0.0 ? 0.0 : (merged.second == 1.0 ? 1.0 : 0.5 * (merged.first + merged.second)));
+        i = j;
+    }
     return roots;
 }
 

@@ -24,10 +24,11 @@ void bernsteinSplit(const Eigen::VectorXd& c, double s, Eigen::VectorXd& left, E
 /// root isolation): a piece whose coefficients all lie on one side of zero (beyond
 /// `zeroTolerance`) has no root (convex hull property); a piece whose ends have opposite signs and
 /// whose coefficients change sign once holds exactly one simple root (Descartes' rule of signs for
-/// the Bernstein basis), found by bisection to round-off; anything else is subdivided down to
-/// `width` and reported by its midpoint (tangential and multiple roots, possibly as several nearby
-/// values: the caller merges them). A polynomial whose coefficients are all within
-/// `zeroTolerance` of zero (a curve running along the level) yields no root. Sorted.
+/// the Bernstein basis), found by bisection to round-off; a piece whose coefficients are all within
+/// `zeroTolerance` of zero (a touch: the polynomial stays that close to zero there) is one root
+/// range, and anything else is subdivided down to `width`. Touching ranges merge and are reported
+/// by their middle (an end of [0, 1] when they reach it). A polynomial whose coefficients are all
+/// within `zeroTolerance` of zero (a curve running along the level) yields no root. Sorted.
 /// @param zeroTolerance absolute, in the units of the coefficients (>= 0)
 /// @param width         in s, (0, 1): the resolution of non-simple roots
 std::vector<double> bernsteinRoots(const Eigen::VectorXd& c, double zeroTolerance, double width = 1e-10);

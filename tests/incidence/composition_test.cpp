@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 
 using namespace sculptline::solvers;
@@ -155,6 +156,10 @@ TEST(IncidenceComposition, TouchingAKnotLineIsExact)
                     {Eigen::Vector2d(line + 0.1, 0.05), Eigen::Vector2d(line - 0.1, 0.5), Eigen::Vector2d(line + 0.1, 0.95)});
     const Composition c = compose(SurfaceStructure::of(f), g);
     EXPECT_LT(compositionError(f, g, applyComposition(c, f)), kExactRelative);
+    // and the touch is one breakpoint, not a cluster
+    const auto atTouch = std::count_if(c.space.crossings.begin(), c.space.crossings.end(),
+                                       [](double t) { return std::abs(t - 0.5) < 1e-6; });
+    EXPECT_EQ(atTouch, 1);
 }
 
 TEST(IncidenceComposition, RowsArePartitionsOfUnity)
