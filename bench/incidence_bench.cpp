@@ -67,17 +67,20 @@ BENCHMARK(BM_IncidenceCompose1000Rows)->Unit(benchmark::kMillisecond);
 void BM_IncidenceStackedSystem1000Rows(benchmark::State& state)
 {
     const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    StackOptions options;
+    options.reduceMultiplicities = state.range(0) == 1;
     Eigen::Index rows = 0, nonZeros = 0;
     for (auto _ : state) {
-        const IncidenceSystem system = stackIncidences(s, scene().curves);
+        const IncidenceSystem system = stackIncidences(s, scene().curves, options);
         rows = system.matrix.rows();
         nonZeros = system.matrix.nonZeros();
         benchmark::DoNotOptimize(system.rhs.data());
     }
     state.counters["rows"] = static_cast<double>(rows);
     state.counters["nonzeros"] = static_cast<double>(nonZeros);
+    state.SetLabel(options.reduceMultiplicities ? "reduced multiplicities" : "Bezier form");
 }
-BENCHMARK(BM_IncidenceStackedSystem1000Rows)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IncidenceStackedSystem1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_IncidenceDiscretized1000Rows(benchmark::State& state)
 {

@@ -230,6 +230,45 @@ Composition compose(const SurfaceStructure& f, const Curve2d& domainCurve, const
     return out;
 }
 
+Composition reduceMultiplicities(const Composition& full, const SurfaceStructure& f, const Curve2d& domainCurve)
+{
+    const Curve2d g = openForm(domainCurve);
+    const int r = g.degree(), d = full.space.degree;
+    const double rangeU = f.knotsU[f.countU] - f.knotsU[f.degreeU];
+    const double rangeV = f.knotsV[f.countV] - f.knotsV[f.degreeV];
+    const std::vector<double> knotsG = interiorBreakpoints(r, g.knots());
+    const std::vector<double> linesU = interiorBreakpoints(f.degreeU, f.knotsU);
+    const std::vector<double> linesV = interiorBreakpoints(f.degreeV, f.knotsV);
+    // The continuity of F across the lines through `value` (its knots within 1e-9 of the range).
+    auto lineContinuity = [](double value, const std::vector<double>& lines, const KnotVector& knots, int degree,
+                             double range, int& k) {
+        for (double line : lines)
+            if (std::abs(value - line) <= 1e-9 * range) k = std::min(k, degree - knotMultiplicity(knots, line));
+    };
+    Composition out;
+    out.space = full.space;
+    ControlMatrix a = Eigen::MatrixXd(full.matrix);
+    for (double t : full.space.breakpoints) {
+        int k = d;  // H's continuity at t: as smooth as G and F are there
+        bool justified = false;
+        if (std::binary_search(knotsG.begin(), knotsG.end(), t)) {
+            k = std::min(k, r - knotMultiplicity(g.knots(), t));
+            justified = true;
+        }
+        if (std::binary_search(full.space.crossings.begin(), full.space.crossings.end(), t)) {
+            const Eigen::Vector2d uv = g.evaluate(t);
+            lineContinuity(uv.x(), linesU, f.knotsU, f.degreeU, rangeU, k);
+            lineContinuity(uv.y(), linesV, f.knotsV, f.degreeV, rangeV, k);
+            justified = true;
+        }
+        if (!justified || k <= 0) continue;
+        constexpr double kRemovalTolerance = 1e-10;  // A's entries are weights of size about 1
+        removeKnot(d, out.space.knots, a, t, std::min(k, d - 1), kRemovalTolerance, 1);
+    }
+    out.matrix = a.sparseView(1e-15, 1.0);
+    return out;
+}
+
 ControlMatrix surfacePointRows(const Surface3d& surface)
 {
     ControlMatrix rows(surface.points().size(), 3);

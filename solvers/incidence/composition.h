@@ -78,6 +78,14 @@ struct Composition {
 Composition compose(const SurfaceStructure& surface, const Curve2d& domainCurve,
                     const std::vector<double>& extraBreakpoints = {});
 
+/// The same composition in the smallest space its continuity justifies: at a knot of G of
+/// multiplicity m, H is C^(r-m); where G crosses a knot line of F of multiplicity m, C^(p-m) (or
+/// q-m); each breakpoint's multiplicity becomes D minus the least of these (extra breakpoints keep D,
+/// for the requests' knots). Made by knot removal (The NURBS Book A5.8) on A's columns, which takes
+/// out exactly-removable knots up to round-off: fewer rows, the same curve, rows no longer local to
+/// one piece. A knot whose removal would move an entry of A by more than 1e-10 stays.
+Composition reduceMultiplicities(const Composition& full, const SurfaceStructure& surface, const Curve2d& domainCurve);
+
 /// F's control points as rows (x, y, z), point (i, j) at row i * countV + j: the F of H = A F.
 ControlMatrix surfacePointRows(const Surface3d& surface);
 

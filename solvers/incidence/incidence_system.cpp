@@ -33,6 +33,7 @@ IncidenceSystem stackIncidences(const SurfaceStructure& surface, const std::vect
         if (curve.request.isRational()) throw GeometryError("request curve: must be non-rational");
         const Curve3d request = curve.request.isClosed() ? curve.request.clamped() : curve.request;
         Composition composition = compose(surface, curve.domain, interiorBreakpoints(request.degree(), request.knots()));
+        if (options.reduceMultiplicities) composition = reduceMultiplicities(composition, surface, curve.domain);
         const SparseRows compatibility = compatibilityMatrix(request.degree(), request.knots(), composition.space);
         ControlMatrix points(request.pointCount(), 3);
         for (int i = 0; i < request.pointCount(); ++i) points.row(i) = request.points()[i].transpose();

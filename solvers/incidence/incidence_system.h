@@ -45,6 +45,10 @@ struct StackOptions {
     /// Add one point-incidence row per crossing of two domain curves: S(G1(t1)) = the requests'
     /// point there (the fixed curve's if one is fixed, else the mean of the two).
     bool crossingRows = true;
+    /// Compose each curve in the smaller space of its continuity (reduceMultiplicities): fewer rows.
+    /// A request must then be at least as smooth as H at G's knots and the crossings (a cubic
+    /// request with simple knots is; H itself in Bezier form is not).
+    bool reduceMultiplicities = false;
 };
 
 /// The stacked system for the curves on a surface of structure `surface`. Each request's interior

@@ -179,3 +179,39 @@ TEST(IncidenceComposition, RefusesCurvesLeavingTheDomainAndRationalOnes)
     const Curve2d rational(1, {0, 0, 1, 1}, {Eigen::Vector2d(0.2, 0.5), Eigen::Vector2d(0.8, 0.5)}, {1.0, 2.0});
     EXPECT_THROW(compose(s, rational), GeometryError);
 }
+
+TEST(IncidenceComposition, ReducedMultiplicitiesKeepTheCurve)
+{
+    // Given Fig. 4's composition in Bezier form (14 breakpoints, each of multiplicity 18)
+    const Surface3d f = figureFourSurface();
+    const Curve2d g = diagonalCurve(8);
+    const SurfaceStructure s = SurfaceStructure::of(f);
+    const Composition full = compose(s, g);
+    // When the knots are removed down to H's continuity (C2 everywhere here: simple knots of a
+    // cubic G, simple knot lines of a bicubic F)
+    const Composition reduced = reduceMultiplicities(full, s, g);
+    // Then each breakpoint has multiplicity 16, and A F is still F(G)
+    EXPECT_EQ(reduced.space.pointCount(), full.space.pointCount() - 2 * static_cast<int>(full.space.breakpoints.size()));
+    EXPECT_EQ(reduced.matrix.rows(), reduced.space.pointCount());
+    EXPECT_LT(compositionError(f, g, applyComposition(reduced, f)), kExactRelative);
+    std::cout << "Fig. 4 reduced to H's continuity: " << reduced.space.pointCount() << " rows (Bezier form "
+              << full.space.pointCount() << "); error " << compositionError(f, g, applyComposition(reduced, f)) << "\n";
+}
+
+TEST(IncidenceComposition, ReducedMultiplicityFollowsADoubleKnotLine)
+{
+    // Given a surface with one interior u line of multiplicity 2 (only C1 across it)
+    const Surface3d base = figureFourSurface();
+    const double line = interiorBreakpoints(3, base.knotsU())[2];
+    const Surface3d f = base.insertKnot(Direction::U, line);
+    const Curve2d g = diagonalCurve(8);
+    const SurfaceStructure s = SurfaceStructure::of(f);
+    const Composition full = compose(s, g);
+    // When reduced
+    const Composition reduced = reduceMultiplicities(full, s, g);
+    // Then the crossing of that line keeps multiplicity D - 1 = 17, every other one D - 2 = 16
+    const auto& b = full.space.breakpoints;
+    const int count = static_cast<int>(b.size());
+    EXPECT_EQ(reduced.space.pointCount(), full.space.pointCount() - 2 * count + 1);
+    EXPECT_LT(compositionError(f, g, applyComposition(reduced, f)), kExactRelative);
+}

@@ -55,19 +55,25 @@ TEST(IncidenceSystem, LowDegreeRequestsAreBroughtIntoTheirCurvesSpaces)
     std::vector<Curve3d::Point> points;
     for (int i = 0; i < 6; ++i) points.emplace_back(15.0 * i, 12.0 * i, 4.0 * std::sin(double(i)));
     const Curve3d request(3, {0, 0, 0, 0, 0.3, 0.6, 1, 1, 1, 1}, points);
-    // When stacked alone
-    const IncidenceSystem system = stackIncidences(s, {{g, request, false}});
-    // Then its knots are breakpoints, and the right-hand side is the request, in H's space
-    const CompositionSpace& space = system.compositions[0].space;
-    for (double knot : {0.3, 0.6})
-        EXPECT_TRUE(std::find(space.breakpoints.begin(), space.breakpoints.end(), knot) != space.breakpoints.end());
-    const Curve3d rhsCurve(space.degree, space.knots, [&] {
-        std::vector<Curve3d::Point> p;
-        for (Eigen::Index i = 0; i < system.rhs.rows(); ++i) p.emplace_back(system.rhs.row(i).transpose());
-        return p;
-    }());
-    for (int k = 0; k <= 200; ++k) EXPECT_LT((rhsCurve.evaluate(k / 200.0) - request.evaluate(k / 200.0)).norm(), 1e-11);
-    EXPECT_TRUE(system.hardRows().empty());
+    for (const bool reduce : {false, true}) {
+        // When stacked alone, in Bezier form and in the reduced space
+        StackOptions options;
+        options.reduceMultiplicities = reduce;
+        const IncidenceSystem system = stackIncidences(s, {{g, request, false}}, options);
+        // Then its knots are breakpoints, and the right-hand side is the request, in H's space
+        const CompositionSpace& space = system.compositions[0].space;
+        for (double knot : {0.3, 0.6})
+            EXPECT_TRUE(std::find(space.breakpoints.begin(), space.breakpoints.end(), knot) != space.breakpoints.end());
+        const Curve3d rhsCurve(space.degree, space.knots, [&] {
+            std::vector<Curve3d::Point> p;
+            for (Eigen::Index i = 0; i < system.rhs.rows(); ++i) p.emplace_back(system.rhs.row(i).transpose());
+            return p;
+        }());
+        for (int k = 0; k <= 200; ++k) EXPECT_LT((rhsCurve.evaluate(k / 200.0) - request.evaluate(k / 200.0)).norm(), 1e-11);
+        EXPECT_TRUE(system.hardRows().empty());
+        // and the reduced space has fewer rows than the Bezier form
+        EXPECT_EQ(system.matrix.rows() < compose(s, g, {0.3, 0.6}).matrix.rows(), reduce);
+    }
 }
 
 TEST(IncidenceSystem, DisagreeingRequestsMeetHalfwayAtTheirCrossing)
