@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <random>
 
 using namespace sculptline::solvers;
 using namespace sculptline::solvers::incidence;
@@ -214,4 +215,31 @@ TEST(IncidenceComposition, ReducedMultiplicityFollowsADoubleKnotLine)
     const int count = static_cast<int>(b.size());
     EXPECT_EQ(reduced.space.pointCount(), full.space.pointCount() - 2 * count + 1);
     EXPECT_LT(compositionError(f, g, applyComposition(reduced, f)), kExactRelative);
+}
+
+TEST(IncidenceComposition, RandomCurvesOnRandomKnotsAreExact)
+{
+    // Given 40 random domain curves (degree 1 to 4, 2 to 12 points, uneven knots) on random surfaces
+    // (degrees 2 and 3, uneven knots, 6 to 14 points a side)
+    std::mt19937 random(20261201);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double worstFull = 0.0, worstReduced = 0.0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const int p = 2 + trial % 2, q = 3 - (trial / 2) % 2;
+        const Surface3d f = wavySurface(6 + trial % 9, 14 - trial % 9, 0.3 * unit(random), p, q);
+        const int r = 1 + trial % 4;
+        const int n = std::max(r + 1, 2 + static_cast<int>(unit(random) * 10));
+        std::vector<Curve2d::Point> points;
+        for (int i = 0; i < n; ++i) points.emplace_back(0.02 + 0.96 * unit(random), 0.02 + 0.96 * unit(random));
+        const Curve2d g(r, clampedKnots(r, n, 0.3 * unit(random)), points);
+        const SurfaceStructure s = SurfaceStructure::of(f);
+        const Composition full = compose(s, g);
+        const Composition reduced = reduceMultiplicities(full, s, g);
+        worstFull = std::max(worstFull, compositionError(f, g, applyComposition(full, f)));
+        worstReduced = std::max(worstReduced, compositionError(f, g, applyComposition(reduced, f)));
+    }
+    // Then every composition is F(G) to round-off, in either space
+    EXPECT_LT(worstFull, kExactRelative);
+    EXPECT_LT(worstReduced, kExactRelative);
+    std::cout << "40 random curves: worst error " << worstFull << " (Bezier form), " << worstReduced << " (reduced)\n";
 }

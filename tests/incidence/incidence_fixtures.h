@@ -13,7 +13,8 @@ using solvers::Curve3d;
 using solvers::KnotVector;
 using solvers::Surface3d;
 
-/// Clamped knots on [0, 1] for `count` points of `degree`; `skew` > 0 makes the interior uneven.
+/// Clamped knots on [0, 1] for `count` points of `degree`; `skew` in (-0.3, 0.3] makes the interior
+/// uneven (larger ones can make the knots decrease).
 inline KnotVector clampedKnots(int degree, int count, double skew = 0.0)
 {
     KnotVector knots(static_cast<size_t>(degree + 1), 0.0);
@@ -26,8 +27,8 @@ inline KnotVector clampedKnots(int degree, int count, double skew = 0.0)
     return knots;
 }
 
-/// A bicubic surface over a 100 x 80 sheet with a wavy height: countU x countV points.
-inline Surface3d wavySurface(int countU, int countV, double skew = 0.3)
+/// A surface (bicubic by default) over a 100 x 80 sheet with a wavy height: countU x countV points.
+inline Surface3d wavySurface(int countU, int countV, double skew = 0.3, int degreeU = 3, int degreeV = 3)
 {
     std::vector<Surface3d::Point> points;
     for (int i = 0; i < countU; ++i)
@@ -36,7 +37,8 @@ inline Surface3d wavySurface(int countU, int countV, double skew = 0.3)
             points.emplace_back(x + 3.0 * std::sin(0.9 * j), y + 2.0 * std::cos(1.3 * i),
                                 12.0 * std::sin(0.7 * i) * std::cos(0.5 * j) + 0.5 * i * j);
         }
-    return Surface3d(3, 3, clampedKnots(3, countU, skew), clampedKnots(3, countV, -skew), countU, countV, points);
+    return Surface3d(degreeU, degreeV, clampedKnots(degreeU, countU, skew), clampedKnots(degreeV, countV, -skew), countU, countV,
+                     points);
 }
 
 /// Fig. 4's surface: 8 x 10 bicubic.
