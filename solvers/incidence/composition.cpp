@@ -113,8 +113,12 @@ CompositionSpace compositionSpace(const SurfaceStructure& f, const Curve2d& doma
                                   const std::vector<double>& extraBreakpoints)
 {
     const Curve2d g = openForm(domainCurve);
-    checkInsideDomain(f, g);
     const int r = g.degree();
+    if ((f.degreeU + f.degreeV) * r > kMaxDegree) {
+        throw GeometryError("domain curve: the surface curve's degree (" + std::to_string((f.degreeU + f.degreeV) * r) +
+                            ") exceeds the kernel's maximum " + std::to_string(kMaxDegree));
+    }
+    checkInsideDomain(f, g);
     const double t0 = g.domainStart(), t1 = g.domainEnd();
     const std::vector<double> linesU = interiorBreakpoints(f.degreeU, f.knotsU);
     const std::vector<double> linesV = interiorBreakpoints(f.degreeV, f.knotsV);

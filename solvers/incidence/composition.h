@@ -62,7 +62,8 @@ struct CompositionSpace {
 /// @param extraBreakpoints parameters of G's domain to make breakpoints too (e.g. a request
 ///        curve's knots, so that it can be brought into the space exactly); those outside the
 ///        open domain are ignored.
-/// @throws GeometryError when G is rational or leaves F's domain (by more than 1e-12 of its size).
+/// @throws GeometryError when G is rational, leaves F's domain (by more than 1e-12 of its size) or
+///         D exceeds kMaxDegree (30: a bicubic surface takes domain curves up to degree 5).
 /// @note Crossings are found per span of G by Bezier root isolation of G_u(t) - u_i and
 ///       G_v(t) - v_j; values within 1e-9 of the domain length merge, a knot of G winning.
 CompositionSpace compositionSpace(const SurfaceStructure& surface, const Curve2d& domainCurve,

@@ -179,6 +179,10 @@ TEST(IncidenceComposition, RefusesCurvesLeavingTheDomainAndRationalOnes)
     EXPECT_THROW(compose(s, outside), GeometryError);
     const Curve2d rational(1, {0, 0, 1, 1}, {Eigen::Vector2d(0.2, 0.5), Eigen::Vector2d(0.8, 0.5)}, {1.0, 2.0});
     EXPECT_THROW(compose(s, rational), GeometryError);
+    // degree 6 on a bicubic surface: D = 36, beyond the kernel's 30
+    std::vector<Curve2d::Point> points;
+    for (int i = 0; i < 7; ++i) points.emplace_back(0.1 + 0.1 * i, 0.5);
+    EXPECT_THROW(compose(s, Curve2d(6, clampedKnots(6, 7), points)), GeometryError);
 }
 
 TEST(IncidenceComposition, ReducedMultiplicitiesKeepTheCurve)
