@@ -43,7 +43,8 @@ struct IncidenceSystem {
 /// Options of stackIncidences.
 struct StackOptions {
     /// Add one point-incidence row per crossing of two domain curves: S(G1(t1)) = the requests'
-    /// point there (the fixed curve's if one is fixed, else the mean of the two).
+    /// point there (the fixed curve's if one is fixed, else the mean of the two). On a fixed curve
+    /// the row repeats what that curve's rows impose (a dependent hard row, consistent with them).
     bool crossingRows = true;
     /// Compose each curve in the smaller space of its continuity (reduceMultiplicities): fewer rows.
     /// A request must then be at least as smooth as H at G's knots and the crossings (a cubic
