@@ -19,6 +19,11 @@ constexpr double kMergeRelative = 1e-9;
 constexpr double kDomainSlackRelative = 1e-12;
 // A coefficient within this (relative to the knot range) of a knot value counts as on the line.
 constexpr double kOnLineRelative = 1e-13;
+// Entries of A below this are round-off of zero (a basis function vanishing on a cell's edge that
+// G runs along or touches): dropped, so that a control point the curve does not depend on has an
+// empty column. A's rows are partitions of unity, so this is relative; dropping a true entry this
+// small moves H by less than its round-off.
+constexpr double kNegligible = 1e-15;
 
 Curve2d openForm(const Curve2d& g)
 {
@@ -224,7 +229,7 @@ Composition compose(const SurfaceStructure& f, const Curve2d& domainCurve, const
             for (int ia = 0; ia <= p; ++ia)
                 for (int jb = 0; jb <= q; ++jb) {
                     const double value = local(row, ia * (q + 1) + jb);
-                    if (value == 0.0) continue;
+                    if (std::abs(value) <= kNegligible) continue;
                     triplets.emplace_back(k * d + row, (su - p + ia) * f.countV + (sv - q + jb), w * value);
                 }
         }
@@ -269,7 +274,7 @@ Composition reduceMultiplicities(const Composition& full, const SurfaceStructure
         constexpr double kRemovalTolerance = 1e-10;  // A's entries are weights of size about 1
         removeKnot(d, out.space.knots, a, t, std::min(k, d - 1), kRemovalTolerance, 1);
     }
-    out.matrix = a.sparseView(1e-15, 1.0);
+    out.matrix = a.sparseView(kNegligible, 1.0);
     return out;
 }
 

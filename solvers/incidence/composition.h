@@ -72,7 +72,7 @@ CompositionSpace compositionSpace(const SurfaceStructure& surface, const Curve2d
 /// A and the space of its rows.
 struct Composition {
     CompositionSpace space;
-    SparseRows matrix;  ///< space.pointCount() x surface.columnCount()
+    SparseRows matrix;  ///< space.pointCount() x surface.columnCount(); entries below 1e-15 dropped
 };
 
 /// A with H = A F exactly (up to round-off), in the space compositionSpace() makes.
