@@ -1,0 +1,126 @@
+// Curve-surface incidence benchmarks: sculptline-bench --benchmark_filter=Incidence
+// Building A (H = A F, seed 000 §2.1) for a system of about 1000 rows: four cubic domain curves (one
+// iso-parametric, one fixed) on a 25x20 bicubic surface, composed exactly; the same with the requests brought into the curves' spaces and
+// the crossings' rows (the whole stacked system); the discretized alternative with as many rows;
+// and the smoothing Gram matrix with its factor (seed 000 §4.4). Counter rows: the system's rows.
+#include "solvers/incidence/incidence_system.h"
+#include "solvers/incidence/point_incidence.h"
+#include "solvers/incidence/smoothing_functionals.h"
+
+#include "tests/incidence/incidence_fixtures.h"
+
+#include <benchmark/benchmark.h>
+
+using namespace sculptline::solvers;
+using namespace sculptline::solvers::incidence;
+using namespace sculptline::incidence_test;
+
+namespace {
+
+// A cubic domain curve through the given points (clamped uniform knots).
+Curve2d through(std::vector<Curve2d::Point> points) { return makeClampedUniform<2>(3, points); }
+
+struct Scene {
+    Surface3d surface = wavySurface(25, 20);
+    std::vector<CurveRequest> curves;
+    Scene()
+    {
+        const std::vector<Curve2d> domains{
+            through({{0.2, 0.2}, {0.35, 0.3}, {0.5, 0.45}, {0.6, 0.65}}),
+            through({{0.3, 0.2}, {0.45, 0.3}, {0.55, 0.3}, {0.7, 0.2}}),
+            through({{0.2, 0.8}, {0.4, 0.75}, {0.5, 0.75}, {0.7, 0.8}}),
+            through({{0.5, 0.32}, {0.5, 0.45}, {0.5, 0.55}, {0.5, 0.68}}),  // iso-parametric
+        };
+        const SurfaceStructure s = SurfaceStructure::of(surface);
+        for (const Curve2d& g : domains) {
+            // A cubic request: the surface curve sampled at the domain curve's control points, lifted.
+            std::vector<Curve3d::Point> points;
+            for (const auto& uv : g.points()) points.push_back(surface.evaluate(uv.x(), uv.y()) + Curve3d::Point(0, 0, 2.0));
+            curves.push_back({g, Curve3d(3, g.knots(), points), false});
+        }
+        curves[3].fixed = true;
+    }
+};
+
+const Scene& scene()
+{
+    static const Scene s;
+    return s;
+}
+
+void BM_IncidenceCompose1000Rows(benchmark::State& state)
+{
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    Eigen::Index rows = 0;
+    for (auto _ : state) {
+        rows = 0;
+        for (const CurveRequest& c : scene().curves) {
+            const Composition a = compose(s, c.domain);
+            rows += a.matrix.rows();
+            benchmark::DoNotOptimize(a.matrix.valuePtr());
+        }
+    }
+    state.counters["rows"] = static_cast<double>(rows);
+}
+BENCHMARK(BM_IncidenceCompose1000Rows)->Unit(benchmark::kMillisecond);
+
+void BM_IncidenceStackedSystem1000Rows(benchmark::State& state)
+{
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    StackOptions options;
+    options.reduceMultiplicities = state.range(0) == 1;
+    Eigen::Index rows = 0, nonZeros = 0;
+    for (auto _ : state) {
+        const IncidenceSystem system = stackIncidences(s, scene().curves, options);
+        rows = system.matrix.rows();
+        nonZeros = system.matrix.nonZeros();
+        benchmark::DoNotOptimize(system.rhs.data());
+    }
+    state.counters["rows"] = static_cast<double>(rows);
+    state.counters["nonzeros"] = static_cast<double>(nonZeros);
+    state.SetLabel(options.reduceMultiplicities ? "reduced multiplicities" : "Bezier form");
+}
+BENCHMARK(BM_IncidenceStackedSystem1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_IncidenceDiscretized1000Rows(benchmark::State& state)
+{
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    std::vector<int> counts;
+    for (const CurveRequest& c : scene().curves) counts.push_back(static_cast<int>(compose(s, c.domain).matrix.rows()));
+    Eigen::Index rows = 0;
+    for (auto _ : state) {
+        rows = 0;
+        for (size_t k = 0; k < counts.size(); ++k) {
+            const SparseRows a = discretizedIncidence(s, scene().curves[k].domain, uniformParameters(scene().curves[k].domain, counts[k]));
+            rows += a.rows();
+            benchmark::DoNotOptimize(a.valuePtr());
+        }
+    }
+    state.counters["rows"] = static_cast<double>(rows);
+}
+BENCHMARK(BM_IncidenceDiscretized1000Rows)->Unit(benchmark::kMillisecond);
+
+void BM_IncidenceSmoothingGram25x20(benchmark::State& state)
+{
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    for (auto _ : state) {
+        const Eigen::SparseMatrix<double> g = smoothingGram(s, 0.2, 0.5, 0.3);
+        benchmark::DoNotOptimize(g.valuePtr());
+    }
+}
+BENCHMARK(BM_IncidenceSmoothingGram25x20)->Unit(benchmark::kMillisecond);
+
+void BM_IncidenceGramFactor25x20(benchmark::State& state)
+{
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    const Eigen::MatrixXd g(smoothingGram(s, 0.2, 0.5, 0.3));
+    const auto method = state.range(0) == 0 ? FactorMethod::SquareRoot : FactorMethod::CholeskyRidge;
+    for (auto _ : state) {
+        const Eigen::MatrixXd l = gramFactor(g, method);
+        benchmark::DoNotOptimize(l.data());
+    }
+    state.SetLabel(state.range(0) == 0 ? "square root" : "Cholesky + ridge");
+}
+BENCHMARK(BM_IncidenceGramFactor25x20)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
