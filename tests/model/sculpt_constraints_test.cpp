@@ -150,7 +150,9 @@ TEST(SculptBound, OnlyTheInsideMovesAndATargetPartlyInsideActsThere)
     int moved = 0;
     for (size_t k = 0; k < inside.size(); ++k) {
         // Then the control points outside it stay bit for bit, and some inside move
-        if (!inside[k]) EXPECT_EQ(e.surface->points()[k], sheet.points()[k]) << k;
+        if (!inside[k]) {
+            EXPECT_EQ(e.surface->points()[k], sheet.points()[k]) << k;
+        }
         if (inside[k] && e.surface->points()[k] != sheet.points()[k]) ++moved;
     }
     EXPECT_GT(moved, 0);
