@@ -43,7 +43,7 @@ void BM_RegularizationTsvdResolve(benchmark::State& state)
     for (auto _ : state) {
         const reg::ProjectedRhs rhs = reg::projectRhs(svd, b);
         const reg::LCurve lc = reg::tsvdLCurve(svd, rhs);
-        const int k = reg::lcurveCorner(lc).k;
+        const int k = reg::lcurveCorner(lc, reg::defaultCornerMethod(false)).k;
         benchmark::DoNotOptimize(reg::tsvdSolution(svd, rhs, k).data());
     }
 }

@@ -11,7 +11,7 @@
 
 namespace sculptline::solvers::regularization {
 
-CornerMethod defaultCornerMethod() { return CornerMethod::AdaptivePruning; }
+CornerMethod defaultCornerMethod(bool mtsvd) { return mtsvd ? CornerMethod::AdaptivePruning : CornerMethod::KnotRemoval; }
 
 std::string cornerMethodName(CornerMethod method)
 {

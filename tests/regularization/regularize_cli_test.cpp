@@ -58,7 +58,7 @@ TEST(RegularizeCli, GivenShaw_WhenRunWithDefaults_ThenTheCornerSolutionAndLCurve
     const reg::CachedSvd svd(s.p.a);
     const reg::ProjectedRhs rhs = reg::projectRhs(svd, s.b);
     const reg::LCurve lc = reg::tsvdLCurve(svd, rhs);
-    const int corner = reg::lcurveCorner(lc).k;
+    const int corner = reg::lcurveCorner(lc, reg::defaultCornerMethod(false)).k;
     EXPECT_EQ(out["k"].get<int>(), corner);
     EXPECT_EQ(out["corner"].get<int>(), corner);
     EXPECT_LT((vectorOf(out["solution"]) - reg::tsvdSolution(svd, rhs, corner)).norm(),
