@@ -209,3 +209,15 @@ write("document", "sculpt_handles", handles_doc)
 write("plan", "sculpt_handles", {"document": handles_doc})
 write("network", "square", {"curves": sq, "loops": [[0, 1, 2, 3]], "fairing": 2})
 write("network", "closed_ring", {"curves": [ring(1, 0)], "loops": [[0]], "edge_length": 0.2})
+# regularize: a small ill-conditioned system (Hilbert-like), TSVD with a prior, MTSVD with a given
+# smoothing, three right-hand-side columns (tests/regularization/regularize_cli_test.cpp).
+hilbert = [[1 / (i + j + 1) for j in range(6)] for i in range(8)]
+hb = [sum(row) + 1e-4 * ((-1) ** i) for i, row in enumerate(hilbert)]
+write("regularize", "tsvd_corner", {"matrix": hilbert, "rhs": hb})
+write("regularize", "tsvd_prior_k", {"matrix": hilbert, "rhs": hb, "k": 3, "prior": [0.5] * 6,
+                                     "corner_method": "knot-removal"})
+write("regularize", "mtsvd_default", {"matrix": hilbert, "rhs": [[v, 2 * v, -v] for v in hb], "method": "mtsvd"})
+write("regularize", "mtsvd_smoothing", {"matrix": hilbert, "rhs": hb, "method": "mtsvd", "svd": "eigen",
+                                        "smoothing": [[1 if c == r else -1 if c == r + 1 else 0 for c in range(6)]
+                                                      for r in range(5)]})
+write("regularize", "wide", {"matrix": [row[:] for row in hilbert[:4]], "rhs": hb[:4], "method": "mtsvd"})

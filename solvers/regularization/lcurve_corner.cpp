@@ -1,0 +1,315 @@
+#include "solvers/regularization/lcurve_corner.h"
+
+#include "solvers/bspline/basis.h"
+#include "solvers/bspline/knot_algorithms.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace sculptline::solvers::regularization {
+
+CornerMethod defaultCornerMethod(bool mtsvd) { return mtsvd ? CornerMethod::AdaptivePruning : CornerMethod::KnotRemoval; }
+
+std::string cornerMethodName(CornerMethod method)
+{
+    return method == CornerMethod::KnotRemoval ? "knot-removal" : "adaptive-pruning";
+}
+
+namespace {
+
+// The usable points of the L-curve in log10-log10, with their k (1-based).
+struct LogCurve {
+    std::vector<int> k;
+    std::vector<Eigen::Vector2d> p;
+};
+
+// A residual below this fraction of the largest is round-off (a consistent system solved to the last
+// digit, e.g. k = n on a square matrix): its logarithm says nothing about the data and would stretch
+// the curve by ten decades.
+constexpr double kResidualRoundOff = 1e3 * std::numeric_limits<double>::epsilon();
+
+LogCurve usablePoints(const LCurve& lc)
+{
+    LogCurve out;
+    double rhoMax = 0.0;
+    for (int i = 0; i < lc.rho.size(); ++i) {
+        if (std::isfinite(lc.rho(i))) rhoMax = std::max(rhoMax, lc.rho(i));
+    }
+    for (int i = 0; i < lc.rho.size(); ++i) {
+        const double r = lc.rho(i), e = lc.eta(i);
+        if (!(std::isfinite(r) && std::isfinite(e) && r > kResidualRoundOff * rhoMax && e > 0.0)) continue;
+        const Eigen::Vector2d q(std::log10(r), std::log10(e));
+        if (!out.p.empty() && q == out.p.back()) continue;  // a repeated point has no direction
+        out.k.push_back(i + 1);
+        out.p.push_back(q);
+    }
+    if (out.p.empty()) throw std::invalid_argument("lcurve: no point with finite, positive rho and eta");
+    return out;
+}
+
+double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+// ---- Seed 000 §4.2: knot removal on the C0 cubic through the points ------------------------------
+
+constexpr int kDegree = 3;
+// A knot whose two-sided turn is at least this (radians, clockwise) is a corner candidate.
+constexpr double kMinCornerTurn = 10.0 * 3.14159265358979323846 / 180.0;
+// |log10 ε_max − log10 ε_min| <= 1: the remaining knots' removal errors lie within one decade.
+constexpr double kErrorSpreadDecades = 1.0;
+
+// The error that removing one copy of the knot u would cause (The NURBS Book A5.8, its first pass):
+// the control points are solved from both ends of the affected range and their mismatch measured.
+double removalError(const KnotVector& U, const ControlMatrix& P, double u)
+{
+    const int p = kDegree;
+    const int s = knotMultiplicity(U, u);
+    const int r = static_cast<int>(std::upper_bound(U.begin(), U.end(), u) - U.begin()) - 1;
+    const int first = r - p, last = r - s, off = first - 1;
+    ControlMatrix temp(2 * p + 1, P.cols());
+    temp.row(0) = P.row(off);
+    temp.row(last + 1 - off) = P.row(last + 1);
+    int i = first, j = last, ii = 1, jj = last - off;
+    while (j - i > 0) {
+        const double ai = (u - U[i]) / (U[i + p + 1] - U[i]);
+        const double aj = (u - U[j]) / (U[j + p + 1] - U[j]);
+        temp.row(ii) = (P.row(i) - (1.0 - ai) * temp.row(ii - 1)) / ai;
+        temp.row(jj) = (P.row(j) - aj * temp.row(jj + 1)) / (1.0 - aj);
+        ++i, ++ii, --j, --jj;
+    }
+    if (j - i < 0) return (temp.row(ii - 1) - temp.row(jj + 1)).norm();
+    const double ai = (u - U[i]) / (U[i + p + 1] - U[i]);
+    return (P.row(i) - (ai * temp.row(ii + 1) + (1.0 - ai) * temp.row(ii - 1))).norm();
+}
+
+// The point of the cubic at u, from the left (side < 0) or the right, by de Boor.
+Eigen::Vector2d evaluateAt(const KnotVector& U, const ControlMatrix& P, double u)
+{
+    const int span = findSpan(kDegree, U, u);
+    double n[kDegree + 1];
+    basisFunctions(span, u, kDegree, U, n);
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (int i = 0; i <= kDegree; ++i) c += n[i] * P.row(span - kDegree + i).transpose();
+    return c;
+}
+
+}  // namespace
+
+CornerResult cornerByKnotRemoval(const LCurve& lcurve)
+{
+    const LogCurve lc = usablePoints(lcurve);
+    const int np = static_cast<int>(lc.p.size());
+    CornerResult result;
+    if (np < 3) {
+        result.k = lc.k.back();
+        return result;
+    }
+    // Chord-length parameters on [0, 1].
+    std::vector<double> t(np, 0.0);
+    for (int i = 1; i < np; ++i) t[i] = t[i - 1] + (lc.p[i] - lc.p[i - 1]).norm();
+    for (double& v : t) v /= t.back();
+    t.back() = 1.0;
+    // The polyline as a linear B-spline, elevated to a C0 cubic (every data point a triple knot).
+    KnotVector knots;
+    knots.push_back(0.0);
+    for (double v : t) knots.push_back(v);
+    knots.push_back(1.0);
+    ControlMatrix points(np, 2);
+    for (int i = 0; i < np; ++i) points.row(i) = lc.p[i].transpose();
+    KnotsAndPoints cubic = elevateDegree(1, knots, points, kDegree - 1);
+    KnotVector& U = cubic.knots;
+    ControlMatrix& P = cubic.points;
+
+    // Greedy ranking: remove the least significant knot copy (raising the threshold to its error)
+    // until the remaining knots' errors span at most one decade.
+    std::vector<double> breaks, errors;
+    double threshold = 0.0;  // the largest error spent on one removal
+    for (;;) {
+        breaks = interiorBreakpoints(kDegree, U);
+        if (breaks.empty()) break;
+        errors.resize(breaks.size());
+        for (size_t i = 0; i < breaks.size(); ++i) errors[i] = removalError(U, P, breaks[i]);
+        const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
+        const double floor = std::numeric_limits<double>::min();
+        if (std::log10(std::max(*hi, floor)) - std::log10(std::max(*lo, floor)) <= kErrorSpreadDecades) break;
+        threshold = std::max(threshold, *lo);
+        removeKnot(kDegree, U, P, breaks[lo - errors.begin()], 1, std::numeric_limits<double>::infinity(),
+                   static_cast<int>(P.cols()));
+    }
+
+    // The turn at each remaining knot: directions over a quarter of the neighbouring spans. A knot
+    // stands for the cluster of data points within the threshold of its curve point (seed 000 §4.2:
+    // "the corner consists of a cluster of rapidly varying values"); of those, the one of smallest η.
+    std::vector<std::pair<double, int>> turns;  // (clockwise turn in radians, data index)
+    for (size_t b = 0; b < breaks.size(); ++b) {
+        const double u = breaks[b];
+        const double left = b == 0 ? 0.0 : breaks[b - 1], right = b + 1 == breaks.size() ? 1.0 : breaks[b + 1];
+        const double h = 0.25 * std::min(u - left, right - u);
+        const Eigen::Vector2d c = evaluateAt(U, P, u);
+        const Eigen::Vector2d d1 = c - evaluateAt(U, P, u - h), d2 = evaluateAt(U, P, u + h) - c;
+        const double turn = -std::atan2(cross(d1, d2), d1.dot(d2));  // > 0: clockwise
+        int j = static_cast<int>(std::min_element(t.begin(), t.end(), [u](double a, double c2) {
+                                     return std::abs(a - u) < std::abs(c2 - u);
+                                 }) - t.begin());
+        for (int i = 0; i < np; ++i) {
+            if ((lc.p[i] - c).norm() <= threshold && lc.p[i].y() < lc.p[j].y()) j = i;
+        }
+        turns.emplace_back(turn, j);
+    }
+    int best = -1;
+    for (const auto& [turn, j] : turns) {
+        if (turn < kMinCornerTurn) continue;
+        result.candidates.push_back(lc.k[j]);
+        if (best < 0 || lcurve.eta(lc.k[j] - 1) < lcurve.eta(lc.k[best] - 1)) best = j;
+    }
+    if (best < 0) {
+        // No knot turns sharply: the one turning clockwise most, else the polyline's sharpest turn.
+        double most = 0.0;
+        for (const auto& [turn, j] : turns) {
+            if (turn > most) most = turn, best = j;
+        }
+        const bool knotTurns = best >= 0;
+        for (int i = 1; !knotTurns && i + 1 < np; ++i) {
+            const Eigen::Vector2d d1 = lc.p[i] - lc.p[i - 1], d2 = lc.p[i + 1] - lc.p[i];
+            const double turn = -std::atan2(cross(d1, d2), d1.dot(d2));
+            if (turn > most) most = turn, best = i;
+        }
+        if (best < 0) best = np - 1;  // no turn at all: the least regularized solution
+    }
+    std::sort(result.candidates.begin(), result.candidates.end());
+    result.candidates.erase(std::unique(result.candidates.begin(), result.candidates.end()), result.candidates.end());
+    result.k = lc.k[best];
+    return result;
+}
+
+// ---- Hansen, Jensen & Rodriguez 2007: adaptive pruning --------------------------------------------
+
+namespace {
+
+// The corner of a pruned L-curve (its segments `sel`, ascending) by the angle criterion: the point
+// between the two consecutive segments with the most negative wedge product; -1 when none is < 0.
+int angleCandidate(const std::vector<Eigen::Vector2d>& w, const std::vector<int>& sel)
+{
+    double most = 0.0;
+    int at = -1;
+    for (size_t i = 0; i + 1 < sel.size(); ++i) {
+        const double wedge = cross(w[sel[i]], w[sel[i + 1]]);
+        if (wedge < most) most = wedge, at = sel[i] + 1;
+    }
+    return at;
+}
+
+// The corner by the global behaviour: the flattest segment that comes before a steepest one describe
+// the two legs; the point of the whole curve nearest their crossing is the candidate (-1: none).
+int globalCandidate(const std::vector<Eigen::Vector2d>& pts, const std::vector<Eigen::Vector2d>& w,
+                    const std::vector<int>& sel)
+{
+    const int ln = static_cast<int>(sel.size());
+    std::vector<int> order(ln);  // positions in sel, flattest first
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return std::abs(w[sel[a]].y()) < std::abs(w[sel[b]].y()); });
+    // Widen the flat and steep groups until one flat segment precedes one steep segment.
+    int count = 0;
+    int horizontal = -1, vertical = -1;
+    for (count = 1; count <= ln && horizontal < 0; ++count) {
+        for (int i = 0; i < count && horizontal < 0; ++i) {
+            for (int j = ln - 1; j >= ln - count; --j) {
+                if (order[i] < order[j]) {
+                    horizontal = order[i], vertical = order[j];
+                    break;
+                }
+            }
+        }
+    }
+    if (horizontal < 0) return -1;
+    const Eigen::Vector2d& a = pts[sel[vertical]];
+    const Eigen::Vector2d& b = pts[sel[vertical] + 1];
+    const double y = pts[sel[horizontal]].y();
+    if (b.y() == a.y()) return -1;
+    const Eigen::Vector2d origin(b.x() + (y - b.y()) / (b.y() - a.y()) * (b.x() - a.x()), y);
+    int best = 0;
+    for (int i = 1; i < static_cast<int>(pts.size()); ++i) {
+        if ((pts[i] - origin).squaredNorm() < (pts[best] - origin).squaredNorm()) best = i;
+    }
+    return best;
+}
+
+}  // namespace
+
+CornerResult cornerByAdaptivePruning(const LCurve& lcurve)
+{
+    const LogCurve lc = usablePoints(lcurve);
+    const int np = static_cast<int>(lc.p.size());
+    CornerResult result;
+    if (np < 3) {
+        result.k = lc.k.back();
+        return result;
+    }
+    const int nv = np - 1;
+    std::vector<Eigen::Vector2d> w(nv);
+    std::vector<double> len(nv);
+    for (int i = 0; i < nv; ++i) {
+        const Eigen::Vector2d v = lc.p[i + 1] - lc.p[i];
+        len[i] = v.norm();
+        w[i] = v / len[i];
+    }
+    std::vector<int> longest(nv);
+    std::iota(longest.begin(), longest.end(), 0);
+    std::stable_sort(longest.begin(), longest.end(), [&](int a, int b) { return len[a] > len[b]; });
+
+    // Pruned L-curves of the 5, 10, 20, .. longest segments each propose up to two candidates.
+    std::vector<int> candidates;
+    bool convex = false;
+    for (int p = std::min(5, nv); p < 2 * nv; p *= 2) {
+        std::vector<int> sel(longest.begin(), longest.begin() + std::min(p, nv));
+        std::sort(sel.begin(), sel.end());
+        const int a = angleCandidate(w, sel);
+        if (a >= 0) {
+            convex = true;
+            candidates.push_back(a);
+        }
+        const int g = globalCandidate(lc.p, w, sel);
+        if (g >= 0) candidates.push_back(g);
+    }
+    if (!convex) {  // no corner anywhere: the least regularized solution
+        result.k = lc.k.back();
+        return result;
+    }
+    candidates.push_back(0);  // the rightmost point anchors the selection below
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (int c : candidates) result.candidates.push_back(lc.k[c]);
+
+    // Select the first candidate after which the solution norm grows more than the residual falls,
+    // where the curve turns convexly (clockwise); else the last such; else the leftmost candidate.
+    const int nc = static_cast<int>(candidates.size());
+    std::vector<int> steep;  // j: the step from candidates[j] to [j+1] is steep; j = 0 never counts
+    for (int j = 1; j + 1 < nc; ++j) {
+        const Eigen::Vector2d d = lc.p[candidates[j + 1]] - lc.p[candidates[j]];
+        if (d.y() >= std::abs(d.x())) steep.push_back(j);
+    }
+    int index = candidates.back();
+    if (!steep.empty()) {
+        index = candidates[steep.back()];
+        for (int j : steep) {
+            const Eigen::Vector2d in = (lc.p[candidates[j]] - lc.p[candidates[j - 1]]).normalized();
+            const Eigen::Vector2d out = (lc.p[candidates[j + 1]] - lc.p[candidates[j]]).normalized();
+            if (cross(in, out) <= 0.0) {
+                index = candidates[j];
+                break;
+            }
+        }
+    }
+    result.k = lc.k[index];
+    return result;
+}
+
+CornerResult lcurveCorner(const LCurve& lcurve, CornerMethod method)
+{
+    return method == CornerMethod::KnotRemoval ? cornerByKnotRemoval(lcurve) : cornerByAdaptivePruning(lcurve);
+}
+
+}  // namespace sculptline::solvers::regularization
