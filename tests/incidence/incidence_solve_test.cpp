@@ -1,0 +1,145 @@
+// The surface through curves drawn on it, solved by regularization (seed 000 §3–4, Figs. 4–8).
+#include "solvers/incidence/incidence_solve.h"
+
+#include "solvers/bspline/basis.h"
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/incidence/smoothing_functionals.h"
+#include "tests/incidence/incidence_fixtures.h"
+
+#include <Eigen/QR>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace sculptline::solvers::incidence {
+namespace {
+
+using incidence_test::clampedKnots;
+using incidence_test::diagonalCurve;
+
+/// Fig. 4's layout on a flat sheet (8 x 10 bicubic over 100 x 80 at z = 0), so that the change is
+/// what the solve made.
+Surface3d flatSheet(int nu = 8, int nv = 10)
+{
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < nu; ++i)
+        for (int j = 0; j < nv; ++j) points.emplace_back(100.0 * i / (nu - 1), 80.0 * j / (nv - 1), 0.0);
+    return Surface3d(3, 3, clampedKnots(3, nu), clampedKnots(3, nv), nu, nv, points);
+}
+
+/// The sheet's curve over `g` raised by a bump of `height` (sin over its parameter): the request.
+Curve3d raised(const Surface3d& s, const Curve2d& g, double height)
+{
+    // A cubic through samples of S(G(t)) + height sin(pi t) z, least squares on 12 points.
+    constexpr int kPoints = 12, kSamples = 96;
+    const KnotVector knots = clampedKnots(3, kPoints);
+    Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(kSamples, kPoints), values(kSamples, 3);
+    for (int k = 0; k < kSamples; ++k) {
+        const double t = static_cast<double>(k) / (kSamples - 1);
+        const Eigen::Vector2d uv = g.evaluate(t);
+        values.row(k) = (s.evaluate(uv.x(), uv.y()) + Eigen::Vector3d(0, 0, height * std::sin(M_PI * t))).transpose();
+        const int span = findSpan(3, knots, t);
+        double n[4];
+        basisFunctions(span, t, 3, knots, n);
+        for (int a = 0; a <= 3; ++a) basis(k, span - 3 + a) = n[a];
+    }
+    const Eigen::MatrixXd p = basis.colPivHouseholderQr().solve(values);
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < kPoints; ++i) points.emplace_back(p.row(i).transpose());
+    return Curve3d(3, knots, points);
+}
+
+/// Thin-plate energy of the change from `before` to `after` (exact Gram matrix): the roughness.
+double roughness(const Surface3d& before, const Surface3d& after)
+{
+    const Eigen::SparseMatrix<double> g = gramMatrix(SurfaceStructure::of(before), Functional::ThinPlate);
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c) {
+        Eigen::VectorXd d(static_cast<Eigen::Index>(before.points().size()));
+        for (size_t i = 0; i < before.points().size(); ++i) d[static_cast<Eigen::Index>(i)] = after.points()[i][c] - before.points()[i][c];
+        sum += d.dot(g * d);
+    }
+    return sum;
+}
+
+TEST(IncidenceSolve, Fig4TsvdMeetsTheCurveAndMtsvdRemovesItsAliasing)
+{
+    // Given Fig. 4's 8 x 10 bicubic sheet and its cubic 8-point diagonal domain curve, asked to rise
+    // 5 mm in the middle along it
+    const Surface3d sheet = flatSheet();
+    const Curve2d g = diagonalCurve(8);
+    const Curve3d h = raised(sheet, g, 5.0);
+    IncidenceOptions tsvd;
+    tsvd.method = IncidenceMethod::Tsvd;
+    // When solved by TSVD at the L-curve's corner, and by MTSVD at the same k
+    const IncidenceResult a = solveIncidence(sheet, {{g, h, false}}, tsvd);
+    const IncidenceResult b = solveIncidence(sheet, {{g, h, false}});
+    std::cout << "Fig. 4: k " << a.k << " of " << a.lcurve.rho.size() << " (" << a.rows << " x " << a.cols << "), TSVD residual "
+              << a.residual << " mm, roughness " << roughness(sheet, a.surface) << "; MTSVD residual " << b.residual
+              << " mm, roughness " << roughness(sheet, b.surface) << ", largest change " << [&] {
+                     double w = 0.0;
+                     for (size_t i = 0; i < sheet.points().size(); ++i) w = std::max(w, (b.surface.points()[i] - sheet.points()[i]).norm());
+                     return w;
+                 }() << "\n";
+    // Then both bring the curve onto the surface to well under a hundredth of the 5 mm bump...
+    EXPECT_EQ(a.k, a.corner);
+    EXPECT_EQ(b.k, a.k);
+    EXPECT_LT(a.residual, 0.05);
+    EXPECT_LT(b.residual, 0.05);
+    // ... and MTSVD's surface is several times smoother across the curve (Fig. 6 against Fig. 7)
+    EXPECT_LT(roughness(sheet, b.surface) * 3.0, roughness(sheet, a.surface));
+}
+
+TEST(IncidenceSolve, AFixedCurveIsMetExactlyWhileAnotherPullsTheSurface)
+{
+    // Given the sheet's edge v = 0 fixed where it is (the dome's rim A of seed 000 §3.2) and the
+    // diagonal raised 5 mm
+    const Surface3d sheet = flatSheet();
+    std::vector<Eigen::Vector2d> edge;
+    for (int i = 0; i < 4; ++i) edge.emplace_back(i / 3.0, 0.0);
+    const Curve2d rim(3, clampedKnots(3, 4), edge);
+    const Curve2d g = diagonalCurve(8);
+    const IncidenceResult r = solveIncidence(sheet, {{rim, std::nullopt, true}, {g, raised(sheet, g, 5.0), false}});
+    // Then the rim stays exactly, and the diagonal is met
+    EXPECT_LT(r.fixedResidual, 1e-9);
+    EXPECT_GT(r.hardRows, 0);
+    EXPECT_LT(r.residual, 0.05);
+    for (int k = 0; k <= 20; ++k) EXPECT_NEAR(r.surface.evaluate(k / 20.0, 0.0).z(), 0.0, 1e-9);
+}
+
+TEST(IncidenceSolve, CurvesThatAskForNothingLeaveTheSurfaceAsItIs)
+{
+    // Given curves without targets (each keeps its present image): the solution is the prior
+    const Surface3d s = incidence_test::figureFourSurface();
+    const IncidenceResult r = solveIncidence(s, {{diagonalCurve(8), std::nullopt, false}});
+    double worst = 0.0;
+    for (size_t i = 0; i < s.points().size(); ++i) worst = std::max(worst, (r.surface.points()[i] - s.points()[i]).norm());
+    EXPECT_LT(worst, 1e-9);
+}
+
+TEST(IncidenceSolve, ATargetWithoutDomainIsPlacedByItsProjection)
+{
+    // Given a 3D curve 2 mm above the sheet's diagonal and no domain curve
+    const Surface3d sheet = flatSheet();
+    const Curve3d h = raised(sheet, diagonalCurve(8), 2.0);
+    const IncidenceResult r = solveIncidence(sheet, {{std::nullopt, h, false}});
+    // Then its domain is its pre-image (near the diagonal), and the surface rises onto it
+    ASSERT_EQ(r.domains.size(), 1u);
+    EXPECT_LT((r.domains[0].evaluate(0.5) - diagonalCurve(8).evaluate(0.5)).norm(), 0.02);
+    EXPECT_LT(r.residual, 0.05);
+}
+
+TEST(IncidenceSolve, BadInputIsRefusedNamingTheField)
+{
+    const Surface3d sheet = flatSheet();
+    EXPECT_THROW(solveIncidence(sheet, {}), GeometryError);
+    EXPECT_THROW(solveIncidence(sheet, {{std::nullopt, std::nullopt, false}}), GeometryError);
+    IncidenceOptions options;
+    options.k = 100000;
+    EXPECT_THROW(solveIncidence(sheet, {{diagonalCurve(8), raised(sheet, diagonalCurve(8), 1.0), false}}, options),
+                 std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sculptline::solvers::incidence
