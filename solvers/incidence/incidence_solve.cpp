@@ -141,7 +141,9 @@ IncidenceResult solveIncidence(const Surface3d& surface, const std::vector<Incid
         // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
         // determined directions (seed 000 eqs. 3-4).
         const reg::CachedSvd svd(reduced);
-        if (svd.rank() > 0) {
+        // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
+        const bool asked = (b - s * xp).norm() > 0.0;
+        if (svd.rank() > 0 && asked) {
             const reg::ProjectedRhs rhs = reg::projectRhs(svd, b - s * xp);
             result.lcurve = reg::tsvdLCurve(svd, rhs);
             result.corner = reg::lcurveCorner(result.lcurve, reg::defaultCornerMethod(false)).k;

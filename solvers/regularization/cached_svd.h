@@ -46,7 +46,8 @@ public:
     SvdBackend backend() const { return backend_; }
 
     /// An orthonormal basis (n × (n − min(m, n))) of the complement of v()'s columns: with it,
-    /// [v(), nullBasis()] is a full orthogonal V. Empty when m >= n. Computed on first use.
+    /// [v(), nullBasis()] is a full orthogonal V. Empty when m >= n. Computed on first use (not
+    /// thread-safe: call it once before sharing a CachedSvd between threads).
     const Eigen::MatrixXd& nullBasis() const;
 
     /// Uᵀ B for B m×d: the only product with A's size a new right-hand side costs.

@@ -46,8 +46,28 @@ LogCurve usablePoints(const LCurve& lc)
         out.k.push_back(i + 1);
         out.p.push_back(q);
     }
-    if (out.p.empty()) throw std::invalid_argument("lcurve: no point with finite, positive rho and eta");
     return out;
+}
+
+// The truncation when fewer than 3 usable points leave no corner: the first k that fits b exactly
+// (ρ at round-off), else the last usable k, else the last k.
+int withoutCorner(const LCurve& lc, const LogCurve& usable)
+{
+    double rhoMax = 0.0;
+    for (int i = 0; i < lc.rho.size(); ++i) {
+        if (std::isfinite(lc.rho(i))) rhoMax = std::max(rhoMax, lc.rho(i));
+    }
+    for (int i = 0; i < lc.rho.size(); ++i) {
+        if (std::isfinite(lc.rho(i)) && lc.rho(i) <= kResidualRoundOff * rhoMax) return i + 1;
+    }
+    return usable.k.empty() ? static_cast<int>(lc.rho.size()) : usable.k.back();
+}
+
+void requirePoints(const LCurve& lc)
+{
+    if (lc.rho.size() == 0 || lc.rho.size() != lc.eta.size()) {
+        throw std::invalid_argument("lcurve: needs at least one point and as many eta as rho values");
+    }
 }
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
@@ -99,11 +119,12 @@ Eigen::Vector2d evaluateAt(const KnotVector& U, const ControlMatrix& P, double u
 
 CornerResult cornerByKnotRemoval(const LCurve& lcurve)
 {
+    requirePoints(lcurve);
     const LogCurve lc = usablePoints(lcurve);
     const int np = static_cast<int>(lc.p.size());
     CornerResult result;
     if (np < 3) {
-        result.k = lc.k.back();
+        result.k = withoutCorner(lcurve, lc);
         return result;
     }
     // Chord-length parameters on [0, 1].
@@ -241,11 +262,12 @@ int globalCandidate(const std::vector<Eigen::Vector2d>& pts, const std::vector<E
 
 CornerResult cornerByAdaptivePruning(const LCurve& lcurve)
 {
+    requirePoints(lcurve);
     const LogCurve lc = usablePoints(lcurve);
     const int np = static_cast<int>(lc.p.size());
     CornerResult result;
     if (np < 3) {
-        result.k = lc.k.back();
+        result.k = withoutCorner(lcurve, lc);
         return result;
     }
     const int nv = np - 1;

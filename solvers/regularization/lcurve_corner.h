@@ -34,8 +34,9 @@ struct CornerResult {
 
 /// The corner of the L-curve. Points with ρ or η zero or non-finite, or ρ at round-off (below 1e3 ε of
 /// the largest ρ), are skipped.
-/// @throws std::invalid_argument when fewer than one usable point remains.
-/// @note With fewer than 3 usable points there is no corner: the largest usable k is returned.
+/// @throws std::invalid_argument for an empty L-curve (or rho and eta of different lengths).
+/// @note With fewer than 3 usable points there is no corner: the first k that fits b exactly (ρ at
+/// round-off) is returned, else the largest usable k.
 CornerResult lcurveCorner(const LCurve& lcurve, CornerMethod method);
 
 CornerResult cornerByKnotRemoval(const LCurve& lcurve);

@@ -59,7 +59,11 @@ Eigen::MatrixXd MtsvdSolver::solution(const ProjectedRhs& rhs, int k) const
     Eigen::MatrixXd x = rhs.x0 + vFull_.leftCols(k) * gamma;  // x_k
     if (k < n) {
         const Eigen::MatrixXd c = lv_.leftCols(k) * gamma;  // L (x_k − x0)
-        const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(lv_.rightCols(n - k));
+        // The same rank cut as the sweep's: a direction of V_{k+1} that L hardly sees (an affine
+        // motion under a thin-plate L, up to round-off) is left alone instead of amplified by 1/ε.
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+        cod.setThreshold(kSingularRatio);
+        cod.compute(lv_.rightCols(n - k));
         x -= vFull_.rightCols(n - k) * cod.solve(c);
     }
     return x;

@@ -26,6 +26,7 @@ class MtsvdSolver {
 public:
     /// @param l  p×n, finite, p >= 1.
     /// @throws std::invalid_argument when l's column count is not A's.
+    /// @note Keeps a reference to `svd`: it must outlive the solver.
     MtsvdSolver(const CachedSvd& svd, const Eigen::MatrixXd& l);
 
     /// ρ_k = ‖A x_{L,k} − B‖ and η_k = ‖L (x_{L,k} − x0)‖ for k = 1..r.

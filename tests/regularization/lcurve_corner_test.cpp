@@ -101,14 +101,19 @@ TEST(LCurveCorner, GivenAnIdealL_WhenCornerSought_ThenBothMethodsFindTheElbow)
     EXPECT_EQ(cornerByAdaptivePruning(lc).k, 10);
 }
 
-TEST(LCurveCorner, GivenTooFewOrBadPoints_WhenCornerSought_ThenTheLastUsableOrRefused)
+TEST(LCurveCorner, GivenTooFewOrBadPoints_WhenCornerSought_ThenTheFirstExactFitOrTheLastUsable)
 {
     LCurve lc;
     lc.rho = Eigen::Vector3d(1.0, 0.0, 0.5);
     lc.eta = Eigen::Vector3d(1.0, 2.0, 3.0);
     EXPECT_EQ(lcurveCorner(lc, CornerMethod::KnotRemoval).k, 3);
     EXPECT_EQ(lcurveCorner(lc, CornerMethod::AdaptivePruning).k, 3);
+    // b fitted exactly from k = 2 on: that k; from k = 1 on: k = 1.
+    lc.rho = Eigen::Vector3d(1.0, 0.0, 0.0);
+    EXPECT_EQ(lcurveCorner(lc, CornerMethod::KnotRemoval).k, 2);
     lc.rho.setZero();
-    EXPECT_THROW(lcurveCorner(lc, CornerMethod::KnotRemoval), std::invalid_argument);
-    EXPECT_THROW(lcurveCorner(lc, CornerMethod::AdaptivePruning), std::invalid_argument);
+    EXPECT_EQ(lcurveCorner(lc, CornerMethod::KnotRemoval).k, 1);
+    EXPECT_EQ(lcurveCorner(lc, CornerMethod::AdaptivePruning).k, 1);
+    EXPECT_THROW(lcurveCorner(LCurve{}, CornerMethod::KnotRemoval), std::invalid_argument);
+    EXPECT_THROW(lcurveCorner(LCurve{}, CornerMethod::AdaptivePruning), std::invalid_argument);
 }
