@@ -221,3 +221,12 @@ write("regularize", "mtsvd_smoothing", {"matrix": hilbert, "rhs": hb, "method": 
                                         "smoothing": [[1 if c == r else -1 if c == r + 1 else 0 for c in range(6)]
                                                       for r in range(5)]})
 write("regularize", "wide", {"matrix": [row[:] for row in hilbert[:4]], "rhs": hb[:4], "method": "mtsvd"})
+# incidence: a flat 6 x 6 sheet, a raised diagonal, a fixed edge, a target without domain
+# (tests/incidence/incidence_cli_test.cpp).
+diag = dict(line, points=[[0.05, 0.05], [0.95, 0.95]])
+raised = {"degree": 2, "knots": [0, 0, 0, 1, 1, 1], "points": [[0.25, 0.25, 0], [2.5, 2.5, 1], [4.75, 4.75, 0]]}
+write("incidence", "mtsvd", {"surface": flat, "curves": [{"domain": diag, "target": raised}]})
+write("incidence", "tsvd_fixed", {"surface": flat, "method": "tsvd", "k": 4, "curves": [
+    {"domain": dict(line, points=[[0, 0], [1, 0]]), "fixed": True}, {"domain": diag, "target": raised}]})
+write("incidence", "projected", {"surface": flat, "smoothing": {"area": 1, "thin_plate": 1},
+                                 "curves": [{"target": raised}]})
