@@ -373,7 +373,10 @@ ConstraintId Model::addConstraint(Constraint c)
         }
     }
     const ConstraintId id = insertConstraint(std::move(c));
-    refreshConstraintValues(constraints_.at(id).targets.front());
+    const Constraint& added = constraints_.at(id);
+    refreshConstraintValues(added.targets.front());
+    // A curve put on a surface asks the surface to change (its incidence solve): the next update.
+    if (added.type == ConstraintType::CurveOnSurface) markDirty(added.targets.back());
     return id;
 }
 

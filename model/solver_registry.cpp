@@ -2,6 +2,7 @@
 
 #include "model/model.h"
 #include "solvers/deformation/surface_deformation.h"
+#include "solvers/incidence/incidence_solve.h"
 #include "solvers/editing/curve_manipulation.h"
 #include "solvers/surfaces/surface_modes.h"
 
@@ -404,6 +405,68 @@ private:
     int baseVersion_ = -1;
 };
 
+/// incidence: a surface entity without a recipe and the curves lying on it (curve-on-surface, seed
+/// 000): the curves keep their placement, and the surface is solved to pass through them
+/// (solvers/incidence: fixed curves exactly, the others by TSVD at the L-curve's corner corrected by
+/// MTSVD, the present surface as the prior). factor() keeps the surface of the drag's start as the
+/// prior, so that every event solves from it and a drag does not drift; each event still makes
+/// its SVD anew (the cached-SVD re-solve of issue 14 is not built yet).
+class IncidenceStepSolver : public StepSolver {
+public:
+    void factor(const Model& model, const PlanStep& step) override
+    {
+        prior_.reset();
+        surface_ = 0;
+        for (EntityId id : step.solve) {
+            const Entity* e = model.find(id);
+            if (e && e->kind == EntityKind::Surface && e->surface) {
+                surface_ = id;
+                prior_ = *e->surface;
+            }
+        }
+    }
+    void solve(Model& model, const PlanStep& step) override
+    {
+        namespace inc = solvers::incidence;
+        for (EntityId id : step.solve) PlacementSolver::place(model, id);
+        for (EntityId id : step.solve) {
+            Entity& s = entity(model, id);
+            if (s.kind != EntityKind::Surface || !s.surface) continue;
+            const solvers::Surface3d base = prior_ && surface_ == id ? *prior_ : *s.surface;
+            std::vector<inc::IncidenceCurve> curves;
+            for (ConstraintId k : step.constraints) {
+                const Constraint* c = model.findConstraint(k);
+                if (!c || c->type != ConstraintType::CurveOnSurface || c->targets.size() != 2 || c->targets[1] != id) continue;
+                const Entity* curve = model.find(c->targets[0]);
+                if (!curve || !curve->world) continue;
+                inc::IncidenceCurve in;
+                in.target = *curve->world;
+                in.fixed = curve->fixed;
+                if (c->preimage) {
+                    std::vector<Eigen::Vector2d> uv;
+                    for (const Eigen::Vector3d& p : c->preimage->points()) uv.emplace_back(p.x(), p.y());
+                    in.domain = solvers::Curve2d(c->preimage->degree(), c->preimage->knots(), uv);
+                }
+                curves.push_back(std::move(in));
+            }
+            if (curves.empty()) continue;
+            try {
+                const inc::IncidenceResult r = inc::solveIncidence(base, curves);
+                store(s, surf::SurfaceBuild{r.surface, std::max(r.residual, r.fixedResidual)});
+                s.solveMessage = "through " + std::to_string(curves.size()) + " curves: k = " + std::to_string(r.k) +
+                                 " of " + std::to_string(r.lcurve.rho.size()) + " (the L-curve's corner " +
+                                 std::to_string(r.corner) + ")";
+            } catch (const std::exception& error) {
+                s.buildError = error.what();  // the last surface stays
+            }
+        }
+    }
+
+private:
+    EntityId surface_ = 0;
+    std::optional<solvers::Surface3d> prior_;
+};
+
 /// network-mesh: the loop is triangulated afresh (no set-up to keep).
 class MeshSolver : public StepSolver {
 public:
@@ -480,6 +543,7 @@ SolverRegistry::SolverRegistry()
     add("surface-builder", [] { return std::make_unique<SurfaceBuilderSolver>(); });
     add("network-mesh", [] { return std::make_unique<MeshSolver>(); });
     add("deformation", [] { return std::make_unique<DeformationStepSolver>(); });
+    add("incidence", [] { return std::make_unique<IncidenceStepSolver>(); });
     add("unsolved", [] { return std::make_unique<UnsolvedCluster>(); });
 }
 
@@ -494,6 +558,28 @@ std::unique_ptr<StepSolver> SolverRegistry::make(const std::string& key) const
 
 std::string SolverRegistry::choose(const Model& model, const PlanStep& step) const
 {
+    // Curves lying on one surface without a recipe (and the curves' placements): incidence.
+    const auto onSurface = [&] {
+        int surfaces = 0, onIt = 0;
+        for (EntityId id : step.solve) {
+            const Entity* e = model.find(id);
+            if (!e) return false;
+            if (e->kind == EntityKind::Surface) {
+                if (e->recipe || !e->surface) return false;
+                ++surfaces;
+            } else if (e->kind != EntityKind::Curve) {
+                return false;
+            }
+        }
+        for (ConstraintId id : step.constraints) {
+            const Constraint* c = model.findConstraint(id);
+            if (!c) continue;
+            if (c->type == ConstraintType::CurveOnSurface) ++onIt;
+            else if (c->type != ConstraintType::Placement) return false;
+        }
+        return surfaces == 1 && onIt > 0;
+    };
+    if (onSurface()) return "incidence";
     if (step.solve.size() != 1) return "unsolved";
     const Entity* e = model.find(step.solve.front());
     if (!e) return "unsolved";
@@ -519,7 +605,10 @@ std::string SolverRegistry::choose(const Model& model, const PlanStep& step) con
     return "unsolved";
 }
 
-bool SolverRegistry::caches(const std::string& key) const { return key == "surface-builder" || key == "deformation"; }
+bool SolverRegistry::caches(const std::string& key) const
+{
+    return key == "surface-builder" || key == "deformation" || key == "incidence";
+}
 
 std::unique_ptr<StepSolver> makePullSolver(double u) { return std::make_unique<LeastChangeSolver>(u); }
 
