@@ -408,50 +408,40 @@ private:
 /// incidence: a surface entity without a recipe and the curves lying on it (curve-on-surface, seed
 /// 000): the curves keep their placement, and the surface is solved to pass through them
 /// (solvers/incidence: fixed curves exactly, the others by TSVD at the L-curve's corner corrected by
-/// MTSVD, the present surface as the prior). factor() keeps the surface of the drag's start as the
-/// prior, so that every event solves from it and a drag does not drift; each event still makes
-/// its SVD anew (the cached-SVD re-solve of issue 14 is not built yet).
+/// MTSVD, the present surface as the prior). factor() (a drag's start) keeps the solver: the SVD,
+/// k and MTSVD's correction, with the drag's start surface as the prior; each event is then the
+/// curves' new right-hand side and two products. Outside a drag, or when a curve changed its
+/// layout (an over-sketch adds knots), the surface is solved afresh from where it is.
 class IncidenceStepSolver : public StepSolver {
 public:
     void factor(const Model& model, const PlanStep& step) override
     {
-        prior_.reset();
-        surface_ = 0;
+        solver_.reset();
         for (EntityId id : step.solve) {
             const Entity* e = model.find(id);
-            if (e && e->kind == EntityKind::Surface && e->surface) {
+            if (!e || e->kind != EntityKind::Surface || !e->surface) continue;
+            try {
+                auto solver = std::make_unique<solvers::incidence::IncidenceSolver>();
+                solver->factor(*e->surface, curvesOn(model, step, id));
+                solver_ = std::move(solver);
                 surface_ = id;
-                prior_ = *e->surface;
+            } catch (const std::exception&) {
+                solver_.reset();  // each solve tries afresh (and says why)
             }
         }
     }
     void solve(Model& model, const PlanStep& step) override
     {
-        namespace inc = solvers::incidence;
         for (EntityId id : step.solve) PlacementSolver::place(model, id);
         for (EntityId id : step.solve) {
             Entity& s = entity(model, id);
             if (s.kind != EntityKind::Surface || !s.surface) continue;
-            const solvers::Surface3d base = prior_ && surface_ == id ? *prior_ : *s.surface;
-            std::vector<inc::IncidenceCurve> curves;
-            for (ConstraintId k : step.constraints) {
-                const Constraint* c = model.findConstraint(k);
-                if (!c || c->type != ConstraintType::CurveOnSurface || c->targets.size() != 2 || c->targets[1] != id) continue;
-                const Entity* curve = model.find(c->targets[0]);
-                if (!curve || !curve->world) continue;
-                inc::IncidenceCurve in;
-                in.target = *curve->world;
-                in.fixed = curve->fixed;
-                if (c->preimage) {
-                    std::vector<Eigen::Vector2d> uv;
-                    for (const Eigen::Vector3d& p : c->preimage->points()) uv.emplace_back(p.x(), p.y());
-                    in.domain = solvers::Curve2d(c->preimage->degree(), c->preimage->knots(), uv);
-                }
-                curves.push_back(std::move(in));
-            }
+            const std::vector<solvers::incidence::IncidenceCurve> curves = curvesOn(model, step, id);
             if (curves.empty()) continue;
             try {
-                const inc::IncidenceResult r = inc::solveIncidence(base, curves);
+                const solvers::incidence::IncidenceResult r = solver_ && surface_ == id && solver_->fits(curves)
+                                                                  ? solver_->solve(curves)
+                                                                  : solvers::incidence::solveIncidence(*s.surface, curves);
                 store(s, surf::SurfaceBuild{r.surface, std::max(r.residual, r.fixedResidual)});
                 s.solveMessage = "through " + std::to_string(curves.size()) + " curves: k = " + std::to_string(r.k) +
                                  " of " + std::to_string(r.lcurve.rho.size()) + " (the L-curve's corner " +
@@ -461,10 +451,34 @@ public:
             }
         }
     }
+    void reset() override { solver_.reset(); }
 
 private:
+    /// The curves on `surface` among the step's constraints: their world forms as targets, their
+    /// pre-images (when the constraint has one) as domains, fixed when the curve is.
+    static std::vector<solvers::incidence::IncidenceCurve> curvesOn(const Model& model, const PlanStep& step, EntityId surface)
+    {
+        std::vector<solvers::incidence::IncidenceCurve> curves;
+        for (ConstraintId k : step.constraints) {
+            const Constraint* c = model.findConstraint(k);
+            if (!c || c->type != ConstraintType::CurveOnSurface || c->targets.size() != 2 || c->targets[1] != surface) continue;
+            const Entity* curve = model.find(c->targets[0]);
+            if (!curve || !curve->world) continue;
+            solvers::incidence::IncidenceCurve in;
+            in.target = *curve->world;
+            in.fixed = curve->fixed;
+            if (c->preimage) {
+                std::vector<Eigen::Vector2d> uv;
+                for (const Eigen::Vector3d& p : c->preimage->points()) uv.emplace_back(p.x(), p.y());
+                in.domain = solvers::Curve2d(c->preimage->degree(), c->preimage->knots(), uv);
+            }
+            curves.push_back(std::move(in));
+        }
+        return curves;
+    }
+
     EntityId surface_ = 0;
-    std::optional<solvers::Surface3d> prior_;
+    std::unique_ptr<solvers::incidence::IncidenceSolver> solver_;
 };
 
 /// network-mesh: the loop is triangulated afresh (no set-up to keep).

@@ -5,7 +5,6 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/incidence/smoothing_functionals.h"
 #include "solvers/regularization/lcurve_corner.h"
-#include "solvers/regularization/mtsvd.h"
 
 #include <Eigen/QR>
 #include <Eigen/SVD>
@@ -82,13 +81,68 @@ Curve2d projectedDomain(const Surface3d& surface, const Curve3d& target)
     return Curve2d(3, knots, points);
 }
 
-IncidenceResult solveIncidence(const Surface3d& surface, const std::vector<IncidenceCurve>& curves,
-                               const IncidenceOptions& options)
+struct IncidenceSolver::State {
+    explicit State(const Surface3d& prior) : surface(prior) {}
+    Surface3d surface;  // the prior
+    IncidenceOptions options;
+    std::vector<Curve2d> domains;
+    std::vector<bool> fixed, hasTarget;
+    std::vector<int> degrees;
+    std::vector<KnotVector> knots;
+    IncidenceSystem system;
+    std::vector<SparseRows> compatibility;  // per curve: its target's points -> its rows' right-hand side
+    std::vector<int> hard, soft;
+    Eigen::MatrixXd x0, c, cPlus, s, basisN;  // prior (n×3), hard rows, their pseudo-inverse, soft rows, null basis
+    std::unique_ptr<reg::CachedSvd> svd;     // of S N
+    Eigen::MatrixXd correction;               // MTSVD's P at k (identity for TSVD), on z
+    int k = 0, corner = 0, hardRank = 0;
+    reg::LCurve lcurve;
+    bool solved = false;  // false: nothing to regularize (no soft rows, no freedom, or nothing asked)
+
+    // The stacked right-hand side for `targets` (each curve's request: its target, or its present image).
+    Eigen::MatrixXd rhs(const std::vector<Curve3d>& requests) const
+    {
+        Eigen::MatrixXd b(system.matrix.rows(), 3);
+        for (const RowBlock& block : system.blocks) {
+            if (block.kind == RowBlock::Kind::Curve) {
+                const Curve3d request = requests[static_cast<size_t>(block.curve)].isClosed()
+                                            ? requests[static_cast<size_t>(block.curve)].clamped()
+                                            : requests[static_cast<size_t>(block.curve)];
+                ControlMatrix points(request.pointCount(), 3);
+                for (int i = 0; i < request.pointCount(); ++i) points.row(i) = request.points()[static_cast<size_t>(i)].transpose();
+                b.middleRows(block.firstRow, block.rowCount) = compatibility[static_cast<size_t>(block.curve)] * points;
+            } else {
+                // A crossing: the fixed request's point there, else the two requests' mean (as stacked).
+                const size_t a = static_cast<size_t>(block.curve), o = static_cast<size_t>(block.otherCurve);
+                const Eigen::Vector3d pa = requests[a].evaluate(block.t), pb = requests[o].evaluate(block.tOther);
+                b.row(block.firstRow) = (fixed[a] ? pa : fixed[o] ? pb : Eigen::Vector3d(0.5 * (pa + pb))).transpose();
+            }
+        }
+        return b;
+    }
+
+    std::vector<Curve3d> requests(const std::vector<IncidenceCurve>& curves) const
+    {
+        std::vector<Curve3d> out;
+        for (size_t c = 0; c < curves.size(); ++c)
+            out.push_back(curves[c].target ? *curves[c].target : applyComposition(system.compositions[c], surface));
+        return out;
+    }
+};
+
+IncidenceSolver::IncidenceSolver() = default;
+IncidenceSolver::~IncidenceSolver() = default;
+IncidenceSolver::IncidenceSolver(IncidenceSolver&&) noexcept = default;
+IncidenceSolver& IncidenceSolver::operator=(IncidenceSolver&&) noexcept = default;
+
+void IncidenceSolver::factor(const Surface3d& surface, const std::vector<IncidenceCurve>& curves, const IncidenceOptions& options)
 {
+    state_.reset();
     if (curves.empty()) throw GeometryError("curves: at least one curve is needed");
     if (surface.isRational()) throw GeometryError("surface: a rational surface is not supported");
+    auto st = std::make_unique<State>(surface);
+    st->options = options;
     const SurfaceStructure structure = SurfaceStructure::of(surface);
-    IncidenceResult result{surface, 0, 0, 0, 0, 0, 0.0, 0.0, {}, {}};
     std::vector<CurveRequest> requests;
     for (size_t c = 0; c < curves.size(); ++c) {
         const std::string at = "curves[" + std::to_string(c) + "]";
@@ -101,79 +155,147 @@ IncidenceResult solveIncidence(const Surface3d& surface, const std::vector<Incid
                                 std::to_string(domain.domainStart()) + ", " + std::to_string(domain.domainEnd()) + "]");
         // Without a target the curve keeps its present image.
         CurveRequest r{domain, in.target ? *in.target : applyComposition(compose(structure, domain), surface), in.fixed};
-        result.domains.push_back(r.domain);
+        st->domains.push_back(domain);
+        st->fixed.push_back(in.fixed);
+        st->hasTarget.push_back(in.target.has_value());
+        st->degrees.push_back(in.target ? in.target->degree() : -1);
+        st->knots.push_back(in.target ? in.target->knots() : KnotVector{});
         requests.push_back(std::move(r));
     }
-    const IncidenceSystem system = stackIncidences(structure, requests);
-    const Eigen::MatrixXd all = Eigen::MatrixXd(system.matrix);
-    const int n = static_cast<int>(all.cols());
-    const ControlMatrix f0 = surfacePointRows(surface);
-    const Eigen::MatrixXd x0 = f0;
-    const std::vector<int> hard = system.hardRows(), soft = system.softRows();
-
-    // Fixed curves exactly: x = x_p + N z, x_p the least change from the present surface meeting
-    // them, N a basis of their rows' null space; the rest is regularized in z.
-    Eigen::MatrixXd xp = x0, basisN = Eigen::MatrixXd::Identity(n, n);
-    if (!hard.empty()) {
-        Eigen::MatrixXd c(static_cast<Eigen::Index>(hard.size()), n), d(static_cast<Eigen::Index>(hard.size()), 3);
-        for (size_t r = 0; r < hard.size(); ++r) {
-            c.row(static_cast<Eigen::Index>(r)) = all.row(hard[r]);
-            d.row(static_cast<Eigen::Index>(r)) = system.rhs.row(hard[r]);
-        }
-        Eigen::BDCSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeThinU | Eigen::ComputeFullV);
-        // LAPACK's and numpy's rank cut-off: σ > max(m, n) ε σ1.
-        svd.setThreshold(std::max(c.rows(), c.cols()) * std::numeric_limits<double>::epsilon());
-        const int rank = static_cast<int>(svd.rank());
-        xp = x0 + svd.solve(d - c * x0);
-        basisN = svd.matrixV().rightCols(n - rank);
+    st->system = stackIncidences(structure, requests);
+    for (size_t c = 0; c < requests.size(); ++c) {
+        const Curve3d request = requests[c].request.isClosed() ? requests[c].request.clamped() : requests[c].request;
+        st->compatibility.push_back(compatibilityMatrix(request.degree(), request.knots(), st->system.compositions[c].space));
     }
-    result.hardRows = static_cast<int>(hard.size());
-    Eigen::MatrixXd x = xp;
-    if (!soft.empty() && basisN.cols() > 0) {
-        Eigen::MatrixXd s(static_cast<Eigen::Index>(soft.size()), n), b(static_cast<Eigen::Index>(soft.size()), 3);
-        for (size_t r = 0; r < soft.size(); ++r) {
-            s.row(static_cast<Eigen::Index>(r)) = all.row(soft[r]);
-            b.row(static_cast<Eigen::Index>(r)) = system.rhs.row(soft[r]);
+    const Eigen::MatrixXd all = Eigen::MatrixXd(st->system.matrix);
+    const int n = static_cast<int>(all.cols());
+    st->x0 = surfacePointRows(surface);
+    st->hard = st->system.hardRows();
+    st->soft = st->system.softRows();
+    const Eigen::MatrixXd b = st->rhs(st->requests(curves));
+    // The per-event right-hand side mirrors stackIncidences' (compatibility products, crossing
+    // targets); the two must agree, or solve() would answer another question than factor().
+    if ((b - Eigen::MatrixXd(st->system.rhs)).norm() > 1e-9 * std::max(1.0, b.norm()))
+        throw std::logic_error("incidence: the kept right-hand side differs from the stacked one");
+
+    // Fixed curves exactly: x = x_p + N z, x_p the least change from the prior meeting them
+    // (C⁺ kept: a moved fixed curve costs one product), N a basis of their rows' null space.
+    st->basisN = Eigen::MatrixXd::Identity(n, n);
+    Eigen::MatrixXd xp = st->x0;
+    if (!st->hard.empty()) {
+        st->c.resize(static_cast<Eigen::Index>(st->hard.size()), n);
+        for (size_t r = 0; r < st->hard.size(); ++r) st->c.row(static_cast<Eigen::Index>(r)) = all.row(st->hard[r]);
+        Eigen::BDCSVD<Eigen::MatrixXd> svd(st->c, Eigen::ComputeThinU | Eigen::ComputeFullV);
+        // LAPACK's and numpy's rank cut-off: σ > max(m, n) ε σ1.
+        svd.setThreshold(std::max(st->c.rows(), st->c.cols()) * std::numeric_limits<double>::epsilon());
+        st->hardRank = static_cast<int>(svd.rank());
+        const int r = st->hardRank;
+        st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
+                    svd.matrixU().leftCols(r).transpose();
+        st->basisN = svd.matrixV().rightCols(n - r);
+        Eigen::MatrixXd d(static_cast<Eigen::Index>(st->hard.size()), 3);
+        for (size_t i = 0; i < st->hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st->hard[i]);
+        xp = st->x0 + st->cPlus * (d - st->c * st->x0);
+    }
+    st->correction.resize(0, 0);
+    if (!st->soft.empty() && st->basisN.cols() > 0) {
+        st->s.resize(static_cast<Eigen::Index>(st->soft.size()), n);
+        Eigen::MatrixXd bs(static_cast<Eigen::Index>(st->soft.size()), 3);
+        for (size_t r = 0; r < st->soft.size(); ++r) {
+            st->s.row(static_cast<Eigen::Index>(r)) = all.row(st->soft[r]);
+            bs.row(static_cast<Eigen::Index>(r)) = b.row(st->soft[r]);
         }
-        const Eigen::MatrixXd reduced = s * basisN;
-        result.rows = static_cast<int>(reduced.rows());
-        result.cols = static_cast<int>(reduced.cols());
-        // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
-        // determined directions (seed 000 eqs. 3-4).
-        const reg::CachedSvd svd(reduced);
+        const Eigen::MatrixXd reduced = st->s * st->basisN;
+        st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
-        const bool asked = (b - s * xp).norm() > 0.0;
-        if (svd.rank() > 0 && asked) {
-            const reg::ProjectedRhs rhs = reg::projectRhs(svd, b - s * xp);
-            result.lcurve = reg::tsvdLCurve(svd, rhs);
-            result.corner = reg::lcurveCorner(result.lcurve, reg::defaultCornerMethod(false)).k;
-            result.k = options.k > 0 ? options.k : result.corner;
-            if (result.k < 1 || result.k > svd.rank())
-                throw std::invalid_argument("k: " + std::to_string(result.k) + " is outside 1.." + std::to_string(svd.rank()));
-            Eigen::MatrixXd z;
-            if (options.method == IncidenceMethod::Mtsvd) {
+        const Eigen::MatrixXd bRed = bs - st->s * xp;
+        if (st->svd->rank() > 0 && bRed.norm() > 0.0) {
+            // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
+            // determined directions (seed 000 eqs. 3-4).
+            const reg::ProjectedRhs rhs = reg::projectRhs(*st->svd, bRed);
+            st->lcurve = reg::tsvdLCurve(*st->svd, rhs);
+            st->corner = reg::lcurveCorner(st->lcurve, reg::defaultCornerMethod(false)).k;
+            st->k = options.k > 0 ? options.k : st->corner;
+            if (st->k < 1 || st->k > st->svd->rank())
+                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(st->svd->rank()));
+            const int nz = static_cast<int>(reduced.cols());
+            if (options.method == IncidenceMethod::Mtsvd && st->k < nz) {
                 // MTSVD at TSVD's k (the seed's default): of the solutions that keep the k
-                // components, the one smoothest by L. With fixed curves L acts on the change in z
-                // (their own least change x_p is zero when the surface already meets them).
+                // components, the one smoothest by L: z = P z_k with P = I − W (L W)⁺ L, W = V_{k+1}.
+                // (With fixed curves L acts on the change in z; their own least change x_p is zero
+                // when the surface already meets them.) The rank of L W is cut at 1e-10 of its
+                // largest pivot: a direction L hardly sees is left alone, not amplified.
                 const Eigen::SparseMatrix<double> gram =
                     smoothingGram(structure, options.area, options.thinPlate, options.curvatureVariation);
-                const Eigen::MatrixXd l = gramFactor(Eigen::MatrixXd(gram));
-                const reg::MtsvdSolver mtsvd(svd, l * basisN);
-                z = mtsvd.solution(rhs, result.k);
-            } else {
-                z = reg::tsvdSolution(svd, rhs, result.k);
+                const Eigen::MatrixXd l = gramFactor(Eigen::MatrixXd(gram)) * st->basisN;
+                Eigen::MatrixXd vFull(nz, nz);
+                vFull << st->svd->v(), st->svd->nullBasis();
+                const Eigen::MatrixXd w = vFull.rightCols(nz - st->k);
+                Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+                cod.setThreshold(1e-10);
+                cod.compute(l * w);
+                st->correction = Eigen::MatrixXd::Identity(nz, nz) - w * cod.solve(l);
             }
-            x = xp + basisN * z;
+            st->solved = true;
         }
     }
-    result.surface = withPoints(surface, x);
+    state_ = std::move(st);
+}
+
+bool IncidenceSolver::fits(const std::vector<IncidenceCurve>& curves) const
+{
+    if (!state_ || curves.size() != state_->domains.size()) return false;
+    for (size_t c = 0; c < curves.size(); ++c) {
+        if (curves[c].target.has_value() != state_->hasTarget[c] || curves[c].fixed != state_->fixed[c]) return false;
+        if (curves[c].target && (curves[c].target->degree() != state_->degrees[c] || curves[c].target->knots() != state_->knots[c] ||
+                                 curves[c].target->isRational()))
+            return false;
+    }
+    return true;
+}
+
+IncidenceResult IncidenceSolver::solve(const std::vector<IncidenceCurve>& curves) const
+{
+    if (!fits(curves)) throw std::invalid_argument("curves: not the layout the solver was factored for");
+    const State& st = *state_;
+    const std::vector<Curve3d> requests = st.requests(curves);
+    const Eigen::MatrixXd b = st.rhs(requests);
+    Eigen::MatrixXd xp = st.x0;
+    if (!st.hard.empty()) {
+        Eigen::MatrixXd d(static_cast<Eigen::Index>(st.hard.size()), 3);
+        for (size_t i = 0; i < st.hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st.hard[i]);
+        xp = st.x0 + st.cPlus * (d - st.c * st.x0);
+    }
+    Eigen::MatrixXd x = xp;
+    if (st.solved) {
+        Eigen::MatrixXd bs(static_cast<Eigen::Index>(st.soft.size()), 3);
+        for (size_t r = 0; r < st.soft.size(); ++r) bs.row(static_cast<Eigen::Index>(r)) = b.row(st.soft[r]);
+        // The two products: Uᵀ b, then V_k Σ_k⁻¹ of it (and MTSVD's kept correction).
+        const reg::ProjectedRhs rhs = reg::projectRhs(*st.svd, bs - st.s * xp);
+        Eigen::MatrixXd z = reg::tsvdSolution(*st.svd, rhs, st.k);
+        if (st.correction.size() > 0) z = st.correction * z;
+        x = xp + st.basisN * z;
+    }
+    IncidenceResult result{withPoints(st.surface, x), st.k, st.corner, 0, 0, static_cast<int>(st.hard.size()), 0.0, 0.0, st.lcurve, st.domains};
+    if (st.svd) {
+        result.rows = st.svd->rows();
+        result.cols = st.svd->cols();
+    }
     for (size_t c = 0; c < curves.size(); ++c) {
         if (!curves[c].target && !curves[c].fixed) continue;
-        const double gap = largestGap(result.surface, requests[c].domain, requests[c].request);
+        const double gap = largestGap(result.surface, st.domains[c], requests[c]);
         double& into = curves[c].fixed ? result.fixedResidual : result.residual;
         into = std::max(into, gap);
     }
     return result;
+}
+
+IncidenceResult solveIncidence(const Surface3d& surface, const std::vector<IncidenceCurve>& curves,
+                               const IncidenceOptions& options)
+{
+    IncidenceSolver solver;
+    solver.factor(surface, curves, options);
+    return solver.solve(curves);
 }
 
 }  // namespace sculptline::solvers::incidence

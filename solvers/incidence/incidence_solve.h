@@ -6,6 +6,7 @@
 #include "solvers/incidence/incidence_system.h"
 #include "solvers/regularization/tsvd.h"
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -42,6 +43,32 @@ struct IncidenceResult {
     double residual = 0.0, fixedResidual = 0.0;
     regularization::LCurve lcurve;
     std::vector<Curve2d> domains;  ///< the domain curve of each input curve (given or projected)
+};
+
+/// The solve kept across a drag (issue 14 §2: a re-solve from the cached SVD). factor() fixes the
+/// domain curves, which curves are fixed, the targets' layouts (degree, knots) and the prior; it
+/// stacks the system, factors the fixed curves' rows and the soft system's SVD, chooses k at the
+/// L-curve's corner and prepares MTSVD's correction at that k. solve() takes targets of the same
+/// layouts (their control points moved, as when a plane carrying them is dragged) and costs their
+/// right-hand sides, Uᵀb and two products: no new factorization, k kept.
+class IncidenceSolver {
+public:
+    IncidenceSolver();
+    ~IncidenceSolver();
+    IncidenceSolver(IncidenceSolver&&) noexcept;
+    IncidenceSolver& operator=(IncidenceSolver&&) noexcept;
+
+    /// @throws as solveIncidence.
+    void factor(const Surface3d& surface, const std::vector<IncidenceCurve>& curves, const IncidenceOptions& options = {});
+    /// Whether `curves` can be solved with the factorization: as many, with targets where they had
+    /// them, of the same degrees and knots.
+    bool fits(const std::vector<IncidenceCurve>& curves) const;
+    /// @throws std::invalid_argument when !fits(curves).
+    IncidenceResult solve(const std::vector<IncidenceCurve>& curves) const;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
 };
 
 /// The domain curve of a 3D curve near `surface`: its pre-image by global projection, a cubic fitted

@@ -147,6 +147,46 @@ TEST(IncidenceSolve, ATargetWithoutDomainIsPlacedByItsProjection)
     EXPECT_LT(r.residual, 0.05);
 }
 
+TEST(IncidenceSolve, AKeptSolverReSolvesMovedTargetsAsAFreshSolveAtTheSameK)
+{
+    // Given three curves on the sheet: the diagonal raised, the other diagonal crossing it (kept as
+    // it is, so the crossing row asks for the mean of the two there), and the edge v = 0 fixed; the
+    // solver factored for them
+    const Surface3d sheet = flatSheet();
+    const Curve2d g = diagonalCurve(8);
+    std::vector<Eigen::Vector2d> other;
+    for (int i = 0; i < 4; ++i) other.emplace_back(0.1 + 0.8 * i / 3.0, 0.9 - 0.8 * i / 3.0);
+    const Curve2d g2(3, clampedKnots(3, 4), other);
+    std::vector<Eigen::Vector2d> edge;
+    for (int i = 0; i < 4; ++i) edge.emplace_back(i / 3.0, 0.0);
+    const Curve2d rim(3, clampedKnots(3, 4), edge);
+    std::vector<IncidenceCurve> curves = {{g, raised(sheet, g, 5.0), false}, {g2, std::nullopt, false}, {rim, std::nullopt, true}};
+    IncidenceSolver solver;
+    solver.factor(sheet, curves);
+    const IncidenceResult first = solver.solve(curves);
+    // When the raised curve's target moves (its control points, its knots kept), three times
+    for (double lift : {6.0, 7.5, 9.0}) {
+        curves[0].target = raised(sheet, g, lift);
+        ASSERT_TRUE(solver.fits(curves));
+        const IncidenceResult kept = solver.solve(curves);
+        // Then it equals a fresh solve at the same k, and meets the fixed curve exactly
+        IncidenceOptions same;
+        same.k = first.k;
+        const IncidenceResult fresh = solveIncidence(sheet, curves, same);
+        double worst = 0.0;
+        for (size_t i = 0; i < sheet.points().size(); ++i) worst = std::max(worst, (kept.surface.points()[i] - fresh.surface.points()[i]).norm());
+        EXPECT_LT(worst, 1e-9) << lift;
+        EXPECT_LT(kept.fixedResidual, 1e-9);
+        // and the surface rises under the raised diagonal away from the crossing
+        const Eigen::Vector2d quarter = g.evaluate(0.25);
+        EXPECT_NEAR(kept.surface.evaluate(quarter.x(), quarter.y()).z(), curves[0].target->evaluate(0.25).z(), 0.1 * lift) << lift;
+    }
+    // A target with other knots (an over-sketch) does not fit: it needs a new factorization
+    curves[0].target = curves[0].target->insertKnot(0.37);
+    EXPECT_FALSE(solver.fits(curves));
+    EXPECT_THROW(solver.solve(curves), std::invalid_argument);
+}
+
 TEST(IncidenceSolve, BadInputIsRefusedNamingTheField)
 {
     const Surface3d sheet = flatSheet();
