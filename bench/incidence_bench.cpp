@@ -3,6 +3,7 @@
 // iso-parametric, one fixed) on a 25x20 bicubic surface, composed exactly; the same with the requests brought into the curves' spaces and
 // the crossings' rows (the whole stacked system); the discretized alternative with as many rows;
 // and the smoothing Gram matrix with its factor (seed 000 §4.4). Counter rows: the system's rows.
+#include "solvers/incidence/incidence_solve.h"
 #include "solvers/incidence/incidence_system.h"
 #include "solvers/incidence/point_incidence.h"
 #include "solvers/incidence/smoothing_functionals.h"
@@ -122,5 +123,35 @@ void BM_IncidenceGramFactor25x20(benchmark::State& state)
     state.SetLabel(state.range(0) == 0 ? "square root" : "Cholesky + ridge");
 }
 BENCHMARK(BM_IncidenceGramFactor25x20)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+namespace {
+
+// The incidence solve of the scene above (about 1000 rows over 500 control points; one fixed
+// curve): arg 0, the whole solve (stacking, SVDs, the corner, MTSVD's correction); arg 1, a drag
+// event on the kept solver: the first curve's request moved, its right-hand side, Uᵀ b and two
+// products (issue 14 §4: ≤ 1 ms for this size).
+void BM_IncidenceSolve1000Rows(benchmark::State& state)
+{
+    const Scene& s = scene();
+    std::vector<IncidenceCurve> curves;
+    for (const CurveRequest& r : s.curves) curves.push_back({r.domain, r.request, r.fixed});
+    if (state.range(0) == 0) {
+        for (auto _ : state) benchmark::DoNotOptimize(solveIncidence(s.surface, curves));
+        return;
+    }
+    IncidenceSolver solver;
+    solver.factor(s.surface, curves);
+    const Curve3d start = *curves[0].target;
+    int event = 0;
+    for (auto _ : state) {
+        std::vector<Curve3d::Point> points = start.points();
+        for (auto& p : points) p.z() += 0.01 * (++event % 100);
+        curves[0].target = Curve3d(start.degree(), start.knots(), points);
+        benchmark::DoNotOptimize(solver.solve(curves));
+    }
+}
+BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

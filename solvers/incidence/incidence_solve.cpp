@@ -93,8 +93,10 @@ struct IncidenceSolver::State {
     std::vector<SparseRows> compatibility;  // per curve: its target's points -> its rows' right-hand side
     std::vector<int> hard, soft;
     Eigen::MatrixXd x0, c, cPlus, s, basisN;  // prior (n×3), hard rows, their pseudo-inverse, soft rows, null basis
+    SparseRows cSparse, sSparse;               // the same rows, sparse (a drag event's products)
     std::unique_ptr<reg::CachedSvd> svd;     // of S N
     Eigen::MatrixXd correction;               // MTSVD's P at k (identity for TSVD), on z
+    Eigen::MatrixXd uk, lift;                 // U_k, and N P V_k Σ_k⁻¹: x = x_p + lift (U_kᵀ b)
     int k = 0, corner = 0, hardRank = 0;
     reg::LCurve lcurve;
     bool solved = false;  // false: nothing to regularize (no soft rows, no freedom, or nothing asked)
@@ -188,6 +190,7 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         Eigen::BDCSVD<Eigen::MatrixXd> svd(st->c, Eigen::ComputeThinU | Eigen::ComputeFullV);
         // LAPACK's and numpy's rank cut-off: σ > max(m, n) ε σ1.
         svd.setThreshold(std::max(st->c.rows(), st->c.cols()) * std::numeric_limits<double>::epsilon());
+        st->cSparse = st->c.sparseView();
         st->hardRank = static_cast<int>(svd.rank());
         const int r = st->hardRank;
         st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
@@ -205,6 +208,7 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
             st->s.row(static_cast<Eigen::Index>(r)) = all.row(st->soft[r]);
             bs.row(static_cast<Eigen::Index>(r)) = b.row(st->soft[r]);
         }
+        st->sSparse = st->s.sparseView();
         const Eigen::MatrixXd reduced = st->s * st->basisN;
         st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
@@ -236,6 +240,11 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
                 cod.compute(l * w);
                 st->correction = Eigen::MatrixXd::Identity(nz, nz) - w * cod.solve(l);
             }
+            // The two products of a drag event, prepared: U_kᵀ b, and N P V_k Σ_k⁻¹ times it.
+            st->uk = st->svd->u().leftCols(st->k);
+            Eigen::MatrixXd vk = st->svd->v().leftCols(st->k) * st->svd->singularValues().head(st->k).cwiseInverse().asDiagonal();
+            if (st->correction.size() > 0) vk = st->correction * vk;
+            st->lift = st->basisN * vk;
             st->solved = true;
         }
     }
@@ -264,17 +273,15 @@ IncidenceResult IncidenceSolver::solve(const std::vector<IncidenceCurve>& curves
     if (!st.hard.empty()) {
         Eigen::MatrixXd d(static_cast<Eigen::Index>(st.hard.size()), 3);
         for (size_t i = 0; i < st.hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st.hard[i]);
-        xp = st.x0 + st.cPlus * (d - st.c * st.x0);
+        xp = st.x0 + st.cPlus * (d - st.cSparse * st.x0);
     }
     Eigen::MatrixXd x = xp;
     if (st.solved) {
         Eigen::MatrixXd bs(static_cast<Eigen::Index>(st.soft.size()), 3);
         for (size_t r = 0; r < st.soft.size(); ++r) bs.row(static_cast<Eigen::Index>(r)) = b.row(st.soft[r]);
-        // The two products: Uᵀ b, then V_k Σ_k⁻¹ of it (and MTSVD's kept correction).
-        const reg::ProjectedRhs rhs = reg::projectRhs(*st.svd, bs - st.s * xp);
-        Eigen::MatrixXd z = reg::tsvdSolution(*st.svd, rhs, st.k);
-        if (st.correction.size() > 0) z = st.correction * z;
-        x = xp + st.basisN * z;
+        // The two products: U_kᵀ b, then N P V_k Σ_k⁻¹ of it (TSVD with the prior z = 0, MTSVD's
+        // correction P kept; tsvd.h's x_k = Σ_{i≤k} (u_iᵀ b / σ_i) v_i).
+        x = xp + st.lift * (st.uk.transpose() * (bs - st.sSparse * xp));
     }
     IncidenceResult result{withPoints(st.surface, x), st.k, st.corner, 0, 0, static_cast<int>(st.hard.size()), 0.0, 0.0, st.lcurve, st.domains};
     if (st.svd) {
