@@ -5,6 +5,7 @@
 // undo gives the flat sheet back), the local bump inside a bound (thesis Figs. 6-9, 6-13: control
 // points outside stay exactly), a blocked control point (Fig. 6-7) and a distance held. Files are in
 // $SCULPTLINE_REPLAY_DIR.
+#include "tests/gui/replayed_model.h"
 #include "model/model.h"
 #include "model/model_document.h"
 
@@ -21,18 +22,8 @@ namespace {
 /// Handles and distances are met by the solve to round-off.
 constexpr double kMet = 1e-6;
 
-std::string file(const std::string& name)
-{
-    const char* dir = std::getenv("SCULPTLINE_REPLAY_DIR");
-    return std::string(dir ? dir : ".") + "/" + name;
-}
-
-model::Model readModel(const std::string& name)
-{
-    model::Model model;
-    model::populateModel(model::loadDocument(file(name)), model);
-    return model;
-}
+std::string file(const std::string& name) { return guitest::replayFile(name); }
+model::Model readModel(const std::string& name) { return guitest::readReplayedModel(name); }
 
 const model::Entity* sculptOf(const model::Model& model)
 {

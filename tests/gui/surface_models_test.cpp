@@ -4,6 +4,7 @@
 // curves, the surfaces meet their defining curves, the exported .iv reads back in Coin with the same
 // geometry, and the live-update session moved the surfaces with the dragged plane. Files are in
 // $SCULPTLINE_REPLAY_DIR.
+#include "tests/gui/replayed_model.h"
 #include "model/model.h"
 #include "model/model_document.h"
 #include "model/document.h"
@@ -44,18 +45,8 @@ constexpr double kPointerSlack = 3.0;
 /// Pixels of surface shading expected in an 800x600 view of a model that fills a good part of it.
 constexpr int kMinSurfacePixels = 5000;
 
-std::string file(const std::string& name)
-{
-    const char* dir = std::getenv("SCULPTLINE_REPLAY_DIR");
-    return std::string(dir ? dir : ".") + "/" + name;
-}
-
-model::Model readModel(const std::string& name)
-{
-    model::Model model;
-    model::populateModel(model::loadDocument(file(name)), model);
-    return model;
-}
+std::string file(const std::string& name) { return guitest::replayFile(name); }
+model::Model readModel(const std::string& name) { return guitest::readReplayedModel(name); }
 
 std::vector<const model::Entity*> surfaces(const model::Model& model)
 {
