@@ -306,7 +306,7 @@ SculptProblem sculptProblem(const Model& model, const Entity& e, bool withDomain
         dfm::SurfaceConstraint c;
         c.type = dfm::SurfaceConstraintType::Curve;
         c.target = *in->world;
-        targets.emplace(in->id, *in->world);
+        if (withDomains && !r.curveTangents.empty()) targets.emplace(in->id, *in->world);  // their domains' feet
         p.constraints.push_back(std::move(c));
     }
     for (const SurfaceRecipe::Handle& h : r.handles) {

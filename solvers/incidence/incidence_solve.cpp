@@ -92,12 +92,14 @@ struct IncidenceSolver::State {
     IncidenceSystem system;
     std::vector<SparseRows> compatibility;  // per curve: its target's points -> its rows' right-hand side
     std::vector<int> hard, soft;
-    Eigen::MatrixXd x0, c, cPlus, s, basisN;  // prior (n×3), hard rows, their pseudo-inverse, soft rows, null basis
-    SparseRows cSparse, sSparse;               // the same rows, sparse (a drag event's products)
+    Eigen::MatrixXd x0, cPlus, basisN;  // prior (n×3), the hard rows' pseudo-inverse, their null basis
+    SparseRows cSparse, sSparse;         // the hard and the soft rows (a drag event's products)
+    // Per curve without a target: its image on the prior, what it keeps (made once, at factor()).
+    std::vector<std::optional<Curve3d>> images;
     std::unique_ptr<reg::CachedSvd> svd;     // of S N
     Eigen::MatrixXd correction;               // MTSVD's P at k (identity for TSVD), on z
     Eigen::MatrixXd uk, lift;                 // U_k, and N P V_k Σ_k⁻¹: x = x_p + lift (U_kᵀ b)
-    int k = 0, corner = 0, hardRank = 0;
+    int k = 0, corner = 0;
     reg::LCurve lcurve;
     bool solved = false;  // false: nothing to regularize (no soft rows, no freedom, or nothing asked)
 
@@ -127,7 +129,7 @@ struct IncidenceSolver::State {
     {
         std::vector<Curve3d> out;
         for (size_t c = 0; c < curves.size(); ++c)
-            out.push_back(curves[c].target ? *curves[c].target : applyComposition(system.compositions[c], surface));
+            out.push_back(curves[c].target ? *curves[c].target : *images[c]);
         return out;
     }
 };
@@ -162,6 +164,7 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->hasTarget.push_back(in.target.has_value());
         st->degrees.push_back(in.target ? in.target->degree() : -1);
         st->knots.push_back(in.target ? in.target->knots() : KnotVector{});
+        st->images.push_back(in.target ? std::nullopt : std::optional<Curve3d>(r.request));
         requests.push_back(std::move(r));
     }
     st->system = stackIncidences(structure, requests);
@@ -185,34 +188,33 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
     st->basisN = Eigen::MatrixXd::Identity(n, n);
     Eigen::MatrixXd xp = st->x0;
     if (!st->hard.empty()) {
-        st->c.resize(static_cast<Eigen::Index>(st->hard.size()), n);
-        for (size_t r = 0; r < st->hard.size(); ++r) st->c.row(static_cast<Eigen::Index>(r)) = all.row(st->hard[r]);
-        Eigen::BDCSVD<Eigen::MatrixXd> svd(st->c, Eigen::ComputeThinU | Eigen::ComputeFullV);
+        Eigen::MatrixXd c(static_cast<Eigen::Index>(st->hard.size()), n);
+        for (size_t r = 0; r < st->hard.size(); ++r) c.row(static_cast<Eigen::Index>(r)) = all.row(st->hard[r]);
+        Eigen::BDCSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeThinU | Eigen::ComputeFullV);
         // LAPACK's and numpy's rank cut-off: σ > max(m, n) ε σ1.
-        svd.setThreshold(std::max(st->c.rows(), st->c.cols()) * std::numeric_limits<double>::epsilon());
-        st->cSparse = st->c.sparseView();
-        st->hardRank = static_cast<int>(svd.rank());
-        const int r = st->hardRank;
+        svd.setThreshold(std::max(c.rows(), c.cols()) * std::numeric_limits<double>::epsilon());
+        st->cSparse = c.sparseView();
+        const int r = static_cast<int>(svd.rank());
         st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
                     svd.matrixU().leftCols(r).transpose();
         st->basisN = svd.matrixV().rightCols(n - r);
         Eigen::MatrixXd d(static_cast<Eigen::Index>(st->hard.size()), 3);
         for (size_t i = 0; i < st->hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st->hard[i]);
-        xp = st->x0 + st->cPlus * (d - st->c * st->x0);
+        xp = st->x0 + st->cPlus * (d - st->cSparse * st->x0);
     }
     st->correction.resize(0, 0);
     if (!st->soft.empty() && st->basisN.cols() > 0) {
-        st->s.resize(static_cast<Eigen::Index>(st->soft.size()), n);
+        Eigen::MatrixXd soft(static_cast<Eigen::Index>(st->soft.size()), n);
         Eigen::MatrixXd bs(static_cast<Eigen::Index>(st->soft.size()), 3);
         for (size_t r = 0; r < st->soft.size(); ++r) {
-            st->s.row(static_cast<Eigen::Index>(r)) = all.row(st->soft[r]);
+            soft.row(static_cast<Eigen::Index>(r)) = all.row(st->soft[r]);
             bs.row(static_cast<Eigen::Index>(r)) = b.row(st->soft[r]);
         }
-        st->sSparse = st->s.sparseView();
-        const Eigen::MatrixXd reduced = st->s * st->basisN;
+        st->sSparse = soft.sparseView();
+        const Eigen::MatrixXd reduced = soft * st->basisN;
         st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
-        const Eigen::MatrixXd bRed = bs - st->s * xp;
+        const Eigen::MatrixXd bRed = bs - st->sSparse * xp;
         if (st->svd->rank() > 0 && bRed.norm() > 0.0) {
             // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
             // determined directions (seed 000 eqs. 3-4).

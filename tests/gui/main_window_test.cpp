@@ -168,6 +168,34 @@ TEST(MainWindow, ASurfaceThatCannotBeRebuiltOpensAsFailedWithItsReason)
     if (const char* dir = std::getenv("SCULPTLINE_DIALOG_SHOTS")) window.grab().save(QString::fromLocal8Bit(dir) + "/failed_surface_window.png");
 }
 
+/// A stroke on `frame` as the stroke input delivers it: plane-local points, 10 ms apart, each with
+/// its pick ray from 100 mm in front of the plane.
+manipulators::FinishedStroke strokeOnPlane(const model::PlaneFrame& frame, const std::vector<Eigen::Vector3d>& points)
+{
+    manipulators::FinishedStroke stroke;
+    stroke.frame = frame;
+    for (size_t i = 0; i < points.size(); ++i) {
+        stroke.points.push_back(points[i]);
+        stroke.times.push_back(0.01 * static_cast<double>(i));
+        stroke.rayTimes.push_back(0.01 * static_cast<double>(i));
+        stroke.rayOrigins.push_back(frame.toWorld(points[i]) + 100.0 * frame.normal());
+        stroke.rayDirections.push_back(-frame.normal());
+    }
+    return stroke;
+}
+
+/// 40 samples of x0 + (x1 - x0) s, amplitude · sin(π s) for s in [0, 1] (an arch, or a half circle
+/// when `circle`: radius `amplitude` about the origin), plane-local.
+std::vector<Eigen::Vector3d> archPoints(double x0, double x1, double amplitude, bool circle = false)
+{
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i < 40; ++i) {
+        const double a = 3.14159265358979 * i / 39.0;
+        points.emplace_back(circle ? amplitude * std::cos(a) : x0 + (x1 - x0) * i / 39.0, amplitude * std::sin(a), 0.0);
+    }
+    return points;
+}
+
 TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
 {
     startApplication();
@@ -176,16 +204,7 @@ TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
     SketchDocument& doc = window.document();
     // Given an arc stroke on the default plane (id 1), as the stroke input would deliver it
     const model::PlaneFrame frame = doc.model().find(1)->frame;
-    manipulators::FinishedStroke stroke;
-    stroke.frame = frame;
-    for (int i = 0; i < 40; ++i) {
-        const double a = 3.14159265358979 * i / 39.0;
-        stroke.points.emplace_back(30.0 * std::cos(a), 30.0 * std::sin(a), 0.0);
-        stroke.times.push_back(0.01 * i);
-        stroke.rayTimes.push_back(0.01 * i);
-        stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
-        stroke.rayDirections.push_back(-frame.normal());
-    }
+    const manipulators::FinishedStroke stroke = strokeOnPlane(frame, archPoints(0, 0, 30.0, true));
     doc.select(1);
     doc.addStroke(stroke);
     const model::EntityId curve = doc.selection();
@@ -276,16 +295,7 @@ TEST(MainWindow, SculptModeDeformsTheSelectedSurfaceOntoAStrokeAndUndoRestoresIt
     EXPECT_EQ(doc.sculptBase(), base);
     EXPECT_TRUE(window.statusBar()->currentMessage().contains(QStringLiteral("Sculpt surface 3"))) << window.statusBar()->currentMessage().toStdString();
     const model::PlaneFrame frame = doc.model().find(1)->frame;
-    manipulators::FinishedStroke stroke;
-    stroke.frame = frame;
-    for (int i = 0; i < 40; ++i) {
-        const double a = 3.14159265358979 * i / 39.0;
-        stroke.points.emplace_back(-40.0 + 80.0 * i / 39.0, 8.0 * std::sin(a), 0.0);
-        stroke.times.push_back(0.01 * i);
-        stroke.rayTimes.push_back(0.01 * i);
-        stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
-        stroke.rayDirections.push_back(-frame.normal());
-    }
+    const manipulators::FinishedStroke stroke = strokeOnPlane(frame, archPoints(-40.0, 40.0, 8.0));
     const int steps = doc.undoStack()->count();
     doc.addStroke(stroke);
 
@@ -336,18 +346,7 @@ TEST(MainWindow, ASecondTargetInSculptModeJoinsTheSculptsTargetsInOneUndoStep)
     doc.select(base);
     window.action(QStringLiteral("mode.sculpt"))->trigger();
     const model::PlaneFrame frame = doc.model().find(1)->frame;
-    const auto arch = [&frame](double x0, double x1, double height) {
-        manipulators::FinishedStroke stroke;
-        stroke.frame = frame;
-        for (int i = 0; i < 40; ++i) {
-            stroke.points.emplace_back(x0 + (x1 - x0) * i / 39.0, height * std::sin(3.14159265358979 * i / 39.0), 0.0);
-            stroke.times.push_back(0.01 * i);
-            stroke.rayTimes.push_back(0.01 * i);
-            stroke.rayOrigins.push_back(frame.toWorld(stroke.points.back()) + 100.0 * frame.normal());
-            stroke.rayDirections.push_back(-frame.normal());
-        }
-        return stroke;
-    };
+    const auto arch = [&frame](double x0, double x1, double height) { return strokeOnPlane(frame, archPoints(x0, x1, height)); };
     doc.addStroke(arch(-40.0, -5.0, 8.0));
     const model::EntityId first = doc.selection();
     const model::EntityId firstTarget = doc.model().find(first)->inputs[1];
