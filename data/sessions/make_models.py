@@ -317,6 +317,17 @@ def networks():
     s.write("networks.json")
 
 
+def cap_session():
+    """The start of the cap sessions on sculpt_start.json: the sheet selected, Sculpt mode, and the
+    target arch drawn in plane 1 from one edge of the sheet to the other, 30 mm high."""
+    s = Session()
+    s.action("mode.select")
+    s.click([45, 45, 0])  # the sheet: select it
+    s.action("mode.sculpt")
+    s.stroke([r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)])
+    return s
+
+
 def sculpt_cap():
     """Thesis Fig. 6-8 and §6.4: a flat sheet deformed by one target curve into a cap, then the
     target's plane dragged by its jack: the sculpted surface follows live (the sail of Fig. 6-16)."""
@@ -329,13 +340,7 @@ def sculpt_cap():
     sheet = {"id": 2, "degreeU": 3, "degreeV": 3, "knotsU": knots, "knotsV": knots, "countU": 8, "countV": 8,
              "points": net}
     write_document("sculpt_start.json", planes, (), [sheet])
-    s = Session()
-    s.action("mode.select")
-    s.click([45, 45, 0])  # the sheet: select it
-    s.action("mode.sculpt")
-    # The target: an arch in plane 1 from one edge of the sheet to the other, 30 mm high.
-    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
-    s.stroke(arch)
+    s = cap_session()
     # Drag plane 1 by its jack 25 mm along -Y in 30 steps: the cap's crest follows.
     s.action("mode.view")
     s.action("mode.select")
@@ -348,12 +353,7 @@ def sculpt_tangent():
     """Thesis Fig. 6-4 d: the sheet sculpted by the cap's arch, then Sculpt > Hold the tangent across
     the last target (Alt+G): along the arch the surface's cross tangent keeps the direction it has at
     the arch's middle."""
-    s = Session()
-    s.action("mode.select")
-    s.click([45, 45, 0])
-    s.action("mode.sculpt")
-    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
-    s.stroke(arch)
+    s = cap_session()
     s.action("sculpt.holdTangent")
     s.write("sculpt_tangent.json")
 def fish_fins():
@@ -645,12 +645,7 @@ def sculpt_constraints():
 def sculpt_oversketch():
     """Issue 13 §1: the cap's target arch over-sketched (Over-sketch mode, O): its middle redrawn
     10 mm higher, and the sculpt follows the changed target."""
-    s = Session()
-    s.action("mode.select")
-    s.click([45, 45, 0])
-    s.action("mode.sculpt")
-    arch = [r([-60 + 120 * i / 40, 0, 30 * math.sin(math.pi * i / 40)]) for i in range(41)]
-    s.stroke(arch)
+    s = cap_session()
     s.action("mode.oversketch")
 
     def height(x):
