@@ -372,6 +372,8 @@ SceneDocument documentFromJson(const json& j)
         doc.surfaces.push_back(io::surfaceFromJson(surfaces[i], path));
         checkExtent(doc.surfaces.back().points(), path);
         doc.surfaceIds.push_back(id);
+        const auto k = surfaces[i].find("incidence_k");
+        doc.surfaceIncidenceK.push_back(k == surfaces[i].end() ? 0 : io::integerFromJson(*k, path + ".incidence_k", 0, 1 << 20));
     }
     const json& meshes = optionalArray(j, "meshes");
     for (size_t i = 0; i < meshes.size(); ++i) {
@@ -452,6 +454,15 @@ SceneDocument documentFromJson(const json& j)
                 spec.indices.push_back(io::integerFromJson((*ix)[k], path + ".indices[" + std::to_string(k) + "]", 0, 1 << 20));
         }
         if (const auto v = c.find("value"); v != c.end()) spec.value = io::pointFromJson(*v, path + ".value");
+        if (const auto g = c.find("preimage"); g != c.end()) {
+            if (*parsed != ConstraintType::CurveOnSurface) throw io::InputError(path + ".preimage: only a curve-on-surface constraint has one");
+            solvers::Curve3d domain = io::curveFromJson(*g, path + ".preimage");
+            for (const Eigen::Vector3d& p : domain.points()) {
+                if (p.z() != 0.0) throw io::InputError(path + ".preimage: points are [u, v, 0] in the surface's domain");
+            }
+            if (domain.isRational()) throw io::InputError(path + ".preimage: must not be rational");
+            spec.preimage = std::move(domain);
+        }
         if (const auto w = c.find("weight"); w != c.end()) {
             spec.weight = io::numberFromJson(*w, path + ".weight");
             if (!(spec.weight >= 0.0)) throw io::InputError(path + ".weight: must not be negative");

@@ -59,7 +59,8 @@ struct SceneDocument {
     std::vector<std::vector<int>> curveFixed;
     /// The designer's constraints (model/constraint.h): a pin as always written, {"curve": curve
     /// id, "type": "position"|"tangent", "u"}, or any type as {"type", "targets": [entity ids],
-    /// "sources"?: [ids], "u"?, "uv"?: [u, v], "indices"?: [..], "value"?: [x, y, z], "weight"?}.
+    /// "sources"?: [ids], "u"?, "uv"?: [u, v], "indices"?: [..], "value"?: [x, y, z], "weight"?,
+    /// "preimage"?: a curve-on-surface's domain curve, a curve whose points are [u, v, 0]}.
     /// An "id" is read but not kept (constraints are numbered apart from entities): the records'
     /// ids are 0, the model numbers them.
     std::vector<Constraint> constraints;
@@ -73,6 +74,9 @@ struct SceneDocument {
     /// Per curve and per static surface: "state": "fixed" (seed 000 §3.2); absent or "free": free.
     std::vector<bool> curveStates;
     std::vector<bool> surfaceStates;
+    /// Per static surface: the designer's incidence truncation ("incidence_k", 0 or absent = the
+    /// L-curve's corner).
+    std::vector<int> surfaceIncidenceK;
     std::vector<MeshSpec> meshes;
     /// Points (a sculpt's handles): {"id", "position": [x, y, z], "rotation"?: [x, y, z, w],
     /// "state"?}; ids are required (a sculpt names its points).

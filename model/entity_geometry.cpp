@@ -82,6 +82,14 @@ bool hasFiniteGeometry(const Entity& e)
     return false;
 }
 
-bool hasFiniteGeometry(const Constraint& c) { return c.value.allFinite(); }
+bool hasFiniteGeometry(const Constraint& c)
+{
+    if (!c.value.allFinite()) return false;
+    if (!c.preimage) return true;
+    for (const Eigen::Vector3d& p : c.preimage->points()) {
+        if (!p.allFinite()) return false;
+    }
+    return true;
+}
 
 }  // namespace sculptline::model

@@ -468,6 +468,15 @@ void Model::setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe)
     markDirty(surface);
 }
 
+void Model::setIncidenceK(EntityId surface, int k)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || it->second.kind != EntityKind::Surface || it->second.fixed || k < 0) return;
+    if (it->second.incidenceK == k) return;
+    it->second.incidenceK = k;
+    markDirty(surface);
+}
+
 void Model::setPlaneFrame(EntityId plane, const PlaneFrame& frame)
 {
     auto it = entities_.find(plane);

@@ -73,6 +73,18 @@ struct Entity {
     /// Surface: a G1 fill's largest angle (degrees) between its normals and those of the surfaces
     /// it is tangent to, across those boundaries; negative otherwise.
     double maxTangentAngle = -1.0;
+    /// Surface without a recipe that curves lie on (the incidence step, seed 000): the designer's
+    /// truncation k (0 = the L-curve's corner, the default), saved with the surface.
+    int incidenceK = 0;
+    /// Surface: what the last incidence solve found (its L-curve, the k it used, the corner, the
+    /// residuals; the L-curve dock shows it); none when no incidence solve ran. Not saved.
+    struct IncidenceReport {
+        std::vector<double> rho, eta;  ///< ρ_k = ‖A F_k − H‖, η_k = ‖F_k − F0‖ for k = 1..r
+        int k = 0, corner = 0;
+        int rows = 0, cols = 0, hardRows = 0, curves = 0;
+        double residual = 0.0, fixedResidual = 0.0;  ///< model units (incidence_solve.h)
+    };
+    std::optional<IncidenceReport> incidence;
     /// Surface: the inputs of its construction in the mode's order (curves; a sculpt's base surface
     /// first); the inputs that follow are the surfaces a G1 fill is tangent to.
     std::vector<std::uint32_t> curveInputs() const
@@ -179,6 +191,9 @@ public:
     void restore(const Removed& removed);
     /// Replaces a built surface's recipe (an extrusion following the pointer): marks it changed.
     void setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe);
+    /// A surface's incidence truncation (Entity::incidenceK; 0 = the L-curve's corner); the surface is
+    /// solved again. Ignored for a fixed surface, or a negative k.
+    void setIncidenceK(EntityId surface, int k);
 
     /// Adds one of the designer's constraints (not placement or construction, which the model
     /// derives). `constraint.id` != 0 restores it under that id. Its targets and sources must

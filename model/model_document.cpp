@@ -64,6 +64,7 @@ void populateModel(const SceneDocument& doc, Model& model)
         case Kind::Surface:
             made = model.addSurface(doc.surfaces[i], id);
             fixed = flag(doc.surfaceStates, i);
+            if (i < doc.surfaceIncidenceK.size()) model.setIncidenceK(made, doc.surfaceIncidenceK[i]);
             break;
         case Kind::Point:
             made = model.addPoint(doc.points[i].position, id, doc.points[i].rotation);
@@ -171,6 +172,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
             // A construction that never built has no geometry: the construction alone is saved.
             entry = e.surface ? io::toJson(*e.surface) : json::object();
             entry["id"] = id;
+            if (!e.recipe && e.incidenceK > 0) entry["incidence_k"] = e.incidenceK;
             if (e.recipe) {
                 const ConstructionInfo& info = describe(e.recipe->mode);
                 std::vector<EntityId> inputs = e.curveInputs();
@@ -225,6 +227,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
         if (!c.indices.empty()) k["indices"] = c.indices;
         if (!c.value.isZero()) k["value"] = io::toJson(c.value);
         if (c.weight != 1.0) k["weight"] = c.weight;
+        if (c.preimage) k["preimage"] = io::toJson(*c.preimage);
         constraints.push_back(std::move(k));
     }
     return json{{"format", kDocumentFormat},

@@ -422,7 +422,7 @@ public:
             if (!e || e->kind != EntityKind::Surface || !e->surface) continue;
             try {
                 auto solver = std::make_unique<solvers::incidence::IncidenceSolver>();
-                solver->factor(*e->surface, curvesOn(model, step, id));
+                solver->factor(*e->surface, curvesOn(model, step, id), options(*e));
                 solver_ = std::move(solver);
                 surface_ = id;
             } catch (const std::exception&) {
@@ -439,13 +439,36 @@ public:
             const std::vector<solvers::incidence::IncidenceCurve> curves = curvesOn(model, step, id);
             if (curves.empty()) continue;
             try {
-                const solvers::incidence::IncidenceResult r = solver_ && surface_ == id && solver_->fits(curves)
-                                                                  ? solver_->solve(curves)
-                                                                  : solvers::incidence::solveIncidence(*s.surface, curves);
+                std::string note;
+                const solvers::incidence::IncidenceResult r = [&] {
+                    if (solver_ && surface_ == id && solver_->fits(curves)) return solver_->solve(curves);
+                    try {
+                        return solvers::incidence::solveIncidence(*s.surface, curves, options(s));
+                    } catch (const std::invalid_argument&) {
+                        // The designer's k exceeds what the curves now give (one was deleted): the corner.
+                        if (s.incidenceK == 0) throw;
+                        solvers::incidence::IncidenceResult atCorner = solvers::incidence::solveIncidence(*s.surface, curves);
+                        note = "; k = " + std::to_string(s.incidenceK) + " is beyond the " + std::to_string(atCorner.lcurve.rho.size()) +
+                               " singular values the curves give: the corner is used";
+                        return atCorner;
+                    }
+                }();
                 store(s, surf::SurfaceBuild{r.surface, std::max(r.residual, r.fixedResidual)});
-                s.solveMessage = "through " + std::to_string(curves.size()) + " curves: k = " + std::to_string(r.k) +
-                                 " of " + std::to_string(r.lcurve.rho.size()) + " (the L-curve's corner " +
-                                 std::to_string(r.corner) + ")";
+                Entity::IncidenceReport report;
+                report.rho.assign(r.lcurve.rho.data(), r.lcurve.rho.data() + r.lcurve.rho.size());
+                report.eta.assign(r.lcurve.eta.data(), r.lcurve.eta.data() + r.lcurve.eta.size());
+                report.k = r.k;
+                report.corner = r.corner;
+                report.rows = r.rows;
+                report.cols = r.cols;
+                report.hardRows = r.hardRows;
+                report.curves = static_cast<int>(curves.size());
+                report.residual = r.residual;
+                report.fixedResidual = r.fixedResidual;
+                s.incidence = std::move(report);
+                s.solveMessage = "through " + std::to_string(curves.size()) + (curves.size() == 1 ? " curve" : " curves") +
+                                 ": k = " + std::to_string(r.k) + " of " + std::to_string(r.lcurve.rho.size()) + " (the L-curve's corner " +
+                                 std::to_string(r.corner) + ")" + note;
             } catch (const std::exception& error) {
                 s.buildError = error.what();  // the last surface stays
             }
@@ -475,6 +498,14 @@ private:
             curves.push_back(std::move(in));
         }
         return curves;
+    }
+
+    /// The designer's truncation (0 = the corner).
+    static solvers::incidence::IncidenceOptions options(const Entity& surface)
+    {
+        solvers::incidence::IncidenceOptions o;
+        o.k = surface.incidenceK;
+        return o;
     }
 
     EntityId surface_ = 0;

@@ -130,6 +130,9 @@ public:
     void setSculptHoldNormals(model::EntityId sculpt, bool hold);
     /// A sculpt's distance constraint `index` set to `distance` (model units); undoable.
     void setSculptDistance(model::EntityId sculpt, int index, double distance);
+    /// An incidence surface's truncation k (0 = the L-curve's corner); undoable. Ignored for a surface
+    /// with a recipe, a negative k or the k it has.
+    void setIncidenceK(model::EntityId surface, int k);
     /// The first end of a distance being picked (Distance tool), if any.
     const std::optional<Eigen::Vector2d>& pendingDistance() const { return pendingDistance_; }
     manipulators::PointHandles& pointHandles() { return *pointHandles_; }

@@ -92,6 +92,20 @@ void SetRecipeCommand::apply(const model::SurfaceRecipe& recipe)
     doc_.notifyChanged();
 }
 
+SetIncidenceKCommand::SetIncidenceKCommand(SketchDocument& doc, model::EntityId surface, int before, int after)
+    : doc_(doc), surface_(surface), before_(before), after_(after)
+{
+    setText(after == 0 ? QStringLiteral("Surface %1 at the L-curve's corner").arg(surface)
+                       : QStringLiteral("Surface %1 truncated at k = %2").arg(surface).arg(after));
+}
+
+void SetIncidenceKCommand::apply(int k)
+{
+    doc_.model().setIncidenceK(surface_, k);
+    doc_.scheduler().flush();
+    doc_.notifyChanged();
+}
+
 RemoveConstraintCommand::RemoveConstraintCommand(SketchDocument& doc, model::Constraint constraint)
     : doc_(doc), constraint_(std::move(constraint))
 {

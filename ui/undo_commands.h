@@ -84,6 +84,20 @@ private:
     model::Constraint constraint_;
 };
 
+/// An incidence surface's truncation k (0 = the L-curve's corner; the L-curve dock's pick).
+class SetIncidenceKCommand : public QUndoCommand {
+public:
+    SetIncidenceKCommand(SketchDocument& doc, model::EntityId surface, int before, int after);
+    void redo() override { apply(after_); }
+    void undo() override { apply(before_); }
+
+private:
+    void apply(int k);
+    SketchDocument& doc_;
+    model::EntityId surface_;
+    int before_, after_;
+};
+
 /// Fixes or frees an entity (seed 000 §3.2: a fixed one keeps its shape through every edit and solve).
 class SetFixedCommand : public QUndoCommand {
 public:
