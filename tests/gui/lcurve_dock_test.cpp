@@ -22,6 +22,7 @@
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPushButton>
+#include <QToolTip>
 #include <QUndoStack>
 #include <QWindow>
 #include <gtest/gtest.h>
@@ -156,6 +157,24 @@ TEST(LCurveDock, ShowsTheSelectedSurfacesLCurveWithTheUsedKAtTheCorner)
     EXPECT_TRUE(w.dock().summary().contains(QStringLiteral("residual"))) << w.dock().summary().toStdString();
     // and the corner's point lies inside the plot, where a person can click it
     EXPECT_TRUE(w.dock().plot()->rect().contains(w.dock().pixelOf(r.corner)));
+    // Hovering a point reads out its k, ρ and η
+    const QPoint atCorner = w.dock().pixelOf(r.corner);
+    QMouseEvent move(QEvent::MouseMove, atCorner, w.dock().plot()->mapToGlobal(atCorner), Qt::NoButton, Qt::NoButton, Qt::NoModifier);
+    QApplication::sendEvent(w.dock().plot(), &move);
+    EXPECT_TRUE(QToolTip::text().startsWith(QStringLiteral("k = %1 (corner)").arg(r.corner))) << QToolTip::text().toStdString();
+    // View > L-curve hides and shows the dock
+    QAction* toggle = w.window.action(QStringLiteral("view.lcurve"));
+    ASSERT_NE(toggle, nullptr);
+    EXPECT_TRUE(toggle->isChecked());
+    toggle->trigger();
+    EXPECT_TRUE(w.dock().isHidden());
+    toggle->trigger();
+    EXPECT_FALSE(w.dock().isHidden());
+    bool inViewMenu = false;
+    for (QWidget* menu : toggle->associatedWidgets()) inViewMenu |= menu->actions().contains(w.window.action(QStringLiteral("view.all")));
+    EXPECT_TRUE(inViewMenu);
+    w.window.document().select(kSheet);
+    QApplication::processEvents();
 
     w.shoot("");
 }
