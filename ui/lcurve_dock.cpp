@@ -134,8 +134,12 @@ LCurveDock::LCurveDock(SketchDocument& document, QWidget* parent) : QDockWidget(
 void LCurveDock::refresh()
 {
     const model::Model& model = document_.model();
+    const model::EntityId shown = surface_;
     surface_ = reportedSurface(model, document_.selection());
     const model::Entity* s = model.find(surface_);
+    // Nothing to show, and nothing shown: no replot (a document's load adds its entities one by one,
+    // each a refresh).
+    if (!s && shown == 0 && curve_->dataCount() == 0 && !summary_->text().isEmpty()) return;
     curve_->data()->clear();
     used_->data()->clear();
     corner_->data()->clear();
@@ -239,7 +243,7 @@ void LCurveDock::released(QMouseEvent* event)
     if (event->button() != Qt::LeftButton || (event->pos() - pressedAt_).manhattanLength() > kClickSlop) return;
     const model::Entity* s = document_.model().find(surface_);
     const int k = pointNear(event->pos());
-    if (!s || !s->incidence || k == 0) return;
+    if (!s || !s->incidence || s->fixed || k == 0) return;  // a fixed surface is not solved again
     // The corner's point: follow the corner again (k = 0), as "Use the corner" does.
     document_.setIncidenceK(surface_, k == s->incidence->corner ? 0 : k);
 }
