@@ -7,6 +7,7 @@
 #include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
+#include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
@@ -295,6 +296,20 @@ void MainWindow::createDocks()
     recognition_ = new RecognitionDock(*document_, action(QStringLiteral("stroke.useRecognized")),
                                        action(QStringLiteral("stroke.useFreeform")), this);
     addDockWidget(Qt::LeftDockWidgetArea, recognition_);
+    // The L-curve of the selected incidence surface: a tab behind the inspector (the right column has
+    // no room for a plot beside it), brought forward when such a surface is selected; View > L-curve.
+    auto* lcurve = new LCurveDock(*document_, this);
+    addDockWidget(Qt::RightDockWidgetArea, lcurve);
+    tabifyDockWidget(inspector_, lcurve);
+    inspector_->raise();
+    lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
+    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0)))
+        viewMenu->addAction(lcurve->toggleViewAction());
+    connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);
+    connect(document_, &SketchDocument::selectionChanged, lcurve, [lcurve]() {
+        lcurve->refresh();
+        if (lcurve->surface() != 0) lcurve->raise();
+    });
     connect(inspector_, &InspectorDock::fixedPointsEdited, this,
             [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
     connect(inspector_, &InspectorDock::stiffnessEdited, this,
