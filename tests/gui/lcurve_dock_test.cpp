@@ -198,8 +198,8 @@ TEST(LCurveDock, ACurveOnTheSurfaceShowsItsLCurveAndNothingSelectedExplains)
 
 TEST(LCurveDock, AClickOnAPointSolvesAtThatKUndoablyAndTheCornerGoesBack)
 {
-    // (Each solve takes the present surface as its prior F0 (model/solver_registry.cpp), so the
-    // L-curve, and its corner, are those of the last solve: read again after every step.)
+    // (Each solve starts from the surface's prior F0, its shape before the first curve
+    // (model/model.h Entity::prior): the result depends on the curves and k only.)
     startApplication();
     ArchesWindow w;
     ASSERT_TRUE(w.sheet().incidence);
@@ -219,10 +219,12 @@ TEST(LCurveDock, AClickOnAPointSolvesAtThatKUndoablyAndTheCornerGoesBack)
     EXPECT_TRUE(w.dock().summary().contains(QStringLiteral("k = %1 of %2 (chosen; corner %3)").arg(j).arg(w.dock().pointCount()).arg(corner)))
         << w.dock().summary().toStdString();
     w.shoot(QStringLiteral("_chosen"));
-    // When it is undone, the sheet follows the corner again (k = 0), the marker on it
+    // When it is undone, the sheet follows the corner again (k = 0), the marker on it: the very
+    // surface it had (the same solve from the same prior)
     w.window.document().undoStack()->undo();
     QApplication::processEvents();
     EXPECT_EQ(w.sheet().incidenceK, 0);
+    EXPECT_EQ(w.sheet().surface->points(), atCorner);
     EXPECT_EQ(w.sheet().incidence->k, w.sheet().incidence->corner);
     EXPECT_EQ(w.dock().usedMarker(), w.sheet().incidence->corner);
     EXPECT_EQ(w.dock().cornerMarker(), std::nullopt);
