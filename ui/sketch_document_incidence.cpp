@@ -10,6 +10,7 @@
 #include "ui/undo_commands.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace sculptline::ui {
 namespace {
@@ -101,8 +102,30 @@ model::EntityId SketchDocument::surfaceThroughCurves(const std::vector<model::En
     sheet.kind = model::EntityKind::Surface;
     std::vector<model::Constraint> constraints;
     try {
-        sheet.surface = solvers::incidence::spanningSheet(samples);
-        for (model::EntityId id : curves) constraints.push_back(onSurface(*model_.find(id), 0, *sheet.surface));
+        // A closed curve among them bounds the surface (the dome's rim, seed 000 Fig. 2): its
+        // pre-image is the domain's boundary, and the others lie inside. Else a flat sheet spans all.
+        const auto rim = std::find_if(curves.begin(), curves.end(), [this](model::EntityId id) { return model_.find(id)->world->isClosed(); });
+        std::optional<solvers::Curve2d> rimDomain;
+        if (rim != curves.end()) {
+            solvers::incidence::BoundedSheet bounded = solvers::incidence::sheetBoundedBy(*model_.find(*rim)->world);
+            sheet.surface = bounded.surface;
+            rimDomain = bounded.rimDomain;
+        } else {
+            sheet.surface = solvers::incidence::spanningSheet(samples);
+        }
+        for (model::EntityId id : curves) {
+            if (rim != curves.end() && id == *rim) {
+                model::Constraint c;
+                c.type = model::ConstraintType::CurveOnSurface;
+                c.targets = {id, 0};
+                std::vector<Eigen::Vector3d> uv;
+                for (const Eigen::Vector2d& p : rimDomain->points()) uv.emplace_back(p.x(), p.y(), 0.0);
+                c.preimage = solvers::Curve3d(rimDomain->degree(), rimDomain->knots(), uv, {}, true);
+                constraints.push_back(std::move(c));
+            } else {
+                constraints.push_back(onSurface(*model_.find(id), 0, *sheet.surface));
+            }
+        }
     } catch (const std::exception& error) {
         setSurfaceMessage(tr("No surface through the curves: %1.").arg(QString::fromStdString(error.what())));
         return 0;

@@ -29,4 +29,23 @@ constexpr double kSpanningSheetMargin = 0.05;
 Surface3d spanningSheet(const std::vector<Eigen::Vector3d>& points, int count = kSpanningSheetCount,
                         double margin = kSpanningSheetMargin);
 
+/// A sheet whose boundary is a closed curve (seed 000's dome, Fig. 2: the rim A), and the rim's
+/// pre-image: the domain's boundary.
+struct BoundedSheet {
+    Surface3d surface;
+    /// Degree 1, closed, over the rim's parameter domain: the domain's four corners at the rim's
+    /// quarter parameters, so that surface(domain(t)) = rim(t) exactly.
+    Curve2d rimDomain;
+};
+
+/// A sheet bounded by `rim`, a closed curve (a fixed rim's rows then hold only the boundary's
+/// control points: a rim drawn inside a sheet would hold every basis function whose support it
+/// crosses, and a coarse net could not bulge inside it). The rim is cut at its quarter parameters
+/// into four sides, and the sheet is their Coons patch (solvers/surfaces/coons_fill.h), refined by
+/// knot insertion (the shape unchanged) to at least `count` control points per direction so that
+/// its inside can follow curves drawn across it.
+/// @throws GeometryError when `rim` is not closed or is rational, or the quarters do not fill (a
+/// degenerate rim).
+BoundedSheet sheetBoundedBy(const Curve3d& rim, int count = kSpanningSheetCount);
+
 }  // namespace sculptline::solvers::incidence
