@@ -31,6 +31,12 @@ struct LogCurve {
 // the curve by ten decades.
 constexpr double kResidualRoundOff = 1e3 * std::numeric_limits<double>::epsilon();
 
+// A singular value below this fraction of the largest is round-off too: its v_k is set by rounding
+// errors, and dividing by it throws η up by ten decades in one step (heat at n = 64: σ_62 = 5e-15
+// σ_1 survives the rank cut max(m, n) ε σ_1 by 1 %), a "vertical leg" of one point that hides the
+// L-curve's real shape from both corner methods.
+constexpr double kSigmaRoundOff = kResidualRoundOff;
+
 LogCurve usablePoints(const LCurve& lc)
 {
     LogCurve out;
@@ -38,9 +44,12 @@ LogCurve usablePoints(const LCurve& lc)
     for (int i = 0; i < lc.rho.size(); ++i) {
         if (std::isfinite(lc.rho(i))) rhoMax = std::max(rhoMax, lc.rho(i));
     }
+    const bool haveSigma = lc.sigma.size() == lc.rho.size() && lc.sigma.size() > 0;
+    const double sigmaFloor = haveSigma ? kSigmaRoundOff * lc.sigma.maxCoeff() : 0.0;
     for (int i = 0; i < lc.rho.size(); ++i) {
         const double r = lc.rho(i), e = lc.eta(i);
         if (!(std::isfinite(r) && std::isfinite(e) && r > kResidualRoundOff * rhoMax && e > 0.0)) continue;
+        if (haveSigma && !(lc.sigma(i) > sigmaFloor)) continue;
         const Eigen::Vector2d q(std::log10(r), std::log10(e));
         if (!out.p.empty() && q == out.p.back()) continue;  // a repeated point has no direction
         out.k.push_back(i + 1);
@@ -79,6 +88,10 @@ constexpr int kDegree = 3;
 constexpr double kMinCornerTurn = 10.0 * 3.14159265358979323846 / 180.0;
 // |log10 ε_max − log10 ε_min| <= 1: the remaining knots' removal errors lie within one decade.
 constexpr double kErrorSpreadDecades = 1.0;
+// The half-width of the window over which a knot's turn is measured, as a fraction of the L-curve's
+// chord length. Chosen on the tuning seeds of README "Which corner method" (0.02-0.2 pass within one
+// case of each other there; 0.05 was the first value tried and kept).
+constexpr double kTurnWindow = 0.05;
 
 // The error that removing one copy of the knot u would cause (The NURBS Book A5.8, its first pass):
 // the control points are solved from both ends of the affected range and their mismatch measured.
@@ -160,16 +173,17 @@ CornerResult cornerByKnotRemoval(const LCurve& lcurve)
                    static_cast<int>(P.cols()));
     }
 
-    // The turn at each remaining knot: directions over a quarter of the neighbouring spans. A knot
-    // stands for the cluster of data points within the threshold of its curve point (seed 000 §4.2:
-    // "the corner consists of a cluster of rapidly varying values"); of those, the one of smallest η.
+    // The turn at each remaining knot, measured over a window of kTurnWindow of the curve's chord
+    // length on either side: a corner that the removal left as a cluster of nearby knots (seed 000
+    // §4.2: "the corner consists of a cluster of rapidly varying values") turns as a whole, while
+    // each knot of the cluster alone turns only a few degrees. A knot stands for the data points
+    // within the threshold of its curve point; of those, the one of smallest η.
     std::vector<std::pair<double, int>> turns;  // (clockwise turn in radians, data index)
     for (size_t b = 0; b < breaks.size(); ++b) {
         const double u = breaks[b];
-        const double left = b == 0 ? 0.0 : breaks[b - 1], right = b + 1 == breaks.size() ? 1.0 : breaks[b + 1];
-        const double h = 0.25 * std::min(u - left, right - u);
         const Eigen::Vector2d c = evaluateAt(U, P, u);
-        const Eigen::Vector2d d1 = c - evaluateAt(U, P, u - h), d2 = evaluateAt(U, P, u + h) - c;
+        const Eigen::Vector2d d1 = c - evaluateAt(U, P, std::max(0.0, u - kTurnWindow));
+        const Eigen::Vector2d d2 = evaluateAt(U, P, std::min(1.0, u + kTurnWindow)) - c;
         const double turn = -std::atan2(cross(d1, d2), d1.dot(d2));  // > 0: clockwise
         int j = static_cast<int>(std::min_element(t.begin(), t.end(), [u](double a, double c2) {
                                      return std::abs(a - u) < std::abs(c2 - u);
@@ -179,9 +193,15 @@ CornerResult cornerByKnotRemoval(const LCurve& lcurve)
         }
         turns.emplace_back(turn, j);
     }
+    // Corners: the knots turning at least kMinCornerTurn that turn most among their neighbours (a
+    // window sees one corner from several knots); of several corners the one of smallest η (seed
+    // 000 §4.2 after Hansen 1990).
     int best = -1;
-    for (const auto& [turn, j] : turns) {
+    for (size_t b = 0; b < turns.size(); ++b) {
+        const auto [turn, j] = turns[b];
         if (turn < kMinCornerTurn) continue;
+        if (b > 0 && turns[b - 1].first > turn) continue;
+        if (b + 1 < turns.size() && turns[b + 1].first >= turn) continue;
         result.candidates.push_back(lc.k[j]);
         if (best < 0 || lcurve.eta(lc.k[j] - 1) < lcurve.eta(lc.k[best] - 1)) best = j;
     }
