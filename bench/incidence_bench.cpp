@@ -155,3 +155,47 @@ void BM_IncidenceSolve1000Rows(benchmark::State& state)
 BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
+
+#include "solvers/regularization/cached_svd.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+// The SVD of the scene's whole stacked system (958 rows over the 25x20 surface's 500 control points,
+// dense): arg 0 Eigen's BDCSVD, arg 1 LAPACK's dgesdd through LAPACKE (issue 14 §4: within 1.2x of
+// the machine's fastest gesdd on the same matrix). With SCULPTLINE_BENCH_MATRIX=<file> set, the
+// matrix is written there once (rows, cols as two int32, then column-major float64) so that
+// scripts/compare_regularization.py --timing-matrix <file> times numpy's gesdd on the same matrix.
+void BM_IncidenceSvd1000Rows(benchmark::State& state)
+{
+    namespace reg = sculptline::solvers::regularization;
+    const auto backend = state.range(0) == 0 ? reg::SvdBackend::Eigen : reg::SvdBackend::Lapack;
+    if (backend == reg::SvdBackend::Lapack && !reg::lapackAvailable()) {
+        state.SkipWithError("no LAPACKE in this build");
+        return;
+    }
+    const Eigen::MatrixXd a(stackIncidences(SurfaceStructure::of(scene().surface), scene().curves).matrix);
+    if (const char* path = std::getenv("SCULPTLINE_BENCH_MATRIX"); path && state.range(0) == 0) {
+        if (std::FILE* f = std::fopen(path, "wb")) {
+            const int dims[2] = {static_cast<int>(a.rows()), static_cast<int>(a.cols())};
+            std::fwrite(dims, sizeof(int), 2, f);
+            std::fwrite(a.data(), sizeof(double), static_cast<size_t>(a.size()), f);
+            std::fclose(f);
+        }
+    }
+    int rank = 0;
+    for (auto _ : state) {
+        const reg::CachedSvd svd(a, backend);
+        rank = svd.rank();
+        benchmark::DoNotOptimize(svd.singularValues().data());
+    }
+    state.counters["rows"] = static_cast<double>(a.rows());
+    state.counters["cols"] = static_cast<double>(a.cols());
+    state.counters["rank"] = rank;
+    state.SetLabel(backend == reg::SvdBackend::Eigen ? "Eigen BDCSVD" : "LAPACKE dgesdd");
+}
+BENCHMARK(BM_IncidenceSvd1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace

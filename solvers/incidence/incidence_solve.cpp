@@ -187,6 +187,7 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
     // (C⁺ kept: a moved fixed curve costs one product), N a basis of their rows' null space.
     st->basisN = Eigen::MatrixXd::Identity(n, n);
     Eigen::MatrixXd xp = st->x0;
+    double nullBasisError = 0.0;  // relative accuracy of N's columns (0: exact, no fixed rows)
     if (!st->hard.empty()) {
         Eigen::MatrixXd c(static_cast<Eigen::Index>(st->hard.size()), n);
         for (size_t r = 0; r < st->hard.size(); ++r) c.row(static_cast<Eigen::Index>(r)) = all.row(st->hard[r]);
@@ -198,6 +199,13 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
                     svd.matrixU().leftCols(r).transpose();
         st->basisN = svd.matrixV().rightCols(n - r);
+        // N is accurate only to about max(m, n) ε κ(C) (Wedin: the rows' perturbation over the gap
+        // σ_r(C)); the soft system S N inherits that much round-off, below which its singular
+        // directions are not the problem's (README "The dome").
+        if (r > 0) {
+            nullBasisError = static_cast<double>(std::max(c.rows(), c.cols())) * std::numeric_limits<double>::epsilon() *
+                             svd.singularValues()(0) / svd.singularValues()(r - 1);
+        }
         Eigen::MatrixXd d(static_cast<Eigen::Index>(st->hard.size()), 3);
         for (size_t i = 0; i < st->hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st->hard[i]);
         xp = st->x0 + st->cPlus * (d - st->cSparse * st->x0);
@@ -215,15 +223,26 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
         const Eigen::MatrixXd bRed = bs - st->sSparse * xp;
-        if (st->svd->rank() > 0 && bRed.norm() > 0.0) {
+        // The truncations worth considering: σ_k of S N above the round-off N brings into it.
+        int usable = st->svd->rank();
+        if (nullBasisError > 0.0) {
+            const double floor = nullBasisError * soft.norm();
+            while (usable > 0 && st->svd->singularValues()(usable - 1) <= floor) --usable;
+        }
+        if (usable > 0 && bRed.norm() > 0.0) {
             // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
             // determined directions (seed 000 eqs. 3-4).
             const reg::ProjectedRhs rhs = reg::projectRhs(*st->svd, bRed);
             st->lcurve = reg::tsvdLCurve(*st->svd, rhs);
+            if (usable < st->lcurve.rho.size()) {
+                st->lcurve.rho.conservativeResize(usable);
+                st->lcurve.eta.conservativeResize(usable);
+                st->lcurve.sigma.conservativeResize(usable);
+            }
             st->corner = reg::lcurveCorner(st->lcurve, reg::defaultCornerMethod(false)).k;
             st->k = options.k > 0 ? options.k : st->corner;
-            if (st->k < 1 || st->k > st->svd->rank())
-                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(st->svd->rank()));
+            if (st->k < 1 || st->k > usable)
+                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(usable));
             const int nz = static_cast<int>(reduced.cols());
             if (options.method == IncidenceMethod::Mtsvd && st->k < nz) {
                 // MTSVD at TSVD's k (the seed's default): of the solutions that keep the k
