@@ -137,8 +137,19 @@ void BM_IncidenceSolve1000Rows(benchmark::State& state)
     const Scene& s = scene();
     std::vector<IncidenceCurve> curves;
     for (const CurveRequest& r : s.curves) curves.push_back({r.domain, r.request, r.fixed});
-    if (state.range(0) == 0) {
-        for (auto _ : state) benchmark::DoNotOptimize(solveIncidence(s.surface, curves));
+    if (state.range(0) != 1) {
+        // arg 0: MTSVD at TSVD's corner (the default); arg 2: TSVD alone, so that the difference is
+        // what MTSVD's one correction costs.
+        IncidenceOptions options;
+        if (state.range(0) == 2) options.method = IncidenceMethod::Tsvd;
+        int k = 0;
+        for (auto _ : state) {
+            const IncidenceResult r = solveIncidence(s.surface, curves, options);
+            k = r.k;
+            benchmark::DoNotOptimize(r.surface.points().data());
+        }
+        state.counters["k"] = k;
+        state.SetLabel(state.range(0) == 0 ? "whole solve, MTSVD at TSVD's k" : "whole solve, TSVD");
         return;
     }
     IncidenceSolver solver;
@@ -152,11 +163,13 @@ void BM_IncidenceSolve1000Rows(benchmark::State& state)
         benchmark::DoNotOptimize(solver.solve(curves));
     }
 }
-BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
 #include "solvers/regularization/cached_svd.h"
+#include "solvers/regularization/lcurve_corner.h"
+#include "solvers/regularization/mtsvd.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -197,5 +210,34 @@ void BM_IncidenceSvd1000Rows(benchmark::State& state)
     state.SetLabel(backend == reg::SvdBackend::Eigen ? "Eigen BDCSVD" : "LAPACKE dgesdd");
 }
 BENCHMARK(BM_IncidenceSvd1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// MTSVD on the same stacked system (all rows soft, L the thin-plate Gram factor, 500 x 500), on its
+// kept SVD: arg 0, the L-curve over every k with the QR of L V_{k+1} updated across k (Hansen, Sekii
+// & Shibahashi; what seed 000 §4.4 describes and then advises against); arg 1, one solution at a
+// given k (a fresh complete orthogonal decomposition: what the incidence solve does once).
+void BM_IncidenceMtsvd1000Rows(benchmark::State& state)
+{
+    namespace reg = sculptline::solvers::regularization;
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    const IncidenceSystem system = stackIncidences(s, scene().curves);
+    const reg::CachedSvd svd{Eigen::MatrixXd(system.matrix)};
+    const Eigen::MatrixXd l = gramFactor(Eigen::MatrixXd(smoothingGram(s, 0.0, 1.0, 0.0)));
+    const reg::MtsvdSolver mtsvd(svd, l);
+    Eigen::MatrixXd prior(svd.cols(), 3);
+    for (Eigen::Index i = 0; i < prior.rows(); ++i) prior.row(i) = scene().surface.points()[static_cast<size_t>(i)].transpose();
+    const reg::ProjectedRhs rhs = reg::projectRhs(svd, Eigen::MatrixXd(system.rhs), prior);
+    const int k = reg::lcurveCorner(reg::tsvdLCurve(svd, rhs), reg::defaultCornerMethod(false)).k;
+    for (auto _ : state) {
+        if (state.range(0) == 0) {
+            benchmark::DoNotOptimize(mtsvd.lcurve(rhs).rho.data());
+        } else {
+            benchmark::DoNotOptimize(mtsvd.solution(rhs, k).data());
+        }
+    }
+    state.counters["rank"] = svd.rank();
+    state.counters["k"] = k;
+    state.SetLabel(state.range(0) == 0 ? "L-curve, QR updated across k" : "one solution at TSVD's k");
+}
+BENCHMARK(BM_IncidenceMtsvd1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
