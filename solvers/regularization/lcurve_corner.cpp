@@ -157,20 +157,31 @@ CornerResult cornerByKnotRemoval(const LCurve& lcurve)
     ControlMatrix& P = cubic.points;
 
     // Greedy ranking: remove the least significant knot copy (raising the threshold to its error)
-    // until the remaining knots' errors span at most one decade.
-    std::vector<double> breaks, errors;
+    // until the remaining knots' errors span at most one decade. A removal changes control points and
+    // knots only within about p + 1 indices of the removed knot, and a knot's error reads about p + 2
+    // on either side, so only the errors of knots within kErrorStencil breakpoints of it are computed
+    // again; the others are the same numbers (this makes the loop O(r) error evaluations, not O(r²)).
+    constexpr int kErrorStencil = 2 * kDegree + 4;
+    std::vector<double> breaks = interiorBreakpoints(kDegree, U), errors(breaks.size());
+    for (size_t i = 0; i < breaks.size(); ++i) errors[i] = removalError(U, P, breaks[i]);
     double threshold = 0.0;  // the largest error spent on one removal
-    for (;;) {
-        breaks = interiorBreakpoints(kDegree, U);
-        if (breaks.empty()) break;
-        errors.resize(breaks.size());
-        for (size_t i = 0; i < breaks.size(); ++i) errors[i] = removalError(U, P, breaks[i]);
+    while (!breaks.empty()) {
         const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
         const double floor = std::numeric_limits<double>::min();
         if (std::log10(std::max(*hi, floor)) - std::log10(std::max(*lo, floor)) <= kErrorSpreadDecades) break;
         threshold = std::max(threshold, *lo);
-        removeKnot(kDegree, U, P, breaks[lo - errors.begin()], 1, std::numeric_limits<double>::infinity(),
+        const long at = lo - errors.begin();
+        removeKnot(kDegree, U, P, breaks[static_cast<size_t>(at)], 1, std::numeric_limits<double>::infinity(),
                    static_cast<int>(P.cols()));
+        std::vector<double> next = interiorBreakpoints(kDegree, U);
+        const bool vanished = next.size() < breaks.size();  // its last copy was removed
+        std::vector<double> nextErrors(next.size());
+        for (size_t j = 0; j < next.size(); ++j) {
+            const size_t old = vanished && static_cast<long>(j) >= at ? j + 1 : j;
+            nextErrors[j] = std::abs(static_cast<long>(j) - at) <= kErrorStencil ? removalError(U, P, next[j]) : errors[old];
+        }
+        breaks = std::move(next);
+        errors = std::move(nextErrors);
     }
 
     // The turn at each remaining knot, measured over a window of kTurnWindow of the curve's chord
