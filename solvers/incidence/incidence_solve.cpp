@@ -223,7 +223,8 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
         const Eigen::MatrixXd bRed = bs - st->sSparse * xp;
-        // The truncations worth considering: σ_k of S N above the round-off N brings into it.
+        // The truncations worth considering: σ_k of S N above the round-off N brings into it,
+        // max(m, n) ε κ(C) times ‖S‖_F (an upper bound of ‖S‖_2: the cut errs on the safe side).
         int usable = st->svd->rank();
         if (nullBasisError > 0.0) {
             const double floor = nullBasisError * soft.norm();
