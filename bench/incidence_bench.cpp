@@ -137,8 +137,19 @@ void BM_IncidenceSolve1000Rows(benchmark::State& state)
     const Scene& s = scene();
     std::vector<IncidenceCurve> curves;
     for (const CurveRequest& r : s.curves) curves.push_back({r.domain, r.request, r.fixed});
-    if (state.range(0) == 0) {
-        for (auto _ : state) benchmark::DoNotOptimize(solveIncidence(s.surface, curves));
+    if (state.range(0) != 1) {
+        // arg 0: MTSVD at TSVD's corner (the default); arg 2: TSVD alone, so that the difference is
+        // what MTSVD's one correction costs.
+        IncidenceOptions options;
+        if (state.range(0) == 2) options.method = IncidenceMethod::Tsvd;
+        int k = 0;
+        for (auto _ : state) {
+            const IncidenceResult r = solveIncidence(s.surface, curves, options);
+            k = r.k;
+            benchmark::DoNotOptimize(r.surface.points().data());
+        }
+        state.counters["k"] = k;
+        state.SetLabel(state.range(0) == 0 ? "whole solve, MTSVD at TSVD's k" : "whole solve, TSVD");
         return;
     }
     IncidenceSolver solver;
@@ -152,6 +163,81 @@ void BM_IncidenceSolve1000Rows(benchmark::State& state)
         benchmark::DoNotOptimize(solver.solve(curves));
     }
 }
-BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_IncidenceSolve1000Rows)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+#include "solvers/regularization/cached_svd.h"
+#include "solvers/regularization/lcurve_corner.h"
+#include "solvers/regularization/mtsvd.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace {
+
+// The SVD of the scene's whole stacked system (958 rows over the 25x20 surface's 500 control points,
+// dense): arg 0 Eigen's BDCSVD, arg 1 LAPACK's dgesdd through LAPACKE (issue 14 §4: within 1.2x of
+// the machine's fastest gesdd on the same matrix). With SCULPTLINE_BENCH_MATRIX=<file> set, the
+// matrix is written there once (rows, cols as two int32, then column-major float64) so that
+// scripts/compare_regularization.py --timing-matrix <file> times numpy's gesdd on the same matrix.
+void BM_IncidenceSvd1000Rows(benchmark::State& state)
+{
+    namespace reg = sculptline::solvers::regularization;
+    const auto backend = state.range(0) == 0 ? reg::SvdBackend::Eigen : reg::SvdBackend::Lapack;
+    if (backend == reg::SvdBackend::Lapack && !reg::lapackAvailable()) {
+        state.SkipWithError("no LAPACKE in this build");
+        return;
+    }
+    const Eigen::MatrixXd a(stackIncidences(SurfaceStructure::of(scene().surface), scene().curves).matrix);
+    if (const char* path = std::getenv("SCULPTLINE_BENCH_MATRIX"); path && state.range(0) == 0) {
+        if (std::FILE* f = std::fopen(path, "wb")) {
+            const int dims[2] = {static_cast<int>(a.rows()), static_cast<int>(a.cols())};
+            std::fwrite(dims, sizeof(int), 2, f);
+            std::fwrite(a.data(), sizeof(double), static_cast<size_t>(a.size()), f);
+            std::fclose(f);
+        }
+    }
+    int rank = 0;
+    for (auto _ : state) {
+        const reg::CachedSvd svd(a, backend);
+        rank = svd.rank();
+        benchmark::DoNotOptimize(svd.singularValues().data());
+    }
+    state.counters["rows"] = static_cast<double>(a.rows());
+    state.counters["cols"] = static_cast<double>(a.cols());
+    state.counters["rank"] = rank;
+    state.SetLabel(backend == reg::SvdBackend::Eigen ? "Eigen BDCSVD" : "LAPACKE dgesdd");
+}
+BENCHMARK(BM_IncidenceSvd1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// MTSVD on the same stacked system (all rows soft, L the thin-plate Gram factor, 500 x 500), on its
+// kept SVD: arg 0, the L-curve over every k with the QR of L V_{k+1} updated across k (Hansen, Sekii
+// & Shibahashi; what seed 000 §4.4 describes and then advises against); arg 1, one solution at a
+// given k (a fresh complete orthogonal decomposition: what the incidence solve does once).
+void BM_IncidenceMtsvd1000Rows(benchmark::State& state)
+{
+    namespace reg = sculptline::solvers::regularization;
+    const SurfaceStructure s = SurfaceStructure::of(scene().surface);
+    const IncidenceSystem system = stackIncidences(s, scene().curves);
+    const reg::CachedSvd svd{Eigen::MatrixXd(system.matrix)};
+    const Eigen::MatrixXd l = gramFactor(Eigen::MatrixXd(smoothingGram(s, 0.0, 1.0, 0.0)));
+    const reg::MtsvdSolver mtsvd(svd, l);
+    Eigen::MatrixXd prior(svd.cols(), 3);
+    for (Eigen::Index i = 0; i < prior.rows(); ++i) prior.row(i) = scene().surface.points()[static_cast<size_t>(i)].transpose();
+    const reg::ProjectedRhs rhs = reg::projectRhs(svd, Eigen::MatrixXd(system.rhs), prior);
+    const int k = reg::lcurveCorner(reg::tsvdLCurve(svd, rhs), reg::defaultCornerMethod(false)).k;
+    for (auto _ : state) {
+        if (state.range(0) == 0) {
+            benchmark::DoNotOptimize(mtsvd.lcurve(rhs).rho.data());
+        } else {
+            benchmark::DoNotOptimize(mtsvd.solution(rhs, k).data());
+        }
+    }
+    state.counters["rank"] = svd.rank();
+    state.counters["k"] = k;
+    state.SetLabel(state.range(0) == 0 ? "L-curve, QR updated across k" : "one solution at TSVD's k");
+}
+BENCHMARK(BM_IncidenceMtsvd1000Rows)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

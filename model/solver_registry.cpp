@@ -468,6 +468,9 @@ public:
                 report.residual = r.residual;
                 report.fixedResidual = r.fixedResidual;
                 s.incidence = std::move(report);
+                const bool soft = std::any_of(curves.begin(), curves.end(), [](const auto& c) { return !c.fixed && c.target; });
+                if (r.k == 0 && soft)
+                    note += "; the fixed curves leave the surface no freedom where the others are (more control points would give some)";
                 s.solveMessage = "through " + std::to_string(curves.size()) + (curves.size() == 1 ? " curve" : " curves") +
                                  ": k = " + std::to_string(r.k) + " of " + std::to_string(r.lcurve.rho.size()) + " (the L-curve's corner " +
                                  std::to_string(r.corner) + ")" + note;

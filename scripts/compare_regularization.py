@@ -10,6 +10,9 @@ on a random problem and on Hansen's shaw test problem; and the SVD's time in num
                  more than 1e-10 relative; ctest runs it so
                  (tests/regularization/CMakeLists.txt).
         --timing: also times np.linalg.svd of a 1000x500 matrix (full_matrices=False), best of 5.
+        --timing-matrix FILE: times np.linalg.svd (gesdd) of the matrix in FILE, as written by
+                 SCULPTLINE_BENCH_MATRIX=FILE build/sculptline-bench --benchmark_filter=IncidenceSvd
+                 (two int32 rows, cols, then column-major float64): best and median of 7.
 
 How. The reference is seed 000 eqs. 3-4 written out in numpy: x_k = x0 + V_k (U_kᵀ b / σ_k − V_kᵀ x0),
 ρ_k = ‖A x_k − b‖ and η_k = ‖x_k − x0‖ computed directly from x_k for every k (not by the sums the
@@ -67,6 +70,12 @@ def shaw(n):
     return a, x
 
 
+def load_matrix(path):
+    with open(path, "rb") as f:
+        rows, cols = np.frombuffer(f.read(8), dtype=np.int32)
+        return np.frombuffer(f.read(), dtype=np.float64).reshape((cols, rows)).T.copy()
+
+
 def compare(name, build, a, b, x0, k=None):
     payload = {"matrix": a.tolist(), "rhs": b.tolist(), "prior": x0.tolist()}
     if k is not None:
@@ -86,7 +95,23 @@ def compare(name, build, a, b, x0, k=None):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    argv = sys.argv[1:]
+    matrix_file = None
+    if "--timing-matrix" in argv:
+        i = argv.index("--timing-matrix")
+        matrix_file = argv[i + 1]
+        del argv[i:i + 2]
+        m = load_matrix(matrix_file)
+        times = []
+        for _ in range(7):
+            t0 = time.perf_counter()
+            np.linalg.svd(m, full_matrices=False)
+            times.append(time.perf_counter() - t0)
+        print(f"numpy {np.__version__} np.linalg.svd {m.shape[0]}x{m.shape[1]} from {matrix_file} (gesdd): "
+              f"best {min(times) * 1e3:.1f} ms, median {sorted(times)[3] * 1e3:.1f} ms")
+        if "--check" not in argv:
+            return
+    args = [a for a in argv if not a.startswith("--")]
     build = args[0] if args else "build"
     rng = np.random.default_rng(7)
     a = rng.standard_normal((40, 25))

@@ -42,8 +42,6 @@ constexpr double kHardSlack = 0.1;
 // size: 1e-8 bounds TSVD's amplification of the right-hand side at 1e8 of it, where round-off of
 // the null-space basis (1e-16 relative) still stays below 1e-8 of the model.
 constexpr double kSoftVisibility = 1e-8;
-constexpr const char* kNoFreedom =
-    "the fixed curves leave the surface no freedom where the other curves are (a surface with more control points would have some)";
 // Absolute floor of that dropped part (model units): far below what a display or a printer shows, far
 // above round-off for model sizes up to metres.
 constexpr double kHardFloor = 1e-9;
@@ -216,6 +214,7 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
     // (C⁺ kept: a moved fixed curve costs one product), N a basis of their rows' null space.
     st->basisN = Eigen::MatrixXd::Identity(n, n);
     Eigen::MatrixXd xp = st->x0;
+    double nullBasisError = 0.0;  // relative accuracy of N's columns (0: exact, no fixed rows)
     if (!st->hard.empty()) {
         Eigen::MatrixXd c(static_cast<Eigen::Index>(st->hard.size()), n);
         for (size_t r = 0; r < st->hard.size(); ++r) c.row(static_cast<Eigen::Index>(r)) = all.row(st->hard[r]);
@@ -232,6 +231,13 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
                     svd.matrixU().leftCols(r).transpose();
         st->basisN = svd.matrixV().rightCols(n - rank);
+        // N is accurate only to about max(m, n) ε κ(C) (Wedin: the rows' perturbation over the gap
+        // σ_r(C)); the soft system S N inherits that much round-off, below which its singular
+        // directions are not the problem's (README "The dome").
+        if (rank > 0) {
+            nullBasisError = static_cast<double>(std::max(c.rows(), c.cols())) * std::numeric_limits<double>::epsilon() *
+                             svd.singularValues()(0) / svd.singularValues()(rank - 1);
+        }
         xp = st->x0 + st->cPlus * (d - st->cSparse * st->x0);
     }
     st->correction.resize(0, 0);
@@ -247,26 +253,26 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         st->svd = std::make_unique<reg::CachedSvd>(reduced);
         // Nothing asked of the soft rows (every curve keeps its image): the surface stays.
         const Eigen::MatrixXd bRed = bs - st->sSparse * xp;
-        if (st->svd->rank() > 0 && bRed.norm() > 0.0) {
+        // The truncations worth considering: σ_k of S N above the round-off N brings into it,
+        // max(m, n) ε κ(C) times ‖S‖_F (an upper bound of ‖S‖_2: the cut errs on the safe side).
+        // Also never below kSoftVisibility of it: TSVD's amplification stays bounded.
+        int usable = st->svd->rank();
+        const double floor = std::max(nullBasisError, kSoftVisibility) * soft.norm();
+        while (usable > 0 && st->svd->singularValues()(usable - 1) <= floor) --usable;
+        if (usable > 0 && bRed.norm() > 0.0) {
             // The prior is the surface as it is (z = 0: x_p): TSVD changes it only along the k best
             // determined directions (seed 000 eqs. 3-4).
             const reg::ProjectedRhs rhs = reg::projectRhs(*st->svd, bRed);
             st->lcurve = reg::tsvdLCurve(*st->svd, rhs);
-            // Directions the soft rows see only at round-off of their own size (after the fixed
-            // curves took the rest: a fixed rim around a coarse net) are not solved for: TSVD would
-            // amplify nothing into huge control points.
-            const double scale = soft.norm();  // >= σ1 of the soft rows
-            int visible = 0;
-            while (visible < st->svd->rank() && st->svd->singularValues()(visible) > kSoftVisibility * scale) ++visible;
-            if (visible == 0) throw GeometryError(kNoFreedom);
-            if (visible < st->lcurve.rho.size()) {
-                st->lcurve.rho.conservativeResize(visible);
-                st->lcurve.eta.conservativeResize(visible);
+            if (usable < st->lcurve.rho.size()) {
+                st->lcurve.rho.conservativeResize(usable);
+                st->lcurve.eta.conservativeResize(usable);
+                st->lcurve.sigma.conservativeResize(usable);
             }
             st->corner = reg::lcurveCorner(st->lcurve, reg::defaultCornerMethod(false)).k;
             st->k = options.k > 0 ? options.k : st->corner;
-            if (st->k < 1 || st->k > visible)
-                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(visible));
+            if (st->k < 1 || st->k > usable)
+                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(usable));
             const int nz = static_cast<int>(reduced.cols());
             if (options.method == IncidenceMethod::Mtsvd && st->k < nz) {
                 // MTSVD at TSVD's k (the seed's default): of the solutions that keep the k

@@ -41,6 +41,8 @@ struct IncidenceResult {
     /// Largest ‖S'(G(t)) − H(t)‖ over dense t of the curves with a target that are not fixed, and of
     /// the fixed ones (model units).
     double residual = 0.0, fixedResidual = 0.0;
+    /// TSVD's L-curve over the usable truncations: k up to the soft system's rank, and with fixed
+    /// curves only while σ_k exceeds the round-off their null basis brings in (max(m, n) ε κ(C) ‖S‖_F).
     regularization::LCurve lcurve;
     std::vector<Curve2d> domains;  ///< the domain curve of each input curve (given or projected)
 };

@@ -31,6 +31,12 @@ struct LogCurve {
 // the curve by ten decades.
 constexpr double kResidualRoundOff = 1e3 * std::numeric_limits<double>::epsilon();
 
+// A singular value below this fraction of the largest is round-off too: its v_k is set by rounding
+// errors, and dividing by it throws η up by ten decades in one step (heat at n = 64: σ_62 = 5e-15
+// σ_1 survives the rank cut max(m, n) ε σ_1 by 1 %), a "vertical leg" of one point that hides the
+// L-curve's real shape from both corner methods.
+constexpr double kSigmaRoundOff = kResidualRoundOff;
+
 LogCurve usablePoints(const LCurve& lc)
 {
     LogCurve out;
@@ -38,9 +44,12 @@ LogCurve usablePoints(const LCurve& lc)
     for (int i = 0; i < lc.rho.size(); ++i) {
         if (std::isfinite(lc.rho(i))) rhoMax = std::max(rhoMax, lc.rho(i));
     }
+    const bool haveSigma = lc.sigma.size() == lc.rho.size() && lc.sigma.size() > 0;
+    const double sigmaFloor = haveSigma ? kSigmaRoundOff * lc.sigma.maxCoeff() : 0.0;
     for (int i = 0; i < lc.rho.size(); ++i) {
         const double r = lc.rho(i), e = lc.eta(i);
         if (!(std::isfinite(r) && std::isfinite(e) && r > kResidualRoundOff * rhoMax && e > 0.0)) continue;
+        if (haveSigma && !(lc.sigma(i) > sigmaFloor)) continue;
         const Eigen::Vector2d q(std::log10(r), std::log10(e));
         if (!out.p.empty() && q == out.p.back()) continue;  // a repeated point has no direction
         out.k.push_back(i + 1);
@@ -79,6 +88,10 @@ constexpr int kDegree = 3;
 constexpr double kMinCornerTurn = 10.0 * 3.14159265358979323846 / 180.0;
 // |log10 ε_max − log10 ε_min| <= 1: the remaining knots' removal errors lie within one decade.
 constexpr double kErrorSpreadDecades = 1.0;
+// The half-width of the window over which a knot's turn is measured, as a fraction of the L-curve's
+// chord length. Chosen on the tuning seeds of README "Which corner method" (0.02-0.2 pass within one
+// case of each other there; 0.05 was the first value tried and kept).
+constexpr double kTurnWindow = 0.05;
 
 // The error that removing one copy of the knot u would cause (The NURBS Book A5.8, its first pass):
 // the control points are solved from both ends of the affected range and their mismatch measured.
@@ -144,32 +157,44 @@ CornerResult cornerByKnotRemoval(const LCurve& lcurve)
     ControlMatrix& P = cubic.points;
 
     // Greedy ranking: remove the least significant knot copy (raising the threshold to its error)
-    // until the remaining knots' errors span at most one decade.
-    std::vector<double> breaks, errors;
+    // until the remaining knots' errors span at most one decade. A removal changes control points and
+    // knots only within about p + 1 indices of the removed knot, and a knot's error reads about p + 2
+    // on either side, so only the errors of knots within kErrorStencil breakpoints of it are computed
+    // again; the others are the same numbers (this makes the loop O(r) error evaluations, not O(r²)).
+    constexpr int kErrorStencil = 2 * kDegree + 4;
+    std::vector<double> breaks = interiorBreakpoints(kDegree, U), errors(breaks.size());
+    for (size_t i = 0; i < breaks.size(); ++i) errors[i] = removalError(U, P, breaks[i]);
     double threshold = 0.0;  // the largest error spent on one removal
-    for (;;) {
-        breaks = interiorBreakpoints(kDegree, U);
-        if (breaks.empty()) break;
-        errors.resize(breaks.size());
-        for (size_t i = 0; i < breaks.size(); ++i) errors[i] = removalError(U, P, breaks[i]);
+    while (!breaks.empty()) {
         const auto [lo, hi] = std::minmax_element(errors.begin(), errors.end());
         const double floor = std::numeric_limits<double>::min();
         if (std::log10(std::max(*hi, floor)) - std::log10(std::max(*lo, floor)) <= kErrorSpreadDecades) break;
         threshold = std::max(threshold, *lo);
-        removeKnot(kDegree, U, P, breaks[lo - errors.begin()], 1, std::numeric_limits<double>::infinity(),
+        const long at = lo - errors.begin();
+        removeKnot(kDegree, U, P, breaks[static_cast<size_t>(at)], 1, std::numeric_limits<double>::infinity(),
                    static_cast<int>(P.cols()));
+        std::vector<double> next = interiorBreakpoints(kDegree, U);
+        const bool vanished = next.size() < breaks.size();  // its last copy was removed
+        std::vector<double> nextErrors(next.size());
+        for (size_t j = 0; j < next.size(); ++j) {
+            const size_t old = vanished && static_cast<long>(j) >= at ? j + 1 : j;
+            nextErrors[j] = std::abs(static_cast<long>(j) - at) <= kErrorStencil ? removalError(U, P, next[j]) : errors[old];
+        }
+        breaks = std::move(next);
+        errors = std::move(nextErrors);
     }
 
-    // The turn at each remaining knot: directions over a quarter of the neighbouring spans. A knot
-    // stands for the cluster of data points within the threshold of its curve point (seed 000 §4.2:
-    // "the corner consists of a cluster of rapidly varying values"); of those, the one of smallest η.
+    // The turn at each remaining knot, measured over a window of kTurnWindow of the curve's chord
+    // length on either side: a corner that the removal left as a cluster of nearby knots (seed 000
+    // §4.2: "the corner consists of a cluster of rapidly varying values") turns as a whole, while
+    // each knot of the cluster alone turns only a few degrees. A knot stands for the data points
+    // within the threshold of its curve point; of those, the one of smallest η.
     std::vector<std::pair<double, int>> turns;  // (clockwise turn in radians, data index)
     for (size_t b = 0; b < breaks.size(); ++b) {
         const double u = breaks[b];
-        const double left = b == 0 ? 0.0 : breaks[b - 1], right = b + 1 == breaks.size() ? 1.0 : breaks[b + 1];
-        const double h = 0.25 * std::min(u - left, right - u);
         const Eigen::Vector2d c = evaluateAt(U, P, u);
-        const Eigen::Vector2d d1 = c - evaluateAt(U, P, u - h), d2 = evaluateAt(U, P, u + h) - c;
+        const Eigen::Vector2d d1 = c - evaluateAt(U, P, std::max(0.0, u - kTurnWindow));
+        const Eigen::Vector2d d2 = evaluateAt(U, P, std::min(1.0, u + kTurnWindow)) - c;
         const double turn = -std::atan2(cross(d1, d2), d1.dot(d2));  // > 0: clockwise
         int j = static_cast<int>(std::min_element(t.begin(), t.end(), [u](double a, double c2) {
                                      return std::abs(a - u) < std::abs(c2 - u);
@@ -179,9 +204,15 @@ CornerResult cornerByKnotRemoval(const LCurve& lcurve)
         }
         turns.emplace_back(turn, j);
     }
+    // Corners: the knots turning at least kMinCornerTurn that turn most among their neighbours (a
+    // window sees one corner from several knots); of several corners the one of smallest η (seed
+    // 000 §4.2 after Hansen 1990).
     int best = -1;
-    for (const auto& [turn, j] : turns) {
+    for (size_t b = 0; b < turns.size(); ++b) {
+        const auto [turn, j] = turns[b];
         if (turn < kMinCornerTurn) continue;
+        if (b > 0 && turns[b - 1].first > turn) continue;
+        if (b + 1 < turns.size() && turns[b + 1].first >= turn) continue;
         result.candidates.push_back(lc.k[j]);
         if (best < 0 || lcurve.eta(lc.k[j] - 1) < lcurve.eta(lc.k[best] - 1)) best = j;
     }

@@ -79,6 +79,7 @@ LCurve MtsvdSolver::lcurve(const ProjectedRhs& rhs) const
     LCurve lc;
     lc.rho.resize(r);
     lc.eta.resize(r);
+    lc.sigma = s.head(r);
     fallbacks_ = 0;
 
     // ρ² from the coefficients g of x − x_k in V_{k+1}: rows k+1..q of Σ(α + g) − β, plus the outside part.

@@ -44,6 +44,7 @@ LCurve tsvdLCurve(const CachedSvd& svd, const ProjectedRhs& rhs)
     LCurve lc;
     lc.rho.resize(r);
     lc.eta.resize(r);
+    lc.sigma = s.head(r);
     // Residual terms of the columns beyond k, summed from the end (small terms first).
     Eigen::VectorXd tail(p + 1);
     tail(p) = rhs.outsideSq;

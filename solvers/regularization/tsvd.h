@@ -14,6 +14,9 @@ namespace sculptline::solvers::regularization {
 struct LCurve {
     Eigen::VectorXd rho;
     Eigen::VectorXd eta;
+    /// σ_k at index k − 1 when known (tsvdLCurve, MtsvdSolver::lcurve), else empty. The corner skips
+    /// the k whose σ_k is at round-off: their v_k is set by rounding errors, not by A.
+    Eigen::VectorXd sigma;
 };
 
 /// A right-hand side and prior in the SVD's coordinates (p = min(m, n) rows each).

@@ -6,6 +6,7 @@
 #include "model/model.h"
 #include "model/model_document.h"
 #include "solvers/deformation/deformation_region.h"
+#include "solvers/incidence/spanning_sheet.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/io/geometry_json.h"
 #include "tests/common/surface_test_support.h"
@@ -384,6 +385,202 @@ TEST(IncidenceStep, CurvesOnAStaticSurfaceAreMetAndFollowTheirPlanesDrag)
     const solvers::Surface3d& moved = *model.find(sheet)->surface;
     const solvers::SurfaceProjection foot = solvers::SurfaceProjector(moved).project(model.find(arch)->world->evaluate(0.5));
     EXPECT_LT(foot.distance, 0.5);
+}
+
+
+// Seed 000's dome through the model (§3.2, Figs. 2-3, 8): a rim A drawn on the flat sheet's plane and
+// fixed, an arch B across it on a vertical plane, then C across both; each a curve-on-surface
+// constraint on a static sheet, solved by the plan's incidence step (the solver-level dome with its
+// tolerances: tests/incidence/incidence_dome_test.cpp).
+namespace dome {
+constexpr double kHeight = 20.0;  // mm, the arches' height at the rim's centre
+constexpr double kRim = 40.0;     // mm, the rim's radius on the 120 mm sheet
+constexpr double kSheet = 120.0;  // mm
+// The fixed rim is a hard constraint: round-off only (1e-9 of the sheet, as the solver-level test).
+constexpr double kRimTolerance = 1e-9 * kSheet;
+// The arches: the exact rim pins the control points next to it, so the surface lags the cos² rise
+// there (solver-level test: 3.1 mm of 20 in that band); here the arches' requests are their control
+// polygons' smoothing of the bump and the corner keeps k = 4 of 5 usable directions: measured 4.7 mm
+// (B), and 6.0 mm (B and C, k = 2 of 7: every solve starts from the flat prior, not from the sheet
+// as A and B left it). Asserted at 35 % of the height. A rim that bounds the sheet instead (the
+// window's Interpolation, IncidenceStep.GivenASheetBoundedByAFixedRim...) does far better.
+constexpr double kArchTolerance = 0.35 * kHeight;
+// The sheet's centre rises at least this much of the arches' 20 mm (measured 17.9 and 18.5 mm).
+constexpr double kCentreRiseAtLeast = 0.85 * kHeight;
+
+/// A cubic arch over the vertical plane through the origin along `direction`: 15 control points from
+/// -55 to 55 mm, at height kHeight cos²(π s / 2 kRim) inside the rim, 0 outside.
+solvers::Curve3d arch(const PlaneFrame& f, const Eigen::Vector3d& direction)
+{
+    std::vector<Eigen::Vector3d> local;
+    for (int i = 0; i < 15; ++i) {
+        const double s = -55.0 + 110.0 * i / 14.0;
+        const double c = std::abs(s) < kRim ? std::cos(M_PI * s / (2.0 * kRim)) : 0.0;
+        Eigen::Vector3d p = f.toLocal(s * direction + Eigen::Vector3d(0, 0, kHeight * c * c));
+        p.z() = 0;
+        local.push_back(p);
+    }
+    return solvers::makeClampedUniform<3>(3, local);
+}
+}  // namespace dome
+
+TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenTheRimHoldsAndTheSheetBulges)
+{
+    // Given a flat 20 x 20 sheet (120 mm square at z = 0), the rim A on the sheet's own plane, fixed
+    Model model;
+    const EntityId sheet = model.addSurface(flatSheet(20));
+    const EntityId ground = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 150));
+    std::vector<Eigen::Vector3d> circle;
+    for (int i = 0; i < 16; ++i) {
+        const double a = 2.0 * M_PI * i / 16;
+        // a uniform closed cubic sits at (2 + cos(2π/n))/3 of its polygon's radius
+        const double r = dome::kRim * 3.0 / (2.0 + std::cos(2.0 * M_PI / 16));
+        Eigen::Vector3d p = model.find(ground)->frame.toLocal(Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
+        p.z() = 0;
+        circle.push_back(p);
+    }
+    const EntityId rim = model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
+    auto onSheet = [&](EntityId curve) {
+        Constraint on;
+        on.type = ConstraintType::CurveOnSurface;
+        on.targets = {curve, sheet};
+        model.addConstraint(on);
+    };
+    onSheet(rim);
+    model.setFixed(rim, true);
+    // ... and B, an arch 20 mm high across it on a vertical plane along (2, 1)
+    const Eigen::Vector3d alongB = Eigen::Vector3d(2, 1, 0).normalized();
+    const EntityId planeB = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongB.y(), alongB.x(), 0), 150));
+    const EntityId b = model.addCurve(planeB, dome::arch(model.find(planeB)->frame, alongB));
+    onSheet(b);
+
+    // When the model is updated
+    model.update();
+    const Entity& s = *model.find(sheet);
+    ASSERT_FALSE(s.failed()) << s.buildError;
+    ASSERT_TRUE(s.incidence.has_value());
+    const double centreAB = s.surface->evaluate(8.5, 8.5).z();
+    std::cout << "Model dome A+B: " << s.solveMessage << "; A " << s.incidence->fixedResidual << " mm, B "
+              << s.incidence->residual << " mm, centre " << centreAB << " mm; B to the sheet "
+              << guitest::curveToSurface(*model.find(b)->world, *s.surface) << " mm\n";
+    // Then the plan solves the sheet by incidence, A exactly, B close, and the sheet bulges
+    EXPECT_EQ(model.plan().steps[model.plan().stepOf.at(sheet)].solver, "incidence");
+    EXPECT_GT(s.incidence->hardRows, 0);
+    EXPECT_LE(s.incidence->fixedResidual, dome::kRimTolerance);
+    EXPECT_LE(guitest::curveToSurface(*model.find(rim)->world, *s.surface), dome::kRimTolerance);
+    EXPECT_LE(s.incidence->residual, dome::kArchTolerance);
+    EXPECT_GE(centreAB, dome::kCentreRiseAtLeast);
+
+    // When C is added across both, along (-1, 2)
+    const Eigen::Vector3d alongC = Eigen::Vector3d(-1, 2, 0).normalized();
+    const EntityId planeC = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongC.y(), alongC.x(), 0), 150));
+    const EntityId c = model.addCurve(planeC, dome::arch(model.find(planeC)->frame, alongC));
+    onSheet(c);
+    model.update();
+    const Entity& s2 = *model.find(sheet);
+    ASSERT_FALSE(s2.failed()) << s2.buildError;
+    std::cout << "Model dome A+B+C: " << s2.solveMessage << "; A " << s2.incidence->fixedResidual << " mm, B and C "
+              << s2.incidence->residual << " mm, centre " << s2.surface->evaluate(8.5, 8.5).z() << " mm; A to the sheet "
+              << guitest::curveToSurface(*model.find(rim)->world, *s2.surface) << " mm\n";
+    // Then A still holds to round-off, B and C are close, the centre stays up
+    EXPECT_LE(s2.incidence->fixedResidual, dome::kRimTolerance);
+    EXPECT_LE(guitest::curveToSurface(*model.find(rim)->world, *s2.surface), dome::kRimTolerance);
+    EXPECT_LE(s2.incidence->residual, dome::kArchTolerance);
+    EXPECT_LE(guitest::curveToSurface(*model.find(b)->world, *s2.surface), dome::kArchTolerance);
+    EXPECT_GE(s2.surface->evaluate(8.5, 8.5).z(), dome::kCentreRiseAtLeast);
+    EXPECT_TRUE(model.find(rim)->fixed);
+}
+
+
+/// Arches across a sheet the rim bounds, inside the rim: measured 0.43 mm (B) and 0.27 mm (B and C)
+/// from the surface, against 4.7 and 6.0 mm with the rim drawn inside a square sheet (the test
+/// above); asserted at 5 % of the arches' 20 mm.
+constexpr double kBoundedArchTolerance = 0.05 * dome::kHeight;
+
+/// The largest distance to `surface` of `curve`'s points inside the rim (the arches run on 15 mm
+/// beyond it, at z = 0, where a sheet the rim bounds does not reach).
+double insideRimToSurface(const solvers::Curve3d& curve, const solvers::Surface3d& surface)
+{
+    const solvers::SurfaceProjector projector(surface);
+    double worst = 0.0;
+    for (int k = 0; k <= 400; ++k) {
+        const Eigen::Vector3d p = curve.evaluate(curve.domainStart() + (curve.domainEnd() - curve.domainStart()) * k / 400.0);
+        if (p.head<2>().norm() < dome::kRim) worst = std::max(worst, projector.project(p).distance);
+    }
+    return worst;
+}
+
+TEST(IncidenceStep, GivenASheetBoundedByAFixedRim_WhenArchesCrossIt_ThenTheRimHoldsAndTheDomeMeetsThem)
+{
+    // Given the window's Interpolation through a closed rim (ui/sketch_document_incidence.cpp): the
+    // sheet bounded by the rim (solvers/incidence/spanning_sheet.h), the rim fixed with the domain's
+    // boundary as its pre-image, and arch B across it
+    Model model;
+    const EntityId ground = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 150));
+    std::vector<Eigen::Vector3d> circle;
+    for (int i = 0; i < 16; ++i) {
+        const double a = 2.0 * M_PI * i / 16;
+        const double r = dome::kRim * 3.0 / (2.0 + std::cos(2.0 * M_PI / 16));
+        Eigen::Vector3d p = model.find(ground)->frame.toLocal(Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
+        p.z() = 0;
+        circle.push_back(p);
+    }
+    const EntityId rim = model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
+    const solvers::incidence::BoundedSheet bounded = solvers::incidence::sheetBoundedBy(*model.find(rim)->world);
+    const EntityId sheet = model.addSurface(bounded.surface);
+    Constraint onRim;
+    onRim.type = ConstraintType::CurveOnSurface;
+    onRim.targets = {rim, sheet};
+    std::vector<Eigen::Vector3d> boundary;
+    for (const Eigen::Vector2d& p : bounded.rimDomain.points()) boundary.emplace_back(p.x(), p.y(), 0.0);
+    onRim.preimage = solvers::Curve3d(1, bounded.rimDomain.knots(), boundary, {}, true);
+    model.addConstraint(onRim);
+    model.setFixed(rim, true);
+    auto onSheet = [&](EntityId curve) {
+        Constraint on;
+        on.type = ConstraintType::CurveOnSurface;
+        on.targets = {curve, sheet};
+        model.addConstraint(on);
+    };
+    const Eigen::Vector3d alongB = Eigen::Vector3d(2, 1, 0).normalized();
+    const EntityId planeB = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongB.y(), alongB.x(), 0), 150));
+    const EntityId b = model.addCurve(planeB, dome::arch(model.find(planeB)->frame, alongB));
+    onSheet(b);
+    // When the model is updated
+    model.update();
+    const Entity& s = *model.find(sheet);
+    ASSERT_FALSE(s.failed()) << s.buildError;
+    ASSERT_TRUE(s.incidence.has_value());
+    const Eigen::Vector3d top = s.surface->evaluate(0.5 * (s.surface->domainStart(solvers::Direction::U) + s.surface->domainEnd(solvers::Direction::U)),
+                                                    0.5 * (s.surface->domainStart(solvers::Direction::V) + s.surface->domainEnd(solvers::Direction::V)));
+    const double bInside = insideRimToSurface(*model.find(b)->world, *s.surface);
+    std::cout << "Bounded dome A+B: " << s.solveMessage << "; A " << s.incidence->fixedResidual << " mm, B inside the rim "
+              << bInside << " mm, middle of the domain at z = " << top.z() << " mm\n";
+    // Then the rim holds to round-off, the arch inside it is met within the tolerance, the sheet bulges
+    EXPECT_LE(s.incidence->fixedResidual, dome::kRimTolerance);
+    EXPECT_LE(guitest::curveToSurface(*model.find(rim)->world, *s.surface), dome::kRimTolerance);
+    EXPECT_LE(bInside, kBoundedArchTolerance);
+    EXPECT_GE(top.z(), dome::kCentreRiseAtLeast);
+    // When C is added across B, then taken away again
+    const Eigen::Vector3d alongC = Eigen::Vector3d(-1, 2, 0).normalized();
+    const EntityId planeC = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongC.y(), alongC.x(), 0), 150));
+    const std::vector<Eigen::Vector3d> withB = s.surface->points();
+    const EntityId c = model.addCurve(planeC, dome::arch(model.find(planeC)->frame, alongC));
+    onSheet(c);
+    model.update();
+    const Entity& s2 = *model.find(sheet);
+    ASSERT_FALSE(s2.failed()) << s2.buildError;
+    const double bcInside = std::max(insideRimToSurface(*model.find(b)->world, *s2.surface),
+                                     insideRimToSurface(*model.find(c)->world, *s2.surface));
+    std::cout << "Bounded dome A+B+C: " << s2.solveMessage << "; A " << s2.incidence->fixedResidual << " mm, B and C inside the rim "
+              << bcInside << " mm\n";
+    // Then A holds, B and C are met within the tolerance
+    EXPECT_LE(s2.incidence->fixedResidual, dome::kRimTolerance);
+    EXPECT_LE(bcInside, kBoundedArchTolerance);
+    // and removing C gives back the surface A and B made, bit for bit (every solve starts from the prior)
+    model.remove(c);
+    model.update();
+    EXPECT_EQ(model.find(sheet)->surface->points(), withB);
 }
 
 }  // namespace
