@@ -50,6 +50,21 @@ void Model::setCurveShape(EntityId curve, const solvers::Curve3d& local)
     markDirty(curve);
 }
 
+void Model::setSurfaceShape(EntityId surface, const solvers::Surface3d& shape)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || it->second.kind != EntityKind::Surface)
+        throw std::invalid_argument("entity " + std::to_string(surface) + " is not a surface");
+    if (it->second.recipe) {
+        throw std::invalid_argument("re-sketch edits a free-form surface; surface " + std::to_string(surface) + " is built from curves (its " +
+                                    constructionName(it->second.recipe->mode) + "): edit its curves instead");
+    }
+    if (it->second.fixed) return;
+    it->second.surface = shape;
+    ++it->second.shapeVersion;
+    markDirty(surface);
+}
+
 EntityId Model::insert(Entity entity, EntityId id, bool built)
 {
     if (id == 0) id = nextId_;

@@ -225,6 +225,11 @@ public:
     /// Replaces a curve's shape (in its plane's frame; z is set to 0 on a plane): marks it changed,
     /// its world form and dependents follow in the next update(). A fixed curve stays.
     void setCurveShape(EntityId curve, const solvers::Curve3d& local);
+    /// Replaces a free-form surface's control net (a re-sketched parameter line, seed 001 §5.2):
+    /// marks it changed, its dependents follow in the next update(). A fixed surface stays.
+    /// @throws std::invalid_argument when `surface` is not a surface, or is built from curves by a
+    ///         recipe (the next rebuild would undo the edit).
+    void setSurfaceShape(EntityId surface, const solvers::Surface3d& shape);
 
     /// Removes `id` and everything that depends on it, dependents first, with the constraints on
     /// them; returns what was removed in creation order (what undo needs to restore them).

@@ -448,5 +448,37 @@ TEST(Sculpt, AChangedBaseIsSculptedAnewAndStillMeetsTheTarget)
     EXPECT_EQ(again.recomputations, 1);
 }
 
+TEST(ModelGraph, AFreeFormSurfacesNewShapeMarksItChangedAndItsSculptFollows)
+{
+    // Given a sculpt over a static sheet (seed 001 §5.2 re-sketches such a free-form surface)
+    SculptScene s;
+    const solvers::Surface3d before = *s.model.find(s.sculpt)->surface;
+    std::vector<Eigen::Vector3d> raised = s.model.find(s.base)->surface->points();
+    for (auto& p : raised) p.z() += 5.0;
+    const solvers::Surface3d& b = *s.model.find(s.base)->surface;
+    const solvers::Surface3d shape(3, 3, b.knotsU(), b.knotsV(), b.countU(), b.countV(), raised);
+    // When the sheet's net is replaced
+    s.model.setSurfaceShape(s.base, shape);
+    // Then the sheet is changed until the update, then has the new net, and the sculpt was rebuilt
+    EXPECT_EQ(s.model.state(s.base), State::Changed);
+    s.model.update();
+    EXPECT_EQ(s.model.find(s.base)->surface->points(), raised);
+    EXPECT_NE(s.model.find(s.sculpt)->surface->points(), before.points());
+}
+
+TEST(ModelGraph, ASurfaceBuiltFromCurvesRefusesANewShape)
+{
+    LoftScene s;
+    const solvers::Surface3d loft = *s.model.find(s.loft)->surface;
+    try {
+        s.model.setSurfaceShape(s.loft, loft);
+        FAIL() << "a loft's net was replaced";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("re-sketch edits a free-form surface"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(s.model.setSurfaceShape(s.a, loft), std::invalid_argument);
+    EXPECT_FALSE(s.model.updatePending());
+}
+
 }  // namespace
 }  // namespace sculptline::model
