@@ -700,7 +700,7 @@ def jug_mouth():
     """Seed 001 Fig. 10, the jug's mouth: the jug selected, Sculpt mode's Re-sketch tool (Alt+R); a
     marking along the rim's front (just below it) picks the rim, the strip's rulings turned once
     (Alt+A: across the rim, the jug's wall continued upwards), and a stroke over the strip raises
-    the lip at the front by up to 14 mm, the spout."""
+    the lip at the front by up to 14 mm, the spout. A second session undoes it (Ctrl+Z)."""
     jug = jug_surface()
     write_document("jug_start.json", [], (), [jug])
     s = Session()
@@ -720,7 +720,12 @@ def jug_mouth():
         h = 14 * math.sin(math.pi * k / 40) ** 2
         lift.append(r([top[c] + h * d[c] / n for c in range(3)]))
     s.stroke(lift)
+    # Alt+R again starts over: the strip goes, the jug's new mouth shows.
+    s.action("sculpt.resketch")
     s.write("jug_mouth.json")
+    # The same, undone (one step): the jug as it was.
+    s.key("Ctrl+Z")
+    s.write("jug_mouth_undo.json")
 
 
 if __name__ == "__main__":

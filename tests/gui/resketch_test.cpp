@@ -2,7 +2,8 @@
 // (a free-form bicubic surface) selected, Sculpt mode's Re-sketch tool, a marking along the rim's
 // front, the strip's rulings turned across the rim, and a stroke over the strip raising the lip
 // (tests/gui/CMakeLists.txt runs `sculptline jug_start.json --replay jug_mouth.json --save` first;
-// both written by data/sessions/make_models.py). Files are in $SCULPTLINE_REPLAY_DIR.
+// both written by data/sessions/make_models.py), and the same undone. Files are in
+// $SCULPTLINE_REPLAY_DIR.
 #include "tests/gui/replayed_model.h"
 
 #include "solvers/bspline/projection.h"
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -88,6 +90,15 @@ TEST(Resketch, TheJugsRimFollowsTheStrokeAndNothingButTheRimRowMoved)
     double top = 0.0;
     for (int k = 0; k <= 200; ++k) top = std::max(top, rimCurve.evaluate(rimCurve.domainStart() + (rimCurve.domainEnd() - rimCurve.domainStart()) * k / 200.0).z());
     EXPECT_GT(top, 110.0);
+}
+
+TEST(Resketch, OneUndoGivesTheJugBack)
+{
+    // jug_mouth_undo.json: the same session followed by Ctrl+Z
+    const model::Model before = startModel();
+    const model::Model undone = guitest::readReplayedModel("jug_mouth_undo.json");
+    ASSERT_TRUE(undone.find(1) && undone.find(1)->surface);
+    EXPECT_EQ(undone.find(1)->surface->points(), before.find(1)->surface->points());
 }
 
 }  // namespace
