@@ -239,6 +239,7 @@ void SketchDocument::entityUpdated(const model::Entity& e)
 {
     // The stroke feedback dots move with their plane (planeDraggers_ moves the plane's dragger).
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
+    if (e.kind == model::EntityKind::Surface) resketchSurfaceUpdated(e.id);
 }
 
 bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0; }

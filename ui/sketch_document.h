@@ -230,6 +230,8 @@ private:
     void resketchStroke(const manipulators::FinishedStroke& stroke);
     std::optional<model::PlaneFrame> resketchPlane(const manipulators::StrokeHit& start);
     void showResketchStrip();
+    /// The strip follows its surface (a re-sketch, an undo).
+    void resketchSurfaceUpdated(model::EntityId surface);
     void clearResketch();
     void setResketchCamera(std::function<SoCamera*()> camera);
     ResketchState& resketchState();

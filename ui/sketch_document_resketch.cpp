@@ -213,6 +213,16 @@ void SketchDocument::showResketchStrip()
     if (root_->findChild(r.node) < 0) root_->addChild(r.node);
 }
 
+void SketchDocument::resketchSurfaceUpdated(model::EntityId surface)
+{
+    if (!resketch_ || !resketch_->line || resketch_->surface != surface) return;
+    try {
+        showResketchStrip();
+    } catch (const std::invalid_argument&) {  // no strip on the surface as it is now
+        clearResketch();
+    }
+}
+
 void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
 {
     lastStroke_ = {};
@@ -240,7 +250,6 @@ void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
                 lastStroke_.maxError = fit.oversketchError + fit.knotFitError;
                 undo_.push(new ReplaceSurfaceCommand(*this, e->id, surface, after,
                                                      tr("Re-sketch the %1 of surface %2").arg(lineName(*r.line)).arg(e->id)));
-                showResketchStrip();  // through the line as it is now
                 lastStroke_.message = tr("Surface %1 follows its re-sketched %2: %3 of its control points moved, the line is within "
                                          "%4 mm of the stroke (knot vector kept). Draw again to refine, or over the surface to pick another line.")
                                           .arg(e->id)
