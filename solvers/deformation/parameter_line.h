@@ -100,6 +100,9 @@ struct ResketchResult {
 /// whose support lies outside the replaced span pinned exactly. A stroke running past an end of
 /// the line is cut at that end (the surface's domain does not grow).
 /// @throws GeometryError naming "stroke" (see editing::oversketch) or "line" (rational, closed).
+/// @note A line whose ends meet (a revolved surface's rim with its seam, clamped) is an open curve
+///       here: its ends stay where they are unless the over-sketch moves them, and a stroke across
+///       the seam is not joined over it (the seam would open). Keep such edits away from the seam.
 ResketchResult resketchLine(const Curve3d& line, const std::vector<Eigen::Vector3d>& stroke,
                             const editing::OversketchOptions& options = {});
 
