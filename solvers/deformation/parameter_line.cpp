@@ -110,6 +110,15 @@ std::vector<Eigen::Vector2d> markingOnSurface(const Surface3d& surface, const st
     const double a[2] = {surface.domainStart(Direction::U), surface.domainStart(Direction::V)};
     const double b[2] = {surface.domainEnd(Direction::U), surface.domainEnd(Direction::V)};
 
+    // The grid's largest step: how far a seed may be from the ray and still be its nearest sample.
+    double cell = 0.0;
+    for (size_t i = 0; i < us.size(); ++i) {
+        for (size_t j = 0; j < vs.size(); ++j) {
+            const size_t g = i * vs.size() + j;
+            if (i + 1 < us.size()) cell = std::max(cell, (grid[g + vs.size()] - grid[g]).norm());
+            if (j + 1 < vs.size()) cell = std::max(cell, (grid[g + 1] - grid[g]).norm());
+        }
+    }
     std::vector<Eigen::Vector2d> out;
     for (size_t k = 0; k < origins.size(); ++k) {
         if (!origins[k].allFinite() || !directions[k].allFinite() || directions[k].norm() == 0.0)
@@ -117,38 +126,56 @@ std::vector<Eigen::Vector2d> markingOnSurface(const Surface3d& surface, const st
         const Eigen::Vector3d o = origins[k], r = directions[k].normalized();
         const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - r * r.transpose();  // off the ray
         auto offRay = [&](const Eigen::Vector3d& x) { return (P * (x - o)).norm(); };
-        size_t best = 0;
+        // Gauss-Newton on |P (S(u, v) - o)|² from a grid point, clamped to the domain, with step
+        // halving; returns the point and its distance from the ray.
+        auto refine = [&](size_t g) {
+            Eigen::Vector2d x(us[g / vs.size()], vs[g % vs.size()]);
+            double dist = offRay(grid[g]);
+            for (int it = 0; it < 30; ++it) {
+                const auto d = surface.derivatives(x.x(), x.y(), 1);
+                const Eigen::Vector3d e = P * (d[0][0] - o);
+                Eigen::Matrix<double, 3, 2> J;
+                J << P * d[1][0], P * d[0][1];
+                const Eigen::Matrix2d JtJ = J.transpose() * J;
+                if (std::abs(JtJ.determinant()) <= 1e-300) break;
+                Eigen::Vector2d step = -JtJ.inverse() * (J.transpose() * e);
+                const double before = dist;
+                for (int h = 0; h < 20; ++h, step *= 0.5) {
+                    Eigen::Vector2d y = x + step;
+                    for (int c = 0; c < 2; ++c) y[c] = std::clamp(y[c], a[c], b[c]);
+                    const double dy = offRay(surface.evaluate(y.x(), y.y()));
+                    if (dy < dist) {
+                        x = y;
+                        dist = dy;
+                        break;
+                    }
+                }
+                if (!(before - dist > 1e-14 * (1.0 + before))) break;
+            }
+            return std::make_pair(x, dist);
+        };
+        // A ray may pass the surface more than once (a jug's front wall, then its back): the
+        // person sees the hit nearest the eye. Seeds are the grid points within a cell of the
+        // nearest, in depth order; the first that converges onto the ray wins, else the nearest.
         double bestD = std::numeric_limits<double>::infinity();
         for (size_t g = 0; g < grid.size(); ++g) {
-            if ((grid[g] - o).dot(r) <= 0.0) continue;  // behind the eye
-            const double d = offRay(grid[g]);
-            if (d < bestD) bestD = d, best = g;
+            if ((grid[g] - o).dot(r) > 0.0) bestD = std::min(bestD, offRay(grid[g]));
         }
-        if (!std::isfinite(bestD)) continue;
-        Eigen::Vector2d x(us[best / vs.size()], vs[best % vs.size()]);
-        double dist = bestD;
-        // Gauss-Newton on |P (S(u, v) - o)|², clamped to the domain, with step halving.
-        for (int it = 0; it < 30; ++it) {
-            const auto d = surface.derivatives(x.x(), x.y(), 1);
-            const Eigen::Vector3d e = P * (d[0][0] - o);
-            Eigen::Matrix<double, 3, 2> J;
-            J << P * d[1][0], P * d[0][1];
-            const Eigen::Matrix2d JtJ = J.transpose() * J;
-            if (std::abs(JtJ.determinant()) <= 1e-300) break;
-            Eigen::Vector2d step = -JtJ.inverse() * (J.transpose() * e);
-            const double before = dist;
-            for (int h = 0; h < 20; ++h, step *= 0.5) {
-                Eigen::Vector2d y = x + step;
-                for (int c = 0; c < 2; ++c) y[c] = std::clamp(y[c], a[c], b[c]);
-                const double dy = offRay(surface.evaluate(y.x(), y.y()));
-                if (dy < dist) {
-                    x = y;
-                    dist = dy;
-                    break;
-                }
-            }
-            if (!(before - dist > 1e-14 * (1.0 + before))) break;
+        if (!std::isfinite(bestD)) continue;  // the surface is behind the eye
+        std::vector<std::pair<double, size_t>> seeds;
+        for (size_t g = 0; g < grid.size(); ++g) {
+            const double depth = (grid[g] - o).dot(r);
+            if (depth > 0.0 && offRay(grid[g]) <= bestD + cell) seeds.emplace_back(depth, g);
         }
+        std::sort(seeds.begin(), seeds.end());
+        constexpr size_t kMaxSeeds = 16;
+        std::optional<std::pair<Eigen::Vector2d, double>> found;
+        for (size_t k2 = 0; k2 < std::min(seeds.size(), kMaxSeeds) && !(found && found->second <= maxDistance); ++k2) {
+            const auto hit = refine(seeds[k2].second);
+            if (!found || hit.second < found->second) found = hit;
+        }
+        const Eigen::Vector2d x = found->first;
+        const double dist = found->second;
         if (dist <= maxDistance) out.push_back(x);
     }
     if (out.size() < 2) throw GeometryError("marking: fewer than two of its points lie on the surface (draw over it)");

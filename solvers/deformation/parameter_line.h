@@ -35,10 +35,10 @@ struct PickOptions {
 ParameterLine pickParameterLine(const Surface3d& surface, const std::vector<Eigen::Vector2d>& uv,
                                 const PickOptions& options = {});
 
-/// The marking's points on the surface, from the pointer's rays: the surface point nearest to each
-/// ray (Gauss-Newton from the nearest point of a sample grid, The NURBS Book §6.1's method on the
-/// distance to a line). Rays that pass farther than `maxDistance` (model units) from the surface
-/// are dropped.
+/// The marking's points on the surface, from the pointer's rays: where each ray meets the surface
+/// first (nearest the eye), else the surface point nearest to it (Gauss-Newton on the distance to
+/// the ray from sample-grid seeds in depth order, The NURBS Book §6.1's method). Rays that pass
+/// farther than `maxDistance` (model units) from the surface are dropped.
 /// @throws GeometryError naming "marking" when fewer than two rays meet it, or a ray is not finite.
 std::vector<Eigen::Vector2d> markingOnSurface(const Surface3d& surface, const std::vector<Eigen::Vector3d>& origins,
                                               const std::vector<Eigen::Vector3d>& directions, double maxDistance);

@@ -94,6 +94,25 @@ TEST(ParameterLinePick, RaysOverTheSurfaceGiveThePointsUnderThem)
     EXPECT_EQ(pickParameterLine(s, uv).fixed, Direction::U);
 }
 
+TEST(ParameterLinePick, ARayThroughTwoWallsTakesTheWallNearestTheEye)
+{
+    // Given a tube (a folded sheet: y = ±5 walls joined, u around, v along x) and a ray from y = +50
+    // through both walls at x = 3
+    std::vector<Eigen::Vector3d> net;
+    const int nu = 9, nv = 6;
+    for (int i = 0; i < nu; ++i) {
+        const double a = 2 * 3.14159265358979 * i / (nu - 1);
+        for (int j = 0; j < nv; ++j) net.emplace_back(j * 2.0, 5 * std::sin(a), 5 * std::cos(a));
+    }
+    const Surface3d tube(3, 3, sculptline::deformtest::clampedUniform(nu, 3), sculptline::deformtest::clampedUniform(nv, 3), nu, nv, net);
+    const std::vector<Eigen::Vector3d> origins = {{3, 50, 0.5}, {4, 50, 0.5}}, directions(2, -Eigen::Vector3d::UnitY());
+    // When the marking is put on it
+    const auto uv = markingOnSurface(tube, origins, directions, 0.1);
+    // Then its points are on the near wall (y > 0)
+    ASSERT_EQ(uv.size(), 2u);
+    for (const auto& p : uv) EXPECT_GT(tube.evaluate(p.x(), p.y()).y(), 3.0);
+}
+
 TEST(ParameterLineCurve, IsTheExactIsoCurveWithTheSurfacesKnots)
 {
     const Surface3d s = wavySurface(8, 7);
