@@ -96,8 +96,8 @@ TEST(ParameterLinePick, RaysOverTheSurfaceGiveThePointsUnderThem)
 
 TEST(ParameterLinePick, ARayThroughTwoWallsTakesTheWallNearestTheEye)
 {
-    // Given a tube (a folded sheet: y = ±5 walls joined, u around, v along x) and a ray from y = +50
-    // through both walls at x = 3
+    // Given a tube (u around, v along x; walls at y = ±5) and rays through both walls at x = 3 and
+    // 4, from either side
     std::vector<Eigen::Vector3d> net;
     const int nu = 9, nv = 6;
     for (int i = 0; i < nu; ++i) {
@@ -105,12 +105,15 @@ TEST(ParameterLinePick, ARayThroughTwoWallsTakesTheWallNearestTheEye)
         for (int j = 0; j < nv; ++j) net.emplace_back(j * 2.0, 5 * std::sin(a), 5 * std::cos(a));
     }
     const Surface3d tube(3, 3, sculptline::deformtest::clampedUniform(nu, 3), sculptline::deformtest::clampedUniform(nv, 3), nu, nv, net);
-    const std::vector<Eigen::Vector3d> origins = {{3, 50, 0.5}, {4, 50, 0.5}}, directions(2, -Eigen::Vector3d::UnitY());
-    // When the marking is put on it
-    const auto uv = markingOnSurface(tube, origins, directions, 0.1);
-    // Then its points are on the near wall (y > 0)
-    ASSERT_EQ(uv.size(), 2u);
-    for (const auto& p : uv) EXPECT_GT(tube.evaluate(p.x(), p.y()).y(), 3.0);
+    for (const double side : {1.0, -1.0}) {
+        const std::vector<Eigen::Vector3d> origins = {{3, 50 * side, 0.5}, {4, 50 * side, 0.5}};
+        const std::vector<Eigen::Vector3d> directions(2, -side * Eigen::Vector3d::UnitY());
+        // When the marking is put on it
+        const auto uv = markingOnSurface(tube, origins, directions, 0.1);
+        // Then its points are on the wall nearer the eye
+        ASSERT_EQ(uv.size(), 2u);
+        for (const auto& p : uv) EXPECT_GT(side * tube.evaluate(p.x(), p.y()).y(), 3.0) << side;
+    }
 }
 
 TEST(ParameterLineCurve, IsTheExactIsoCurveWithTheSurfacesKnots)
