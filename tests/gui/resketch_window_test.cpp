@@ -92,6 +92,12 @@ TEST(ResketchWindow, TheJugsRimIsMarkedRedrawnOverItsStripAndUndone)
     // When it is undone: the jug as it was
     doc.undoStack()->undo();
     EXPECT_EQ(doc.model().find(1)->surface->points(), jug.points());
+
+    // When Alt+A turns the rulings on to the view direction (the camera's, looking down at the rim)
+    window.action(QStringLiteral("sculpt.resketchRulings"))->trigger();
+    // Then the strip is made along it, and the status says what to draw next
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("the view direction"))) << doc.lastStroke().message.toStdString();
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("new shape over the strip"))) << doc.lastStroke().message.toStdString();
 }
 
 TEST(ResketchWindow, ASurfaceBuiltFromCurvesIsRefusedWithTheReason)
