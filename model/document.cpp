@@ -374,6 +374,17 @@ SceneDocument documentFromJson(const json& j)
         doc.surfaceIds.push_back(id);
         const auto k = surfaces[i].find("incidence_k");
         doc.surfaceIncidenceK.push_back(k == surfaces[i].end() ? 0 : io::integerFromJson(*k, path + ".incidence_k", 0, 1 << 20));
+        std::optional<solvers::Surface3d> prior;
+        if (const auto p = surfaces[i].find("incidence_prior"); p != surfaces[i].end()) {
+            prior = io::surfaceFromJson(*p, path + ".incidence_prior");
+            const solvers::Surface3d& s = doc.surfaces.back();
+            if (prior->degreeU() != s.degreeU() || prior->degreeV() != s.degreeV() || prior->knotsU() != s.knotsU() ||
+                prior->knotsV() != s.knotsV() || prior->countU() != s.countU() || prior->countV() != s.countV() ||
+                prior->isRational() != s.isRational())
+                throw io::InputError(path + ".incidence_prior: must have the surface's degrees, knots and control point counts");
+            checkExtent(prior->points(), path + ".incidence_prior");
+        }
+        doc.surfacePriors.push_back(std::move(prior));
     }
     const json& meshes = optionalArray(j, "meshes");
     for (size_t i = 0; i < meshes.size(); ++i) {

@@ -77,6 +77,9 @@ struct SceneDocument {
     /// Per static surface: the designer's incidence truncation ("incidence_k", 0 or absent = the
     /// L-curve's corner).
     std::vector<int> surfaceIncidenceK;
+    /// Per static surface: its incidence prior ("incidence_prior": a surface of the same layout),
+    /// the shape its curves bend (model/model.h Entity::prior).
+    std::vector<std::optional<solvers::Surface3d>> surfacePriors;
     std::vector<MeshSpec> meshes;
     /// Points (a sculpt's handles): {"id", "position": [x, y, z], "rotation"?: [x, y, z, w],
     /// "state"?}; ids are required (a sculpt names its points).

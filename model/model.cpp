@@ -50,21 +50,6 @@ void Model::setCurveShape(EntityId curve, const solvers::Curve3d& local)
     markDirty(curve);
 }
 
-void Model::setSurfaceShape(EntityId surface, const solvers::Surface3d& shape)
-{
-    auto it = entities_.find(surface);
-    if (it == entities_.end() || it->second.kind != EntityKind::Surface)
-        throw std::invalid_argument("entity " + std::to_string(surface) + " is not a surface");
-    if (it->second.recipe) {
-        throw std::invalid_argument("re-sketch edits a free-form surface; surface " + std::to_string(surface) + " is built from curves (its " +
-                                    constructionName(it->second.recipe->mode) + "): edit its curves instead");
-    }
-    if (it->second.fixed) return;
-    it->second.surface = shape;
-    ++it->second.shapeVersion;
-    markDirty(surface);
-}
-
 EntityId Model::insert(Entity entity, EntityId id, bool built)
 {
     if (id == 0) id = nextId_;
@@ -341,6 +326,8 @@ EntityId Model::restore(const Entity& e)
     case EntityKind::Point: id = addPoint(e.position, e.id, e.rotation); break;
     case EntityKind::Surface:
         id = e.recipe ? restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : addSurface(*e.surface, e.id);
+        entity(id).incidenceK = e.incidenceK;
+        entity(id).prior = e.prior;
         break;
     }
     if (e.fixed) setFixed(id, true);
@@ -391,7 +378,7 @@ ConstraintId Model::addConstraint(Constraint c)
     const Constraint& added = constraints_.at(id);
     refreshConstraintValues(added.targets.front());
     // A curve put on a surface asks the surface to change (its incidence solve): the next update.
-    if (added.type == ConstraintType::CurveOnSurface) markDirty(added.targets.back());
+    if (added.type == ConstraintType::CurveOnSurface) curvesOnSurfaceChanged(added.targets.back());
     return id;
 }
 
@@ -420,6 +407,7 @@ std::optional<Constraint> Model::removeConstraint(ConstraintId id)
     Constraint removed = std::move(it->second);
     constraints_.erase(it);
     freedomChanged();
+    if (removed.type == ConstraintType::CurveOnSurface && removed.targets.size() == 2) curvesOnSurfaceChanged(removed.targets.back());
     return removed;
 }
 
@@ -480,6 +468,51 @@ void Model::setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe)
     auto it = entities_.find(surface);
     if (it == entities_.end() || !it->second.recipe || it->second.fixed) return;
     it->second.recipe = recipe;
+    markDirty(surface);
+}
+
+void Model::setSurfaceShape(EntityId surface, const solvers::Surface3d& shape)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || it->second.kind != EntityKind::Surface || it->second.recipe || it->second.fixed) return;
+    for (const Eigen::Vector3d& p : shape.points()) {
+        if (!p.allFinite()) return;
+    }
+    // An incidence surface's edit is an edit of what its curves bend (its prior).
+    if (it->second.prior) it->second.prior = shape;
+    it->second.surface = shape;
+    it->second.buildError.clear();
+    ++it->second.shapeVersion;
+    for (ModelObserver* o : observers_) o->entityUpdated(it->second);
+    markDirty(surface);
+}
+
+void Model::curvesOnSurfaceChanged(EntityId surface)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || it->second.kind != EntityKind::Surface || it->second.recipe || !it->second.surface) return;
+    Entity& e = it->second;
+    bool any = false;
+    for (ConstraintId c : constraintsOn(surface)) any = any || constraints_.at(c).type == ConstraintType::CurveOnSurface;
+    if (any && !e.prior) {
+        e.prior = e.surface;
+    } else if (!any && e.prior) {
+        e.surface = *e.prior;
+        e.prior.reset();
+        e.incidence.reset();
+        e.solveMessage.clear();
+        e.buildError.clear();
+        ++e.shapeVersion;
+        for (ModelObserver* o : observers_) o->entityUpdated(e);
+    }
+    markDirty(surface);
+}
+
+void Model::setIncidencePrior(EntityId surface, const std::optional<solvers::Surface3d>& prior)
+{
+    auto it = entities_.find(surface);
+    if (it == entities_.end() || it->second.kind != EntityKind::Surface || it->second.recipe) return;
+    it->second.prior = prior;
     markDirty(surface);
 }
 

@@ -76,6 +76,11 @@ struct Entity {
     /// Surface without a recipe that curves lie on (the incidence step, seed 000): the designer's
     /// truncation k (0 = the L-curve's corner, the default), saved with the surface.
     int incidenceK = 0;
+    /// Surface without a recipe with curves lying on it: the shape it had before the first curve was
+    /// put on it (seed 000's prior F0). Every incidence solve starts from it, so the solved shape
+    /// depends on the curves and k only, not on the order of edits: removing the curves (an undo)
+    /// gives it back. Saved with the surface; none while no curve lies on it.
+    std::optional<solvers::Surface3d> prior;
     /// Surface: what the last incidence solve found (its L-curve, the k it used, the corner, the
     /// residuals; the L-curve dock shows it); none when no incidence solve ran. Not saved.
     struct IncidenceReport {
@@ -191,6 +196,13 @@ public:
     void restore(const Removed& removed);
     /// Replaces a built surface's recipe (an extrusion following the pointer): marks it changed.
     void setSurfaceRecipe(EntityId surface, const SurfaceRecipe& recipe);
+    /// A surface without a recipe takes `surface` as its shape (an undo of an incidence edit, a
+    /// re-sketched parameter line); what depends on it is rebuilt at the next update, and curves
+    /// lying on it are met again from there. Ignored for a fixed surface, one with a recipe (its
+    /// curves make it), or a surface that is not finite.
+    void setSurfaceShape(EntityId surface, const solvers::Surface3d& shape);
+    /// A surface's incidence prior (Entity::prior), as a document saved it.
+    void setIncidencePrior(EntityId surface, const std::optional<solvers::Surface3d>& prior);
     /// A surface's incidence truncation (Entity::incidenceK; 0 = the L-curve's corner); the surface is
     /// solved again. Ignored for a fixed surface, or a negative k.
     void setIncidenceK(EntityId surface, int k);
@@ -225,11 +237,6 @@ public:
     /// Replaces a curve's shape (in its plane's frame; z is set to 0 on a plane): marks it changed,
     /// its world form and dependents follow in the next update(). A fixed curve stays.
     void setCurveShape(EntityId curve, const solvers::Curve3d& local);
-    /// Replaces a free-form surface's control net (a re-sketched parameter line, seed 001 §5.2):
-    /// marks it changed, its dependents follow in the next update(). A fixed surface stays.
-    /// @throws std::invalid_argument when `surface` is not a surface, or is built from curves by a
-    ///         recipe (the next rebuild would undo the edit).
-    void setSurfaceShape(EntityId surface, const solvers::Surface3d& shape);
 
     /// Removes `id` and everything that depends on it, dependents first, with the constraints on
     /// them; returns what was removed in creation order (what undo needs to restore them).
@@ -321,6 +328,10 @@ private:
     const std::vector<size_t>& downstreamSteps(const std::set<EntityId>& changed);
     /// Recomputes the values the designer's constraints on `curve` hold (a pin's point).
     void refreshConstraintValues(EntityId curve);
+    /// A curve-on-surface constraint was added to or removed from `surface`: the first one keeps the
+    /// surface's shape as its prior, removing the last gives that shape back; the surface is solved
+    /// again at the next update.
+    void curvesOnSurfaceChanged(EntityId surface);
     Entity& entity(EntityId id) { return entities_.at(id); }
 
     std::map<EntityId, Entity> entities_;

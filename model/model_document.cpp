@@ -65,6 +65,7 @@ void populateModel(const SceneDocument& doc, Model& model)
             made = model.addSurface(doc.surfaces[i], id);
             fixed = flag(doc.surfaceStates, i);
             if (i < doc.surfaceIncidenceK.size()) model.setIncidenceK(made, doc.surfaceIncidenceK[i]);
+            if (i < doc.surfacePriors.size() && doc.surfacePriors[i]) model.setIncidencePrior(made, doc.surfacePriors[i]);
             break;
         case Kind::Point:
             made = model.addPoint(doc.points[i].position, id, doc.points[i].rotation);
@@ -173,6 +174,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
             entry = e.surface ? io::toJson(*e.surface) : json::object();
             entry["id"] = id;
             if (!e.recipe && e.incidenceK > 0) entry["incidence_k"] = e.incidenceK;
+            if (!e.recipe && e.prior) entry["incidence_prior"] = io::toJson(*e.prior);
             if (e.recipe) {
                 const ConstructionInfo& info = describe(e.recipe->mode);
                 std::vector<EntityId> inputs = e.curveInputs();

@@ -408,10 +408,11 @@ private:
 /// incidence: a surface entity without a recipe and the curves lying on it (curve-on-surface, seed
 /// 000): the curves keep their placement, and the surface is solved to pass through them
 /// (solvers/incidence: fixed curves exactly, the others by TSVD at the L-curve's corner corrected by
-/// MTSVD, the present surface as the prior). factor() (a drag's start) keeps the solver: the SVD,
-/// k and MTSVD's correction, with the drag's start surface as the prior; each event is then the
-/// curves' new right-hand side and two products. Outside a drag, or when a curve changed its
-/// layout (an over-sketch adds knots), the surface is solved afresh from where it is.
+/// MTSVD), always from the surface's prior (Entity::prior: its shape before the first curve), so
+/// the result depends on the curves and k, not on the order of edits. factor() (a drag's start)
+/// keeps the solver: the SVD, k and MTSVD's correction; each event is then the curves' new
+/// right-hand side and two products. Outside a drag, or when a curve changed its layout (an
+/// over-sketch adds knots), the surface is solved afresh from the prior.
 class IncidenceStepSolver : public StepSolver {
 public:
     void factor(const Model& model, const PlanStep& step) override
@@ -422,7 +423,7 @@ public:
             if (!e || e->kind != EntityKind::Surface || !e->surface) continue;
             try {
                 auto solver = std::make_unique<solvers::incidence::IncidenceSolver>();
-                solver->factor(*e->surface, curvesOn(model, step, id), options(*e));
+                solver->factor(e->prior ? *e->prior : *e->surface, curvesOn(model, step, id), options(*e));
                 solver_ = std::move(solver);
                 surface_ = id;
             } catch (const std::exception&) {
@@ -443,16 +444,17 @@ public:
                 const solvers::incidence::IncidenceResult r = [&] {
                     if (solver_ && surface_ == id && solver_->fits(curves)) return solver_->solve(curves);
                     try {
-                        return solvers::incidence::solveIncidence(*s.surface, curves, options(s));
+                        return solvers::incidence::solveIncidence(s.prior ? *s.prior : *s.surface, curves, options(s));
                     } catch (const std::invalid_argument&) {
                         // The designer's k exceeds what the curves now give (one was deleted): the corner.
                         if (s.incidenceK == 0) throw;
-                        solvers::incidence::IncidenceResult atCorner = solvers::incidence::solveIncidence(*s.surface, curves);
+                        solvers::incidence::IncidenceResult atCorner = solvers::incidence::solveIncidence(s.prior ? *s.prior : *s.surface, curves);
                         note = "; k = " + std::to_string(s.incidenceK) + " is beyond the " + std::to_string(atCorner.lcurve.rho.size()) +
                                " singular values the curves give: the corner is used";
                         return atCorner;
                     }
                 }();
+
                 store(s, surf::SurfaceBuild{r.surface, std::max(r.residual, r.fixedResidual)});
                 Entity::IncidenceReport report;
                 report.rho.assign(r.lcurve.rho.data(), r.lcurve.rho.data() + r.lcurve.rho.size());

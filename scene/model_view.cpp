@@ -3,6 +3,7 @@
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
 #include "scene/overlay_nodes.h"
+#include "scene/state_colors.h"
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -24,9 +25,8 @@
 namespace sculptline::scene {
 namespace {
 
-// Curves in warm colours, surfaces in cool ones (as in the default scene), the selection in white.
-const std::array<SbColor, 3> kCurveColors{SbColor(1.0f, 0.5f, 0.1f), SbColor(0.95f, 0.85f, 0.2f),
-                                          SbColor(0.95f, 0.3f, 0.55f)};
+// Curves in their state's colour (scene/state_colors.h: free ones warm, fixed violet, changed lime),
+// surfaces in cool ones (as in the default scene), the selection in white.
 const SbColor kHighlight(1.0f, 1.0f, 1.0f);
 /// Constraint pins: the pen's red, larger than the stroke feedback's corners so they read as objects.
 const SbColor kConstraintColor(1.0f, 0.25f, 0.2f);
@@ -182,8 +182,12 @@ SoSeparator* ModelView::nodeOf(model::EntityId id) const
 CurveStyle ModelView::curveStyle(model::EntityId id) const
 {
     CurveStyle style;
-    // Offset so that the default scene's curve (id 2, after its plane) keeps the first colour.
-    style.color = kCurveColors[(id + 1) % kCurveColors.size()];
+    const model::Entity* e = model_.find(id);
+    const model::State state = e && e->fixed                                                  ? model::State::Fixed
+                               : changedInDrag_.count(id) || model_.state(id) == model::State::Changed ? model::State::Changed
+                                                                                                       : model::State::Free;
+    const Rgb color = curveColor(id, state);
+    style.color.setValue(color[0], color[1], color[2]);
     if (std::find(marked_.begin(), marked_.end(), id) != marked_.end()) {
         style.color = kMarked;
         style.lineWidth = kHighlightWidth;
@@ -385,8 +389,37 @@ void ModelView::entityRemoved(const model::Entity& e)
     marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
 
+void ModelView::recolorCurve(model::EntityId id)
+{
+    // The curve's own SoBaseColor (curveRoot in scene/geometry_nodes.cpp): a field write, not a
+    // re-tessellation, so that a drag's first event stays cheap however many curves it moves.
+    const auto it = nodes_.find(id);
+    if (it == nodes_.end()) return;
+    for (int k = 0; k < it->second->getNumChildren(); ++k) {
+        if (!it->second->getChild(k)->isOfType(SoBaseColor::getClassTypeId())) continue;
+        auto* base = static_cast<SoBaseColor*>(it->second->getChild(k));
+        const SbColor color = curveStyle(id).color;
+        if (base->rgb.getNum() != 1 || base->rgb[0] != color) base->rgb = color;  // no needless notification
+        return;
+    }
+}
+
+void ModelView::settleChangedCurves()
+{
+    const std::set<model::EntityId> changed = std::move(changedInDrag_);
+    changedInDrag_.clear();
+    for (model::EntityId id : changed) recolorCurve(id);
+}
+
 void ModelView::entityUpdated(const model::Entity& e)
 {
+    // Curves a drag moves show it (seed 000 §3.2's changed state) until the drag ends; a fixed or
+    // a changed curve's state may have changed too (setFixed).
+    if (model_.dragged() == 0 && !changedInDrag_.empty()) settleChangedCurves();
+    if (e.kind == model::EntityKind::Curve) {
+        if (model_.dragged() != 0 && !e.fixed) changedInDrag_.insert(e.id);
+        recolorCurve(e.id);
+    }
     // A curve moved with its plane changes only its world form; its node is in plane-local
     // coordinates and stays as it is. A new shape (over-sketch) is re-tessellated. A plane's
     // update is one transform write.
@@ -497,6 +530,7 @@ SoSeparator* ModelView::makeMeshEntityNode(const model::Entity& e)
 
 int ModelView::refineSurfaces()
 {
+    settleChangedCurves();  // the drag ended
     int rebuilt = 0;
     for (auto& [id, grid] : grids_) {
         if (grid.adaptive) continue;

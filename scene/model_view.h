@@ -13,6 +13,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 class SoCoordinate3;
@@ -47,7 +48,8 @@ public:
     bool controlPolygonsVisible() const { return polygonsVisible_; }
 
     /// Re-tessellates adaptively every surface whose node was last built on a reused grid (see
-    /// entityUpdated); call when a drag ends. Returns how many were rebuilt.
+    /// entityUpdated), and draws the curves the drag moved in their resting state's colour again;
+    /// call when a drag ends. Returns how many surfaces were rebuilt.
     int refineSurfaces();
     /// Surface nodes built on a reused parameter grid since construction.
     int gridReuses() const { return gridReuses_; }
@@ -102,7 +104,12 @@ private:
         std::shared_ptr<solvers::GridBasis> basis;  ///< made at the first in-place update
         std::vector<Eigen::Vector3d> vertices, normals;  ///< scratch of the in-place updates
     };
+    /// A curve's colour and width: its state's colour (scene/state_colors.h), marked, highlighted.
     CurveStyle curveStyle(model::EntityId id) const;
+    /// Rewrites curve `id`'s colour field for its current style.
+    void recolorCurve(model::EntityId id);
+    /// The curves a finished drag moved, drawn in their resting state's colour again.
+    void settleChangedCurves();
 
     model::Model& model_;
     SoSeparator* root_ = nullptr;
@@ -122,6 +129,8 @@ private:
     std::map<model::EntityId, int> builtShape_;  ///< a curve's or surface's shapeVersion its node was built from
     model::EntityId highlighted_ = 0;
     std::vector<model::EntityId> marked_;
+    /// Curves the drag in progress moved (drawn changed until it ends).
+    std::set<model::EntityId> changedInDrag_;
     bool nurbsNodes_ = false;
     bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;

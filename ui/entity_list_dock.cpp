@@ -1,8 +1,46 @@
 #include "ui/entity_list_dock.h"
 
+#include "scene/state_colors.h"
+
 #include <QListWidget>
+#include <QPixmap>
 
 namespace sculptline::ui {
+namespace {
+
+/// Side of a row's colour swatch, pixels.
+constexpr int kSwatchSize = 12;
+
+QColor toQColor(const scene::Rgb& c) { return QColor::fromRgbF(c[0], c[1], c[2]); }
+
+/// The swatch of entity `e` in the viewport's colours (scene/state_colors.h): a curve's colour as
+/// drawn; for other entities the fixed or changed colour, none when free (the viewport colours
+/// only curves by state).
+QIcon swatch(const model::Model& model, const model::Entity& e)
+{
+    const model::State state = scene::shownState(model, e.id);
+    if (e.kind != model::EntityKind::Curve && state == model::State::Free) return {};
+    QPixmap pixmap(kSwatchSize, kSwatchSize);
+    pixmap.fill(toQColor(scene::curveColor(e.id, state)));
+    return QIcon(pixmap);
+}
+
+}  // namespace
+
+QColor EntityListDock::swatchColor(int row) const
+{
+    const QListWidgetItem* item = list_->item(row);
+    if (!item || item->icon().isNull()) return {};
+    return item->icon().pixmap(kSwatchSize, kSwatchSize).toImage().pixelColor(kSwatchSize / 2, kSwatchSize / 2);
+}
+
+int EntityListDock::rowOf(const QString& textStart) const
+{
+    for (int row = 0; row < list_->count(); ++row) {
+        if (list_->item(row)->text().trimmed().startsWith(textStart)) return row;
+    }
+    return -1;
+}
 
 EntityListDock::EntityListDock(QWidget* parent) : QDockWidget(tr("Entities"), parent)
 {
@@ -19,8 +57,12 @@ void EntityListDock::refresh(const model::Model& model, model::EntityId selectio
 {
     updating_ = true;
     list_->clear();
-    auto add = [this](const model::Entity& e, const QString& text) {
-        auto* item = new QListWidgetItem(e.fixed ? text + tr(" - fixed") : text, list_);
+    auto add = [this, &model](const model::Entity& e, const QString& text) {
+        const model::State state = scene::shownState(model, e.id);
+        auto* item = new QListWidgetItem(swatch(model, e), state == model::State::Fixed     ? text + tr(" - fixed")
+                                                         : state == model::State::Changed ? text + tr(" - changed")
+                                                                                          : text,
+                                         list_);
         item->setData(Qt::UserRole, e.id);
     };
     // Planes with their curves under them, then curves on no plane, surfaces and constraints.
@@ -49,9 +91,20 @@ void EntityListDock::refresh(const model::Model& model, model::EntityId selectio
         if (model::derivedConstraint(c.type) || c.type == model::ConstraintType::FixedPoints) continue;
         QStringList targets;
         for (model::EntityId t : c.targets) targets << QString::number(t);
-        auto* item = new QListWidgetItem(tr("Constraint c%1 (%2 on %3)").arg(id).arg(QString::fromLatin1(model::constraintTypeName(c.type)))
-                                             .arg(targets.join(QStringLiteral(", "))),
-                                         list_);
+        QListWidgetItem* item = nullptr;
+        const model::Entity* curve = c.type == model::ConstraintType::CurveOnSurface ? model.find(c.targets.front()) : nullptr;
+        if (curve && c.targets.size() == 2) {
+            // Held exactly when its curve is fixed (the incidence solve's hard rows), else softly:
+            // the swatch is the curve's.
+            item = new QListWidgetItem(swatch(model, *curve),
+                                       tr("Constraint c%1 (curve %2 on surface %3, %4)").arg(id).arg(c.targets[0]).arg(c.targets[1])
+                                           .arg(curve->fixed ? tr("exact") : tr("soft")),
+                                       list_);
+        } else {
+            item = new QListWidgetItem(tr("Constraint c%1 (%2 on %3)").arg(id).arg(QString::fromLatin1(model::constraintTypeName(c.type)))
+                                           .arg(targets.join(QStringLiteral(", "))),
+                                       list_);
+        }
         item->setData(Qt::UserRole, c.targets.front());
     }
     updating_ = false;

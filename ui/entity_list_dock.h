@@ -1,8 +1,11 @@
 #pragma once
-// The scene's entities in a list (planes, their curves indented under them, surfaces); picking a
-// row selects the entity.
+// The scene's entities in a list (planes, their curves indented under them, surfaces, the designer's
+// constraints); picking a row selects the entity. Each row's swatch is its state's colour as the
+// viewport draws it (scene/state_colors.h): a designer sees which curves an incidence solve holds
+// exactly (fixed) and which softly (free).
 #include "model/model.h"
 
+#include <QColor>
 #include <QDockWidget>
 
 class QListWidget;
@@ -16,6 +19,10 @@ public:
     explicit EntityListDock(QWidget* parent = nullptr);
     void refresh(const model::Model& model, model::EntityId selection);
     void setSelection(model::EntityId id);
+    /// The colour of row `row`'s swatch; invalid when it has none.
+    QColor swatchColor(int row) const;
+    /// The first row whose text (without its indent) starts with `textStart`, or -1.
+    int rowOf(const QString& textStart) const;
 
 Q_SIGNALS:
     void entityPicked(model::EntityId id);

@@ -7,6 +7,7 @@
 #include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
+#include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
@@ -53,6 +54,9 @@ constexpr int kMinViewportHeight = 360;
 constexpr double kDefaultScreenShare = 0.85;
 /// How far from a curve (pixels) a click in a surface mode still picks it: a fingertip's slack.
 constexpr double kCurvePickRadius = 12.0;
+/// Model units between a click's hits on a plane and on a curve drawn in it below which both are at
+/// the same depth (the curve lies in the plane; its line is picked within a few pixels of it).
+constexpr float kSameDepth = 0.5f;
 /// Samples per curve when looking for the nearest one on screen.
 constexpr int kCurvePickSamples = 128;
 
@@ -202,6 +206,11 @@ void MainWindow::createActions()
     modeAction("mode.select", tr("Select"), tr("S&elect"), QStringLiteral("E"), Mode::Select);
     // Thesis ch. 6: strokes near the selected surface become target curves it is deformed onto.
     modeAction("mode.sculpt", tr("Sculpt"), tr("Scul&pt the selected surface with target curves"), QStringLiteral("Y"), Mode::Sculpt);
+    // Seed 000 §3.1: with a surface selected, Sculpting (strokes become curves it passes through);
+    // without, Interpolation (picked curves get a surface through them).
+    modeAction("mode.incidence", tr("Curves on surface"),
+               tr("Curves on surface (&incidence): draw onto the selected surface, or pick curves for a surface through them"),
+               QStringLiteral("I"), Mode::Incidence);
     modeMenu->addSeparator();
     // The surface modes (thesis §5.1.3, §5.2; seed 000): pick the curves, the surface follows them.
     auto surfaceAction = [&](const char* name, const QString& label, const QString& text, const QString& key, model::Construction mode) {
@@ -223,9 +232,17 @@ void MainWindow::createActions()
                        QKeySequence(QStringLiteral("T")), [this](bool on) { document_->setFillTangent(on); });
     g1->setCheckable(true);
     g1->setChecked(document_->fillTangent());
-    make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return),
-         [this]() { document_->buildSurface(); });
-    make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() { document_->cancelSurface(); });
+    make(modeMenu, "surface.build", tr("Build the surface from the picked curves"), QKeySequence(Qt::Key_Return), [this]() {
+        if (mode_ != Mode::Incidence) {
+            document_->buildSurface();
+        } else if (document_->buildIncidenceSurface()) {
+            updateStatus();  // Interpolation made the surface: Sculpting on it from now on
+        }
+    });
+    make(modeMenu, "surface.cancel", tr("Forget the picked curves"), QKeySequence(Qt::Key_Escape), [this]() {
+        document_->cancelSurface();
+        document_->cancelIncidenceCurves();
+    });
     // Sculpt mode's tools (thesis ch. 6): what a stroke or a click on the surface does.
     QMenu* sculptMenu = menuBar()->addMenu(tr("Scul&pt"));
     auto* sculptTools = new QActionGroup(this);
@@ -284,6 +301,20 @@ void MainWindow::createDocks()
     recognition_ = new RecognitionDock(*document_, action(QStringLiteral("stroke.useRecognized")),
                                        action(QStringLiteral("stroke.useFreeform")), this);
     addDockWidget(Qt::LeftDockWidgetArea, recognition_);
+    // The L-curve of the selected incidence surface: a tab behind the inspector (the right column has
+    // no room for a plot beside it), brought forward when such a surface is selected; View > L-curve.
+    auto* lcurve = new LCurveDock(*document_, this);
+    addDockWidget(Qt::RightDockWidgetArea, lcurve);
+    tabifyDockWidget(inspector_, lcurve);
+    inspector_->raise();
+    lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
+    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0)))
+        viewMenu->addAction(lcurve->toggleViewAction());
+    connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);
+    connect(document_, &SketchDocument::selectionChanged, lcurve, [lcurve]() {
+        lcurve->refresh();
+        if (lcurve->surface() != 0) lcurve->raise();
+    });
     connect(inspector_, &InspectorDock::fixedPointsEdited, this,
             [this](model::EntityId curve, std::vector<int> fixed) { document_->setFixedPoints(curve, std::move(fixed)); });
     connect(inspector_, &InspectorDock::stiffnessEdited, this,
@@ -303,13 +334,23 @@ void MainWindow::setMode(Mode mode, std::optional<model::Construction> surfaceMo
     // Sketching and selecting need the mouse in the scene graph (interaction mode); viewing gives it
     // to the examiner's camera.
     if (viewer_) viewer_->setViewing(mode == Mode::View ? TRUE : FALSE);
-    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift || mode == Mode::Sculpt);
+    document_->strokeInput().setEnabled(mode == Mode::Sketch || mode == Mode::Oversketch || mode == Mode::Lift || mode == Mode::Sculpt ||
+                                        mode == Mode::Incidence);
     // Sculpt works on the surface selected when it starts (a later stroke deforms the last sculpt).
     document_->setSculptBase(mode == Mode::Sculpt ? document_->selection() : 0);
+    // So do the incidence modes: a selected surface is drawn onto; a selected plane is where the
+    // next curve goes onto the surface drawn onto before; else curves are picked (Interpolation).
+    const model::Entity* selected = document_->model().find(document_->selection());
+    if (mode == Mode::Incidence) {
+        if (selected && selected->kind == model::EntityKind::Surface) document_->setIncidenceBase(selected->id);
+        else if (!selected || selected->kind != model::EntityKind::Plane) document_->setIncidenceBase(0);
+    }
+    document_->cancelIncidenceCurves();
     document_->curvePull().setEnabled(mode == Mode::Pull || surfaceMode_ == model::Construction::Extrude);
     document_->setStrokeMode(mode == Mode::Oversketch ? SketchDocument::StrokeMode::Oversketch
                              : mode == Mode::Lift     ? SketchDocument::StrokeMode::Lift
                              : mode == Mode::Sculpt   ? SketchDocument::StrokeMode::Sculpt
+                             : mode == Mode::Incidence ? SketchDocument::StrokeMode::Incidence
                                                       : SketchDocument::StrokeMode::Sketch);
     for (QAction* a : modes_->actions()) {
         if (a->objectName() == modeActionName()) a->setChecked(true);
@@ -364,6 +405,14 @@ void MainWindow::updateStatus()
         break;
     }
     case Mode::Surface: text = surfaceGuidance(); break;
+    case Mode::Incidence:
+        text = document_->incidenceBase() != 0
+                   ? tr("Curves on surface %1: draw a curve on the active plane; the surface is solved to pass through it. Drag the plane or "
+                        "over-sketch the curve (O) and the surface follows; Ctrl+Shift+F fixes a curve (met exactly). The L-curve dock picks k.")
+                         .arg(document_->incidenceBase())
+                   : tr("Interpolation: click the curves a surface should pass through, then Enter (select a surface first and press I to draw onto it).");
+        if (!document_->surfaceMessage().isEmpty()) text = document_->surfaceMessage() + QStringLiteral("  ") + text;
+        break;
     }
     statusBar()->showMessage(text);
 }
@@ -378,6 +427,7 @@ QString MainWindow::modeActionName() const
     case Mode::Pull: return QStringLiteral("mode.pull");
     case Mode::Select: return QStringLiteral("mode.select");
     case Mode::Sculpt: return QStringLiteral("mode.sculpt");
+    case Mode::Incidence: return QStringLiteral("mode.incidence");
     case Mode::Surface: break;
     }
     // "boundary-rotation" -> "mode.boundaryRotation"
@@ -473,6 +523,11 @@ SbBool MainWindow::viewerEvent(void* self, QEvent* event)
         if (const model::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickSurfaceInput(curve);
         return TRUE;
     }
+    if (window->mode_ == Mode::Incidence && window->document_->incidenceBase() == 0) {
+        // Interpolation: a click picks the nearest curve for the surface through them.
+        if (const model::EntityId curve = window->curveNear(mouse->pos())) window->document_->pickIncidenceCurve(curve);
+        return TRUE;
+    }
     if (window->mode_ != Mode::Select) return FALSE;
     // Let the press go on to the scene graph as well, so a press on a dragger selects and drags.
     window->pickAt(mouse->pos());
@@ -487,12 +542,27 @@ bool MainWindow::pickAt(const QPoint& position)
     // Qt counts pixels from the top, Coin from the bottom.
     pick.setPoint(SbVec2s(static_cast<short>(position.x()), static_cast<short>(size[1] - 1 - position.y())));
     pick.setRadius(4);
+    pick.setPickAll(TRUE);
     pick.apply(viewer_->getSceneManager()->getSceneGraph());
     model::EntityId picked = 0;
-    if (const SoPickedPoint* point = pick.getPickedPoint()) {
-        // What a click selects: planes (through their draggers), curves and surfaces.
-        const auto entity = scene::entityAt(point->getPath(), {model::EntityKind::Curve, model::EntityKind::Plane, model::EntityKind::Surface});
-        if (entity) picked = entity->id;
+    // What a click selects: planes (through their draggers), curves and surfaces, the nearest; but a
+    // curve drawn on a plane lies in it, so where the plane and one of its curves are hit at the same
+    // depth the curve is meant.
+    const SoPickedPointList& points = pick.getPickedPointList();
+    const std::vector<model::EntityKind> kinds{model::EntityKind::Curve, model::EntityKind::Plane, model::EntityKind::Surface};
+    if (points.getLength() > 0) {
+        const auto first = scene::entityAt(points[0]->getPath(), kinds);
+        if (first) picked = first->id;
+        const model::Entity* e = document_->model().find(picked);
+        for (int k = 1; e && e->kind == model::EntityKind::Plane && k < points.getLength(); ++k) {
+            if ((points[k]->getPoint() - points[0]->getPoint()).length() > kSameDepth) break;
+            const auto next = scene::entityAt(points[k]->getPath(), kinds);
+            const model::Entity* curve = next ? document_->model().find(next->id) : nullptr;
+            if (curve && curve->kind == model::EntityKind::Curve) {
+                picked = curve->id;
+                break;
+            }
+        }
     }
     document_->select(picked);
     return picked != 0;

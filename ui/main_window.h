@@ -30,7 +30,7 @@ class SketchDocument;
 class UndoHistory;
 
 /// Surface: one of the surface modes (MainWindow::surfaceMode() says which).
-enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface, Sculpt };
+enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface, Sculpt, Incidence };
 
 /// @note SoQt::init() must have been called before construction.
 class MainWindow : public QMainWindow {

@@ -94,7 +94,9 @@ public:
     /// What a finished stroke does: becomes a new curve, or over-sketches the curve it was drawn
     /// over (solvers/editing, local-c2 by default).
     /// Lift: a stroke between two curve points becomes a minimum-curvature space curve (seed 004).
-    enum class StrokeMode { Sketch, Oversketch, Lift, Sculpt };
+    /// Incidence (seed 000 §3.1, Sculpting): a stroke becomes a curve on the active plane that the
+    /// incidence base surface is solved to pass through.
+    enum class StrokeMode { Sketch, Oversketch, Lift, Sculpt, Incidence };
     /// Sculpt: the surface the next target curve deforms (0 = none, or not a surface).
     void setSculptBase(model::EntityId surface);
     /// Sets a sculpt's stiffness λ (undoable); the surface is solved again.
@@ -140,6 +142,32 @@ public:
     void setSculptHoldNormals(model::EntityId sculpt, bool hold);
     /// A sculpt's distance constraint `index` set to `distance` (model units); undoable.
     void setSculptDistance(model::EntityId sculpt, int index, double distance);
+    /// Incidence mode (seed 000 §3.1). Sculpting: with a surface as the base, each stroke becomes a
+    /// curve the surface is solved to pass through (curve-on-surface); fix a curve (Ctrl+Shift+F) to
+    /// hold it exactly, over-sketch it or drag its plane and the surface follows. 0 = no base:
+    /// Interpolation, where picked curves get a surface through them (buildIncidenceSurface).
+    void setIncidenceBase(model::EntityId surface) { incidenceBase_ = surface; }
+    model::EntityId incidenceBase() const { return model_.find(incidenceBase_) ? incidenceBase_ : 0; }
+    /// Interpolation: adds `curve` to the picked curves, or takes it back when picked again.
+    void pickIncidenceCurve(model::EntityId curve);
+    const std::vector<model::EntityId>& incidenceCurves() const { return incidenceCurves_; }
+    /// Interpolation: a surface through the picked curves (surfaceThroughCurves); the picks are
+    /// cleared. False with surfaceMessage() saying why.
+    bool buildIncidenceSurface();
+    void cancelIncidenceCurves();
+    /// Interpolation (seed 000 §3.1): a new free-form surface spanning `curves` (a flat bicubic sheet
+    /// in their least-squares plane, solvers/incidence/spanning_sheet.h) that the model's incidence
+    /// step bends through them: each curve gets a curve-on-surface constraint with its pre-image by
+    /// projection. Fixed curves are met exactly, the others by the regularized solve. One undo step;
+    /// the surface becomes the selection and the incidence base. Returns it, or 0 with
+    /// surfaceMessage() saying why.
+    model::EntityId surfaceThroughCurves(const std::vector<model::EntityId>& curves);
+    /// Sculpting: `curve` put on `surface` (its pre-image by projection onto the surface as it is).
+    /// A surface built from curves is first made free-form (its recipe dropped, the input curves
+    /// that lie on it put on it the same way): a free-form surface's curves are what shape it. One
+    /// undo step with `text` (the commands pushed since the caller's macro began, when it is in one).
+    /// Returns the surface the curve is on (a freed surface has a new id), or 0 with `reason` set.
+    model::EntityId putOnSurface(model::EntityId curve, model::EntityId surface, QString* reason);
     /// An incidence surface's truncation k (0 = the L-curve's corner); undoable. Ignored for a surface
     /// with a recipe, a negative k or the k it has.
     void setIncidenceK(model::EntityId surface, int k);
@@ -286,6 +314,8 @@ private:
     int candidateInUse_ = -1;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     model::EntityId sculptBase_ = 0;
+    model::EntityId incidenceBase_ = 0;
+    std::vector<model::EntityId> incidenceCurves_;  ///< Interpolation's picks
     SculptTool sculptTool_ = SculptTool::Target;
     /// A bound drawn on a surface not sculpted yet, for its first sculpt.
     std::vector<Eigen::Vector2d> pendingBound_;

@@ -183,6 +183,25 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
                                        : tr("; surface %1 sculpted onto it (deviation %2 mm at the key points)")
                                              .arg(selection_)
                                              .arg(made ? made->maxDeviation : 0.0, 0, 'g', 3);
+        } else if (strokeMode_ == StrokeMode::Incidence && model_.find(incidenceBase_)) {
+            // Seed 000 §3.1, Sculpting: the curve is drawn as on any plane, and the surface is
+            // solved to pass through it from now on (its plane's drag and over-sketches included).
+            const model::EntityId base = incidenceBase_;
+            undo_.beginMacro(tr("Draw a curve onto surface %1").arg(base));
+            undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
+            const model::EntityId drawnCurve = selection_;
+            QString why;
+            const model::EntityId on = putOnSurface(drawnCurve, base, &why);
+            undo_.endMacro();
+            select(drawnCurve);
+            const model::Entity* s = model_.find(on);
+            lastStroke_.message += !s ? tr("; not put on surface %1: %2").arg(base).arg(why)
+                                   : s->failed() ? tr("; surface %1 not solved through it: %2").arg(on).arg(QString::fromStdString(s->buildError))
+                                                 : tr("; surface %1%2 %3, %4 mm from its curves")
+                                                       .arg(on)
+                                                       .arg(on != base ? tr(" (surface %1 made free-form)").arg(base) : QString())
+                                                       .arg(QString::fromStdString(s->solveMessage))
+                                                       .arg(s->maxDeviation, 0, 'g', 3);
         } else {
             undo_.push(new AddEntitiesCommand(*this, std::move(added), text));
         }

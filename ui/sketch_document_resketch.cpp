@@ -270,7 +270,7 @@ void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
                                           .arg(rulingName(r.rulings));
             }
         }
-    } catch (const std::invalid_argument& error) {  // GeometryError, and the model's refusal
+    } catch (const std::invalid_argument& error) {  // GeometryError
         lastStroke_.message = tr("Re-sketch: %1").arg(QString::fromStdString(error.what()));
     }
     Q_EMIT strokeFinished();

@@ -5,6 +5,7 @@
 #include "model/model.h"
 
 #include <QUndoCommand>
+#include <optional>
 
 #include <memory>
 #include <string>

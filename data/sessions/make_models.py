@@ -728,8 +728,56 @@ def jug_mouth():
     s.write("jug_mouth_undo.json")
 
 
+
+def incidence_dome():
+    """Seed 000 Figs. 2 and 8 in the window (issue 14 §3): the dome. Rim A, a circle of radius 50 on
+    the ground (plane 1), is fixed (Ctrl+Shift+F); Interpolation (I) through A and the arch B (plane
+    2, y = 0, 30 mm high) makes a surface that the incidence solve bends through both; then, drawing
+    onto it, the arch C is added on plane 3 (x = 0) across B; last, B's plane is dragged 15 mm along
+    -Y by its jack and the dome follows live (the --stats of issue 14 §4)."""
+    # Plane 1: the ground, its jack at (-80, -80, 0) well off the rim (local = world + (80, 80)), so
+    # that no stroke or click near the rim lands on it. Plane 2:
+    # normal -Y, local x = X, local y = Z - 60, its jack at (0, 0, 60) over the dome. Plane 3:
+    # normal +X, local x = Y, local y = Z - 95, its jack at (0, 0, 95).
+    planes = [plane(1, [-80, -80, 0], [0, 0, 1], 320, [1, 0, 0]),
+              plane(2, [0, 0, 60], [0, -1, 0], 160, [1, 0, 0]),
+              plane(3, [0, 0, 95], [1, 0, 0], 160, [0, 1, 0])]
+    # A: a closed uniform cubic B-spline with 12 control points on the circle of radius 50 (the
+    # kernel's closed curves: "closed", the first three points repeated, unwrapped uniform knots).
+    # At each control point's angle the curve passes at radius 50 (4 + 2 cos 30°) / 6 = 47.77.
+    n = 12
+    ring = [[50 * math.cos(2 * math.pi * k / n) + 80, 50 * math.sin(2 * math.pi * k / n) + 80, 0] for k in range(n)]
+    pts = ring + ring[:3]
+    rim = {"id": 4, "plane": 1, "degree": 3, "closed": True, "knots": list(range(len(pts) + 4)),
+           "points": [r(p) for p in pts]}
+    on_rim = 50 * (4 + 2 * math.cos(math.pi / 6)) / 6
+    arch = dict(cubic([[-50, -60], [-20, -20], [20, -20], [50, -60]]), id=5, plane=2)
+    write_document("incidence_dome.json", planes, [rim, arch])
+    s = Session()
+    s.action("mode.select")
+    s.click(r([on_rim * math.cos(-math.pi / 6), on_rim * math.sin(-math.pi / 6), 0]))  # the rim, clear of plane 1's jack: select it
+    s.key("Ctrl+Shift+F")   # fix it: the surface meets it exactly
+    s.action("mode.incidence")
+    s.click(r([on_rim * math.cos(-math.pi / 3), on_rim * math.sin(-math.pi / 3), 0]))  # A
+    s.click([0, 0, 30])      # B's crest
+    s.key("Return")
+    s.action("mode.select")
+    s.click([0, 0, 95])      # plane 3's jack: the next curve goes there
+    s.action("mode.incidence")
+    # C starts and ends a few millimetres inside the rim: a stroke started on a curve would go onto
+    # the plane along that curve's tangent (seed 000 §3.1, case 1), not onto plane 3.
+    s.stroke([r([0, -44 + 88 * i / 40, 3 + 21 * math.sin(math.pi * i / 40)]) for i in range(41)])
+    s.write("incidence_dome.json")
+    s.action("mode.select")
+    start, end = [0, 0, 60], [0, -15, 60]
+    s.stroke([r([start[k] + (end[k] - start[k]) * i / 30 for k in range(3)]) for i in range(31)], dt=12)
+    s.write("incidence_dome_drag.json")
+
+
+
 if __name__ == "__main__":
     jug_mouth()
+    incidence_dome()
     sculpt_oversketch()
     sculpt_handles()
     sculpt_bump()

@@ -18,26 +18,50 @@ namespace sculptline::solvers::incidence {
 namespace reg = regularization;
 namespace {
 
-// A projected domain curve: a cubic with as many control points as its target (at least 4),
-// fitted by least squares to this many feet per control point.
+// A projected domain curve is fitted by least squares to this many feet per control point of its
+// target (of at least 4).
 constexpr int kFeetPerControlPoint = 8;
 // Residuals are measured at this many parameters per curve (dense against its spans).
 constexpr int kResidualSamples = 257;
-
-KnotVector clampedUniform(int count, int degree, double start, double end)
-{
-    KnotVector k(static_cast<size_t>(degree + 1), start);
-    const int inner = count - degree - 1;
-    for (int i = 1; i <= inner; ++i) k.push_back(start + (end - start) * i / (inner + 1));
-    k.insert(k.end(), static_cast<size_t>(degree + 1), end);
-    return k;
-}
 
 Surface3d withPoints(const Surface3d& s, const ControlMatrix& rows)
 {
     std::vector<Eigen::Vector3d> points(static_cast<size_t>(rows.rows()));
     for (Eigen::Index i = 0; i < rows.rows(); ++i) points[static_cast<size_t>(i)] = rows.row(i).transpose();
     return Surface3d(s.degreeU(), s.degreeV(), s.knotsU(), s.knotsV(), s.countU(), s.countV(), std::move(points));
+}
+
+// The fixed curves' rows are met as closely as they can be, but their data are rarely consistent to
+// round-off (a projected domain curve is a least-squares fit), and directions the rows hardly see (a
+// control point whose basis function barely reaches the curve) would turn that inconsistency into
+// huge control points. The discrepancy principle: keep the fewest singular directions whose dropped
+// part of the change d − C x0 adds at most this fraction of the least-squares residual to it (in
+// norm: ρ_k² ≤ ρ²(1 + s²), +0.5 % for s = 0.1), or kHardFloor when the rows are consistent.
+constexpr double kHardSlack = 0.1;
+// A soft direction is solved for when its singular value exceeds this fraction of the soft rows'
+// size: 1e-8 bounds TSVD's amplification of the right-hand side at 1e8 of it, where round-off of
+// the null-space basis (1e-16 relative) still stays below 1e-8 of the model.
+constexpr double kSoftVisibility = 1e-8;
+constexpr const char* kNoFreedom =
+    "the fixed curves leave the surface no freedom where the other curves are (a surface with more control points would have some)";
+// Absolute floor of that dropped part (model units): far below what a display or a printer shows, far
+// above round-off for model sizes up to metres.
+constexpr double kHardFloor = 1e-9;
+
+int hardRank(const Eigen::BDCSVD<Eigen::MatrixXd>& svd, const Eigen::MatrixXd& change)
+{
+    const int rank = static_cast<int>(svd.rank());
+    const Eigen::MatrixXd beta = svd.matrixU().leftCols(rank).transpose() * change;
+    const double total = change.squaredNorm();
+    const double seen = beta.squaredNorm();
+    const double floor2 = std::max(0.0, total - seen);  // ρ² of the full-rank least-squares solution
+    const double allowed = kHardSlack * kHardSlack * floor2 + kHardFloor * kHardFloor;
+    double dropped = seen;
+    for (int k = 0; k < rank; ++k) {
+        if (dropped <= allowed) return k;
+        dropped -= beta.row(k).squaredNorm();
+    }
+    return rank;
 }
 
 double largestGap(const Surface3d& s, const Curve2d& g, const Curve3d& h)
@@ -55,21 +79,26 @@ double largestGap(const Surface3d& s, const Curve2d& g, const Curve3d& h)
 
 Curve2d projectedDomain(const Surface3d& surface, const Curve3d& target)
 {
+    // G takes the target's own degree and knots (a closed target's clamped form): where the target
+    // lies on the surface and the surface is an affine map of its domain (a flat sheet), G is then
+    // its exact pre-image, and a fixed curve's rows are consistent to round-off.
+    const Curve3d open = target.isClosed() ? target.clamped() : target;
+    const int degree = open.degree();
+    const KnotVector& knots = open.knots();
+    const int count = open.pointCount();
     const SurfaceProjector projector(surface);
-    const int count = std::max(4, target.pointCount());
-    const int samples = kFeetPerControlPoint * count;
-    const double t0 = target.domainStart(), t1 = target.domainEnd();
-    const KnotVector knots = clampedUniform(count, 3, t0, t1);
+    const int samples = kFeetPerControlPoint * std::max(4, count);
+    const double t0 = open.domainStart(), t1 = open.domainEnd();
     Eigen::MatrixXd basis = Eigen::MatrixXd::Zero(samples, count);
     Eigen::MatrixXd feet(samples, 2);
+    std::vector<double> n(static_cast<size_t>(degree + 1));
     for (int s = 0; s < samples; ++s) {
         const double t = t0 + (t1 - t0) * s / (samples - 1);
-        const SurfaceProjection f = projector.project(target.evaluate(t));
+        const SurfaceProjection f = projector.project(open.evaluate(t));
         feet.row(s) << f.u, f.v;
-        const int span = findSpan(3, knots, t);
-        double n[4];
-        basisFunctions(span, t, 3, knots, n);
-        for (int a = 0; a <= 3; ++a) basis(s, span - 3 + a) = n[a];
+        const int span = findSpan(degree, knots, t);
+        basisFunctions(span, t, degree, knots, n.data());
+        for (int a = 0; a <= degree; ++a) basis(s, span - degree + a) = n[static_cast<size_t>(a)];
     }
     const Eigen::MatrixXd fitted = basis.colPivHouseholderQr().solve(feet);
     // The control polygon inside the domain keeps the curve inside (convex hull).
@@ -78,7 +107,7 @@ Curve2d projectedDomain(const Surface3d& surface, const Curve3d& target)
         points.emplace_back(std::clamp(fitted(i, 0), surface.domainStart(Direction::U), surface.domainEnd(Direction::U)),
                             std::clamp(fitted(i, 1), surface.domainStart(Direction::V), surface.domainEnd(Direction::V)));
     }
-    return Curve2d(3, knots, points);
+    return Curve2d(degree, knots, points);
 }
 
 struct IncidenceSolver::State {
@@ -194,12 +223,15 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
         // LAPACK's and numpy's rank cut-off: σ > max(m, n) ε σ1.
         svd.setThreshold(std::max(c.rows(), c.cols()) * std::numeric_limits<double>::epsilon());
         st->cSparse = c.sparseView();
-        const int r = static_cast<int>(svd.rank());
-        st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
-                    svd.matrixU().leftCols(r).transpose();
-        st->basisN = svd.matrixV().rightCols(n - r);
         Eigen::MatrixXd d(static_cast<Eigen::Index>(st->hard.size()), 3);
         for (size_t i = 0; i < st->hard.size(); ++i) d.row(static_cast<Eigen::Index>(i)) = b.row(st->hard[i]);
+        // N: every direction the rows see is kept from the soft solve (their numerical rank); C⁺:
+        // only the directions the discrepancy principle keeps (the rest stay at the prior).
+        const int rank = static_cast<int>(svd.rank());
+        const int r = hardRank(svd, d - st->cSparse * st->x0);
+        st->cPlus = svd.matrixV().leftCols(r) * svd.singularValues().head(r).cwiseInverse().asDiagonal() *
+                    svd.matrixU().leftCols(r).transpose();
+        st->basisN = svd.matrixV().rightCols(n - rank);
         xp = st->x0 + st->cPlus * (d - st->cSparse * st->x0);
     }
     st->correction.resize(0, 0);
@@ -220,10 +252,21 @@ void IncidenceSolver::factor(const Surface3d& surface, const std::vector<Inciden
             // determined directions (seed 000 eqs. 3-4).
             const reg::ProjectedRhs rhs = reg::projectRhs(*st->svd, bRed);
             st->lcurve = reg::tsvdLCurve(*st->svd, rhs);
+            // Directions the soft rows see only at round-off of their own size (after the fixed
+            // curves took the rest: a fixed rim around a coarse net) are not solved for: TSVD would
+            // amplify nothing into huge control points.
+            const double scale = soft.norm();  // >= σ1 of the soft rows
+            int visible = 0;
+            while (visible < st->svd->rank() && st->svd->singularValues()(visible) > kSoftVisibility * scale) ++visible;
+            if (visible == 0) throw GeometryError(kNoFreedom);
+            if (visible < st->lcurve.rho.size()) {
+                st->lcurve.rho.conservativeResize(visible);
+                st->lcurve.eta.conservativeResize(visible);
+            }
             st->corner = reg::lcurveCorner(st->lcurve, reg::defaultCornerMethod(false)).k;
             st->k = options.k > 0 ? options.k : st->corner;
-            if (st->k < 1 || st->k > st->svd->rank())
-                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(st->svd->rank()));
+            if (st->k < 1 || st->k > visible)
+                throw std::invalid_argument("k: " + std::to_string(st->k) + " is outside 1.." + std::to_string(visible));
             const int nz = static_cast<int>(reduced.cols());
             if (options.method == IncidenceMethod::Mtsvd && st->k < nz) {
                 // MTSVD at TSVD's k (the seed's default): of the solutions that keep the k

@@ -71,8 +71,9 @@ private:
     std::unique_ptr<State> state_;
 };
 
-/// The domain curve of a 3D curve near `surface`: its pre-image by global projection, a cubic fitted
-/// by least squares over `target`'s parameter domain.
+/// The domain curve of a 3D curve near `surface`: its pre-image by global projection, fitted by
+/// least squares in `target`'s degree and knots (a closed target's clamped form), so that a curve on
+/// an affinely parametrized surface gets its exact pre-image.
 Curve2d projectedDomain(const Surface3d& surface, const Curve3d& target);
 
 /// Solves for the surface. @throws GeometryError (a curve outside the domain, a rational input, no

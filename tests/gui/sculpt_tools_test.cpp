@@ -22,7 +22,6 @@ namespace {
 /// Handles and distances are met by the solve to round-off.
 constexpr double kMet = 1e-6;
 
-std::string file(const std::string& name) { return guitest::replayFile(name); }
 model::Model readModel(const std::string& name) { return guitest::readReplayedModel(name); }
 
 const model::Entity* sculptOf(const model::Model& model)
