@@ -262,6 +262,11 @@ void MainWindow::createActions()
     sculptTool("sculpt.handle", tr("&Handles: a click on the surface drops a point to drag and turn"), QStringLiteral("Alt+H"), Tool::Handle);
     sculptTool("sculpt.block", tr("B&lock: a click blocks or frees the nearest control point"), QStringLiteral("Alt+K"), Tool::Block);
     sculptTool("sculpt.distance", tr("&Distance: two clicks hold two surface points apart"), QStringLiteral("Alt+D"), Tool::Distance);
+    // Seed 001 §5.2: a marking picks a parameter line of a free-form surface, a stroke over the strip redraws it.
+    sculptTool("sculpt.resketch", tr("&Re-sketch a parameter line: mark it, then draw its new shape over the strip"), QStringLiteral("Alt+R"),
+               Tool::Resketch);
+    make(sculptMenu, "sculpt.resketchRulings", tr("Re-sketch: turn the strip's rulings (normal, &across, view direction)"),
+         QKeySequence(QStringLiteral("Alt+A")), [this]() { document_->cycleResketchRulings(); });
     sculptMenu->addSeparator();
     QAction* holdTangent = make(sculptMenu, "sculpt.holdTangent", tr("Hold the surface's tangent &across the last target curve"),
                                 QKeySequence(QStringLiteral("Alt+G")), [this](bool on) {
@@ -395,6 +400,7 @@ void MainWindow::updateStatus()
         case SketchDocument::SculptTool::Distance:
             text = tr("Sculpt surface %1: click two surface points; their distance is held (set it in the inspector).").arg(s);
             break;
+        case SketchDocument::SculptTool::Resketch: text = document_->resketchGuidance(); break;
         }
         break;
     }

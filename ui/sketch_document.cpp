@@ -58,7 +58,10 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(planeDraggers_->root());
     // Sculpt mode's click tools: a click on the surface drops a handle, blocks a point, picks a
     // distance's end; those tools draw no strokes.
-    auto clickTool = [this]() { return strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound; };
+    auto clickTool = [this]() {
+        return strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound &&
+               sculptTool_ != SculptTool::Resketch;
+    };
     strokeInput_->setClickCallback(
         [this, clickTool](const manipulators::PointerClick& c) {
             if (clickTool()) sculptClick(c.surface, c.point);
@@ -83,6 +86,7 @@ SketchDocument::~SketchDocument()
 void SketchDocument::setCamera(std::function<SoCamera*()> camera)
 {
     strokeInput_->setCamera(camera);
+    setResketchCamera(camera);
     curvePull_->setCamera(std::move(camera));
 }
 
@@ -186,6 +190,7 @@ void SketchDocument::setSculptBase(model::EntityId surface)
     const model::Entity* e = model_.find(surface);
     sculptBase_ = e && e->kind == model::EntityKind::Surface && e->surface ? surface : 0;
     pendingBound_.clear();
+    clearResketch();
 }
 
 void SketchDocument::setSculptStiffness(model::EntityId surface, double stiffness)
@@ -234,6 +239,7 @@ void SketchDocument::entityUpdated(const model::Entity& e)
 {
     // The stroke feedback dots move with their plane (planeDraggers_ moves the plane's dragger).
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
+    if (e.kind == model::EntityKind::Surface) resketchSurfaceUpdated(e.id);
 }
 
 bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0; }

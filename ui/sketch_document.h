@@ -52,6 +52,8 @@ struct StrokeReport {
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
 };
 
+struct ResketchState;
+
 class SketchDocument : public QObject, public model::ModelObserver {
     Q_OBJECT
 
@@ -103,12 +105,20 @@ public:
     /// What Sculpt mode's input does (thesis ch. 6): a stroke becomes a target curve, or the bound
     /// of the sculpt (a closed stroke over the surface); a click drops a point handle, blocks or
     /// frees the nearest control point, or picks one end of a distance.
-    enum class SculptTool { Target, Bound, Handle, Block, Distance };
+    /// Resketch: a marking picks a parameter line, the next stroke re-sketches it (seed 001 §5.2;
+    /// ui/sketch_document_resketch.cpp).
+    enum class SculptTool { Target, Bound, Handle, Block, Distance, Resketch };
     void setSculptTool(SculptTool tool)
     {
         sculptTool_ = tool;
         pendingDistance_.reset();
+        clearResketch();
     }
+    /// Re-sketch: the auxiliary strip's rulings turn to the next of surface normal, across the line,
+    /// the view direction (the camera's, as it is now).
+    void cycleResketchRulings();
+    /// Re-sketch: what to do next (status bar).
+    QString resketchGuidance() const;
     SculptTool sculptTool() const { return sculptTool_; }
     /// Adds a target (the last of `added`: a curve from a stroke, or a handle's point) to the sculpt
     /// of the sculpt base, and `edit`s its recipe (a new target's id reads kPreviousEntity until it
@@ -244,6 +254,15 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    /// Re-sketch tool (ui/sketch_document_resketch.cpp): a marking or a line's new shape.
+    void resketchStroke(const manipulators::FinishedStroke& stroke);
+    std::optional<model::PlaneFrame> resketchPlane(const manipulators::StrokeHit& start);
+    void showResketchStrip();
+    /// The strip follows its surface (a re-sketch, an undo).
+    void resketchSurfaceUpdated(model::EntityId surface);
+    void clearResketch();
+    void setResketchCamera(std::function<SoCamera*()> camera);
+    ResketchState& resketchState();
     /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
     void recognize(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
@@ -303,6 +322,7 @@ private:
     /// Distance tool: the (u, v) of the first end picked, on the sculpt's domain.
     std::optional<Eigen::Vector2d> pendingDistance_;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
+    std::shared_ptr<ResketchState> resketch_;  ///< the Re-sketch tool's picked line and strip
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::optional<model::Construction> surfaceMode_;
     bool fillG1_ = true;

@@ -35,6 +35,7 @@ std::optional<model::PlaneFrame> SketchDocument::strokePlane(const manipulators:
     strokeOnPlane_ = 0;
     oversketchTarget_ = 0;
     // Sculpt mode's Handle, Block and Distance tools take clicks on the surface, no strokes.
+    if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Resketch) return resketchPlane(start);
     if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ != SculptTool::Target && sculptTool_ != SculptTool::Bound) return std::nullopt;
     if (strokeMode_ == StrokeMode::Lift) {
         // Drawn in the view plane through the starting curve point (seed 004 lifts an image-plane
@@ -79,6 +80,10 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
     }
     if (strokeMode_ == StrokeMode::Lift) {
         liftStroke(finished);
+        return;
+    }
+    if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Resketch) {
+        resketchStroke(finished);
         return;
     }
     manipulators::FinishedStroke stroke = finished;

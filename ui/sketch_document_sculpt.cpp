@@ -73,7 +73,7 @@ const model::Entity* SketchDocument::currentSculpt() const
 
 void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d& point)
 {
-    if (sculptTool_ == SculptTool::Target || sculptTool_ == SculptTool::Bound) return;  // stroke tools
+    if (sculptTool_ == SculptTool::Target || sculptTool_ == SculptTool::Bound || sculptTool_ == SculptTool::Resketch) return;  // stroke tools
     lastStroke_ = {};
     const model::Entity* base = model_.find(sculptBase_);
     const model::Entity* sculpt = currentSculpt();
@@ -174,7 +174,8 @@ void SketchDocument::sculptClick(model::EntityId surface, const Eigen::Vector3d&
         break;
     }
     case SculptTool::Target:
-    case SculptTool::Bound: break;
+    case SculptTool::Bound:
+    case SculptTool::Resketch: break;
     }
     notifyChanged();
     Q_EMIT strokeFinished();

@@ -216,6 +216,27 @@ void ReplaceCurveCommand::undo()
 
 namespace sculptline::ui {
 
+ReplaceSurfaceCommand::ReplaceSurfaceCommand(SketchDocument& doc, model::EntityId surface, solvers::Surface3d before,
+                                             solvers::Surface3d after, const QString& text)
+    : doc_(doc), surface_(surface), before_(std::move(before)), after_(std::move(after))
+{
+    setText(text);
+}
+
+void ReplaceSurfaceCommand::redo()
+{
+    doc_.model().setSurfaceShape(surface_, after_);
+    doc_.scheduler().flush();
+    doc_.select(surface_);
+}
+
+void ReplaceSurfaceCommand::undo()
+{
+    doc_.model().setSurfaceShape(surface_, before_);
+    doc_.scheduler().flush();
+    doc_.select(surface_);
+}
+
 SetFixedPointsCommand::SetFixedPointsCommand(SketchDocument& doc, model::EntityId curve, std::vector<int> before, std::vector<int> after)
     : doc_(doc), curve_(curve), before_(std::move(before)), after_(std::move(after))
 {

@@ -164,6 +164,20 @@ private:
     solvers::Curve3d before_, after_;
 };
 
+/// A free-form surface's new control net (a re-sketched parameter line); the first redo applies it.
+class ReplaceSurfaceCommand : public QUndoCommand {
+public:
+    ReplaceSurfaceCommand(SketchDocument& doc, model::EntityId surface, solvers::Surface3d before, solvers::Surface3d after,
+                          const QString& text);
+    void redo() override;
+    void undo() override;
+
+private:
+    SketchDocument& doc_;
+    model::EntityId surface_;
+    solvers::Surface3d before_, after_;
+};
+
 /// Which control points of a curve stay fixed when it is pulled (the inspector's check boxes).
 class SetFixedPointsCommand : public QUndoCommand {
 public:

@@ -655,6 +655,80 @@ def sculpt_oversketch():
     s.write("sculpt_oversketch.json")
 
 
+def bspline_basis(knots, degree, t):
+    """All basis functions N_i,degree(t) (Cox-de Boor); t at the domain's end belongs to the last span."""
+    n = len(knots) - degree - 1
+    if t >= knots[n]:
+        return [1.0 if i == n - 1 else 0.0 for i in range(n)]
+    N = [1.0 if knots[i] <= t < knots[i + 1] else 0.0 for i in range(len(knots) - 1)]
+    for p in range(1, degree + 1):
+        N = [(((t - knots[i]) / (knots[i + p] - knots[i]) * N[i]) if knots[i + p] > knots[i] else 0.0) +
+             (((knots[i + p + 1] - t) / (knots[i + p + 1] - knots[i + 1]) * N[i + 1]) if knots[i + p + 1] > knots[i + 1] else 0.0)
+             for i in range(len(N) - 1)]
+    return N
+
+
+def surface_point(srf, u, v):
+    """S(u, v) at fractions u, v in [0, 1] of the domain."""
+    u = srf["knotsU"][srf["degreeU"]] + u * (srf["knotsU"][srf["countU"]] - srf["knotsU"][srf["degreeU"]])
+    v = srf["knotsV"][srf["degreeV"]] + v * (srf["knotsV"][srf["countV"]] - srf["knotsV"][srf["degreeV"]])
+    Nu = bspline_basis(srf["knotsU"], srf["degreeU"], u)
+    Nv = bspline_basis(srf["knotsV"], srf["degreeV"], v)
+    nv = srf["countV"]
+    return [sum(Nu[i] * Nv[j] * srf["points"][i * nv + j][k] for i in range(srf["countU"]) for j in range(nv) if Nu[i] and Nv[j])
+            for k in range(3)]
+
+
+def jug_surface():
+    """A jug's body as a free-form bicubic surface (no recipe: a static surface), revolved-looking:
+    u runs around (13 control points on a 12-gon, the first repeated last), v runs up (6 rows:
+    foot, belly, shoulder, neck, rim); the rim is the u-curve at v = 1. The front (u = 0.5) faces
+    the window's default camera (ui/main_window.cpp looks along (-1, 1.6, -0.9)), the seam is at
+    the back."""
+    rows = [(0, 30), (18, 42), (45, 46), (70, 34), (88, 27), (100, 31)]  # (height, radius)
+    count_u, count_v = 13, len(rows)
+    net = []
+    for i in range(count_u):
+        a = math.atan2(-1.6, 1.0) + math.pi + 2 * math.pi * i / (count_u - 1)
+        for z, radius in rows:
+            net.append(r([radius * math.cos(a), radius * math.sin(a), z]))
+    return {"id": 1, "degreeU": 3, "degreeV": 3, "knotsU": uniform_knots(count_u), "knotsV": uniform_knots(count_v),
+            "countU": count_u, "countV": count_v, "points": net}
+
+
+def jug_mouth():
+    """Seed 001 Fig. 10, the jug's mouth: the jug selected, Sculpt mode's Re-sketch tool (Alt+R); a
+    marking along the rim's front (just below it) picks the rim, the strip's rulings turned once
+    (Alt+A: across the rim, the jug's wall continued upwards), and a stroke over the strip raises
+    the lip at the front by up to 14 mm, the spout. A second session undoes it (Ctrl+Z)."""
+    jug = jug_surface()
+    write_document("jug_start.json", [], (), [jug])
+    s = Session()
+    s.action("mode.select")
+    s.click(r(surface_point(jug, 0.5, 0.45)))  # the belly's front
+    s.action("mode.sculpt")
+    s.action("sculpt.resketch")
+    s.stroke([r(surface_point(jug, 0.36 + 0.28 * k / 30, 0.96)) for k in range(31)])
+    s.action("sculpt.resketchRulings")
+    # Over the strip: the rim's point plus a lift along the wall's direction at the rim.
+    lift = []
+    for k in range(41):
+        u = 0.33 + 0.34 * k / 40
+        top, below = surface_point(jug, u, 1.0), surface_point(jug, u, 0.98)
+        d = [a - b for a, b in zip(top, below)]
+        n = math.sqrt(sum(c * c for c in d))
+        h = 14 * math.sin(math.pi * k / 40) ** 2
+        lift.append(r([top[c] + h * d[c] / n for c in range(3)]))
+    s.stroke(lift)
+    # Alt+R again starts over: the strip goes, the jug's new mouth shows.
+    s.action("sculpt.resketch")
+    s.write("jug_mouth.json")
+    # The same, undone (one step): the jug as it was.
+    s.key("Ctrl+Z")
+    s.write("jug_mouth_undo.json")
+
+
+
 def incidence_dome():
     """Seed 000 Figs. 2 and 8 in the window (issue 14 §3): the dome. Rim A, a circle of radius 50 on
     the ground (plane 1), is fixed (Ctrl+Shift+F); Interpolation (I) through A and the arch B (plane
@@ -702,7 +776,9 @@ def incidence_dome():
     s.write("incidence_dome_drag.json")
 
 
+
 if __name__ == "__main__":
+    jug_mouth()
     incidence_dome()
     sculpt_oversketch()
     sculpt_handles()

@@ -448,5 +448,39 @@ TEST(Sculpt, AChangedBaseIsSculptedAnewAndStillMeetsTheTarget)
     EXPECT_EQ(again.recomputations, 1);
 }
 
+TEST(ModelGraph, AFreeFormSurfacesNewShapeMarksItChangedAndItsSculptFollows)
+{
+    // Given a sculpt over a static sheet (seed 001 §5.2 re-sketches such a free-form surface)
+    SculptScene s;
+    const solvers::Surface3d before = *s.model.find(s.sculpt)->surface;
+    std::vector<Eigen::Vector3d> raised = s.model.find(s.base)->surface->points();
+    for (auto& p : raised) p.z() += 5.0;
+    const solvers::Surface3d& b = *s.model.find(s.base)->surface;
+    const solvers::Surface3d shape(3, 3, b.knotsU(), b.knotsV(), b.countU(), b.countV(), raised);
+    // When the sheet's net is replaced
+    s.model.setSurfaceShape(s.base, shape);
+    // Then the sheet is changed until the update, then has the new net, and the sculpt was rebuilt
+    EXPECT_EQ(s.model.state(s.base), State::Changed);
+    s.model.update();
+    EXPECT_EQ(s.model.find(s.base)->surface->points(), raised);
+    EXPECT_NE(s.model.find(s.sculpt)->surface->points(), before.points());
+}
+
+TEST(ModelGraph, ASurfaceBuiltFromCurvesKeepsItsShape)
+{
+    // Given a loft (its curves make it: a new net would be lost at its next rebuild)
+    LoftScene s;
+    const solvers::Surface3d loft = *s.model.find(s.loft)->surface;
+    std::vector<Eigen::Vector3d> moved = loft.points();
+    for (auto& p : moved) p.z() += 5.0;
+    const solvers::Surface3d shape(loft.degreeU(), loft.degreeV(), loft.knotsU(), loft.knotsV(), loft.countU(), loft.countV(), moved);
+    // When it is given a new net, or a curve is
+    s.model.setSurfaceShape(s.loft, shape);
+    s.model.setSurfaceShape(s.a, shape);
+    // Then nothing changed
+    EXPECT_EQ(s.model.find(s.loft)->surface->points(), loft.points());
+    EXPECT_FALSE(s.model.updatePending());
+}
+
 }  // namespace
 }  // namespace sculptline::model
