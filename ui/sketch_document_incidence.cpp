@@ -190,7 +190,8 @@ model::EntityId SketchDocument::putOnSurface(model::EntityId curveId, model::Ent
     if (surface->recipe) {
         model::Entity free;
         free.kind = model::EntityKind::Surface;
-        free.surface = surface->surface;
+        // The same shape with room to bend (a fill of four cubics has four inner points).
+        free.surface = solvers::incidence::refinedForIncidence(*surface->surface);
         undo_.push(new DeleteEntityCommand(*this, surfaceId));
         undo_.push(new AddEntitiesCommand(*this, {free}, tr("Make surface %1 free-form").arg(surfaceId)));
         target = selection_;

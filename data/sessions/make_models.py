@@ -768,7 +768,8 @@ def incidence_dome():
     s.action("mode.incidence")
     # C starts and ends a few millimetres inside the rim: a stroke started on a curve would go onto
     # the plane along that curve's tangent (seed 000 §3.1, case 1), not onto plane 3.
-    s.stroke([r([0, -44 + 88 * i / 40, 3 + 21 * math.sin(math.pi * i / 40)]) for i in range(41)])
+    # Its crest meets B's (30 mm over the centre, where the two cross: they tie there).
+    s.stroke([r([0, -44 + 88 * i / 40, 3 + 27 * math.sin(math.pi * i / 40)]) for i in range(41)])
     s.write("incidence_dome.json")
     s.action("mode.select")
     start, end = [0, 0, 60], [0, -8, 60]
@@ -777,8 +778,40 @@ def incidence_dome():
 
 
 
+def incidence_free():
+    """Issue 14 §3, Sculpting on a surface built from curves: a fill of four cubic boundaries on the
+    ground is selected, I, plane 2's jack clicked (the curve goes there), and an arch drawn across
+    the fill: the fill becomes a free-form surface (refined, its four boundaries on it) that passes
+    through the arch. incidence_free_undo.json adds Ctrl+Z, which gives the fill back."""
+    # Plane 1: the ground, its square (and jack) at (-150, -150) away from the fill, which lies
+    # over [-50, 50]^2 (local = world + 150); a click on the fill hits the fill alone. Plane 2:
+    # vertical along X through y = 0, local y = Z - 60, its jack at (0, 0, 60).
+    planes = [plane(1, [-150, -150, 0], [0, 0, 1], 100, [1, 0, 0]),
+              plane(2, [0, 0, 60], [0, -1, 0], 160, [1, 0, 0])]
+
+    def side(a, b, cid):
+        pts = [[a[k] + (b[k] - a[k]) * i / 3 + 150 for k in range(2)] for i in range(4)]
+        return dict(cubic([r(p) for p in pts]), id=cid, plane=1)
+    corners = [[-50, -50], [50, -50], [50, 50], [-50, 50]]
+    sides = [side(corners[k], corners[(k + 1) % 4], 3 + k) for k in range(4)]
+    fill = {"id": 7, "construction": {"mode": "fill", "curves": [3, 4, 5, 6]}}
+    write_document("incidence_free_start.json", planes, sides, [fill])
+    s = Session()
+    s.action("mode.select")
+    s.click([20, 20, 0])     # the fill
+    s.action("mode.incidence")
+    s.action("mode.select")
+    s.click([0, 0, 60])      # plane 2's jack: the curve goes there
+    s.action("mode.incidence")
+    s.stroke([r([-40 + 80 * i / 40, 0, 2 + 25 * math.sin(math.pi * i / 40)]) for i in range(41)])
+    s.write("incidence_free.json")
+    s.key("Ctrl+Z")
+    s.write("incidence_free_undo.json")
+
+
 if __name__ == "__main__":
     jug_mouth()
+    incidence_free()
     incidence_dome()
     sculpt_oversketch()
     sculpt_handles()

@@ -75,18 +75,9 @@ Surface3d spanningSheet(const std::vector<Eigen::Vector3d>& points, int count, d
     return Surface3d(degree, degree, knots, knots, count, count, net);
 }
 
-BoundedSheet sheetBoundedBy(const Curve3d& rim, int count)
+Surface3d refinedForIncidence(const Surface3d& surface, int count)
 {
-    if (!rim.isClosed()) throw GeometryError("rim: must be a closed curve");
-    if (rim.isRational()) throw GeometryError("rim: must not be rational");
-    if (count < 4) throw GeometryError("count: a bicubic sheet needs at least 4 control points per direction, got " + std::to_string(count));
-    const double a = rim.domainStart(), b = rim.domainEnd(), q = (b - a) / 4.0;
-    std::vector<Curve3d> sides;
-    for (int k = 0; k < 4; ++k) sides.push_back(rim.extract(a + k * q, a + (k + 1) * q));
-    // The fill runs side 2 and side 3 backwards (v = 1 and u = 0 from the far corner): the loop's
-    // own orientation is kept by the fill's chaining.
-    Surface3d sheet = surfaces::fill(sides);
-    // Refined to `count` by uniform knots between the present ones, both directions.
+    Surface3d sheet = surface;
     for (Direction d : {Direction::U, Direction::V}) {
         const double s0 = sheet.domainStart(d), s1 = sheet.domainEnd(d);
         const int missing = count - sheet.count(d);
@@ -99,6 +90,21 @@ BoundedSheet sheetBoundedBy(const Curve3d& rim, int count)
         }
         if (!x.empty()) sheet = sheet.refine(d, x);
     }
+    return sheet;
+}
+
+BoundedSheet sheetBoundedBy(const Curve3d& rim, int count)
+{
+    if (!rim.isClosed()) throw GeometryError("rim: must be a closed curve");
+    if (rim.isRational()) throw GeometryError("rim: must not be rational");
+    if (count < 4) throw GeometryError("count: a bicubic sheet needs at least 4 control points per direction, got " + std::to_string(count));
+    const double a = rim.domainStart(), b = rim.domainEnd(), q = (b - a) / 4.0;
+    std::vector<Curve3d> sides;
+    for (int k = 0; k < 4; ++k) sides.push_back(rim.extract(a + k * q, a + (k + 1) * q));
+    // The fill runs side 2 and side 3 backwards (v = 1 and u = 0 from the far corner): the loop's
+    // own orientation is kept by the fill's chaining.
+    Surface3d sheet = surfaces::fill(sides);
+    sheet = refinedForIncidence(sheet, count);
     const double u0 = sheet.domainStart(Direction::U), u1 = sheet.domainEnd(Direction::U);
     const double v0 = sheet.domainStart(Direction::V), v1 = sheet.domainEnd(Direction::V);
     // Degree 1, closed: corners (u0, v0), (u1, v0), (u1, v1), (u0, v1) at a, a + q, a + 2q, a + 3q;

@@ -29,6 +29,11 @@ constexpr double kSpanningSheetMargin = 0.05;
 Surface3d spanningSheet(const std::vector<Eigen::Vector3d>& points, int count = kSpanningSheetCount,
                         double margin = kSpanningSheetMargin);
 
+/// `surface` refined by knot insertion (its shape unchanged) to at least `count` control points per
+/// direction, uniform new knots between the present ones: room for curves drawn across it to bend it
+/// (a fill of four cubic boundaries has 4 × 4 points, four of them inside).
+Surface3d refinedForIncidence(const Surface3d& surface, int count = kSpanningSheetCount);
+
 /// A sheet whose boundary is a closed curve (seed 000's dome, Fig. 2: the rim A), and the rim's
 /// pre-image: the domain's boundary.
 struct BoundedSheet {
