@@ -422,6 +422,20 @@ solvers::Curve3d arch(const PlaneFrame& f, const Eigen::Vector3d& direction)
     }
     return solvers::makeClampedUniform<3>(3, local);
 }
+/// The rim A on `ground`: a closed uniform cubic of 16 control points whose curve has radius kRim (a
+/// uniform closed cubic sits at (2 + cos(2π/n))/3 of its polygon's radius).
+EntityId addRim(Model& model, EntityId ground)
+{
+    std::vector<Eigen::Vector3d> circle;
+    for (int i = 0; i < 16; ++i) {
+        const double a = 2.0 * M_PI * i / 16;
+        const double r = kRim * 3.0 / (2.0 + std::cos(2.0 * M_PI / 16));
+        Eigen::Vector3d p = model.find(ground)->frame.toLocal(Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
+        p.z() = 0;
+        circle.push_back(p);
+    }
+    return model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
+}
 }  // namespace dome
 
 TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenTheRimHoldsAndTheSheetBulges)
@@ -430,16 +444,7 @@ TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenThe
     Model model;
     const EntityId sheet = model.addSurface(flatSheet(20));
     const EntityId ground = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 150));
-    std::vector<Eigen::Vector3d> circle;
-    for (int i = 0; i < 16; ++i) {
-        const double a = 2.0 * M_PI * i / 16;
-        // a uniform closed cubic sits at (2 + cos(2π/n))/3 of its polygon's radius
-        const double r = dome::kRim * 3.0 / (2.0 + std::cos(2.0 * M_PI / 16));
-        Eigen::Vector3d p = model.find(ground)->frame.toLocal(Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
-        p.z() = 0;
-        circle.push_back(p);
-    }
-    const EntityId rim = model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
+    const EntityId rim = dome::addRim(model, ground);
     auto onSheet = [&](EntityId curve) {
         Constraint on;
         on.type = ConstraintType::CurveOnSurface;
@@ -517,15 +522,7 @@ TEST(IncidenceStep, GivenASheetBoundedByAFixedRim_WhenArchesCrossIt_ThenTheRimHo
     // boundary as its pre-image, and arch B across it
     Model model;
     const EntityId ground = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 150));
-    std::vector<Eigen::Vector3d> circle;
-    for (int i = 0; i < 16; ++i) {
-        const double a = 2.0 * M_PI * i / 16;
-        const double r = dome::kRim * 3.0 / (2.0 + std::cos(2.0 * M_PI / 16));
-        Eigen::Vector3d p = model.find(ground)->frame.toLocal(Eigen::Vector3d(r * std::cos(a), r * std::sin(a), 0));
-        p.z() = 0;
-        circle.push_back(p);
-    }
-    const EntityId rim = model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
+    const EntityId rim = dome::addRim(model, ground);
     const solvers::incidence::BoundedSheet bounded = solvers::incidence::sheetBoundedBy(*model.find(rim)->world);
     const EntityId sheet = model.addSurface(bounded.surface);
     Constraint onRim;
