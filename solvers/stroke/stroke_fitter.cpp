@@ -40,6 +40,8 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
         std::vector<Vec3> pts(c.points.begin() + a, c.points.begin() + b + 1);
         SplineFitInput in;
         in.points = &pts;
+        in.chord.reserve(pts.size());
+        in.samples.reserve(c.samples.size() + 2);
         const double g0 = c.param[a], g1 = c.param[b], len = g1 - g0;
         for (int i = a; i <= b; ++i) in.chord.push_back(len > 0.0 ? (c.param[i] - g0) / len : double(i - a) / (b - a));
         for (int s : c.samples)
@@ -96,6 +98,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     if (options.dynamicSampling) {
         samples = dynamicThresholdSamples(cs, f, corners, static_cast<int>(stroke.points.size()), options.sampling);
     } else {
+        samples.reserve(static_cast<size_t>(cs.size()));
         for (int i = 0; i < cs.size(); ++i) samples.push_back(i);
     }
     SplineFitOptions sopt = options.spline;
@@ -107,6 +110,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         SplineFitInput in;
         in.points = &cs.points;
         in.closed = true;
+        in.chord.reserve(static_cast<size_t>(n));
         for (int i = 0; i < n; ++i) in.chord.push_back(cs.arc[i] / total);
         in.samples = samples;
         if (in.samples.back() == n - 1 && n > 4) in.samples.pop_back();  // keep it: it is inside [0, 1)
@@ -116,12 +120,19 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         res.curve = Curve3d(3, r.knots, r.points, {}, true);
         res.maxError = r.maxError;
         res.converged = r.converged;
+        res.samples.reserve(r.samples.size());
         for (int s : r.samples) res.samples.push_back(cs.source[s]);
     } else {
         Chain c;
         const int start = cs.closed ? corners.front() : 0;
         const int count = cs.closed ? n + 1 : n;  // a loop repeats its start corner at the end
         std::vector<int> position(n);
+        // Sized up front: grown sample by sample, each doubling leaves a hole the rest of the fit
+        // cannot reuse, and the first fit of a process pays a page fault for every new heap page.
+        c.points.reserve(static_cast<size_t>(count));
+        c.source.reserve(static_cast<size_t>(count));
+        c.param.reserve(static_cast<size_t>(count));
+        c.samples.reserve(samples.size() + 1);
         for (int k = 0; k < count; ++k) {
             const int i = (start + k) % n;
             if (k < n) position[i] = k;
@@ -146,10 +157,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         res.curve = cs.closed ? closeClampedLoop(a.knots, a.points) : Curve3d(3, a.knots, a.points);
         res.maxError = a.maxError;
         res.converged = a.converged;
+        res.samples.reserve(a.samples.size());
         for (int s : a.samples) res.samples.push_back(c.source[s]);
         std::sort(res.samples.begin(), res.samples.end());
         res.samples.erase(std::unique(res.samples.begin(), res.samples.end()), res.samples.end());
     }
+    res.corners.reserve(corners.size());
     for (int k : corners) res.corners.push_back(cs.source[k]);
     std::sort(res.corners.begin(), res.corners.end());
     res.warnings = cs.warnings;
