@@ -10,6 +10,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <malloc.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -91,8 +92,10 @@ BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 // The first fit of a process (cold: nothing of the fitter run yet, its code and heap untouched, as
 // when the pen lifts on the first stroke) against the warm loop above. Google Benchmark repeats a
 // call in one process, so each iteration starts this binary again with SCULPTLINE_BENCH_COLD_FIT
-// set: before main, the child synthesizes the stroke (untimed), times one fitStroke, prints the
-// microseconds and exits (coldFitChild below). Process start-up is outside the time.
+// set: before main, the child synthesizes the stroke (untimed), hands the heap pages the synthesis
+// freed back to the system (malloc_trim: a process that read the stroke from a file or a tablet
+// has not touched them either), times one fitStroke, prints the microseconds and exits
+// (coldFitChild below). Process start-up is outside the time.
 double spawnColdFit(int c)
 {
     int fd[2];
@@ -127,6 +130,9 @@ double spawnColdFit(int c)
     const char* c = std::getenv("SCULPTLINE_BENCH_COLD_FIT");
     if (!c) return false;
     const Stroke s = coldCaseStroke(std::atoi(c));
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
     const auto t0 = std::chrono::steady_clock::now();
     const FitResult r = fitStroke(s);
     const auto t1 = std::chrono::steady_clock::now();
