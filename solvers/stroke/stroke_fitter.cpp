@@ -15,6 +15,9 @@ using Vec3 = Eigen::Vector3d;
 // global chord parameter in [0, 1] and the pieces between consecutive break indices. An open stroke
 // is its own chain: `points` and `source` then refer to the conditioned stroke's, not to a copy.
 struct Chain {
+    Chain() = default;
+    Chain(const Chain&) = delete;  // `points` may point into this chain
+    Chain& operator=(const Chain&) = delete;
     std::vector<Vec3> rotatedPoints;  // a loop's points from its start corner (empty when open)
     std::vector<int> rotatedSource;
     const std::vector<Vec3>* points = nullptr;
