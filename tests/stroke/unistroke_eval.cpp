@@ -150,10 +150,9 @@ std::string Confusion::table() const
 int recognizeRecording(const Recording& r, const stroke::RecognizeOptions& options)
 {
     try {
-        const stroke::FitResult fit = stroke::fitStroke(r.stroke);
         stroke::RecognizeOptions o = options;
         o.regularize = false;  // the class is what is measured; regularizing does not change it
-        return static_cast<int>(stroke::recognizeShape(fit, o).kind);
+        return static_cast<int>(stroke::recognizeStroke(r.stroke, {}, o).recognition.kind);
     } catch (const std::exception&) {
         return -1;
     }
