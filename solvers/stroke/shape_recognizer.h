@@ -77,6 +77,9 @@ struct RecognizeOptions {
     /// bring together; it is fitted again as a closed stroke (radians: 300 and 380 degrees).
     double minLoopTurn = 5.24;
     double maxLoopTurn = 6.63;
+    /// UserModel::applyHabits: a stroke within this mean distance (share of the extent) of a shape
+    /// the user corrected before is read as that correction.
+    double habitDistance = 0.1;
     /// Replace the stroke by the exact primitive (false: `regularized` is the fitted curve).
     bool regularize = true;
 };

@@ -170,3 +170,51 @@ Confusion evaluate(const std::vector<Recording>& recordings, const stroke::Recog
 }
 
 }  // namespace sculptline::stroketest
+
+#include "solvers/stroke/user_model.h"
+
+namespace sculptline::stroketest {
+
+std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& recordings, int firstN,
+                                              const stroke::RecognizeOptions& options)
+{
+    stroke::RecognizeOptions o = options;
+    o.regularize = false;
+    std::map<std::string, std::vector<const Recording*>> bySubject;
+    for (const auto& r : recordings) bySubject[r.subject].push_back(&r);
+    std::vector<AdaptationResult> out;
+    for (const auto& [subject, recs] : bySubject) {
+        AdaptationResult a;
+        a.subject = subject;
+        stroke::UserModel model = stroke::UserModel::predefined(subject);
+        std::vector<std::pair<const Recording*, stroke::StrokeRecognition>> test;
+        // Learning in drawing order: the logs number each gesture's repetitions at each speed.
+        for (int number = 1; number <= firstN; ++number) {
+            for (const Recording* r : recs) {
+                if (r->number != number) continue;
+                try {
+                    stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                    model.applyHabits(sr.recognition, sr.fit, o);
+                    model.learnShape(sr.recognition, acceptedKinds(r->gesture).front());
+                } catch (const std::exception&) {
+                }
+                ++a.trained;
+            }
+        }
+        for (const Recording* r : recs) {
+            if (r->number <= firstN) continue;
+            ++a.tested;
+            try {
+                stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                a.correctBefore += isCorrect(r->gesture, sr.recognition.kind);
+                model.applyHabits(sr.recognition, sr.fit, o);
+                a.correctAfter += isCorrect(r->gesture, sr.recognition.kind);
+            } catch (const std::exception&) {
+            }
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+}  // namespace sculptline::stroketest

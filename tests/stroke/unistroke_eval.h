@@ -60,3 +60,18 @@ int recognizeRecording(const Recording& r, const solvers::stroke::RecognizeOptio
 Confusion evaluate(const std::vector<Recording>& recordings, const solvers::stroke::RecognizeOptions& options = {});
 
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+
+/// Adapting to a person (UserModel::learnShape): per subject, the strokes numbered <= `firstN` at
+/// each gesture and speed teach the model (the designer confirms or corrects each, intending the
+/// gesture's reported class); the rest are recognized with and without the learned habits.
+struct AdaptationResult {
+    std::string subject;
+    int trained = 0, tested = 0;
+    int correctBefore = 0, correctAfter = 0;
+};
+std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& recordings, int firstN,
+                                              const solvers::stroke::RecognizeOptions& options = {});
+
+}  // namespace sculptline::stroketest

@@ -160,12 +160,31 @@ int main(int argc, char** argv)
             else if (k == "shortEdge") o.shortEdge = v;
             else if (k == "minCornerTurn") o.minCornerTurn = v;
             else if (k == "guessedVertex") o.guessedVertex = v;
+            else if (k == "habitDistance") o.habitDistance = v;
             else if (k == "maxOvershoot") o.maxOvershoot = v;
             else if (k == "minLoopTurn") o.minLoopTurn = v;
             else {
                 std::cerr << "unknown option " << k << '\n';
                 return 2;
             }
+        } else if (!std::strcmp(argv[i], "--adapt") && i + 1 < argc) {  // --adapt dev|held-out
+            const bool h = !std::strcmp(argv[++i], "held-out");
+            const auto recs = st::loadUnistrokes(dir, h ? st::heldOutSubjects() : st::devSubjects());
+            std::cout << "| first n learned | subject | tested | without habits | with habits | change |\n|---:|---|---:|---:|---:|---:|\n";
+            for (int n : {1, 2, 3}) {
+                int t = 0, b = 0, a = 0;
+                for (const auto& r : st::adaptPerSubject(recs, n, gOptions)) {
+                    std::cout << "| " << n << " | " << r.subject << " | " << r.tested << " | " << std::fixed << std::setprecision(1)
+                              << 100.0 * r.correctBefore / r.tested << " % | " << 100.0 * r.correctAfter / r.tested << " % | "
+                              << std::showpos << 100.0 * (r.correctAfter - r.correctBefore) / r.tested << std::noshowpos << " |\n";
+                    t += r.tested;
+                    b += r.correctBefore;
+                    a += r.correctAfter;
+                }
+                std::cout << "| " << n << " | **all** | " << t << " | " << 100.0 * b / t << " % | " << 100.0 * a / t << " % | " << std::showpos
+                          << 100.0 * (a - b) / t << std::noshowpos << " |\n";
+            }
+            return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
             return 0;
