@@ -137,6 +137,14 @@ void UserModel::learnShape(const Recognition& recognition, ShapeKind intended)
     habits_.push_back({normalizedShape(recognition.geometry), intended});
 }
 
+void UserModel::addHabit(ShapeExample example)
+{
+    if (static_cast<int>(example.shape.size()) != samples) {
+        throw GeometryError("shape: must have " + std::to_string(samples) + " points, has " + std::to_string(example.shape.size()));
+    }
+    habits_.push_back(std::move(example));
+}
+
 void UserModel::applyHabits(Recognition& recognition, const FitResult& fit, const RecognizeOptions& options) const
 {
     if (habits_.empty() || recognition.geometry.points.size() < 2) return;

@@ -59,6 +59,8 @@ public:
         ShapeKind kind = ShapeKind::Freeform;
     };
     const std::vector<ShapeExample>& habits() const { return habits_; }
+    /// Adds a remembered correction (loading). @throws GeometryError unless it has `samples` points.
+    void addHabit(ShapeExample example);
     static constexpr int samples = 32;
 
 private:
