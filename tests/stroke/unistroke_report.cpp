@@ -1,6 +1,13 @@
 // unistroke-report: recognition accuracy on the $1 unistroke logs (tests/data/unistrokes), as
 // Markdown confusion matrices for the development subjects (s02-s06) and, with --held-out, for the
-// held-out subjects (s07-s11). Usage: unistroke-report [--dev] [--held-out] [--data DIR]
+// held-out subjects (s07-s11).
+//   unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value]...
+//   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
+//   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
+//   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
+// --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
+// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
+// The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
 #include "unistroke_eval.h"
 
 #include "solvers/stroke/stroke_fitter.h"
@@ -193,7 +200,7 @@ int main(int argc, char** argv)
             return 0;
         }
         else {
-            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR]\n";
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev\n";
             return 2;
         }
     }
