@@ -82,10 +82,20 @@ double segmentDistance(const Point2& p, const Point2& a, const Point2& b)
 
 // Douglas-Peucker-like refinement of the vertex set (see RecognizeOptions::vertexInsertion): each
 // point is measured against the edge between the vertices it lies between, in drawing order.
-void refineVertices(StrokeGeometry& g, double insertAbove, double collinear, double shortEdgeLength)
+// Angle by which the path a -> k -> b turns at k (0 = straight on, pi = straight back).
+double turnAt(const Point2& a, const Point2& k, const Point2& b)
+{
+    const Point2 u = k - a, v = b - k;
+    return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
+}
+
+// Returns how many of the final vertices were inserted here (the corner detector did not find them).
+int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength)
 {
     auto& idx = g.vertexIndex;
+    const std::vector<int> detected = idx;
     const int n = static_cast<int>(g.points.size());
+    std::vector<std::pair<int, int>> curved;  // edges whose farthest point is a bend, not a corner
     for (int round = 0; round < 12; ++round) {
         if (g.closed && idx.size() < 2) {
             idx.push_back(idx.empty() ? 0 : (idx[0] + n / 2) % n);
@@ -93,19 +103,29 @@ void refineVertices(StrokeGeometry& g, double insertAbove, double collinear, dou
             continue;
         }
         double worst = insertAbove;
-        int at = -1;
+        int at = -1, from = -1, to = -1;
         const size_t edges = g.closed ? idx.size() : idx.size() - 1;
         for (size_t e = 0; e < edges; ++e) {
             const int a = idx[e], b = idx[(e + 1) % idx.size()];
+            if (std::find(curved.begin(), curved.end(), std::make_pair(a, b)) != curved.end()) continue;
             for (int k = (a + 1) % n; k != b; k = (k + 1) % n) {
                 const double d = segmentDistance(g.points[k], g.points[a], g.points[b]);
                 if (d > worst) {
                     worst = d;
                     at = k;
+                    from = a;
+                    to = b;
                 }
             }
         }
         if (at < 0) break;
+        // A missed corner turns the pen sharply; the farthest point of a smoothly bent edge (a
+        // brace's bulge, a circle's arc between two vertices) does not, and inserting it would
+        // only approximate a curve by short chords.
+        if (turnAt(g.points[from], g.points[at], g.points[to]) < minCornerTurn) {
+            curved.emplace_back(from, to);
+            continue;
+        }
         idx.insert(std::upper_bound(idx.begin(), idx.end(), at), at);
     }
     // Drop the vertex that turns least while it is nearly collinear, or while it ends an edge
@@ -134,6 +154,9 @@ void refineVertices(StrokeGeometry& g, double insertAbove, double collinear, dou
     }
     g.vertices.clear();
     for (int k : idx) g.vertices.push_back(g.points[k]);
+    int inserted = 0;
+    for (int k : idx) inserted += std::find(detected.begin(), detected.end(), k) == detected.end();
+    return inserted;
 }
 
 double score(double residual, double scale) { return std::exp(-(residual / scale) * (residual / scale)); }
@@ -369,11 +392,16 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
                                         (corners <= 1 ? 1.0 : 0.5));
         }
     }
+    int inserted = 0;
     if (corners > 0 || g.closed) {
-        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.collinearAngle, o.shortEdge * g.extent);
+        inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent);
     }
     if (g.vertices.size() >= 3u && (corners > 0 || g.closed)) {
-        const double fitScore = score(polylineResidual(g.points, g.vertices, g.closed), sigma);
+        // Vertices the corner detector did not see are the recognizer's guesses: one is expected on
+        // a loop (its seam, and the vertex opposite when it has no corner), more mean the polygon
+        // is being fitted to a curve (a brace's curls, a circle's arcs).
+        const int guessed = std::max(0, inserted - (g.closed ? 2 : 0));
+        const double fitScore = score(polylineResidual(g.points, g.vertices, g.closed), sigma) * std::pow(o.guessedVertex, guessed);
         if (g.closed && g.vertices.size() == 3) {
             add(ShapeKind::Triangle, fitScore);
         } else if (g.closed && g.vertices.size() == 4) {
@@ -404,6 +432,38 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 }  // namespace sculptline::solvers::stroke
 
 namespace sculptline::solvers::stroke {
+
+StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOptions, const RecognizeOptions& options)
+{
+    StrokeRecognition out{fitStroke(stroke, fitOptions), {}};
+    const ConditionedStroke& cs = out.fit.conditioned;
+    if (cs.closed && fitOptions.conditioning.closure == Closure::Auto && cs.size() > 1) {
+        auto path = [&](int from, int to) {
+            double l = 0;
+            for (int i = from; i < to; ++i) l += (stroke.points[i + 1] - stroke.points[i]).norm();
+            return l;
+        };
+        const int last = static_cast<int>(stroke.points.size()) - 1;
+        const double trimmed = path(0, cs.source.front()) + path(cs.source.back(), last);
+        if (trimmed > options.maxOvershoot * cs.length()) {
+            FitOptions open = fitOptions;
+            open.conditioning.closure = Closure::Open;
+            out.fit = fitStroke(stroke, open);
+        }
+    }
+    out.recognition = recognizeShape(out.fit, options);
+    const Recognition& r = out.recognition;
+    if (!r.geometry.closed && fitOptions.conditioning.closure == Closure::Auto && r.circle.valid) {
+        const double turn = std::abs(sweep(r.geometry.points, r.circle.center));
+        if (turn >= options.minLoopTurn && turn < options.maxLoopTurn) {
+            FitOptions closed = fitOptions;
+            closed.conditioning.closure = Closure::Closed;
+            out.fit = fitStroke(stroke, closed);
+            out.recognition = recognizeShape(out.fit, options);
+        }
+    }
+    return out;
+}
 
 Curve3d regularizeAs(const Recognition& recognition, const FitResult& fit, ShapeKind kind)
 {

@@ -44,8 +44,11 @@ StrokeGeometry strokeGeometry(const FitResult& fit);
 
 struct RecognizeOptions {
     /// Residual scale, relative to the stroke's extent, at which a primitive's score falls to
-    /// 1/e: 4 % (a hand-drawn line bows by a few per cent of its length; seed 003 §4).
-    double residualScale = 0.04;
+    /// 1/e: 10 %. Measured on real pen strokes (the $1 unistroke logs, development subjects, see
+    /// tests/data/unistrokes): the largest deviation of hand-drawn triangles, rectangles, checks and
+    /// circles from their ideal shape is 3-6 % of the extent at the median and about 10 % at the
+    /// 95th percentile (seed 003 §4 assumed a few per cent, from synthesized strokes).
+    double residualScale = 0.10;
     /// Score of the freeform interpretation, the fallback when nothing fits better.
     double freeformScore = 0.35;
     /// Sides within this relative difference count as equal (square, diamond).
@@ -57,8 +60,29 @@ struct RecognizeOptions {
     /// missed, often at a loop's seam), and vertices turning less than `collinearAngle` are
     /// dropped (a corner detected on a straight side).
     double vertexInsertion = 0.3;
+    /// ... but only where the stroke turns by at least this angle there (radians, 60 degrees): a
+    /// corner. The farthest point of a smoothly curved piece turns less (a circle seen from the
+    /// vertices of its inscribed square: 45 degrees), so curves are not chopped into chords.
+    double minCornerTurn = 1.05;
+    /// Polygon scores are multiplied by this for each vertex inserted beyond those expected (the
+    /// detected corners, and on a loop the seam and one more): a polygon that needs many guessed
+    /// vertices is a curve approximated by chords.
+    double guessedVertex = 0.5;
     double collinearAngle = 0.44;  ///< radians, 25 degrees
     double shortEdge = 0.08;       ///< edges shorter than this share of the extent are merged
+    /// recognizeStroke: a loop that the conditioning closed by trimming more than this share of its
+    /// length as overshoot was a stroke crossing itself (an x, a delete mark), not a loop that
+    /// closed: it is fitted again as an open stroke. A hand closing a loop overshoots by a few per
+    /// cent of its perimeter.
+    double maxOvershoot = 0.25;
+    /// recognizeStroke: an open stroke that turns around its centre by at least this angle (and by
+    /// less than `maxLoopTurn`: not a spiral or a pigtail) is a loop whose ends the hand did not quite
+    /// bring together; it is fitted again as a closed stroke (radians: 300 and 380 degrees).
+    double minLoopTurn = 5.24;
+    double maxLoopTurn = 6.63;
+    /// UserModel::applyHabits: a stroke within this mean distance (share of the extent) of a shape
+    /// the user corrected before is read as that correction.
+    double habitDistance = 0.1;
     /// Replace the stroke by the exact primitive (false: `regularized` is the fitted curve).
     bool regularize = true;
 };
@@ -81,6 +105,16 @@ struct Recognition {
 
 /// Classifies one fitted stroke and regularizes it.
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& options = {});
+
+/// A raw stroke fitted (fitStroke) and recognized (recognizeShape), as the window does when the pen
+/// lifts; a loop closed by trimming a long overshoot is refitted open (RecognizeOptions::maxOvershoot),
+/// an open stroke that nearly closes is refitted closed (minLoopTurn).
+struct StrokeRecognition {
+    FitResult fit;
+    Recognition recognition;
+};
+/// @throws GeometryError as fitStroke.
+StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOptions = {}, const RecognizeOptions& options = {});
 
 /// The stroke regularized as another of its candidates (the designer picks the second-best, say):
 /// `recognition` is recognizeShape(fit)'s result. Freeform gives the fitted curve.

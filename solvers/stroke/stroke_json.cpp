@@ -94,7 +94,17 @@ json toJson(const UserModel& m)
         nodes.push_back({{"index", n.index}, {"name", n.name}, {"pre", link(n.preNode)}, {"curr", link(n.currNode)},
                          {"constraint", n.constraint}});
     }
-    return {{"user", m.user()}, {"nodes", nodes}};
+    json out = {{"user", m.user()}, {"nodes", nodes}};
+    if (!m.habits().empty()) {  // the shapes the user corrected (UserModel::learnShape)
+        json habits = json::array();
+        for (const auto& h : m.habits()) {
+            json shape = json::array();
+            for (const auto& p : h.shape) shape.push_back({p.x(), p.y()});
+            habits.push_back({{"kind", shapeName(h.kind)}, {"shape", shape}});
+        }
+        out["habits"] = habits;
+    }
+    return out;
 }
 
 UserModel userModelFromJson(const json& j, const std::string& path)
@@ -132,6 +142,35 @@ UserModel userModelFromJson(const json& j, const std::string& path)
         m.setNodes(std::move(rows));
     } catch (const GeometryError& e) {
         throw InputError(path + "." + e.what());
+    }
+    if (j.contains("habits")) {
+        const json& habits = j["habits"];
+        if (!habits.is_array()) throw InputError(path + ".habits: must be an array");
+        for (size_t i = 0; i < habits.size(); ++i) {
+            const std::string p = at(path + ".habits", i);
+            const json& kind = io::member(habits[i], "kind", p);
+            const json& shape = io::member(habits[i], "shape", p);
+            UserModel::ShapeExample e;
+            bool known = false;
+            for (int k = 0; k < 10 && kind.is_string(); ++k) {
+                if (kind.get<std::string>() == shapeName(static_cast<ShapeKind>(k))) {
+                    e.kind = static_cast<ShapeKind>(k);
+                    known = true;
+                }
+            }
+            if (!known) throw InputError(p + ".kind: must be a shape name (\"line\" .. \"freeform\")");
+            if (!shape.is_array()) throw InputError(p + ".shape: must be an array of [x, y]");
+            for (size_t k = 0; k < shape.size(); ++k) {
+                const std::string q = at(p + ".shape", k);
+                if (!shape[k].is_array() || shape[k].size() != 2) throw InputError(q + ": must be [x, y]");
+                e.shape.emplace_back(io::numberFromJson(shape[k][0], q + "[0]"), io::numberFromJson(shape[k][1], q + "[1]"));
+            }
+            try {
+                m.addHabit(std::move(e));
+            } catch (const GeometryError& err) {
+                throw InputError(p + "." + err.what());
+            }
+        }
     }
     return m;
 }

@@ -2,6 +2,8 @@
 
 #include "solvers/bspline/geometry_error.h"
 
+#include <algorithm>
+
 namespace sculptline::solvers::stroke {
 namespace {
 
@@ -92,6 +94,79 @@ int UserModel::insert(ChainNode node)
     return nodes_.back().index;
 }
 
+namespace {
+
+// The stroke as UserModel::samples points evenly spaced along its path (a loop: from its seam round
+// to it again), centred on their mean and divided by the extent: size and position drop out,
+// orientation and drawing direction stay (a person draws the same shape the same way round).
+std::vector<Point2> normalizedShape(const StrokeGeometry& g)
+{
+    std::vector<Point2> path = g.points;
+    if (g.closed) path.push_back(path.front());
+    std::vector<double> arc(path.size(), 0.0);
+    for (size_t i = 1; i < path.size(); ++i) arc[i] = arc[i - 1] + (path[i] - path[i - 1]).norm();
+    std::vector<Point2> out;
+    size_t j = 1;
+    for (int k = 0; k < UserModel::samples; ++k) {
+        const double s = arc.back() * k / (UserModel::samples - 1);
+        while (j + 1 < path.size() && arc[j] < s) ++j;
+        const double span = arc[j] - arc[j - 1], t = span > 0 ? (s - arc[j - 1]) / span : 0.0;
+        out.push_back(path[j - 1] + std::clamp(t, 0.0, 1.0) * (path[j] - path[j - 1]));
+    }
+    Point2 c = Point2::Zero();
+    for (const auto& p : out) c += p / out.size();
+    const double scale = g.extent > 0 ? g.extent : 1.0;
+    for (auto& p : out) p = (p - c) / scale;
+    return out;
+}
+
+double meanDistance(const std::vector<Point2>& a, const std::vector<Point2>& b)
+{
+    double d = 0;
+    for (size_t i = 0; i < a.size(); ++i) d += (a[i] - b[i]).norm();
+    return d / a.size();
+}
+
+}  // namespace
+
+void UserModel::learnShape(const Recognition& recognition, ShapeKind intended)
+{
+    if (recognition.kind == intended || recognition.geometry.points.size() < 2) return;
+    const auto& c = recognition.candidates;
+    if (std::none_of(c.begin(), c.end(), [intended](const ShapeCandidate& x) { return x.kind == intended; })) return;
+    habits_.push_back({normalizedShape(recognition.geometry), intended});
+}
+
+void UserModel::addHabit(ShapeExample example)
+{
+    if (static_cast<int>(example.shape.size()) != samples) {
+        throw GeometryError("shape: must have " + std::to_string(samples) + " points, has " + std::to_string(example.shape.size()));
+    }
+    habits_.push_back(std::move(example));
+}
+
+void UserModel::applyHabits(Recognition& recognition, const FitResult& fit, const RecognizeOptions& options) const
+{
+    if (habits_.empty() || recognition.geometry.points.size() < 2) return;
+    const std::vector<Point2> shape = normalizedShape(recognition.geometry);
+    const ShapeExample* nearest = nullptr;
+    double best = options.habitDistance;
+    for (const ShapeExample& e : habits_) {
+        const double d = meanDistance(shape, e.shape);
+        if (d < best) {
+            best = d;
+            nearest = &e;
+        }
+    }
+    if (!nearest || nearest->kind == recognition.kind) return;
+    auto& c = recognition.candidates;
+    const auto it = std::find_if(c.begin(), c.end(), [nearest](const ShapeCandidate& x) { return x.kind == nearest->kind; });
+    if (it == c.end()) return;
+    std::rotate(c.begin(), it, it + 1);
+    recognition.kind = nearest->kind;
+    if (options.regularize) recognition.regularized = regularizeAs(recognition, fit, recognition.kind);
+}
+
 std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits, UserModel& model,
                                              const RecognizeOptions& options, double ambiguity)
 {
@@ -99,6 +174,7 @@ std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits,
     for (size_t i = 0; i < fits.size(); ++i) {
         Interpretation it;
         it.recognition = recognizeShape(fits[i], options);  // STEP 1-2
+        model.applyHabits(it.recognition, fits[i], options);
         const ShapeKind kind = it.recognition.kind;
         it.node = model.primitiveNode(kind);
         if (it.node == 0) {  // a primitive the table does not know yet: learn it

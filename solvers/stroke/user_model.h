@@ -43,9 +43,30 @@ public:
     /// INSERT (P): appends a row and returns its index.
     int insert(ChainNode node);
 
+    /// The user's drawing habits (thesis §3.1.3: the model adapts to its user). The designer
+    /// corrected a stroke: it was meant as `intended`, not as recognition.kind. The stroke's shape
+    /// is remembered with that class (as ShapeExample: `samples` points evenly spaced along it,
+    /// centred, in units of its extent, drawing direction kept); confirmed strokes teach nothing.
+    /// Does nothing when `intended` is not among the stroke's candidates.
+    void learnShape(const Recognition& recognition, ShapeKind intended);
+    /// A stroke resembling a remembered correction (mean distance between corresponding samples
+    /// below `options.habitDistance`, in extents; the nearest example wins) takes that example's
+    /// class when it is one of its candidates: the candidate moves to the front and the regularized
+    /// curve follows (when options.regularize).
+    void applyHabits(Recognition& recognition, const FitResult& fit, const RecognizeOptions& options = {}) const;
+    struct ShapeExample {
+        std::vector<Point2> shape;
+        ShapeKind kind = ShapeKind::Freeform;
+    };
+    const std::vector<ShapeExample>& habits() const { return habits_; }
+    /// Adds a remembered correction (loading). @throws GeometryError unless it has `samples` points.
+    void addHabit(ShapeExample example);
+    static constexpr int samples = 32;
+
 private:
     std::string user_;
     std::vector<ChainNode> nodes_;
+    std::vector<ShapeExample> habits_;
 };
 
 /// Table 3-2's constraint label of a relation (C7 overlap, C8 parallel, C9 vertical, C10 touch,
@@ -71,7 +92,8 @@ struct Interpretation {
 /// user model and inserted when new (STEP 5). When the previous stroke completed a composite, the
 /// row (that composite, this stroke, relation) is matched first: a three-stroke object (Fig. 3-4 d,
 /// composeThree; learned as such when new). A stroke is ambiguous when its two best candidates
-/// score within `ambiguity`; the model's rows following the previous node are then offered.
+/// score within `ambiguity`; the model's rows following the previous node are then offered. Each
+/// recognition is re-ranked by the user's shape habits first (UserModel::applyHabits).
 std::vector<Interpretation> interpretStrokes(const std::vector<FitResult>& fits, UserModel& model,
                                              const RecognizeOptions& options = {}, double ambiguity = 0.1);
 

@@ -1,0 +1,220 @@
+#include "unistroke_eval.h"
+
+#include "solvers/stroke/stroke_fitter.h"
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace sculptline::stroketest {
+
+namespace stroke = solvers::stroke;
+
+std::vector<std::string> devSubjects() { return {"s02", "s03", "s04", "s05", "s06"}; }
+std::vector<std::string> heldOutSubjects() { return {"s07", "s08", "s09", "s10", "s11"}; }
+
+std::vector<Recording> loadUnistrokes(const std::string& dir, const std::vector<std::string>& subjects)
+{
+    std::vector<Recording> out;
+    for (const auto& s : subjects) {
+        const std::string path = dir + "/" + s + ".csv";
+        std::ifstream in(path);
+        if (!in) throw std::runtime_error("cannot read " + path);
+        std::string line;
+        int lineNo = 0;
+        while (std::getline(in, line)) {
+            ++lineNo;
+            if (line.empty()) continue;
+            Recording r;
+            r.subject = s;
+            std::istringstream fields(line);
+            std::string number, samples;
+            if (!std::getline(fields, r.gesture, ',') || !std::getline(fields, r.speed, ',') ||
+                !std::getline(fields, number, ',') || !std::getline(fields, samples)) {
+                throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": expected gesture,speed,number,samples");
+            }
+            r.number = std::stoi(number);
+            std::istringstream pts(samples);
+            std::string one;
+            while (std::getline(pts, one, ';')) {
+                double x = 0, y = 0, t = 0;
+                std::istringstream p(one);
+                if (!(p >> x >> y >> t)) throw std::runtime_error(path + ":" + std::to_string(lineNo) + ": bad sample '" + one + "'");
+                r.stroke.points.emplace_back(x, -y, 0.0);  // screen y points down
+                r.stroke.times.push_back(t / 1000.0);
+            }
+            out.push_back(std::move(r));
+        }
+    }
+    return out;
+}
+
+const std::vector<ShapeKind>& acceptedKinds(const std::string& gesture)
+{
+    static const std::map<std::string, std::vector<ShapeKind>> table = {
+        {"triangle", {ShapeKind::Triangle}},
+        {"rectangle", {ShapeKind::Rectangle, ShapeKind::Square}},
+        {"circle", {ShapeKind::Circle, ShapeKind::Ellipse}},
+        {"check", {ShapeKind::Polyline}},
+        {"caret", {ShapeKind::Polyline}},
+        {"v", {ShapeKind::Polyline}},
+        {"left_sq_bracket", {ShapeKind::Polyline}},
+        {"right_sq_bracket", {ShapeKind::Polyline}},
+        {"star", {ShapeKind::Polyline}},
+        {"arrow", {ShapeKind::Polyline}},
+        {"x", {ShapeKind::Polyline}},
+        {"delete_mark", {ShapeKind::Polyline}},
+        {"pigtail", {ShapeKind::Freeform}},
+        {"question_mark", {ShapeKind::Freeform}},
+        // A curly brace is two S-bends meeting at a point: curved, not straight segments.
+        {"left_curly_brace", {ShapeKind::Freeform}},
+        {"right_curly_brace", {ShapeKind::Freeform}},
+    };
+    const auto it = table.find(gesture);
+    if (it == table.end()) throw std::invalid_argument("unknown gesture " + gesture);
+    return it->second;
+}
+
+bool isCorrect(const std::string& gesture, ShapeKind kind)
+{
+    const auto& ok = acceptedKinds(gesture);
+    return std::find(ok.begin(), ok.end(), kind) != ok.end();
+}
+
+int Confusion::total() const
+{
+    int n = 0;
+    for (const auto& [g, row] : rows)
+        for (int c : row) n += c;
+    return n;
+}
+
+int Confusion::correct() const
+{
+    int n = 0;
+    for (const auto& [g, row] : rows)
+        for (int k = 0; k < kKinds; ++k)
+            if (isCorrect(g, static_cast<ShapeKind>(k))) n += row[k];
+    return n;
+}
+
+double Confusion::accuracy() const { return total() ? double(correct()) / total() : 0.0; }
+
+double Confusion::accuracy(const std::string& gesture) const
+{
+    const auto it = rows.find(gesture);
+    if (it == rows.end()) return 0.0;
+    int n = 0, ok = 0;
+    for (int k = 0; k <= kKinds; ++k) {
+        n += it->second[k];
+        if (k < kKinds && isCorrect(gesture, static_cast<ShapeKind>(k))) ok += it->second[k];
+    }
+    return n ? double(ok) / n : 0.0;
+}
+
+double Confusion::classAccuracy(ShapeKind kind) const
+{
+    int n = 0, ok = 0;
+    for (const auto& [g, row] : rows) {
+        if (acceptedKinds(g).front() != kind) continue;
+        for (int k = 0; k <= kKinds; ++k) {
+            n += row[k];
+            if (k < kKinds && isCorrect(g, static_cast<ShapeKind>(k))) ok += row[k];
+        }
+    }
+    return n ? double(ok) / n : 0.0;
+}
+
+std::string Confusion::table() const
+{
+    static const char* abbrev[kKinds + 1] = {"line", "arc", "circ", "ell", "tri", "rect", "sq", "diam", "poly", "free", "fail"};
+    std::ostringstream o;
+    o << "| gesture (expected) |";
+    for (const char* a : abbrev) o << ' ' << a << " |";
+    o << " correct |\n|---|";
+    for (int k = 0; k <= kKinds; ++k) o << "---:|";
+    o << "---:|\n";
+    for (const auto& [g, row] : rows) {
+        o << "| " << g << " (" << stroke::shapeName(acceptedKinds(g).front()) << ") |";
+        for (int c : row) o << ' ' << (c ? std::to_string(c) : std::string(".")) << " |";
+        o << ' ' << std::fixed << std::setprecision(1) << 100.0 * accuracy(g) << " % |\n";
+    }
+    o << "| **all** |";
+    for (int k = 0; k <= kKinds; ++k) o << " |";
+    o << " **" << std::fixed << std::setprecision(1) << 100.0 * accuracy() << " %** (" << correct() << "/" << total() << ") |\n";
+    return o.str();
+}
+
+int recognizeRecording(const Recording& r, const stroke::RecognizeOptions& options)
+{
+    try {
+        stroke::RecognizeOptions o = options;
+        o.regularize = false;  // the class is what is measured; regularizing does not change it
+        return static_cast<int>(stroke::recognizeStroke(r.stroke, {}, o).recognition.kind);
+    } catch (const std::exception&) {
+        return -1;
+    }
+}
+
+Confusion evaluate(const std::vector<Recording>& recordings, const stroke::RecognizeOptions& options)
+{
+    Confusion c;
+    for (const auto& r : recordings) {
+        const int k = recognizeRecording(r, options);
+        auto& row = c.rows[r.gesture];
+        ++row[k < 0 ? kFailed : k];
+    }
+    return c;
+}
+
+}  // namespace sculptline::stroketest
+
+#include "solvers/stroke/user_model.h"
+
+namespace sculptline::stroketest {
+
+std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& recordings, int firstN,
+                                              const stroke::RecognizeOptions& options)
+{
+    stroke::RecognizeOptions o = options;
+    o.regularize = false;
+    std::map<std::string, std::vector<const Recording*>> bySubject;
+    for (const auto& r : recordings) bySubject[r.subject].push_back(&r);
+    std::vector<AdaptationResult> out;
+    for (const auto& [subject, recs] : bySubject) {
+        AdaptationResult a;
+        a.subject = subject;
+        stroke::UserModel model = stroke::UserModel::predefined(subject);
+        std::vector<std::pair<const Recording*, stroke::StrokeRecognition>> test;
+        // Learning in drawing order: the logs number each gesture's repetitions at each speed.
+        for (int number = 1; number <= firstN; ++number) {
+            for (const Recording* r : recs) {
+                if (r->number != number) continue;
+                try {
+                    stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                    model.applyHabits(sr.recognition, sr.fit, o);
+                    model.learnShape(sr.recognition, acceptedKinds(r->gesture).front());
+                } catch (const std::exception&) {
+                }
+                ++a.trained;
+            }
+        }
+        for (const Recording* r : recs) {
+            if (r->number <= firstN) continue;
+            ++a.tested;
+            try {
+                stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                a.correctBefore += isCorrect(r->gesture, sr.recognition.kind);
+                model.applyHabits(sr.recognition, sr.fit, o);
+                a.correctAfter += isCorrect(r->gesture, sr.recognition.kind);
+            } catch (const std::exception&) {
+            }
+        }
+        out.push_back(a);
+    }
+    return out;
+}
+
+}  // namespace sculptline::stroketest

@@ -1,0 +1,77 @@
+#pragma once
+// Recognition measured on real pen strokes: the $1 unistroke gesture logs (Wobbrock, Wilson and Li,
+// UIST 2007; tests/data/unistrokes/README.md) run through the pipeline the window uses
+// (fitStroke, then recognizeShape, both with default options).
+#include "solvers/stroke/shape_recognizer.h"
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace sculptline::stroketest {
+
+using solvers::stroke::ShapeKind;
+
+/// One logged gesture: pixel coordinates (y up) and seconds since the first sample.
+struct Recording {
+    std::string subject;  ///< "s02".."s11"
+    std::string gesture;  ///< "triangle", "left_curly_brace", ...
+    std::string speed;    ///< "slow", "medium", "fast"
+    int number = 0;       ///< 1..10, the order in which the subject drew it at that speed
+    solvers::stroke::Stroke stroke;
+};
+
+/// All recordings of the given subjects ("s02".."s11") from `dir` (one CSV per subject).
+/// @throws std::runtime_error when a file is missing or malformed.
+std::vector<Recording> loadUnistrokes(const std::string& dir, const std::vector<std::string>& subjects);
+
+/// The development subjects (tuning allowed) and the held-out ones (report only). The public logs
+/// have no s01, so development is s02-s06.
+std::vector<std::string> devSubjects();
+std::vector<std::string> heldOutSubjects();
+
+/// The classes a designer reads each gesture as: triangle -> triangle; rectangle -> rectangle or
+/// square; circle -> circle or ellipse; straight-segment marks (check, caret, v, square brackets,
+/// star, arrow, x, delete mark) -> polyline; curved marks (pigtail, question mark, curly braces)
+/// -> freeform. The first entry is the class the gesture is reported under.
+const std::vector<ShapeKind>& acceptedKinds(const std::string& gesture);
+bool isCorrect(const std::string& gesture, ShapeKind kind);
+
+constexpr int kKinds = 10;   ///< ShapeKind values
+constexpr int kFailed = 10;  ///< column of strokes the fitter rejected
+
+/// Counts per gesture of each recognized kind (columns: ShapeKind, then kFailed).
+struct Confusion {
+    std::map<std::string, std::array<int, kKinds + 1>> rows;
+    int total() const;
+    int correct() const;
+    double accuracy() const;
+    double accuracy(const std::string& gesture) const;
+    /// Accuracy over all gestures whose reported class is `kind`.
+    double classAccuracy(ShapeKind kind) const;
+    /// Markdown: per-gesture rows, recognized kinds as columns, accuracy per row.
+    std::string table() const;
+};
+
+/// The recognized kind of one recording, or -1 when fitting failed.
+int recognizeRecording(const Recording& r, const solvers::stroke::RecognizeOptions& options = {});
+
+Confusion evaluate(const std::vector<Recording>& recordings, const solvers::stroke::RecognizeOptions& options = {});
+
+}  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+
+/// Adapting to a person (UserModel::learnShape): per subject, the strokes numbered <= `firstN` at
+/// each gesture and speed teach the model (the designer confirms or corrects each, intending the
+/// gesture's reported class); the rest are recognized with and without the learned habits.
+struct AdaptationResult {
+    std::string subject;
+    int trained = 0, tested = 0;
+    int correctBefore = 0, correctAfter = 0;
+};
+std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& recordings, int firstN,
+                                              const solvers::stroke::RecognizeOptions& options = {});
+
+}  // namespace sculptline::stroketest

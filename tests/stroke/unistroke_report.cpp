@@ -1,0 +1,211 @@
+// unistroke-report: recognition accuracy on the $1 unistroke logs (tests/data/unistrokes), as
+// Markdown confusion matrices for the development subjects (s02-s06) and, with --held-out, for the
+// held-out subjects (s07-s11).
+//   unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value]...
+//   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
+//   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
+//   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
+// --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
+// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
+// The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
+#include "unistroke_eval.h"
+
+#include "solvers/stroke/stroke_fitter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <iomanip>
+#include <iostream>
+
+namespace st = sculptline::stroketest;
+
+namespace {
+
+sculptline::solvers::stroke::RecognizeOptions gOptions;
+
+void report(const char* title, const std::vector<st::Recording>& recs)
+{
+    const st::Confusion c = st::evaluate(recs, gOptions);
+    std::cout << "### " << title << "\n\n" << c.table() << "\nPer class: ";
+    for (auto k : {st::ShapeKind::Triangle, st::ShapeKind::Rectangle, st::ShapeKind::Circle, st::ShapeKind::Polyline, st::ShapeKind::Freeform}) {
+        std::cout << sculptline::solvers::stroke::shapeName(k) << ' ' << std::fixed << std::setprecision(1) << 100.0 * c.classAccuracy(k) << " %  ";
+    }
+    std::cout << "\n\n";
+}
+
+// One line per recording of `gesture`: what the recognizer saw (for development on s02-s06 only).
+void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
+{
+    namespace sk = sculptline::solvers::stroke;
+    for (const auto& r : recs) {
+        if (r.gesture != gesture) continue;
+        sk::RecognizeOptions o = gOptions;
+        o.regularize = false;
+        const sk::StrokeRecognition sr = sk::recognizeStroke(r.stroke, {}, o);
+        const sk::FitResult& fit = sr.fit;
+        const sk::Recognition& rec = sr.recognition;
+        std::cout << r.subject << ' ' << r.speed << ' ' << r.number << " n=" << r.stroke.points.size() << " cond=" << fit.conditioned.size()
+                  << " closed=" << rec.geometry.closed << " corners=" << fit.corners.size() << " verts=" << rec.geometry.vertices.size()
+                  << " ext=" << std::setprecision(3) << rec.geometry.extent << " len=" << rec.geometry.length << " ->";
+        for (const auto& c : rec.candidates) std::cout << ' ' << sk::shapeName(c.kind) << ':' << std::setprecision(2) << c.score;
+        std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG") << '\n';
+    }
+}
+
+double turnDeg(const std::vector<sculptline::solvers::stroke::Point2>& pts, const sculptline::solvers::stroke::Point2& c)
+{
+    double total = 0, prev = std::atan2(pts.front().y() - c.y(), pts.front().x() - c.x());
+    for (const auto& p : pts) {
+        const double a = std::atan2(p.y() - c.y(), p.x() - c.x());
+        double d = a - prev;
+        if (d > M_PI) d -= 2 * M_PI;
+        if (d < -M_PI) d += 2 * M_PI;
+        total += d;
+        prev = a;
+    }
+    return std::abs(total) * 180 / M_PI;
+}
+
+// Features of every development recording as TSV, for analysis while tuning.
+void features(const std::vector<st::Recording>& recs)
+{
+    namespace sk = sculptline::solvers::stroke;
+    std::cout << "subject\tspeed\tnum\tgesture\tkind\tclosed\tcorners\tverts\tsupported\tmaxres\trmsres\tminturn\tcircres\tellres\tellratio\tbow\tcmax\tturn\n";
+    for (const auto& r : recs) {
+        sk::RecognizeOptions o = gOptions;
+        o.regularize = false;
+        const sk::StrokeRecognition sr = sk::recognizeStroke(r.stroke, {}, o);
+        const sk::FitResult& fit = sr.fit;
+        const sk::Recognition& rec = sr.recognition;
+        const sk::StrokeGeometry& g = rec.geometry;
+        double bow = 0;  // worst deviation from an edge relative to that edge's length
+        {
+            const auto& idx = g.vertexIndex;
+            const int n = static_cast<int>(g.points.size());
+            const size_t ne = idx.size() < 2 ? 0 : (g.closed ? idx.size() : idx.size() - 1);
+            for (size_t e = 0; e < ne; ++e) {
+                const int a = idx[e], b = idx[(e + 1) % idx.size()];
+                const auto pa = g.points[a], pb = g.points[b];
+                const double len = (pb - pa).norm();
+                for (int k = (a + 1) % n; k != b; k = (k + 1) % n) {
+                    const auto ab = pb - pa;
+                    const double t = len > 0 ? std::clamp((g.points[k] - pa).dot(ab) / (len * len), 0.0, 1.0) : 0.0;
+                    bow = std::max(bow, (pa + t * ab - g.points[k]).norm() / std::max(len, 1e-9 * g.extent));
+                }
+            }
+        }
+        const sk::StrokeGeometry g0 = sk::strokeGeometry(fit);
+        int supported = 0;
+        for (int k : g.vertexIndex)
+            for (int c : g0.vertexIndex)
+                if (std::abs(k - c) <= 2) { ++supported; break; }
+        double cmax = 0;  // polyline through the fitter's corners (and the seam of a loop) only
+        {
+            std::vector<int> ci = g0.vertexIndex;
+            if (g0.closed && (ci.empty() || ci.front() != 0)) ci.insert(ci.begin(), 0);
+            const size_t ne = ci.size() < 2 ? 0 : (g0.closed ? ci.size() : ci.size() - 1);
+            const int n = static_cast<int>(g0.points.size());
+            for (size_t e = 0; e < ne; ++e) {
+                const int a = ci[e], b = ci[(e + 1) % ci.size()];
+                const sculptline::solvers::stroke::Point2 pa = g0.points[a], pb = g0.points[b], ab = pb - pa;
+                for (int k = (a + 1) % n; k != b; k = (k + 1) % n) {
+                    const double t = ab.squaredNorm() > 0 ? std::clamp((g0.points[k] - pa).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+                    cmax = std::max(cmax, (pa + t * ab - g0.points[k]).norm());
+                }
+            }
+            if (ne == 0) cmax = 1e9;
+        }
+        double maxres = 0, sum = 0;
+        const size_t edges = g.vertices.size() < 2 ? 0 : (g.closed ? g.vertices.size() : g.vertices.size() - 1);
+        for (const auto& p : g.points) {
+            double best = 1e300;
+            for (size_t e = 0; e < edges; ++e) {
+                const auto a = g.vertices[e], b = g.vertices[(e + 1) % g.vertices.size()];
+                const auto ab = b - a;
+                const double t = ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+                best = std::min(best, (a + t * ab - p).norm());
+            }
+            if (edges == 0) best = 0;
+            maxres = std::max(maxres, best);
+            sum += best * best;
+        }
+        double minturn = 10;
+        const size_t m = g.vertices.size();
+        for (size_t v = g.closed ? 0 : 1; m >= 3 && v < (g.closed ? m : m - 1); ++v) {
+            const auto a = g.vertices[v] - g.vertices[(v + m - 1) % m], b = g.vertices[(v + 1) % m] - g.vertices[v];
+            minturn = std::min(minturn, std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b)));
+        }
+        const double e = g.extent;
+        std::cout << r.subject << '\t' << r.speed << '\t' << r.number << '\t' << r.gesture << '\t' << sk::shapeName(rec.kind) << '\t' << g.closed << '\t'
+                  << fit.corners.size() << '\t' << m << '\t' << supported << '\t' << maxres / e << '\t' << std::sqrt(sum / g.points.size()) / e << '\t'
+                  << minturn << '\t' << (rec.circle.valid ? rec.circle.maxResidual / e : -1) << '\t' << (rec.ellipse.valid ? rec.ellipse.maxResidual / e : -1) << '\t'
+                  << (rec.ellipse.valid ? rec.ellipse.a / rec.ellipse.b : -1) << '\t' << bow << '\t' << cmax / e << '\t' << turnDeg(g.points, rec.circle.center) << '\n';
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    std::string dir = SCULPTLINE_UNISTROKE_DATA;
+    bool dev = false, held = false;
+    for (int i = 1; i < argc; ++i) {
+        if (!std::strcmp(argv[i], "--dev")) dev = true;
+        else if (!std::strcmp(argv[i], "--held-out")) held = true;
+        else if (!std::strcmp(argv[i], "--data") && i + 1 < argc) dir = argv[++i];
+        else if (!std::strcmp(argv[i], "--set") && i + 1 < argc) {  // --set name=value (RecognizeOptions)
+            const std::string kv = argv[++i];
+            const auto eq = kv.find('=');
+            const std::string k = kv.substr(0, eq);
+            const double v = std::stod(kv.substr(eq + 1));
+            auto& o = gOptions;
+            if (k == "residualScale") o.residualScale = v;
+            else if (k == "freeformScore") o.freeformScore = v;
+            else if (k == "vertexInsertion") o.vertexInsertion = v;
+            else if (k == "collinearAngle") o.collinearAngle = v;
+            else if (k == "shortEdge") o.shortEdge = v;
+            else if (k == "minCornerTurn") o.minCornerTurn = v;
+            else if (k == "guessedVertex") o.guessedVertex = v;
+            else if (k == "habitDistance") o.habitDistance = v;
+            else if (k == "maxOvershoot") o.maxOvershoot = v;
+            else if (k == "minLoopTurn") o.minLoopTurn = v;
+            else {
+                std::cerr << "unknown option " << k << '\n';
+                return 2;
+            }
+        } else if (!std::strcmp(argv[i], "--adapt") && i + 1 < argc) {  // --adapt dev|held-out
+            const bool h = !std::strcmp(argv[++i], "held-out");
+            const auto recs = st::loadUnistrokes(dir, h ? st::heldOutSubjects() : st::devSubjects());
+            std::cout << "| first n learned | subject | tested | without habits | with habits | change |\n|---:|---|---:|---:|---:|---:|\n";
+            for (int n : {1, 2, 3}) {
+                int t = 0, b = 0, a = 0;
+                for (const auto& r : st::adaptPerSubject(recs, n, gOptions)) {
+                    std::cout << "| " << n << " | " << r.subject << " | " << r.tested << " | " << std::fixed << std::setprecision(1)
+                              << 100.0 * r.correctBefore / r.tested << " % | " << 100.0 * r.correctAfter / r.tested << " % | "
+                              << std::showpos << 100.0 * (r.correctAfter - r.correctBefore) / r.tested << std::noshowpos << " |\n";
+                    t += r.tested;
+                    b += r.correctBefore;
+                    a += r.correctAfter;
+                }
+                std::cout << "| " << n << " | **all** | " << t << " | " << 100.0 * b / t << " % | " << 100.0 * a / t << " % | " << std::showpos
+                          << 100.0 * (a - b) / t << std::noshowpos << " |\n";
+            }
+            return 0;
+        } else if (!std::strcmp(argv[i], "--features-dev")) {
+            features(st::loadUnistrokes(dir, st::devSubjects()));
+            return 0;
+        } else if (!std::strcmp(argv[i], "--dump-dev") && i + 1 < argc) {
+            dump(st::loadUnistrokes(dir, st::devSubjects()), argv[++i]);
+            return 0;
+        }
+        else {
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev\n";
+            return 2;
+        }
+    }
+    if (!dev && !held) dev = true;
+    if (dev) report("Development subjects s02-s06 (slow, medium, fast)", st::loadUnistrokes(dir, st::devSubjects()));
+    if (held) report("Held-out subjects s07-s11 (slow, medium, fast)", st::loadUnistrokes(dir, st::heldOutSubjects()));
+    return 0;
+}
