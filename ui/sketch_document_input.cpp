@@ -143,7 +143,9 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
     try {
         // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and
         // least squares, in the plane's local frame and model units.
-        const solvers::stroke::FitResult fit = solvers::stroke::fitStroke(input);
+        // The fit the recognizer reads (a self-crossing stroke refitted open, a nearly closed
+        // loop refitted closed: solvers/stroke recognizeStroke, tuned on real pen data).
+        const solvers::stroke::FitResult fit = solvers::stroke::recognizeStroke(input).fit;
         model::requireCurveExtent(fit.curve);
         model::Entity curve;
         curve.kind = model::EntityKind::Curve;

@@ -28,7 +28,9 @@ stroke::FitResult fitOne(const stroke::Stroke& k, double tolerance)
     stroke::FitOptions o;
     o.tolerance = tolerance;
     try {
-        return stroke::fitStroke(k, o);
+        // The fit recognition reads: a self-crossing stroke refitted open, a nearly closed loop
+        // refitted closed (recognizeStroke; issue 15 §1, real pen data).
+        return stroke::recognizeStroke(k, o).fit;
     } catch (const solvers::GeometryError& e) {
         throw InputError(e.what());
     }
