@@ -44,7 +44,10 @@ class Recovery : public testing::Test {
 protected:
     void SetUp() override
     {
-        home_ = testing::TempDir() + "sculptline_recovery_" + testing::UnitTest::GetInstance()->current_test_info()->name();
+        // The process id keeps concurrent runs of this test (two build trees, CI beside a developer)
+        // out of each other's folders: a shared one showed two recovery files, and a live lock taken.
+        home_ = testing::TempDir() + "sculptline_recovery_" + std::to_string(getpid()) + "_" +
+                testing::UnitTest::GetInstance()->current_test_info()->name();
         std::system(("rm -rf '" + home_ + "' && mkdir -p '" + home_ + "'").c_str());
     }
 
