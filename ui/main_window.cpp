@@ -12,6 +12,7 @@
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
+#include "ui/view_navigation.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbViewVolume.h>
@@ -31,6 +32,7 @@
 #include <QMouseEvent>
 #include <QScreen>
 #include <QStatusBar>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +61,8 @@ constexpr double kCurvePickRadius = 12.0;
 constexpr float kSameDepth = 0.5f;
 /// Samples per curve when looking for the nearest one on screen.
 constexpr int kCurvePickSamples = 128;
+/// How the view moves, in every mode (ui/view_navigation.h).
+const QString kNavigationHint = QStringLiteral("View: middle-drag or Alt+left turns, right-drag pans, wheel zooms; right-click: menu.");
 
 }  // namespace
 
@@ -74,12 +78,17 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
     }
     document_ = new SketchDocument(this);
     history_ = new UndoHistory(*document_, this);
+    navigation_ = std::make_unique<ViewNavigation>();
     if (withViewer) {
         viewer_ = new SoQtExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
         // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
         viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
         viewer_->setFeedbackVisibility(FALSE);
+        // No spin on after a quick turn: the view stops where the pointer does. No developer menu
+        // on the right button: Sculptline's own context menu is there.
+        viewer_->setAnimationEnabled(FALSE);
+        viewer_->setPopupMenuEnabled(FALSE);
         viewer_->setEventCallback(&MainWindow::viewerEvent, this);
         document_->setCamera([this]() { return viewer_->getCamera(); });
     }
@@ -110,7 +119,8 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
             std::cerr << "sculptline: " << document_->surfaceMessage().toStdString() << "\n";
     });
     connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this]() { updateTitle(); });
-    setMode(Mode::View);
+    // Ready to draw: the left button sketches, the other buttons move the view (ui/view_navigation.h).
+    setMode(Mode::Sketch);
 }
 
 MainWindow::~MainWindow()
@@ -363,7 +373,7 @@ void MainWindow::updateStatus()
     const model::EntityId plane = document_->activePlane();
     QString text;
     switch (mode_) {
-    case Mode::View: text = tr("View: drag to turn, middle-drag to pan, wheel to zoom. S: sketch, E: select."); break;
+    case Mode::View: text = tr("View: drag to turn, right-drag to pan, wheel to zoom. S: sketch, E: select."); break;
     case Mode::Sketch:
         text = plane ? tr("Sketch: draw with the left button on plane %1; drag the plane's jack to move or turn it. Ctrl+P: new plane.").arg(plane)
                      : tr("Sketch: there is no plane to draw on; Ctrl+P adds one facing the view.");
@@ -414,6 +424,8 @@ void MainWindow::updateStatus()
         if (!document_->surfaceMessage().isEmpty()) text = document_->surfaceMessage() + QStringLiteral("  ") + text;
         break;
     }
+    // The view moves the same way in every mode, so every mode's message ends with it.
+    if (mode_ != Mode::View) text += QStringLiteral("  ") + kNavigationHint;
     statusBar()->showMessage(text);
 }
 
@@ -515,6 +527,7 @@ void MainWindow::addPlaneFacingViewer()
 SbBool MainWindow::viewerEvent(void* self, QEvent* event)
 {
     auto* window = static_cast<MainWindow*>(self);
+    if (window->navigate(event)) return TRUE;
     if (event->type() != QEvent::MouseButtonPress) return FALSE;
     auto* mouse = static_cast<QMouseEvent*>(event);
     if (mouse->button() != Qt::LeftButton) return FALSE;
@@ -533,6 +546,33 @@ SbBool MainWindow::viewerEvent(void* self, QEvent* event)
     window->pickAt(mouse->pos());
     return FALSE;
 }
+
+bool MainWindow::navigate(QEvent* event)
+{
+    SoCamera* camera = viewer_->getCamera();
+    switch (event->type()) {
+    case QEvent::Wheel:
+        ViewNavigation::wheel(*static_cast<QWheelEvent*>(event), camera);
+        return true;
+    case QEvent::MouseButtonPress: {
+        // A stroke or a drag under way keeps the mouse; the other buttons wait for it to end.
+        if (document_->strokeInput().drawing() || document_->dragging()) return false;
+        return navigation_->press(*static_cast<QMouseEvent*>(event));
+    }
+    case QEvent::MouseMove:
+        return navigation_->move(*static_cast<QMouseEvent*>(event), camera, viewport()->height());
+    case QEvent::MouseButtonRelease: {
+        bool click = false;
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        if (!navigation_->release(*mouse, &click)) return false;
+        if (click) showContextMenu(mouse->pos());
+        return true;
+    }
+    default: return false;
+    }
+}
+
+void MainWindow::showContextMenu(const QPoint& position) { (void)position; }
 
 bool MainWindow::pickAt(const QPoint& position)
 {

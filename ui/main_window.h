@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QMainWindow>
 
+#include <memory>
 #include <string>
 
 #include <Inventor/SbBasic.h>
@@ -28,6 +29,7 @@ class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
 class UndoHistory;
+class ViewNavigation;
 
 /// Surface: one of the surface modes (MainWindow::surfaceMode() says which).
 enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface, Sculpt, Incidence };
@@ -118,18 +120,24 @@ private:
     void exportDocument();
     void addPlaneFacingViewer();
     static SbBool viewerEvent(void* self, QEvent* event);
+    /// Turns, pans or zooms the view for the buttons that do not draw (every mode); true when
+    /// `event` was taken for that.
+    bool navigate(QEvent* event);
+    /// Sculptline's context menu for what lies under `position` (viewport pixels).
+    void showContextMenu(const QPoint& position);
     bool pickAt(const QPoint& position);
     /// The curve drawn nearest to `position` (viewport pixels) within kCurvePickRadius, or 0: in
     /// the surface modes a click need not hit the thin line exactly.
     model::EntityId curveNear(const QPoint& position) const;
 
     SoQtExaminerViewer* viewer_ = nullptr;
+    std::unique_ptr<ViewNavigation> navigation_;
     SketchDocument* document_ = nullptr;
     EntityListDock* entities_ = nullptr;
     InspectorDock* inspector_ = nullptr;
     RecognitionDock* recognition_ = nullptr;
     QActionGroup* modes_ = nullptr;
-    Mode mode_ = Mode::View;
+    Mode mode_ = Mode::Sketch;
     std::optional<model::Construction> surfaceMode_;
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
