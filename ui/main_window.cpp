@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "manipulators/curve_pull.h"
+#include "manipulators/plane_binding.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
@@ -26,8 +27,10 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QGLWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMouseEvent>
 #include <QScreen>
@@ -112,6 +115,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
                       << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString()) << "\n";
         }
     });
+    connect(document_, &SketchDocument::strokeForgotten, this, [this]() { recognition_->refresh(); });
     connect(document_, &SketchDocument::surfaceStateChanged, this, [this]() {
         updateStatus();
         // A replay has nobody reading the status bar: its log says what the surface modes did.
@@ -288,6 +292,38 @@ void MainWindow::createActions()
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
                              [this](bool on) { document_->view().setControlPolygonsVisible(on); });
     polygons->setCheckable(true);
+    // Hiding planes is a view setting, like the control polygons: not an edit of the model, not
+    // undone, not saved (the boat's five planes bury its hull; the designer looks past them).
+    viewMenu->addSeparator();
+    make(viewMenu, "view.hidePlane", tr("&Hide the selected plane"), QKeySequence(QStringLiteral("H")), [this]() { hideSelectedPlane(); });
+    make(viewMenu, "view.hidePlanes", tr("Hide &all planes"), QKeySequence(QStringLiteral("Ctrl+Shift+H")), [this]() { setPlanesVisible(false); });
+    make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
+}
+
+void MainWindow::hideSelectedPlane()
+{
+    const model::Entity* e = document_->model().find(document_->selection());
+    if (!e || e->kind != model::EntityKind::Plane) {
+        statusBar()->showMessage(tr("Select a plane to hide it (E, then click its jack), or View > Hide all planes."));
+        return;
+    }
+    document_->planeDraggers().setVisible(e->id, false);
+    // A hidden plane is not a visible selection: Delete must not remove what cannot be seen.
+    document_->select(0);
+    statusBar()->showMessage(tr("Plane %1 hidden; its curves stay. Shift+H shows all planes.").arg(e->id));
+}
+
+void MainWindow::setPlanesVisible(bool visible)
+{
+    int count = 0;
+    for (const auto& [id, e] : document_->model().entities()) {
+        if (e.kind != model::EntityKind::Plane) continue;
+        document_->planeDraggers().setVisible(id, visible);
+        ++count;
+    }
+    const model::Entity* selected = document_->model().find(document_->selection());
+    if (!visible && selected && selected->kind == model::EntityKind::Plane) document_->select(0);
+    statusBar()->showMessage(visible ? tr("%1 planes shown.").arg(count) : tr("%1 planes hidden; Shift+H shows them.").arg(count));
 }
 
 void MainWindow::createDocks()
@@ -318,8 +354,14 @@ void MainWindow::createDocks()
     tabifyDockWidget(inspector_, lcurve);
     inspector_->raise();
     lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
-    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0)))
+    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0))) {
         viewMenu->addAction(lcurve->toggleViewAction());
+        // Each dock can be closed and brought back (a window fitted to a small screen hides them).
+        QMenu* docks = viewMenu->addMenu(tr("&Docks"));
+        for (QDockWidget* dock : {static_cast<QDockWidget*>(modes), static_cast<QDockWidget*>(recognition_),
+                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_)})
+            docks->addAction(dock->toggleViewAction());
+    }
     connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);
     connect(document_, &SketchDocument::selectionChanged, lcurve, [lcurve]() {
         lcurve->refresh();
@@ -572,7 +614,52 @@ bool MainWindow::navigate(QEvent* event)
     }
 }
 
-void MainWindow::showContextMenu(const QPoint& position) { (void)position; }
+void MainWindow::showContextMenu(const QPoint& position)
+{
+    // What lies under the pointer is selected, as a left click in Select mode would, and the menu
+    // offers what can be done to it (the same actions as the menus, so shortcuts and undo agree).
+    pickAt(position);
+    const model::Entity* e = document_->model().find(document_->selection());
+    if (!contextMenu_) {
+        contextMenu_ = new QMenu(this);
+        contextMenu_->setObjectName(QStringLiteral("menu.context"));
+    }
+    contextMenu_->clear();
+    auto add = [this](const char* name, const QString& text) {
+        QAction* a = action(QString::fromLatin1(name));
+        if (!a) return;
+        QAction* item = contextMenu_->addAction(text, a, &QAction::trigger);
+        item->setShortcut(a->shortcut());
+        item->setObjectName(QStringLiteral("context.") + QString::fromLatin1(name));
+    };
+    if (!e) {
+        contextMenu_->setTitle(tr("View"));
+        add("plane.add", tr("Add a plane facing the view"));
+        add("view.all", tr("Frame the scene"));
+        add("view.showPlanes", tr("Show all planes"));
+        add("view.hidePlanes", tr("Hide all planes"));
+    } else if (e->kind == model::EntityKind::Curve) {
+        contextMenu_->setTitle(tr("Curve %1").arg(e->id));
+        add("edit.toggleFixed", e->fixed ? tr("Free curve %1").arg(e->id) : tr("Fix curve %1").arg(e->id));
+        add("mode.oversketch", tr("Over-sketch it"));
+        add("mode.pull", tr("Pull its points"));
+        add("edit.removePins", tr("Remove its pins"));
+        add("edit.delete", tr("Delete curve %1").arg(e->id));
+    } else if (e->kind == model::EntityKind::Plane) {
+        contextMenu_->setTitle(tr("Plane %1").arg(e->id));
+        add("mode.sketch", tr("Sketch on plane %1").arg(e->id));
+        add("view.hidePlane", tr("Hide plane %1").arg(e->id));
+        add("edit.toggleFixed", e->fixed ? tr("Free plane %1").arg(e->id) : tr("Fix plane %1").arg(e->id));
+        add("edit.delete", tr("Delete plane %1").arg(e->id));
+    } else {
+        contextMenu_->setTitle(tr("Surface %1").arg(e->id));
+        add("mode.sculpt", tr("Sculpt it with target curves"));
+        add("mode.incidence", tr("Draw curves onto it"));
+        add("edit.toggleFixed", e->fixed ? tr("Free surface %1").arg(e->id) : tr("Fix surface %1").arg(e->id));
+        add("edit.delete", tr("Delete surface %1").arg(e->id));
+    }
+    contextMenu_->popup(viewport()->mapToGlobal(position));
+}
 
 bool MainWindow::pickAt(const QPoint& position)
 {
@@ -647,17 +734,62 @@ bool MainWindow::refuseDialog(const char* action) const
     return automated_;
 }
 
-void MainWindow::setViewportSize(int width, int height)
+void MainWindow::resizeViewport(int width, int height)
 {
     // The GL area's share of the window is known only once the layout has run (docks, menu and
     // status bar settle after show()); correct until it matches, a few rounds at most.
     QWidget* gl = viewport();
     const QSize target(width, height);
+    // A layout change just made (docks hidden or tabbed) reaches the GL area only through events.
+    QApplication::processEvents();
     for (int round = 0; round < 5 && gl->size() != target; ++round) {
         const QSize extra = size() - gl->size();
         resize(width + extra.width(), height + extra.height());
         QApplication::processEvents();
     }
+}
+
+bool MainWindow::fitScreen()
+{
+    const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+    if (!screen) return true;
+    const QRect available = screen->availableGeometry();
+    const QRect frame = frameGeometry();
+    if (frame.width() > available.width() || frame.height() > available.height()) return false;
+    // Big enough, but partly off the screen: moved onto it.
+    if (!available.contains(frame)) {
+        move(std::clamp(frame.left(), available.left(), available.right() + 1 - frame.width()),
+             std::clamp(frame.top(), available.top(), available.bottom() + 1 - frame.height()));
+        QApplication::processEvents();
+    }
+    return true;
+}
+
+void MainWindow::setViewportSize(int width, int height)
+{
+    resizeViewport(width, height);
+    if (fitScreen()) return;
+    // The viewport's size is what a replay relies on; the docks give way: first one column of tabs
+    // instead of two, then, where even that does not fit beside the viewport, no docks (View >
+    // Docks brings each back).
+    const QList<QDockWidget*> docks = findChildren<QDockWidget*>();
+    QDockWidget* first = entities_;
+    for (QDockWidget* dock : docks) {
+        if (dock == first) continue;
+        if (dockWidgetArea(dock) != Qt::RightDockWidgetArea) addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (!tabifiedDockWidgets(first).contains(dock)) tabifyDockWidget(first, dock);
+    }
+    first->raise();
+    resizeViewport(width, height);
+    QString message = tr("The docks are tabbed in one column to fit a %1 x %2 viewport on this screen.").arg(width).arg(height);
+    if (!fitScreen()) {
+        for (QDockWidget* dock : docks) dock->hide();
+        resizeViewport(width, height);
+        fitScreen();
+        message = tr("The docks do not fit beside a %1 x %2 viewport on this screen: hidden (View > Docks shows them).").arg(width).arg(height);
+    }
+    statusBar()->showMessage(message);
+    if (automated_) std::cerr << "sculptline: " << message.toStdString() << "\n";
 }
 
 void MainWindow::renderViewport() { viewer_->render(); }
