@@ -165,15 +165,17 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         }
     }
     if (stroke.points.size() < 2) return;
-    if (const QString why = farFromSight(stroke); !why.isEmpty()) {
-        lastStroke_.message = tr("Stroke not used: %1").arg(why);
-        Q_EMIT strokeFinished();
-        return;
-    }
     if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Bound) {
         std::vector<Eigen::Vector3d> world;
         for (const Eigen::Vector3d& p : stroke.points) world.push_back(stroke.frame.toWorld(p));
         setSculptBound(world);
+        return;
+    }
+    // (A bound is drawn over the surface, which it is projected onto: the plane is only the pen's
+    // support there, however far from its square.)
+    if (const QString why = farFromSight(stroke); !why.isEmpty()) {
+        lastStroke_.message = tr("Stroke not used: %1").arg(why);
+        Q_EMIT strokeFinished();
         return;
     }
     std::vector<model::Entity> added;
