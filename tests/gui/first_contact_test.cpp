@@ -241,6 +241,8 @@ TEST(FirstContact, RightClickOpensSculptlinesMenuForWhatIsUnderThePointer)
         if (a->objectName() == QStringLiteral("context.view.hidePlane")) hide = a;
     }
     ASSERT_NE(hide, nullptr);
+    if (const char* dir = std::getenv("SCULPTLINE_FIRST_CONTACT_SHOTS"))
+        f.window.contextMenu()->grab().save(QString::fromLocal8Bit(dir) + "/first_contact_plane_menu.png");
     f.window.contextMenu()->close();
     hide->trigger();
     EXPECT_FALSE(f.window.document().planeDraggers().visible(1));
