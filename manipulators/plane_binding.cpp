@@ -56,9 +56,24 @@ void PlaneDraggers::entityRemoved(const model::Entity& e)
 {
     const auto it = manipulators_.find(e.id);
     if (it == manipulators_.end()) return;
-    root_->removeChild(it->second->root());
+    if (root_->findChild(it->second->root()) >= 0) root_->removeChild(it->second->root());
     manipulators_.erase(it);
+    hidden_.erase(e.id);
     if (dragging_ == e.id) dragging_ = 0;  // its dragger is gone: no release will come
+}
+
+void PlaneDraggers::setVisible(model::EntityId id, bool visible)
+{
+    ProjectionPlaneManipulator* m = manipulator(id);
+    if (!m || visible == this->visible(id)) return;
+    // Out of the graph rather than switched off: a hidden plane draws nothing and is never picked.
+    if (visible) {
+        hidden_.erase(id);
+        root_->addChild(m->root());
+    } else {
+        hidden_.insert(id);
+        root_->removeChild(m->root());
+    }
 }
 
 void PlaneDraggers::entityUpdated(const model::Entity& e)

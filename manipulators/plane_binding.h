@@ -10,6 +10,7 @@
 
 #include <functional>
 #include <map>
+#include <set>
 #include <memory>
 #include <utility>
 
@@ -51,6 +52,14 @@ public:
 
     void setDragCallbacks(StartedCallback started, FinishedCallback finished);
 
+    /// Shows or hides plane `id`'s square and jack (a view setting: the model and the plane's
+    /// curves are untouched; a hidden plane cannot be picked or dragged). A plane removed and
+    /// added again (undo) comes back shown.
+    void setVisible(model::EntityId id, bool visible);
+    bool visible(model::EntityId id) const { return manipulators_.count(id) > 0 && hidden_.count(id) == 0; }
+    /// Number of planes hidden.
+    size_t hiddenCount() const { return hidden_.size(); }
+
     void entityAdded(const model::Entity& entity) override;
     void entityRemoved(const model::Entity& entity) override;
     void entityUpdated(const model::Entity& entity) override;
@@ -63,6 +72,7 @@ private:
     scene::UpdateScheduler& scheduler_;
     SoSeparator* root_ = nullptr;
     std::map<model::EntityId, std::unique_ptr<ProjectionPlaneManipulator>> manipulators_;
+    std::set<model::EntityId> hidden_;
     model::EntityId dragging_ = 0;
     model::PlaneFrame dragStart_;
     StartedCallback started_;

@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "manipulators/curve_pull.h"
+#include "manipulators/plane_binding.h"
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
@@ -12,6 +13,7 @@
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
+#include "ui/view_navigation.h"
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbViewVolume.h>
@@ -25,12 +27,15 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QGLWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMouseEvent>
 #include <QScreen>
 #include <QStatusBar>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
@@ -59,6 +64,8 @@ constexpr double kCurvePickRadius = 12.0;
 constexpr float kSameDepth = 0.5f;
 /// Samples per curve when looking for the nearest one on screen.
 constexpr int kCurvePickSamples = 128;
+/// How the view moves, in every mode (ui/view_navigation.h).
+const QString kNavigationHint = QStringLiteral("View: middle-drag or Alt+left turns, right-drag pans, wheel zooms; right-click: menu.");
 
 }  // namespace
 
@@ -74,12 +81,17 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
     }
     document_ = new SketchDocument(this);
     history_ = new UndoHistory(*document_, this);
+    navigation_ = std::make_unique<ViewNavigation>();
     if (withViewer) {
         viewer_ = new SoQtExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
         // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
         viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
         viewer_->setFeedbackVisibility(FALSE);
+        // No spin on after a quick turn: the view stops where the pointer does. No developer menu
+        // on the right button: Sculptline's own context menu is there.
+        viewer_->setAnimationEnabled(FALSE);
+        viewer_->setPopupMenuEnabled(FALSE);
         viewer_->setEventCallback(&MainWindow::viewerEvent, this);
         document_->setCamera([this]() { return viewer_->getCamera(); });
     }
@@ -103,6 +115,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
                       << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString()) << "\n";
         }
     });
+    connect(document_, &SketchDocument::strokeForgotten, this, [this]() { recognition_->refresh(); });
     connect(document_, &SketchDocument::surfaceStateChanged, this, [this]() {
         updateStatus();
         // A replay has nobody reading the status bar: its log says what the surface modes did.
@@ -110,7 +123,8 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
             std::cerr << "sculptline: " << document_->surfaceMessage().toStdString() << "\n";
     });
     connect(document_->undoStack(), &QUndoStack::cleanChanged, this, [this]() { updateTitle(); });
-    setMode(Mode::View);
+    // Ready to draw: the left button sketches, the other buttons move the view (ui/view_navigation.h).
+    setMode(Mode::Sketch);
 }
 
 MainWindow::~MainWindow()
@@ -278,6 +292,38 @@ void MainWindow::createActions()
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
                              [this](bool on) { document_->view().setControlPolygonsVisible(on); });
     polygons->setCheckable(true);
+    // Hiding planes is a view setting, like the control polygons: not an edit of the model, not
+    // undone, not saved (the boat's five planes bury its hull; the designer looks past them).
+    viewMenu->addSeparator();
+    make(viewMenu, "view.hidePlane", tr("&Hide the selected plane"), QKeySequence(QStringLiteral("H")), [this]() { hideSelectedPlane(); });
+    make(viewMenu, "view.hidePlanes", tr("Hide &all planes"), QKeySequence(QStringLiteral("Ctrl+Shift+H")), [this]() { setPlanesVisible(false); });
+    make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
+}
+
+void MainWindow::hideSelectedPlane()
+{
+    const model::Entity* e = document_->model().find(document_->selection());
+    if (!e || e->kind != model::EntityKind::Plane) {
+        statusBar()->showMessage(tr("Select a plane to hide it (E, then click its jack), or View > Hide all planes."));
+        return;
+    }
+    document_->planeDraggers().setVisible(e->id, false);
+    // A hidden plane is not a visible selection: Delete must not remove what cannot be seen.
+    document_->select(0);
+    statusBar()->showMessage(tr("Plane %1 hidden; its curves stay. Shift+H shows all planes.").arg(e->id));
+}
+
+void MainWindow::setPlanesVisible(bool visible)
+{
+    int count = 0;
+    for (const auto& [id, e] : document_->model().entities()) {
+        if (e.kind != model::EntityKind::Plane) continue;
+        document_->planeDraggers().setVisible(id, visible);
+        ++count;
+    }
+    const model::Entity* selected = document_->model().find(document_->selection());
+    if (!visible && selected && selected->kind == model::EntityKind::Plane) document_->select(0);
+    statusBar()->showMessage(visible ? tr("%1 planes shown.").arg(count) : tr("%1 planes hidden; Shift+H shows them.").arg(count));
 }
 
 void MainWindow::createDocks()
@@ -308,8 +354,14 @@ void MainWindow::createDocks()
     tabifyDockWidget(inspector_, lcurve);
     inspector_->raise();
     lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
-    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0)))
+    if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0))) {
         viewMenu->addAction(lcurve->toggleViewAction());
+        // Each dock can be closed and brought back (a window fitted to a small screen hides them).
+        QMenu* docks = viewMenu->addMenu(tr("&Docks"));
+        for (QDockWidget* dock : {static_cast<QDockWidget*>(modes), static_cast<QDockWidget*>(recognition_),
+                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_)})
+            docks->addAction(dock->toggleViewAction());
+    }
     connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);
     connect(document_, &SketchDocument::selectionChanged, lcurve, [lcurve]() {
         lcurve->refresh();
@@ -363,7 +415,7 @@ void MainWindow::updateStatus()
     const model::EntityId plane = document_->activePlane();
     QString text;
     switch (mode_) {
-    case Mode::View: text = tr("View: drag to turn, middle-drag to pan, wheel to zoom. S: sketch, E: select."); break;
+    case Mode::View: text = tr("View: drag to turn, right-drag to pan, wheel to zoom. S: sketch, E: select."); break;
     case Mode::Sketch:
         text = plane ? tr("Sketch: draw with the left button on plane %1; drag the plane's jack to move or turn it. Ctrl+P: new plane.").arg(plane)
                      : tr("Sketch: there is no plane to draw on; Ctrl+P adds one facing the view.");
@@ -414,6 +466,8 @@ void MainWindow::updateStatus()
         if (!document_->surfaceMessage().isEmpty()) text = document_->surfaceMessage() + QStringLiteral("  ") + text;
         break;
     }
+    // The view moves the same way in every mode, so every mode's message ends with it.
+    if (mode_ != Mode::View) text += QStringLiteral("  ") + kNavigationHint;
     statusBar()->showMessage(text);
 }
 
@@ -515,6 +569,7 @@ void MainWindow::addPlaneFacingViewer()
 SbBool MainWindow::viewerEvent(void* self, QEvent* event)
 {
     auto* window = static_cast<MainWindow*>(self);
+    if (window->navigate(event)) return TRUE;
     if (event->type() != QEvent::MouseButtonPress) return FALSE;
     auto* mouse = static_cast<QMouseEvent*>(event);
     if (mouse->button() != Qt::LeftButton) return FALSE;
@@ -532,6 +587,78 @@ SbBool MainWindow::viewerEvent(void* self, QEvent* event)
     // Let the press go on to the scene graph as well, so a press on a dragger selects and drags.
     window->pickAt(mouse->pos());
     return FALSE;
+}
+
+bool MainWindow::navigate(QEvent* event)
+{
+    SoCamera* camera = viewer_->getCamera();
+    switch (event->type()) {
+    case QEvent::Wheel:
+        ViewNavigation::wheel(*static_cast<QWheelEvent*>(event), camera);
+        return true;
+    case QEvent::MouseButtonPress: {
+        // A stroke or a drag under way keeps the mouse; the other buttons wait for it to end.
+        if (document_->strokeInput().drawing() || document_->dragging()) return false;
+        return navigation_->press(*static_cast<QMouseEvent*>(event));
+    }
+    case QEvent::MouseMove:
+        return navigation_->move(*static_cast<QMouseEvent*>(event), camera, viewport()->height());
+    case QEvent::MouseButtonRelease: {
+        bool click = false;
+        auto* mouse = static_cast<QMouseEvent*>(event);
+        if (!navigation_->release(*mouse, &click)) return false;
+        if (click) showContextMenu(mouse->pos());
+        return true;
+    }
+    default: return false;
+    }
+}
+
+void MainWindow::showContextMenu(const QPoint& position)
+{
+    // What lies under the pointer is selected, as a left click in Select mode would, and the menu
+    // offers what can be done to it (the same actions as the menus, so shortcuts and undo agree).
+    pickAt(position);
+    const model::Entity* e = document_->model().find(document_->selection());
+    if (!contextMenu_) {
+        contextMenu_ = new QMenu(this);
+        contextMenu_->setObjectName(QStringLiteral("menu.context"));
+    }
+    contextMenu_->clear();
+    auto add = [this](const char* name, const QString& text) {
+        QAction* a = action(QString::fromLatin1(name));
+        if (!a) return;
+        QAction* item = contextMenu_->addAction(text, a, &QAction::trigger);
+        item->setShortcut(a->shortcut());
+        item->setObjectName(QStringLiteral("context.") + QString::fromLatin1(name));
+    };
+    if (!e) {
+        contextMenu_->setTitle(tr("View"));
+        add("plane.add", tr("Add a plane facing the view"));
+        add("view.all", tr("Frame the scene"));
+        add("view.showPlanes", tr("Show all planes"));
+        add("view.hidePlanes", tr("Hide all planes"));
+    } else if (e->kind == model::EntityKind::Curve) {
+        contextMenu_->setTitle(tr("Curve %1").arg(e->id));
+        add("edit.toggleFixed", e->fixed ? tr("Free curve %1").arg(e->id) : tr("Fix curve %1").arg(e->id));
+        add("mode.oversketch", tr("Over-sketch it"));
+        add("mode.pull", tr("Pull its points"));
+        add("edit.removePins", tr("Remove its pins"));
+        add("edit.delete", tr("Delete curve %1").arg(e->id));
+    } else if (e->kind == model::EntityKind::Plane) {
+        contextMenu_->setTitle(tr("Plane %1").arg(e->id));
+        add("mode.sketch", tr("Sketch on plane %1").arg(e->id));
+        add("view.hidePlane", tr("Hide plane %1").arg(e->id));
+        add("edit.toggleFixed", e->fixed ? tr("Free plane %1").arg(e->id) : tr("Fix plane %1").arg(e->id));
+        add("edit.delete", tr("Delete plane %1").arg(e->id));
+    } else {
+        contextMenu_->setTitle(tr("Surface %1").arg(e->id));
+        add("mode.sculpt", tr("Sculpt it with target curves"));
+        add("mode.incidence", tr("Draw curves onto it"));
+        add("edit.toggleFixed", e->fixed ? tr("Free surface %1").arg(e->id) : tr("Fix surface %1").arg(e->id));
+        add("edit.delete", tr("Delete surface %1").arg(e->id));
+    }
+    contextMenu_->popup(viewport()->mapToGlobal(position));
 }
 
 bool MainWindow::pickAt(const QPoint& position)
@@ -607,17 +734,62 @@ bool MainWindow::refuseDialog(const char* action) const
     return automated_;
 }
 
-void MainWindow::setViewportSize(int width, int height)
+void MainWindow::resizeViewport(int width, int height)
 {
     // The GL area's share of the window is known only once the layout has run (docks, menu and
     // status bar settle after show()); correct until it matches, a few rounds at most.
     QWidget* gl = viewport();
     const QSize target(width, height);
+    // A layout change just made (docks hidden or tabbed) reaches the GL area only through events.
+    QApplication::processEvents();
     for (int round = 0; round < 5 && gl->size() != target; ++round) {
         const QSize extra = size() - gl->size();
         resize(width + extra.width(), height + extra.height());
         QApplication::processEvents();
     }
+}
+
+bool MainWindow::fitScreen()
+{
+    const QScreen* screen = this->screen() ? this->screen() : QGuiApplication::primaryScreen();
+    if (!screen) return true;
+    const QRect available = screen->availableGeometry();
+    const QRect frame = frameGeometry();
+    if (frame.width() > available.width() || frame.height() > available.height()) return false;
+    // Big enough, but partly off the screen: moved onto it.
+    if (!available.contains(frame)) {
+        move(std::clamp(frame.left(), available.left(), available.right() + 1 - frame.width()),
+             std::clamp(frame.top(), available.top(), available.bottom() + 1 - frame.height()));
+        QApplication::processEvents();
+    }
+    return true;
+}
+
+void MainWindow::setViewportSize(int width, int height)
+{
+    resizeViewport(width, height);
+    if (fitScreen()) return;
+    // The viewport's size is what a replay relies on; the docks give way: first one column of tabs
+    // instead of two, then, where even that does not fit beside the viewport, no docks (View >
+    // Docks brings each back).
+    const QList<QDockWidget*> docks = findChildren<QDockWidget*>();
+    QDockWidget* first = entities_;
+    for (QDockWidget* dock : docks) {
+        if (dock == first) continue;
+        if (dockWidgetArea(dock) != Qt::RightDockWidgetArea) addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (!tabifiedDockWidgets(first).contains(dock)) tabifyDockWidget(first, dock);
+    }
+    first->raise();
+    resizeViewport(width, height);
+    QString message = tr("The docks are tabbed in one column to fit a %1 x %2 viewport on this screen.").arg(width).arg(height);
+    if (!fitScreen()) {
+        for (QDockWidget* dock : docks) dock->hide();
+        resizeViewport(width, height);
+        fitScreen();
+        message = tr("The docks do not fit beside a %1 x %2 viewport on this screen: hidden (View > Docks shows them).").arg(width).arg(height);
+    }
+    statusBar()->showMessage(message);
+    if (automated_) std::cerr << "sculptline: " << message.toStdString() << "\n";
 }
 
 void MainWindow::renderViewport() { viewer_->render(); }

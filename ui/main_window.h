@@ -9,6 +9,7 @@
 #include <QImage>
 #include <QMainWindow>
 
+#include <memory>
 #include <string>
 
 #include <Inventor/SbBasic.h>
@@ -28,6 +29,7 @@ class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
 class UndoHistory;
+class ViewNavigation;
 
 /// Surface: one of the surface modes (MainWindow::surfaceMode() says which).
 enum class Mode { View, Sketch, Oversketch, Lift, Pull, Select, Surface, Sculpt, Incidence };
@@ -45,7 +47,9 @@ public:
     /// Replaces the document by `doc` and frames it (a three-quarter view from the front right).
     void showDocument(const model::SceneDocument& doc, const QString& path);
 
-    /// Resizes the window so that the 3D viewport (the GL area) is width x height pixels.
+    /// Resizes the window so that the 3D viewport (the GL area) is width x height pixels. Where
+    /// the window would then not fit its screen, the docks give way (tabbed in one column, or
+    /// hidden) and the status bar says so; the window is moved onto the screen.
     void setViewportSize(int width, int height);
     /// Renders now (under Xvfb no expose may come to trigger the first frame, ../shared/NOTES.md).
     void renderViewport();
@@ -62,6 +66,8 @@ public:
     /// The viewport pixel (origin top-left) where the camera shows model point `world`.
     QPoint pixelOf(const Eigen::Vector3d& world) const;
     Mode mode() const { return mode_; }
+    /// The context menu a right click last opened (null before the first).
+    QMenu* contextMenu() const { return contextMenu_; }
     /// The solvers/surfaces mode name while mode() is Surface.
     std::optional<model::Construction> surfaceMode() const { return surfaceMode_; }
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
@@ -95,6 +101,9 @@ protected:
 
 private:
     void createActions();
+    void resizeViewport(int width, int height);
+    /// True when the window fits its screen's available area (moving it onto the screen if need be).
+    bool fitScreen();
     void createDocks();
     void setMode(Mode mode, std::optional<model::Construction> surfaceMode = std::nullopt);
     void updateStatus();
@@ -118,21 +127,31 @@ private:
     void exportDocument();
     void addPlaneFacingViewer();
     static SbBool viewerEvent(void* self, QEvent* event);
+    /// Turns, pans or zooms the view for the buttons that do not draw (every mode); true when
+    /// `event` was taken for that.
+    bool navigate(QEvent* event);
+    /// Sculptline's context menu for what lies under `position` (viewport pixels).
+    void showContextMenu(const QPoint& position);
+    /// View > Hide the selected plane / Hide all planes / Show all planes (a view setting).
+    void hideSelectedPlane();
+    void setPlanesVisible(bool visible);
     bool pickAt(const QPoint& position);
     /// The curve drawn nearest to `position` (viewport pixels) within kCurvePickRadius, or 0: in
     /// the surface modes a click need not hit the thin line exactly.
     model::EntityId curveNear(const QPoint& position) const;
 
     SoQtExaminerViewer* viewer_ = nullptr;
+    std::unique_ptr<ViewNavigation> navigation_;
     SketchDocument* document_ = nullptr;
     EntityListDock* entities_ = nullptr;
     InspectorDock* inspector_ = nullptr;
     RecognitionDock* recognition_ = nullptr;
     QActionGroup* modes_ = nullptr;
-    Mode mode_ = Mode::View;
+    Mode mode_ = Mode::Sketch;
     std::optional<model::Construction> surfaceMode_;
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
+    QMenu* contextMenu_ = nullptr;
     UndoHistory* history_ = nullptr;
     Autosaver* autosaver_ = nullptr;
     QString recoveryFolder_;  ///< where autosaves go and orphans are looked for

@@ -128,9 +128,9 @@ void Replayer::sendMouse(const ReplayEvent& e)
         held_ &= ~Qt::MouseButtons(e.button);
     }
     QMouseEvent event(type, local, local, global, button, held_, e.modifiers);
-    // A right click opens the viewer's pop-up menu, whose nested event loop would wait for a
-    // click the session does not have: dismiss it as a person would (Esc) once it is up.
-    if (e.type == ReplayEvent::Type::Press) QTimer::singleShot(0, this, []() { dismissPopups(); });
+    // A right click opens the context menu (on its release), which would wait for a click the
+    // session does not have: dismiss it as a person would (Esc) once it is up.
+    if (e.type != ReplayEvent::Type::Move) QTimer::singleShot(0, this, []() { dismissPopups(); });
     QApplication::sendEvent(target, &event);
 }
 

@@ -39,6 +39,10 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(view_->root());
     feedback_ = std::make_unique<scene::StrokeFeedback>();
     root_->addChild(feedback_->root());
+    // An undo past the last stroke's edit takes its markers and its report with it.
+    connect(&undo_, &QUndoStack::indexChanged, this, [this](int index) {
+        if (strokeIndex_ >= 0 && index < strokeIndex_) forgetStroke();
+    });
     scheduler_ = std::make_unique<scene::UpdateScheduler>(model_);
     pullBinding_ = std::make_unique<manipulators::CurvePullBinding>(model_, *scheduler_);
     pullBinding_->setFinishedCallback([this](model::EntityId curve, const solvers::Curve3d& before, const std::string& message) {

@@ -88,6 +88,8 @@ public:
     /// The plane strokes go onto: the selected plane, the selected curve's plane, else the plane
     /// added or used last; 0 when there is none.
     model::EntityId activePlane() const;
+    /// The planes' draggers (one per plane; hiding a plane is a view setting kept there).
+    manipulators::PlaneDraggers& planeDraggers() { return *planeDraggers_; }
     model::EntityId selection() const { return selection_; }
     void select(model::EntityId id);
 
@@ -206,6 +208,9 @@ public:
     /// Removes the pins (position and tangent constraints) of the selected curve (undoable).
     void removeSelectionPins();
     void addStroke(const manipulators::FinishedStroke& stroke);
+    /// The stroke feedback and the last stroke's report and recognition are dropped (an undo took
+    /// the stroke back): nothing on screen speaks of a stroke that is no longer there.
+    void forgetStroke();
 
     /// Surface modes (issue 6): curves picked one by one become the inputs of a surface of
     /// `mode` (a solvers/surfaces mode name; empty = no surface mode). When the mode's largest
@@ -245,12 +250,19 @@ Q_SIGNALS:
     void entitiesChanged();
     void selectionChanged(model::EntityId id);
     void strokeFinished();
+    /// forgetStroke() dropped the last stroke's report (the recognition dock shows nothing).
+    void strokeForgotten();
     /// The surface mode's picks or message changed (status bar).
     void surfaceStateChanged();
 
 private:
     /// The plane a stroke starting at `start` is drawn on (records strokeOnPlane_).
     std::optional<model::PlaneFrame> strokePlane(const manipulators::StrokeHit& start);
+    /// addStroke()'s work, by mode; addStroke() notes where in the undo stack the stroke went.
+    void applyStroke(const manipulators::FinishedStroke& stroke);
+    /// Why a stroke on the active plane would land out of sight (the plane seen almost edge-on, or
+    /// far outside its square); empty when it lands within sight.
+    QString farFromSight(const manipulators::FinishedStroke& stroke) const;
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
@@ -323,6 +335,9 @@ private:
     std::optional<Eigen::Vector2d> pendingDistance_;
     model::EntityId oversketchTarget_ = 0;  ///< the curve the current over-stroke started on
     std::shared_ptr<ResketchState> resketch_;  ///< the Re-sketch tool's picked line and strip
+    /// The undo stack's index just after the last stroke's edit; an undo below it takes the
+    /// stroke back (-1: the last stroke made no edit).
+    int strokeIndex_ = -1;
     model::EntityId feedbackPlane_ = 0;  ///< the plane the stroke feedback dots move with
     std::optional<model::Construction> surfaceMode_;
     bool fillG1_ = true;

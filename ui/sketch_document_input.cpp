@@ -14,6 +14,7 @@
 #include "ui/undo_commands.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace sculptline::ui {
@@ -26,6 +27,13 @@ constexpr double kMaxAuxiliarySize = 1000.0;
 /// used: a regularized shape keeps the size of what was drawn (a circle, a line across it), and one
 /// that collapses it (the line between the ends of a loop) is not what the stroke showed.
 constexpr double kMinCandidateFraction = 0.05;
+/// A stroke on a plane whose pointer rays meet it more grazingly than this (|cos|, about 85° from
+/// face-on) is not used: the pointer's jitter would throw its points across the plane.
+constexpr double kMinStrokeFacing = 0.09;
+/// A stroke reaching farther from its plane's centre than this many half-edges is not used: it
+/// would lie far outside the square the designer sees, behind other geometry.
+constexpr double kMaxStrokeReach = 4.0;
+constexpr double kDegreesPerRadian = 57.29577951308232;
 
 }  // namespace
 
@@ -72,7 +80,55 @@ std::optional<model::CurveFrameAt> SketchDocument::curveFrame(const manipulators
     return model::curveFrameNear(*curve->world, hit.point, fallback);
 }
 
-void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
+void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
+{
+    const int before = undo_.index();
+    applyStroke(stroke);
+    strokeIndex_ = undo_.index() > before ? undo_.index() : -1;
+}
+
+QString SketchDocument::farFromSight(const manipulators::FinishedStroke& stroke) const
+{
+    // Only strokes on an existing plane: an auxiliary plane is made to face the stroke.
+    const model::Entity* plane = model_.find(strokeOnPlane_);
+    if (!plane) return {};
+    // Where the plane is seen nearly edge-on, a pixel of the hand spans metres of the plane: the
+    // curve would land far behind everything, out of sight.
+    double facing = 1.0;
+    for (const Eigen::Vector3d& d : stroke.rayDirections) facing = std::min(facing, std::abs(d.dot(plane->frame.normal())));
+    if (facing < kMinStrokeFacing) {
+        return tr("plane %1 is seen almost edge-on there (%2° from face-on); turn the view (middle-drag) or add a plane facing it (Ctrl+P)")
+            .arg(plane->id)
+            .arg(std::acos(facing) * kDegreesPerRadian, 0, 'f', 0);
+    }
+    double reach = 0.0;
+    for (const Eigen::Vector3d& p : stroke.points) reach = std::max(reach, p.head<2>().cwiseAbs().maxCoeff());
+    if (reach > kMaxStrokeReach * plane->frame.size / 2) {
+        return tr("it would land %1 mm from the centre of plane %2, far outside its %3 mm square; draw over the plane, or add one where "
+                  "you draw (Ctrl+P)")
+            .arg(reach, 0, 'f', 0)
+            .arg(plane->id)
+            .arg(plane->frame.size, 0, 'f', 0);
+    }
+    return {};
+}
+
+void SketchDocument::forgetStroke()
+{
+    feedback_->clear();
+    feedbackPlane_ = 0;
+    lastStroke_ = {};
+    freeformFit_.reset();
+    regularizedFit_.reset();
+    lastFit_.reset();
+    recognition_.reset();
+    candidateInUse_ = -1;
+    recognizedCurve_ = 0;
+    strokeIndex_ = -1;
+    Q_EMIT strokeForgotten();
+}
+
+void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
 {
     if (strokeMode_ == StrokeMode::Oversketch) {
         oversketchStroke(finished);
@@ -113,6 +169,13 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& finished)
         std::vector<Eigen::Vector3d> world;
         for (const Eigen::Vector3d& p : stroke.points) world.push_back(stroke.frame.toWorld(p));
         setSculptBound(world);
+        return;
+    }
+    // (A bound is drawn over the surface, which it is projected onto: the plane is only the pen's
+    // support there, however far from its square.)
+    if (const QString why = farFromSight(stroke); !why.isEmpty()) {
+        lastStroke_.message = tr("Stroke not used: %1").arg(why);
+        Q_EMIT strokeFinished();
         return;
     }
     std::vector<model::Entity> added;
