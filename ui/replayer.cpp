@@ -85,6 +85,7 @@ void Replayer::dispatch(const ReplayEvent& e)
 {
     SketchDocument& doc = window_.document();
     const bool dragging = doc.dragging();
+    const bool drawing = doc.strokeInput().drawing();  // a release then ends a stroke
     // The recorded time when there is one, so that a replayed stroke carries its recorded timing.
     eventTime_ = (e.t >= 0.0 ? e.t : static_cast<double>(clock_.elapsed())) / 1000.0;
     const auto start = std::chrono::steady_clock::now();
@@ -108,6 +109,8 @@ void Replayer::dispatch(const ReplayEvent& e)
     stats_.add(seriesName(e.type), elapsed.count());
     if (e.type == ReplayEvent::Type::Move && (dragging || doc.dragging())) stats_.add("drag_move", elapsed.count());
     if (e.type == ReplayEvent::Type::Move && doc.strokeInput().drawing()) stats_.add("stroke_move", elapsed.count());
+    // Pen-up to the fitted, recognized curve on screen (issue 15 §3).
+    if (e.type == ReplayEvent::Type::Release && drawing) stats_.add("stroke_release", elapsed.count());
 }
 
 void Replayer::sendMouse(const ReplayEvent& e)

@@ -82,7 +82,8 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
         const nlohmann::json extra = {
             {"definition", "event: ms from dispatching a replayed input event until the model update it caused "
                            "has run and the viewport has been rendered (event_update: until the model is solved, event_render: the "
-                           "frame); drag_move / stroke_move: pointer moves during a plane drag / a stroke; model_update: ms per "
+                           "frame); drag_move / stroke_move: pointer moves during a plane drag / a stroke; stroke_release: the "
+                           "release that ends a stroke, until its fitted, recognized curve is drawn; model_update: ms per "
                            "coalesced model update"},
             {"model_updates", doc.scheduler().updates()}};
         if (!stats.write(options.stats, extra)) {

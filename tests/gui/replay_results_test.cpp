@@ -98,6 +98,15 @@ TEST(ReplayResults, TwoStrokesBecomeTwoCubicCurvesOnTheDefaultPlane)
     const QImage shot = QImage(QString::fromStdString(file("sketch.png"))).convertToFormat(QImage::Format_RGB32);
     ASSERT_FALSE(shot.isNull());
     EXPECT_GE(sketchPixels(shot), kMinCurvePixels);
+    // And the replay timed each pen-up to its curve on screen: one stroke_release per stroke (the
+    // latencies are reported, not asserted)
+    std::ifstream in(file("sketch_stats.json"));
+    ASSERT_TRUE(in);
+    const nlohmann::json stats = nlohmann::json::parse(in);
+    ASSERT_TRUE(stats.contains("stroke_release")) << stats.dump();
+    EXPECT_EQ(stats["stroke_release"]["count"].get<int>(), 2);
+    std::cout << "sketch: stroke_release p50 " << stats["stroke_release"]["p50_ms"].get<double>() << " ms, max "
+              << stats["stroke_release"]["max_ms"].get<double>() << " ms\n";
 }
 
 TEST(ReplayResults, DraggingThePlaneCarriesItsCurvesRigidly)
