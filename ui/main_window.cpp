@@ -112,10 +112,12 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         if (automated_) {
             const StrokeReport& r = document_->lastStroke();
             std::cerr << "sculptline: " << r.message.toStdString()
-                      << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString()) << "\n";
+                      << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString())
+                      << (r.habit.isEmpty() ? std::string() : "; " + r.habit.toStdString()) << "\n";
         }
     });
     connect(document_, &SketchDocument::strokeForgotten, this, [this]() { recognition_->refresh(); });
+    connect(document_, &SketchDocument::habitsChanged, this, [this](const QString& message) { statusBar()->showMessage(message, 10000); });
     connect(document_, &SketchDocument::surfaceStateChanged, this, [this]() {
         updateStatus();
         // A replay has nobody reading the status bar: its log says what the surface modes did.
@@ -198,6 +200,8 @@ void MainWindow::createActions()
          QKeySequence(QStringLiteral("N")), [this]() { document_->chooseNextCandidate(); });
     make(edit, "stroke.useFreeform", tr("Use the freeform curve for the last stroke"), QKeySequence(),
          [this]() { document_->chooseRecognized(false); });
+    // Thesis §3.1.3: the user model learns from corrections; the designer can start afresh.
+    make(edit, "stroke.forgetHabits", tr("Forget recognition &habits"), QKeySequence(), [this]() { document_->forgetHabits(); });
 
     QMenu* plane = menuBar()->addMenu(tr("&Plane"));
     make(plane, "plane.add", tr("&Add plane facing the view"), QKeySequence(QStringLiteral("Ctrl+P")), [this]() { addPlaneFacingViewer(); });

@@ -11,6 +11,7 @@
 #include "solvers/editing/curve_manipulation.h"
 #include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
+#include "solvers/stroke/user_model.h"
 
 #include <QObject>
 #include <QString>
@@ -50,6 +51,9 @@ struct StrokeReport {
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
+    /// Non-empty when one of the designer's habits (a correction of a similar stroke) decided the
+    /// shape: says which and what the recognizer alone would have picked.
+    QString habit;
 };
 
 struct ResketchState;
@@ -195,6 +199,23 @@ public:
     /// The next-ranked candidate after the one in use (wrapping), for the hot key / replays.
     void chooseNextCandidate();
 
+    /// The designer's recognition habits (thesis §3.1.3, Table 3-2: the user model adapts to its
+    /// user). Choosing another candidate for the last stroke, or its freeform fit instead of the
+    /// shape, teaches the model (UserModel::learnShape); every recognition applies it, and a shape a
+    /// habit decided is used for the new curve at once (one undo step with the stroke).
+    /// Reads the model kept at `path` (empty: kept in memory only, nothing read or written); a file
+    /// that does not exist is an empty model. Returns an empty string, or the message saying why
+    /// the file could not be read (the model is then empty and the unreadable file is left as it is
+    /// until a correction overwrites it). Never throws.
+    QString openUserModel(const QString& path);
+    const solvers::stroke::UserModel& userModel() const { return userModel_; }
+    const QString& userModelPath() const { return userModelPath_; }
+    /// Forgets every learned habit (the file is rewritten without them); returns how many.
+    int forgetHabits();
+    /// The default place of the model: the user's config folder (QStandardPaths::AppConfigLocation)
+    /// /recognition_habits.json.
+    static QString defaultUserModelPath();
+
     /// Undoable edits.
     void addPlane(const model::PlaneFrame& frame);
     /// Which control points of `curve` stay fixed when it is pulled.
@@ -252,6 +273,8 @@ Q_SIGNALS:
     void strokeFinished();
     /// forgetStroke() dropped the last stroke's report (the recognition dock shows nothing).
     void strokeForgotten();
+    /// A habit was learned or the habits were forgotten; `message` says what happened (status bar).
+    void habitsChanged(const QString& message);
     /// The surface mode's picks or message changed (status bar).
     void surfaceStateChanged();
 
@@ -279,7 +302,8 @@ private:
     void recognize(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
     /// The last sketched curve replaced by `target` (undoable), when it differs.
-    void replaceRecognizedCurve(const solvers::Curve3d& target);
+    /// False (with the reason in lastStroke_) when the target is refused.
+    bool replaceRecognizedCurve(const solvers::Curve3d& target);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<model::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     /// A pull ended (manipulators::CurvePullBinding): one undo step, and the solver's remark.
@@ -324,6 +348,15 @@ private:
     std::optional<solvers::stroke::FitResult> lastFit_;
     std::optional<solvers::stroke::Recognition> recognition_;
     int candidateInUse_ = -1;
+    /// The recognizer's own pick for the last stroke, before the habits re-ranked it.
+    solvers::stroke::ShapeKind recognizerKind_ = solvers::stroke::ShapeKind::Freeform;
+    bool habitFromLastStroke_ = false;  ///< the newest habit was learned from the last stroke
+    solvers::stroke::UserModel userModel_ = solvers::stroke::UserModel::predefined();
+    QString userModelPath_;
+    /// The designer chose `intended` for the last stroke: remember it, and save the model.
+    void learnCorrection(solvers::stroke::ShapeKind intended);
+    /// Writes the model to userModelPath_ (atomically); the message on failure, else empty.
+    QString saveUserModel() const;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     model::EntityId sculptBase_ = 0;
     model::EntityId incidenceBase_ = 0;

@@ -48,6 +48,9 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
         ->check(CLI::Range(0, 24 * 3600));
     cli.add_flag("--recover", options.recover,
                  "Reopen the unsaved work of a session that ended without saving, without asking");
+    cli.add_option("--user-model", options.userModel,
+                   "Recognition habits file (JSON) to read and update; default $SCULPTLINE_USER_MODEL, else "
+                   "recognition_habits.json in the user's config folder (scripted runs: none, habits in memory only)");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
     cli.add_flag("--nurbs-nodes", options.nurbsNodes,
                  "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "
@@ -83,6 +86,13 @@ std::string defaultDocumentPath()
     const char* env = std::getenv("SCULPTLINE_DATA_DIR");
     const std::string dir = (env && *env) ? env : SCULPTLINE_DATA_DIR;
     return dir + "/default_scene.json";
+}
+
+std::string userModelPath(const GuiOptions& options, const std::string& personal)
+{
+    if (!options.userModel.empty()) return options.userModel;
+    if (const char* env = std::getenv("SCULPTLINE_USER_MODEL"); env && *env) return env;
+    return options.scripted() ? std::string() : personal;
 }
 
 }  // namespace sculptline::app

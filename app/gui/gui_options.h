@@ -22,6 +22,9 @@ struct GuiOptions {
     int autosaveInterval = 120;  ///< seconds between autosaves to the recovery file; 0 = off
     bool autosaveIntervalGiven = false;  ///< on the command line (else File > Autosave Interval's setting)
     bool recover = false;  ///< reopen the unsaved work of a session that died, without asking
+    /// The recognition habits file (--user-model); empty: $SCULPTLINE_USER_MODEL, else the user's
+    /// config folder for a person, nothing (habits in memory only) for a script (userModelPath()).
+    std::string userModel;
 
     /// Run by a script (a replay, an output flag or --quit): nobody is there to answer a dialog.
     bool scripted() const
@@ -39,6 +42,12 @@ struct ParseResult {
 
 /// Parses argv with CLI11; status 2 and a message for a bad flag or value.
 ParseResult parseGuiOptions(int argc, const char* const* argv);
+
+/// Where the window keeps the recognition habits: --user-model, else $SCULPTLINE_USER_MODEL, else
+/// `personal` (the user's config folder) when nobody scripts the run; empty for a script without
+/// either (its habits live in memory only: a replay must repeat whatever the person's habits, and
+/// must not write into their home).
+std::string userModelPath(const GuiOptions& options, const std::string& personal);
 
 /// The default document: $SCULPTLINE_DATA_DIR/default_scene.json when that variable is set, else the
 /// data/ directory of the source tree the program was built from.

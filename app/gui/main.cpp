@@ -149,6 +149,10 @@ int main(int argc, char** argv)
     // The default scene (or the fresh sheet that replaces a document that cannot be opened) opens
     // untitled, so that File > Save asks where instead of overwriting it.
     window.showDocument(start.document, QString::fromStdString(start.path));
+    const QString habitsFile =
+        QString::fromStdString(app::userModelPath(options, ui::SketchDocument::defaultUserModelPath().toStdString()));
+    const QString habitsMessage = window.document().openUserModel(habitsFile);
+    if (!habitsMessage.isEmpty()) std::cerr << "sculptline: " << habitsMessage.toStdString() << "\n";
     const QString recovery = ui::recoveryFolder();
     // A script gets the flag or the default, never a person's setting: its runs must repeat.
     const int interval = options.autosaveIntervalGiven || options.scripted() ? options.autosaveInterval
