@@ -25,12 +25,14 @@ using incidence::bernsteinValue;
 // rational quadratic) gives kappa' identically zero and thus no extrema; a cubic's near-circle keeps
 // its real extrema.
 constexpr double kZeroRelative = 1e-9;
-// Samples per knot span for the sampled measures (total turning, the enclosing rectangle, crown,
-// the logarithmic curvature graph). The turning sum is exact while each step turns less than pi;
-// the rectangle and the crown are within the chord error of 32 samples of a cubic span.
+// Samples per knot span for the sampled measures: the enclosing rectangle and the crown are within
+// the chord error of 32 samples of a span (1e-3 of the size on a quarter ellipse).
 constexpr int kSamplesPerSpan = 32;
-// Bisection steps for the ranges of influence: 60 halvings bring a parameter interval to round-off.
-constexpr int kBisections = 60;
+// Tangents per span for the total turning, which is exact while each step turns less than pi: a
+// span of a fair curve turns far less than 8 pi.
+constexpr int kTurningStepsPerSpan = 8;
+// Bisection steps for the ranges of influence: 52 halvings bring a parameter interval to round-off.
+constexpr int kBisections = 52;
 
 Poly derivative(const Poly& c)
 {
@@ -81,13 +83,29 @@ struct PiecePolys {
     Sum turn, change;
 };
 
-PiecePolys piecePolynomials(const Curve2d& piece)
+// The Bezier pieces of a curve, each as its p + 1 (homogeneous) control rows: every interior
+// breakpoint raised to multiplicity p by one knot refinement (The NURBS Book A5.6), O(n p) for all.
+std::vector<ControlMatrix> bezierPieces(const Curve2d& curve, const std::vector<double>& breaks)
 {
-    const ControlMatrix h = piece.homogeneous();
+    const Curve2d open = curve.isClosed() ? curve.openAt(curve.domainStart()) : curve.clamped();
+    const int p = open.degree();
+    std::vector<double> x;
+    for (size_t i = 1; i + 1 < breaks.size(); ++i) {
+        const int m = knotMultiplicity(open.knots(), breaks[i]);
+        for (int k = m; k < p; ++k) x.push_back(breaks[i]);
+    }
+    const ControlMatrix h = (x.empty() ? open : open.refine(x)).homogeneous();
+    std::vector<ControlMatrix> pieces;
+    for (size_t i = 0; i + 1 < breaks.size(); ++i) pieces.push_back(h.middleRows(i * p, p + 1));
+    return pieces;
+}
+
+PiecePolys piecePolynomials(const ControlMatrix& h, bool rational)
+{
     const Poly X = h.col(0), Y = h.col(1);
     const Poly X1 = derivative(X), Y1 = derivative(Y), X2 = derivative(X1), Y2 = derivative(Y1);
     PiecePolys p;
-    if (!piece.isRational()) {
+    if (!rational) {
         // kappa = D / S^(3/2), D = x'y'' - y'x'', S = x'^2 + y'^2; kappa' has the sign of 2 D' S - 3 D S'.
         p.turn.add(mul(X1, Y2), 1.0);
         p.turn.add(mul(Y1, X2), -1.0);
@@ -381,6 +399,10 @@ double signedCurvature(const Curve2d& curve, double u)
 std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& input)
 {
     if (input.degree() < 2) throw GeometryError("degree: a curve of degree 1 has no curvature to analyze");
+    if (input.degree() > kMaxAnalysisDegree) {
+        throw GeometryError("degree: " + std::to_string(input.degree()) + " is above " + std::to_string(kMaxAnalysisDegree) +
+                            ", the highest the exact analysis handles");
+    }
     if (input.isCollapsed()) throw GeometryError("curve: its control points coincide (no curvature)");
     // Curvature does not change with translation; centred, the homogeneous products of a rational
     // curve do not carry the size of its distance from the origin into the zero test.
@@ -393,9 +415,9 @@ std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& input)
 
     const auto breaks = distinctBreaks(curve);
     std::vector<Stretch> turn, change;
+    const auto pieces = bezierPieces(curve, breaks);
     for (size_t i = 0; i + 1 < breaks.size(); ++i) {
-        const Curve2d piece = curve.extract(breaks[i], breaks[i + 1]);
-        const PiecePolys p = piecePolynomials(piece);
+        const PiecePolys p = piecePolynomials(pieces[i], curve.isRational());
         appendStretches(p.turn, breaks[i], breaks[i + 1], turn);
         appendStretches(p.change, breaks[i], breaks[i + 1], change);
     }
@@ -518,8 +540,8 @@ CurveAnalysis analyzeCurve(const Curve2d& curve, const Thresholds& thresholds)
     double turning = 0.0;
     Eigen::Vector2d prev = curve.derivatives(u0, 1)[1];
     for (size_t i = 0; i + 1 < breaks.size(); ++i) {
-        for (int k = 1; k <= kSamplesPerSpan; ++k) {
-            const Eigen::Vector2d t = curve.derivatives(breaks[i] + (breaks[i + 1] - breaks[i]) * k / kSamplesPerSpan, 1)[1];
+        for (int k = 1; k <= kTurningStepsPerSpan; ++k) {
+            const Eigen::Vector2d t = curve.derivatives(breaks[i] + (breaks[i + 1] - breaks[i]) * k / kTurningStepsPerSpan, 1)[1];
             turning += std::atan2(cross(prev, t), prev.dot(t));
             prev = t;
         }

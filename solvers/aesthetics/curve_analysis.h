@@ -96,6 +96,11 @@ struct CurveAnalysis {
     bool closed = false;
 };
 
+/// kappa' of a rational curve of degree p is a polynomial of degree 8p - 6 per span: 90 at degree 12,
+/// where the Bernstein products' binomial weights still keep double precision; designers' curves are
+/// cubic to quintic.
+constexpr int kMaxAnalysisDegree = 12;
+
 /// Signed curvature (x'y'' - y'x'') / |C'|^3 at u; 0 where the curve stops.
 double signedCurvature(const Curve2d& curve, double u);
 
@@ -103,7 +108,8 @@ double signedCurvature(const Curve2d& curve, double u);
 std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& curve);
 
 /// The full analysis.
-/// @throws GeometryError for degree < 2 ("degree": a polyline has no curvature), a collapsed curve,
+/// @throws GeometryError for degree < 2 ("degree": a polyline has no curvature) or above
+///         kMaxAnalysisDegree, a collapsed curve,
 ///         or non-positive thresholds ("thresholds.distance", ...).
 CurveAnalysis analyzeCurve(const Curve2d& curve, const Thresholds& thresholds = {});
 
