@@ -2,6 +2,7 @@
 // characteristics, measures and log-curvature-graph slopes) of a 200-control-point cubic, the size
 // of a long fitted stroke or a detailed section curve.
 #include "solvers/aesthetics/curve_analysis.h"
+#include "solvers/aesthetics/curve_operators.h"
 
 #include <benchmark/benchmark.h>
 
@@ -34,5 +35,35 @@ void BM_AnalyzeCurve200(benchmark::State& state)
     for (auto _ : state) benchmark::DoNotOptimize(aesthetics::analyzeCurve(c));
 }
 BENCHMARK(BM_AnalyzeCurve200)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+namespace {
+
+// One drag event of an operator (issue 16 §4): soften on a 40-control-point wavy curve, factored
+// once (the constructor), then per event one product d = G b and the curve rebuilt.
+void BM_OperatorDragFactor(benchmark::State& state)
+{
+    const Curve2d c = wavyCurve(40);
+    const auto a = aesthetics::analyzeCurve(c);
+    for (auto _ : state) {
+        const aesthetics::OperatorSetup s = aesthetics::operatorSetup(c, a, aesthetics::Operator::Soften, {});
+        benchmark::DoNotOptimize(aesthetics::OperatorDrag(s));
+    }
+}
+BENCHMARK(BM_OperatorDragFactor)->Unit(benchmark::kMicrosecond);
+
+void BM_OperatorDragEvent(benchmark::State& state)
+{
+    const Curve2d c = wavyCurve(40);
+    const auto a = aesthetics::analyzeCurve(c);
+    const aesthetics::OperatorDrag drag(aesthetics::operatorSetup(c, a, aesthetics::Operator::Soften, {}));
+    double lambda = 0.0;
+    for (auto _ : state) {
+        lambda = lambda > 0.5 ? 0.0 : lambda + 0.01;
+        benchmark::DoNotOptimize(drag.at(lambda));
+    }
+}
+BENCHMARK(BM_OperatorDragEvent)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -11,6 +11,7 @@
 //                      curve's turns cancel), "crown", "curvature_min", "curvature_max", "curvature_average"},
 //         "lcg": [{"u0", "u1", "slope", "r2"}..], "length", "closed", "thresholds": {"distance",
 //         "curvature", "sharp"}, "elapsed_ms"}
+#include "app/cli/aesthetics_json.h"
 #include "app/cli/cli_support.h"
 #include "app/cli/subcommand.h"
 #include "solvers/aesthetics/curve_analysis.h"
@@ -20,30 +21,10 @@ namespace {
 
 namespace aes = solvers::aesthetics;
 
-std::optional<double> threshold(const json& t, const char* key)
-{
-    if (!t.contains(key)) return std::nullopt;
-    const double v = solvers::io::numberFromJson(t[key], std::string("thresholds.") + key);
-    if (v <= 0.0) throw InputError(std::string("thresholds.") + key + ": must be positive, got " + std::to_string(v));
-    return v;
-}
-
 json run(const json& input, const Options&)
 {
     const solvers::Curve3d curve3 = solvers::io::curveFromJson(field(input, "curve"), "curve");
-    aes::Thresholds thresholds;
-    if (input.contains("thresholds")) {
-        const json& t = input["thresholds"];
-        if (!t.is_object()) throw InputError("thresholds: expected an object {distance?, curvature?, sharp?}");
-        for (const auto& [key, value] : t.items()) {
-            if (key != "distance" && key != "curvature" && key != "sharp") {
-                throw InputError("thresholds." + key + ": unknown (expected distance, curvature or sharp)");
-            }
-        }
-        thresholds.distance = threshold(t, "distance");
-        thresholds.curvature = threshold(t, "curvature");
-        thresholds.sharp = threshold(t, "sharp");
-    }
+    const aes::Thresholds thresholds = thresholdsFromJson(input);
     const Stopwatch clock;
     const aes::CurveAnalysis a = runOperation(input, "curve", [&] { return aes::analyzeCurve(aes::planarCurve(curve3), thresholds); });
     const double ms = clock.elapsedMs();
@@ -70,16 +51,7 @@ json run(const json& input, const Options&)
                                           {"symmetric", c.symmetric},
                                           {"redundant", c.redundant}});
     }
-    const aes::Measures& m = a.measures;
-    out["measures"] = {{"acceleration", m.acceleration},
-                       {"sharpness", m.sharpness},
-                       {"flatness", m.flatness},
-                       {"convexity", m.convexity},
-                       {"tension", m.tension ? json(*m.tension) : json(nullptr)},
-                       {"crown", m.crown},
-                       {"curvature_min", m.curvatureMin},
-                       {"curvature_max", m.curvatureMax},
-                       {"curvature_average", m.curvatureAverage}};
+    out["measures"] = measuresJson(a.measures);
     out["lcg"] = json::array();
     for (const auto& s : a.lcg) out["lcg"].push_back({{"u0", s.u0}, {"u1", s.u1}, {"slope", s.slope}, {"r2", s.r2}});
     out["length"] = a.length;

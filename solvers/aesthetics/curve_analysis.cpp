@@ -609,7 +609,7 @@ CurveAnalysis analyzeCurve(const Curve2d& curve, const Thresholds& thresholds)
     return a;
 }
 
-Curve2d planarCurve(const Curve3d& curve, double flatness)
+Curve2d planarCurve(const Curve3d& curve, double flatness, PlaneFrame* frame)
 {
     const double size = std::max(curve.controlSize(), std::numeric_limits<double>::min());
     std::vector<Eigen::Vector3d> pts(curve.points().begin(), curve.points().end());
@@ -618,6 +618,7 @@ Curve2d planarCurve(const Curve3d& curve, double flatness)
     std::vector<Eigen::Vector2d> flat;
     if (zmax - zmin <= flatness * size) {
         for (const auto& p : pts) flat.emplace_back(p.x(), p.y());
+        if (frame) *frame = PlaneFrame{Eigen::Vector3d(0.0, 0.0, 0.5 * (zmin + zmax)), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()};
     } else {
         const PlaneFit plane = bestFitPlane(pts);
         double off = 0.0;
@@ -631,8 +632,16 @@ Curve2d planarCurve(const Curve3d& curve, double flatness)
         const Eigen::Vector3d n = plane.normal.z() < 0.0 ? Eigen::Vector3d(-plane.normal) : plane.normal;
         const Eigen::Vector3d e1 = plane.axisU, e2 = n.cross(e1);
         for (const auto& p : pts) flat.emplace_back((p - plane.centroid).dot(e1), (p - plane.centroid).dot(e2));
+        if (frame) *frame = PlaneFrame{plane.centroid, e1, e2};
     }
     return Curve2d(curve.degree(), curve.knots(), flat, curve.weights(), curve.isClosed());
+}
+
+Curve3d spaceCurve(const Curve2d& curve, const PlaneFrame& frame)
+{
+    std::vector<Eigen::Vector3d> pts;
+    for (const auto& p : curve.points()) pts.push_back(frame.origin + p.x() * frame.e1 + p.y() * frame.e2);
+    return Curve3d(curve.degree(), curve.knots(), pts, curve.weights(), curve.isClosed());
 }
 
 }  // namespace sculptline::solvers::aesthetics

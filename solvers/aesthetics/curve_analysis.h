@@ -117,11 +117,22 @@ CurveAnalysis analyzeCurve(const Curve2d& curve, const Thresholds& thresholds = 
 /// sequence and of its reversal (§7.1: a closed curve has no first point and no direction).
 std::string curveName(const std::vector<PointKind>& kinds, bool closed);
 
+/// The plane a planar curve was read in: a point of it and two orthonormal axes, right-handed with the
+/// normal the curve's turning sense is seen from.
+struct PlaneFrame {
+    Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+    Eigen::Vector3d e1 = Eigen::Vector3d::UnitX(), e2 = Eigen::Vector3d::UnitY();
+};
+
 /// A 3D curve in its own plane: z-constant curves by (x, y); others in their best-fit plane's (U, V)
 /// axes, with the normal's orientation chosen so that a curve in the xy plane keeps its turning sense
 /// (normal along +z where it has a z component, else the fit's normal).
 /// @param flatness  largest allowed distance from the plane, relative to the curve's size.
+/// @param frame     receives the plane, for spaceCurve.
 /// @throws GeometryError "curve: not planar (...)" when a control point is farther than that.
-Curve2d planarCurve(const Curve3d& curve, double flatness = 1e-6);
+Curve2d planarCurve(const Curve3d& curve, double flatness = 1e-6, PlaneFrame* frame = nullptr);
+
+/// A planar curve put back into its plane in space (the inverse of planarCurve).
+Curve3d spaceCurve(const Curve2d& curve, const PlaneFrame& frame);
 
 }  // namespace sculptline::solvers::aesthetics

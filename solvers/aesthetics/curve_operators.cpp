@@ -546,6 +546,7 @@ std::optional<double> ruleAmount(const Curve2d& curve, Rule rule, int at, bool i
 
 std::string announcedName(const CurveAnalysis& a, Rule rule, int at, bool inverse)
 {
+    checkPoint(a, at);
     return curveName(announcedKinds(a, rule, at, inverse), a.closed);
 }
 
