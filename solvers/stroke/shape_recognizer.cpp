@@ -1,6 +1,7 @@
 #include "solvers/stroke/shape_recognizer.h"
 
 #include "solvers/bspline/periodic.h"
+#include "solvers/stroke/features.h"
 #include "solvers/geometry/plane_fit.h"
 #include "solvers/math_constants.h"
 
@@ -232,6 +233,48 @@ std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
     return {c + p * d1, c + s * q * d2, c - p * d1, c - s * q * d2};
 }
 
+
+// The conditioned stroke at uniform arc-length spacing (linear interpolation of position and time;
+// a loop's closing gap is walked too, at the last sample's time). The recognizer reads shape at
+// this one resolution, whatever the pen's sample density: see RecognizeOptions::sampleSpacing.
+ConditionedStroke uniformResample(const ConditionedStroke& cs, double step)
+{
+    ConditionedStroke out;
+    out.closed = cs.closed;
+    out.timed = cs.timed;
+    out.extent = cs.extent;
+    std::vector<Eigen::Vector3d> p = cs.points;
+    std::vector<double> t = cs.time;
+    std::vector<int> src = cs.source;
+    if (cs.closed) {
+        p.push_back(cs.points.front());
+        t.push_back(cs.time.back());
+        src.push_back(cs.source.back());
+    }
+    std::vector<double> arc(p.size(), 0.0);
+    for (size_t i = 1; i < p.size(); ++i) arc[i] = arc[i - 1] + (p[i] - p[i - 1]).norm();
+    const double total = arc.back();
+    // At least 16 intervals (a stroke of a few samples keeps a shape to measure).
+    const int m = std::max(16, static_cast<int>(std::lround(total / std::max(step, 1e-300))));
+    const int count = cs.closed ? m : m + 1;  // a loop does not repeat its first sample
+    size_t seg = 0;
+    for (int k = 0; k < count; ++k) {
+        const double a = total * k / m;
+        while (seg + 2 < p.size() && arc[seg + 1] <= a) ++seg;
+        const double len = arc[seg + 1] - arc[seg];
+        const double u = len > 0.0 ? std::clamp((a - arc[seg]) / len, 0.0, 1.0) : 0.0;
+        out.points.push_back((1 - u) * p[seg] + u * p[seg + 1]);
+        out.time.push_back((1 - u) * t[seg] + u * t[seg + 1]);
+        out.source.push_back(u < 0.5 ? src[seg] : src[seg + 1]);
+        out.arc.push_back(k == 0 ? 0.0 : out.arc.back() + (out.points[k] - out.points[k - 1]).norm());
+    }
+    if (!cs.closed) {  // the ends exactly
+        out.points.back() = p.back();
+        out.time.back() = t.back();
+    }
+    return out;
+}
+
 }  // namespace
 
 const char* shapeName(ShapeKind k)
@@ -361,13 +404,33 @@ static Curve3d regularize(Recognition& rec, const FitResult& fit, ShapeKind kind
     return fit.curve;
 }
 
+// G for recognition: the plane, length and speed of strokeGeometry(fit), with the points resampled at
+// the spacing of RecognizeOptions::sampleSpacing and the corners detected again on them (thesis
+// §4.1.1 features, default options), so that neither the points nor the corners depend on how
+// densely the pen sampled. Returns the number of corners.
+static int recognitionGeometry(const FitResult& fit, const RecognizeOptions& o, StrokeGeometry& g)
+{
+    g = strokeGeometry(fit);
+    if (o.sampleSpacing <= 0.0) return static_cast<int>(fit.corners.size());
+    const ConditionedStroke rs = uniformResample(fit.conditioned, o.sampleSpacing * fit.conditioned.extent);
+    const std::vector<int> corner = detectCorners(rs, computeFeatures(rs));
+    g.points.clear();
+    for (const auto& p : rs.points) g.points.emplace_back((p - g.origin).dot(g.axisU), (p - g.origin).dot(g.axisV));
+    g.vertexIndex.clear();
+    if (!g.closed) g.vertexIndex.push_back(0);
+    for (int k : corner) g.vertexIndex.push_back(k);
+    if (!g.closed) g.vertexIndex.push_back(static_cast<int>(g.points.size()) - 1);
+    g.vertices.clear();
+    for (int k : g.vertexIndex) g.vertices.push_back(g.points[k]);
+    return static_cast<int>(corner.size());
+}
+
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 {
     Recognition rec;
-    rec.geometry = strokeGeometry(fit);
+    const int corners = recognitionGeometry(fit, o, rec.geometry);
     const StrokeGeometry& g = rec.geometry;
     const double sigma = o.residualScale * g.extent;
-    const int corners = static_cast<int>(fit.corners.size());
     auto add = [&](ShapeKind k, double s) { rec.candidates.push_back({k, std::clamp(s, 0.0, 1.0)}); };
 
     rec.line = fitLine(g.points);

@@ -43,6 +43,12 @@ struct StrokeGeometry {
 StrokeGeometry strokeGeometry(const FitResult& fit);
 
 struct RecognizeOptions {
+    /// The recognizer resamples the stroke at this arc-length spacing (share of the extent) and
+    /// finds its corners again there: the pen's sample density depends on the device and, in plane
+    /// units, on the window's size (pixels per mm), and the corner detector's minimum neighbourhood
+    /// (FeatureOptions::k samples) and every maximum residual over the samples with it. 0 = use the
+    /// fit's own samples and corners.
+    double sampleSpacing = 0.02;
     /// Residual scale, relative to the stroke's extent, at which a primitive's score falls to
     /// 1/e: 10 %. Measured on real pen strokes (the $1 unistroke logs, development subjects, see
     /// tests/data/unistrokes): the largest deviation of hand-drawn triangles, rectangles, checks and

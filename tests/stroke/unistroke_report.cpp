@@ -5,6 +5,8 @@
 //   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
+//   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
+//                                              (0.5x, 2x the sample spacing): how often the class holds
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
 // The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
@@ -161,6 +163,7 @@ int main(int argc, char** argv)
             const double v = std::stod(kv.substr(eq + 1));
             auto& o = gOptions;
             if (k == "residualScale") o.residualScale = v;
+            else if (k == "sampleSpacing") o.sampleSpacing = v;
             else if (k == "freeformScore") o.freeformScore = v;
             else if (k == "vertexInsertion") o.vertexInsertion = v;
             else if (k == "collinearAngle") o.collinearAngle = v;
@@ -190,6 +193,21 @@ int main(int argc, char** argv)
                 }
                 std::cout << "| " << n << " | **all** | " << t << " | " << 100.0 * b / t << " % | " << 100.0 * a / t << " % | " << std::showpos
                           << 100.0 * (a - b) / t << std::noshowpos << " |\n";
+            }
+            return 0;
+        } else if (!std::strcmp(argv[i], "--invariance") && i + 1 < argc) {  // --invariance dev|held-out
+            const bool h = !std::strcmp(argv[++i], "held-out");
+            const auto recs = st::loadUnistrokes(dir, h ? st::heldOutSubjects() : st::devSubjects());
+            std::cout << "| scale | sample spacing | same class | accuracy original | accuracy transformed | changed (gesture: count) |\n|---:|---:|---:|---:|---:|---|\n";
+            for (double scale : {0.1, 1.0, 10.0}) {
+                for (double spacing : {0.5, 0.999, 1.0, 2.0}) {
+                    if (scale == 1.0 && spacing == 1.0) continue;
+                    const st::InvarianceResult r = st::measureInvariance(recs, scale, spacing, gOptions);
+                    std::cout << "| " << scale << " | " << spacing << " | " << std::fixed << std::setprecision(1) << 100.0 * r.same / r.total << " % | "
+                              << 100.0 * r.correctOriginal / r.total << " % | " << 100.0 * r.correctTransformed / r.total << " % | ";
+                    for (const auto& [g, c] : r.transitions) std::cout << g << ": " << c << "  ";
+                    std::cout << std::defaultfloat << "|\n";
+                }
             }
             return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
