@@ -75,6 +75,9 @@ struct RecognizeOptions {
     /// vertices is a curve approximated by chords.
     double guessedVertex = 0.5;
     double collinearAngle = 0.44;  ///< radians, 25 degrees
+    /// Polygon sides are fitted as lines to the middle of each edge, leaving out this share of the
+    /// edge's samples at either end (rounded and overshot corners); see edgeLineVertices.
+    double edgeTrim = 0.2;
     double shortEdge = 0.08;       ///< edges shorter than this share of the extent are merged
     /// recognizeStroke: a loop that the conditioning closed by trimming more than this share of its
     /// length as overshoot was a stroke crossing itself (an x, a delete mark), not a loop that

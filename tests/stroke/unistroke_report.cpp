@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <iostream>
@@ -51,7 +52,15 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
                   << " closed=" << rec.geometry.closed << " corners=" << fit.corners.size() << " verts=" << rec.geometry.vertices.size()
                   << " ext=" << std::setprecision(3) << rec.geometry.extent << " len=" << rec.geometry.length << " ->";
         for (const auto& c : rec.candidates) std::cout << ' ' << sk::shapeName(c.kind) << ':' << std::setprecision(2) << c.score;
-        std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG") << '\n';
+        std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG");
+        if (std::getenv("DUMP_VERTICES")) {  // vertices in units of the extent, from the points' first sample
+            std::cout << "  V:";
+            for (const auto& v : rec.geometry.vertices) {
+                const auto q = (v - rec.geometry.points.front()) / rec.geometry.extent;
+                std::cout << " (" << std::setprecision(2) << q.x() << ',' << q.y() << ')';
+            }
+        }
+        std::cout << '\n';
     }
 }
 
@@ -164,6 +173,7 @@ int main(int argc, char** argv)
             auto& o = gOptions;
             if (k == "residualScale") o.residualScale = v;
             else if (k == "sampleSpacing") o.sampleSpacing = v;
+            else if (k == "edgeTrim") o.edgeTrim = v;
             else if (k == "freeformScore") o.freeformScore = v;
             else if (k == "vertexInsertion") o.vertexInsertion = v;
             else if (k == "collinearAngle") o.collinearAngle = v;
