@@ -4,6 +4,7 @@
 //   unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value]...
 //   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
+//   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -20,6 +21,8 @@
 #include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 namespace st = sculptline::stroketest;
 
@@ -37,6 +40,76 @@ void report(const char* title, const std::vector<st::Recording>& recs)
     std::cout << "\n\n";
 }
 
+// Sets the RecognizeOptions field called `k`; false for an unknown name.
+bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::string& k, double v)
+{
+    if (k == "residualScale") o.residualScale = v;
+    else if (k == "sampleSpacing") o.sampleSpacing = v;
+    else if (k == "edgeTrim") o.edgeTrim = v;
+    else if (k == "freeformScore") o.freeformScore = v;
+    else if (k == "vertexInsertion") o.vertexInsertion = v;
+    else if (k == "collinearAngle") o.collinearAngle = v;
+    else if (k == "shortEdge") o.shortEdge = v;
+    else if (k == "minCornerTurn") o.minCornerTurn = v;
+    else if (k == "guessedVertex") o.guessedVertex = v;
+    else if (k == "habitDistance") o.habitDistance = v;
+    else if (k == "maxOvershoot") o.maxOvershoot = v;
+    else if (k == "minLoopTurn") o.minLoopTurn = v;
+    else return false;
+    return true;
+}
+
+// Leave-one-subject-out on the development subjects: for each of s02-s06, the value of option `k`
+// (among `values`) that recognizes the other four best is chosen, and the left-out subject is
+// recognized with it. The pooled accuracy estimates how well choosing that parameter on some people
+// carries over to another person (held-out subjects are not read).
+void leaveOneSubjectOut(const std::vector<st::Recording>& recs, const std::string& k, const std::vector<double>& values)
+{
+    std::map<std::string, std::map<double, std::pair<int, int>>> perSubject;  // subject -> value -> (correct, total)
+    for (double v : values) {
+        sculptline::solvers::stroke::RecognizeOptions o = gOptions;
+        setOption(o, k, v);
+        for (const auto& r : recs) {
+            const int kind = st::recognizeRecording(r, o);
+            auto& c = perSubject[r.subject][v];
+            c.first += kind >= 0 && st::isCorrect(r.gesture, static_cast<st::ShapeKind>(kind));
+            ++c.second;
+        }
+    }
+    std::cout << "| left out | " << k << " chosen on the other four | their accuracy | left-out accuracy | left-out at the default |\n|---|---:|---:|---:|---:|\n";
+    int correct = 0, total = 0, correctDefault = 0;
+    sculptline::solvers::stroke::RecognizeOptions defaults = gOptions;
+    for (const auto& [out, unused] : perSubject) {
+        double bestV = values.front(), bestAcc = -1;
+        for (double v : values) {
+            int c = 0, t = 0;
+            for (const auto& [s, byV] : perSubject) {
+                if (s == out) continue;
+                c += byV.at(v).first;
+                t += byV.at(v).second;
+            }
+            if (double(c) / t > bestAcc + 1e-12) {
+                bestAcc = double(c) / t;
+                bestV = v;
+            }
+        }
+        const auto& mine = perSubject[out][bestV];
+        int dc = 0;
+        for (const auto& r : recs) {
+            if (r.subject != out) continue;
+            const int kind = st::recognizeRecording(r, defaults);
+            dc += kind >= 0 && st::isCorrect(r.gesture, static_cast<st::ShapeKind>(kind));
+        }
+        correct += mine.first;
+        total += mine.second;
+        correctDefault += dc;
+        std::cout << "| " << out << " | " << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
+                  << 100.0 * mine.first / mine.second << " % | " << 100.0 * dc / mine.second << " % |" << std::defaultfloat << '\n';
+    }
+    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % | " << 100.0 * correctDefault / total
+              << " % |" << std::defaultfloat << '\n';
+}
+
 // One line per recording of `gesture`: what the recognizer saw (for development on s02-s06 only).
 void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
 {
@@ -45,7 +118,9 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         if (r.gesture != gesture) continue;
         sk::RecognizeOptions o = gOptions;
         o.regularize = false;
-        const sk::StrokeRecognition sr = sk::recognizeStroke(r.stroke, {}, o);
+        // DUMP_SPACING=f: the stroke resampled at f times its sample spacing (--invariance).
+        const double spacing = std::getenv("DUMP_SPACING") ? std::atof(std::getenv("DUMP_SPACING")) : 1.0;
+        const sk::StrokeRecognition sr = sk::recognizeStroke(st::transformStroke(r.stroke, 1.0, spacing), {}, o);
         const sk::FitResult& fit = sr.fit;
         const sk::Recognition& rec = sr.recognition;
         std::cout << r.subject << ' ' << r.speed << ' ' << r.number << " n=" << r.stroke.points.size() << " cond=" << fit.conditioned.size()
@@ -170,20 +245,7 @@ int main(int argc, char** argv)
             const auto eq = kv.find('=');
             const std::string k = kv.substr(0, eq);
             const double v = std::stod(kv.substr(eq + 1));
-            auto& o = gOptions;
-            if (k == "residualScale") o.residualScale = v;
-            else if (k == "sampleSpacing") o.sampleSpacing = v;
-            else if (k == "edgeTrim") o.edgeTrim = v;
-            else if (k == "freeformScore") o.freeformScore = v;
-            else if (k == "vertexInsertion") o.vertexInsertion = v;
-            else if (k == "collinearAngle") o.collinearAngle = v;
-            else if (k == "shortEdge") o.shortEdge = v;
-            else if (k == "minCornerTurn") o.minCornerTurn = v;
-            else if (k == "guessedVertex") o.guessedVertex = v;
-            else if (k == "habitDistance") o.habitDistance = v;
-            else if (k == "maxOvershoot") o.maxOvershoot = v;
-            else if (k == "minLoopTurn") o.minLoopTurn = v;
-            else {
+            if (!setOption(gOptions, k, v)) {
                 std::cerr << "unknown option " << k << '\n';
                 return 2;
             }
@@ -219,6 +281,18 @@ int main(int argc, char** argv)
                     std::cout << std::defaultfloat << "|\n";
                 }
             }
+            return 0;
+        } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
+            const std::string k = argv[++i];
+            std::vector<double> values;
+            std::istringstream list(argv[++i]);
+            for (std::string v; std::getline(list, v, ',');) values.push_back(std::stod(v));
+            sculptline::solvers::stroke::RecognizeOptions probe;
+            if (values.empty() || !setOption(probe, k, values.front())) {
+                std::cerr << "--loso: unknown option or no values\n";
+                return 2;
+            }
+            leaveOneSubjectOut(st::loadUnistrokes(dir, st::devSubjects()), k, values);
             return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
