@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -576,8 +577,16 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         rec.geometry.vertices = polygon;
         // Vertices the corner detector did not see are the recognizer's guesses: one is expected on
         // a loop (its seam, and the vertex opposite when it has no corner), more mean the polygon
-        // is being fitted to a curve (a brace's curls, a circle's arcs).
-        const int guessed = std::max(0, inserted - (g.closed ? 2 : 0));
+        // is being fitted to a curve (a brace's curls, a circle's arcs). Unless, on a loop, the
+        // polygon lies closer to the stroke than the circle and the ellipse do: then the curve it
+        // would be approximating is not there (a rectangle whose corners the hand, or the fitter's
+        // smoothing, rounded off beyond the corner detector's sharpness test; a circle's inscribed
+        // square misses it by 0.29 radius, a fitted circle by the pen's noise).
+        double smooth = std::numeric_limits<double>::infinity();
+        if (g.closed && rec.circle.valid) smooth = std::min(smooth, rec.circle.maxResidual);
+        if (g.closed && rec.ellipse.valid) smooth = std::min(smooth, rec.ellipse.maxResidual);
+        const bool polygonFitsBetter = g.closed && residual < smooth;
+        const int guessed = polygonFitsBetter ? 0 : std::max(0, inserted - (g.closed ? 2 : 0));
         const double fitScore = score(residual, sigma) * std::pow(o.guessedVertex, guessed);
         if (g.closed && g.vertices.size() == 3) {
             add(ShapeKind::Triangle, fitScore);
@@ -594,7 +603,9 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             // with equal sides is reported as a square rather than a rectangle.
             add(ShapeKind::Square, ideal(regularRectangle(g.vertices, true)) * (q.axisAligned || !q.right ? 1.0 : 0.5));
             add(ShapeKind::Rectangle, ideal(regularRectangle(g.vertices, false)) * (q.equal ? 0.7 : 1.0));
-            add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0));
+            // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
+            // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
+            add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));
             add(ShapeKind::Polyline, fitScore * 0.5);
         } else {
             add(ShapeKind::Polyline, fitScore);

@@ -135,6 +135,10 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
                 std::cout << " (" << std::setprecision(2) << q.x() << ',' << q.y() << ')';
             }
         }
+        if (std::getenv("DUMP_POINTS")) {  // the recognizer's (resampled) points, plane coordinates
+            std::cout << "  P:";
+            for (const auto& p : rec.geometry.points) std::cout << std::setprecision(6) << ' ' << p.x() << ',' << p.y();
+        }
         std::cout << '\n';
     }
 }
