@@ -92,7 +92,7 @@ double turnAt(const Point2& a, const Point2& k, const Point2& b)
 }
 
 // Returns how many of the final vertices were inserted here (the corner detector did not find them).
-int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength)
+int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength, int sameCorner)
 {
     auto& idx = g.vertexIndex;
     const std::vector<int> detected = idx;
@@ -156,8 +156,18 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
     }
     g.vertices.clear();
     for (int k : idx) g.vertices.push_back(g.points[k]);
+    // A vertex within `sameCorner` samples of a detected corner is that corner, located at the
+    // sample beside it (the farthest point and the sharpest turn of one rounded corner differ by a
+    // sample or two, and which of them the detector or the refinement picks varies with noise).
     int inserted = 0;
-    for (int k : idx) inserted += std::find(detected.begin(), detected.end(), k) == detected.end();
+    for (int k : idx) {
+        bool near = false;
+        for (int d : detected) {
+            const int gap = std::abs(k - d);
+            near = near || (g.closed ? std::min(gap, n - gap) : gap) <= sameCorner;
+        }
+        inserted += !near;
+    }
     return inserted;
 }
 
@@ -532,7 +542,8 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     // bottom the hand rounded off has no sharp corner, but its farthest point from the chord turns
     // it by far more than minCornerTurn, and the two sides fit it where no arc does.
     const int inserted =
-        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent);
+        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent,
+                       o.sampleSpacing > 0.0 ? 2 : 0);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon
         // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked
