@@ -528,19 +528,12 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             add(ShapeKind::Arc, score(rec.circle.maxResidual, sigma) * bend);
         }
     }
-    if (g.closed) {
-        rec.ellipse = fitEllipse(g.points);
-        const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
-        if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * (corners <= 1 ? 1.0 : 0.5));
-        if (rec.ellipse.valid) {
-            // A circle is an ellipse too; the ellipse is the better answer only when elongated.
-            add(ShapeKind::Ellipse, score(rec.ellipse.maxResidual, sigma) * std::clamp((roundness - 1.0) / 0.2, 0.3, 1.0) *
-                                        (corners <= 1 ? 1.0 : 0.5));
-        }
-    }
+    if (g.closed) rec.ellipse = fitEllipse(g.points);
     // Every stroke's polygon is refined, an open one without corners too: a fast V or check whose
     // bottom the hand rounded off has no sharp corner, but its farthest point from the chord turns
     // it by far more than minCornerTurn, and the two sides fit it where no arc does.
+    // The residual of a loop's polygon (infinite without one), for the round shapes' corner test.
+    double loopPolygonResidual = std::numeric_limits<double>::infinity();
     const int inserted =
         refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent,
                        o.sampleSpacing > 0.0 ? 2 : 0);
@@ -597,6 +590,7 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         if (g.closed && rec.circle.valid) smooth = std::min(smooth, rec.circle.maxResidual);
         if (g.closed && rec.ellipse.valid) smooth = std::min(smooth, rec.ellipse.maxResidual);
         const bool polygonFitsBetter = g.closed && residual < smooth;
+        loopPolygonResidual = g.closed ? residual : loopPolygonResidual;
         const int guessed = polygonFitsBetter ? 0 : std::max(0, inserted - (g.closed ? 2 : 0));
         const double fitScore = score(residual, sigma) * std::pow(o.guessedVertex, guessed);
         if (g.closed && g.vertices.size() == 3) {
@@ -620,6 +614,22 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             add(ShapeKind::Polyline, fitScore * 0.5);
         } else {
             add(ShapeKind::Polyline, fitScore);
+        }
+    }
+    if (g.closed) {
+        // Corners count against a round loop only where the polygon through them lies closer to
+        // the stroke than the circle or ellipse does. The corner detector reads turning angles
+        // over a few samples, and the pointer's pixel grid, coarse in plane units in a small
+        // window, turns a drawn circle's samples by as much as a corner there: a circle whose
+        // inscribed polygon misses it by more than its own fit does is a circle with a jittered
+        // outline, whatever the window's size.
+        const auto cornered = [&](double smoothResidual) { return corners >= 2 && loopPolygonResidual < smoothResidual ? 0.5 : 1.0; };
+        const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
+        if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * cornered(rec.circle.maxResidual));
+        if (rec.ellipse.valid) {
+            // A circle is an ellipse too; the ellipse is the better answer only when elongated.
+            add(ShapeKind::Ellipse, score(rec.ellipse.maxResidual, sigma) * std::clamp((roundness - 1.0) / 0.2, 0.3, 1.0) *
+                                        cornered(rec.ellipse.maxResidual));
         }
     }
     add(ShapeKind::Freeform, o.freeformScore);
