@@ -15,8 +15,13 @@ namespace {
 constexpr double kDevOverall = 0.95;
 constexpr double kDevPerGesture = 0.85;
 constexpr double kHeldOutOverall = 0.89;
-// Held-out, learning from each person's first three repetitions: 89.9 % -> 94.0 % measured.
-constexpr double kMinAdaptationGain = 0.03;
+// Held-out, learning from each person's first three repetitions (unistroke-report --adapt held-out,
+// the strokes after them): 89.9 % -> 94.0 % measured at first, 94.2 % -> 96.7 % once polygon sides
+// were fitted to more of each edge (RecognizeOptions::edgeTrim 0.05). The gain shrinks as the
+// recognizer itself gets better; what the person sees is the accuracy after learning, and that
+// learning helps at all.
+constexpr double kMinAdaptedAccuracy = 0.95;
+constexpr double kMinAdaptationGain = 0.01;
 
 TEST(UnistrokeRecognition, GivenDevelopmentSubjects_WhenRecognized_ThenOverallAndEveryGestureAboveFloor)
 {
@@ -43,10 +48,10 @@ TEST(UnistrokeRecognition, GivenHeldOutSubjects_WhenRecognized_ThenOverallAboveF
 // A window of another size passes the same stroke in other plane units per pixel: scaled, and with
 // its samples (pointer events a pixel or more apart) denser or sparser in plane units. Measured on
 // the development strokes (unistroke-report --invariance dev): scaled alone, 100.0 % keep their class
-// (every threshold is relative to the stroke's extent); resampled at 0.5x / 2x the spacing, 98.4 % /
-// 97.4-97.5 %, about the 98.8 % that merely resampling at the same spacing keeps: the strokes that
+// (every threshold is relative to the stroke's extent); resampled at 0.5x / 2x the spacing, 98.6 % /
+// 97.5-97.6 %, about the 98.9 % that merely resampling at the same spacing keeps: the strokes that
 // change sit on a decision boundary (polyline or freeform, circle or ellipse) that moving the samples
-// along the stroke crosses, with no trend in the accuracy (96.9 % before, 96.8-97.3 % after).
+// along the stroke crosses, with no trend in the accuracy (97.5 % before, 97.2-97.7 % after).
 constexpr double kScaledSameClass = 0.999;
 constexpr double kResampledSameClass = 0.965;
 
@@ -103,6 +108,7 @@ TEST(UnistrokeRecognition, GivenHeldOutPeople_WhenTheModelLearnsTheirFirstCorrec
     }
     ASSERT_GT(tested, 0);
     EXPECT_GE(double(after - before) / tested, kMinAdaptationGain);
+    EXPECT_GE(double(after) / tested, kMinAdaptedAccuracy);
 }
 
 }  // namespace
