@@ -589,7 +589,13 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         double smooth = std::numeric_limits<double>::infinity();
         if (g.closed && rec.circle.valid) smooth = std::min(smooth, rec.circle.maxResidual);
         if (g.closed && rec.ellipse.valid) smooth = std::min(smooth, rec.ellipse.maxResidual);
-        const bool polygonFitsBetter = g.closed && residual < smooth;
+        // The same on an open stroke against an arc that would be chosen over freeform (a bracket
+        // whose corners the hand rounded off); a curve no arc fits (a pigtail, a question mark)
+        // keeps its guessed vertices against it.
+        bool arcCompetes = false;
+        for (const ShapeCandidate& c : rec.candidates) arcCompetes = arcCompetes || (c.kind == ShapeKind::Arc && c.score >= o.freeformScore);
+        if (!g.closed && arcCompetes) smooth = std::min(smooth, rec.circle.maxResidual);
+        const bool polygonFitsBetter = (g.closed || arcCompetes) && residual < smooth;
         loopPolygonResidual = g.closed ? residual : loopPolygonResidual;
         const int guessed = polygonFitsBetter ? 0 : std::max(0, inserted - (g.closed ? 2 : 0));
         const double fitScore = score(residual, sigma) * std::pow(o.guessedVertex, guessed);
