@@ -1,5 +1,6 @@
 #include "ui/sketch_document.h"
 
+#include "manipulators/aesthetic_drag.h"
 #include "manipulators/curve_pull.h"
 #include "manipulators/plane_binding.h"
 #include "manipulators/point_handles.h"
@@ -59,6 +60,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
                                     [this](model::EntityId point, const manipulators::PointPose& before,
                                            const manipulators::PointPose& after) { pointDragFinished(point, before, after); });
     root_->addChild(pointHandles_->root());
+    setUpAesthetics();
     root_->addChild(planeDraggers_->root());
     // Sculpt mode's click tools: a click on the surface drops a handle, blocks a point, picks a
     // distance's end; those tools draw no strokes.
@@ -80,6 +82,8 @@ SketchDocument::~SketchDocument()
     model_.endDrag();
     model_.removeObserver(this);
     pointHandles_.reset();
+    aestheticBinding_.reset();
+    aestheticHandle_.reset();
     planeDraggers_.reset();
     pullBinding_.reset();
     scheduler_.reset();
@@ -246,7 +250,10 @@ void SketchDocument::entityUpdated(const model::Entity& e)
     if (e.kind == model::EntityKind::Surface) resketchSurfaceUpdated(e.id);
 }
 
-bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0; }
+bool SketchDocument::dragging() const
+{
+    return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0 || aestheticBinding_->active();
+}
 
 void SketchDocument::pointDragFinished(model::EntityId point, const manipulators::PointPose& before, const manipulators::PointPose& after)
 {

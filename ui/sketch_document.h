@@ -4,6 +4,7 @@
 // (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
 #include "model/auxiliary_plane.h"
 #include "model/model.h"
+#include "solvers/aesthetics/curve_operators.h"
 #include "scene/model_view.h"
 #include "scene/update_scheduler.h"
 #include "model/document.h"
@@ -36,6 +37,8 @@ struct PointPose;
 class StrokeInput;
 class CurvePull;
 class CurvePullBinding;
+class AestheticHandle;
+class AestheticDragBinding;
 struct FinishedStroke;
 struct StrokeHit;
 }  // namespace sculptline::manipulators
@@ -264,7 +267,18 @@ public:
     void entityRemoved(const model::Entity& entity) override;
     void entityUpdated(const model::Entity& entity) override;
 
+    /// Aesthetic operators (thesis §7.4) on the selected planar curve: applied at once with
+    /// `amount` (one undo step); the status text says the name before and after, or why not.
+    QString applyAesthetic(solvers::aesthetics::Operator op, double amount);
+    /// Shows the operator's handle on the selected curve's operated point (or hides it: nullopt);
+    /// dragging it sets the amount live, one undo step per drag. Returns why not, or empty.
+    QString showAestheticHandle(std::optional<solvers::aesthetics::Operator> op);
+    std::optional<solvers::aesthetics::Operator> aestheticHandleOperator() const { return handleOperator_; }
+    manipulators::AestheticHandle& aestheticHandle() { return *aestheticHandle_; }
+
 Q_SIGNALS:
+    /// An aesthetic operator was applied or refused (status bar).
+    void aestheticApplied(const QString& message);
     /// load() replaced the document (and cleared the undo stack).
     void replaced();
     /// The set of entities or their data changed (lists, inspector).
@@ -332,6 +346,13 @@ private:
     std::unique_ptr<manipulators::CurvePullBinding> pullBinding_;
     std::unique_ptr<manipulators::PlaneDraggers> planeDraggers_;  ///< one dragger per plane, bound to the model
     std::unique_ptr<manipulators::PointHandles> pointHandles_;  ///< one jack per point (sculpt handles)
+    std::unique_ptr<manipulators::AestheticHandle> aestheticHandle_;
+    std::unique_ptr<manipulators::AestheticDragBinding> aestheticBinding_;
+    std::optional<solvers::aesthetics::Operator> handleOperator_;
+    void setUpAesthetics();
+    /// Puts the aesthetic handle where its operator acts on the selection now (after edits, undo).
+    void placeAestheticHandle();
+    void aestheticDragFinished(model::EntityId curve, const solvers::Curve3d& before, double amount, const std::string& message);
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     QUndoStack undo_;
