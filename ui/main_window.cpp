@@ -291,6 +291,7 @@ void MainWindow::createActions()
                                     document_->setSculptCurveTangent(document_->sculptBase(), document_->recognizedCurve(), on);
                                 });
     holdTangent->setCheckable(true);
+    createAestheticsMenu();
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),

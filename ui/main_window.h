@@ -101,6 +101,7 @@ protected:
 
 private:
     void createActions();
+    void createAestheticsMenu();  // main_window_aesthetics.cpp
     void resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();

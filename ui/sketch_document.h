@@ -274,6 +274,8 @@ public:
     /// dragging it sets the amount live, one undo step per drag. Returns why not, or empty.
     QString showAestheticHandle(std::optional<solvers::aesthetics::Operator> op);
     std::optional<solvers::aesthetics::Operator> aestheticHandleOperator() const { return handleOperator_; }
+    /// A fiftieth of the selected curve's length (0 without a curve): the menu's amount.
+    double defaultAestheticAmount() const;
     manipulators::AestheticHandle& aestheticHandle() { return *aestheticHandle_; }
 
 Q_SIGNALS:

@@ -4,6 +4,7 @@
 #include "manipulators/aesthetic_drag.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_commands.h"
+#include "solvers/bspline/arc_length.h"
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -54,6 +55,14 @@ QString SketchDocument::applyAesthetic(aes::Operator op, double amount)
     Q_EMIT aestheticApplied(message);
     Q_EMIT entitiesChanged();
     return message;
+}
+
+double SketchDocument::defaultAestheticAmount() const
+{
+    constexpr double kMenuAmountFraction = 0.02;
+    const model::Entity* e = model_.find(selection_);
+    if (!e || e->kind != model::EntityKind::Curve || !e->local) return 0.0;
+    return kMenuAmountFraction * solvers::arcLength(*e->local);
 }
 
 QString SketchDocument::showAestheticHandle(std::optional<aes::Operator> op)
