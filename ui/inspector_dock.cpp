@@ -90,7 +90,7 @@ QString InspectorDock::text() const { return text_->toPlainText(); }
 void InspectorDock::show(const model::Model& model, model::EntityId id)
 {
     const model::Entity* e = model.find(id);
-    plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e->world : std::nullopt);
+    plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e : nullptr);
     filling_ = true;
     sculpt_ = e && e->recipe && e->recipe->mode == model::Construction::Sculpt ? id : 0;
     stiffness_->setVisible(sculpt_ != 0);

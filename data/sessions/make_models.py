@@ -809,7 +809,26 @@ def incidence_free():
     s.write("incidence_free_undo.json")
 
 
+def aesthetics():
+    """The Aesthetics dock and the curvature comb: an S-shaped wave (one period of a sine, so its
+    curvature takes both signs) sketched on the default plane, the dock brought forward (Ctrl+Shift+A)
+    and the comb shown (Shift+C), then the wave pulled 12 mm up at three quarters of its length: the
+    comb and the dock follow the drag."""
+    s = Session()
+    s.action("mode.sketch")
+    wave = [r([-45 + 90 * i / 39, 95, 55 + 14 * math.sin(2 * math.pi * i / 39)]) for i in range(40)]
+    s.stroke(wave)
+    s.action("view.aesthetics")
+    s.action("view.curvatureComb")
+    s.action("mode.pull")
+    grab = wave[30]
+    s.stroke([r([grab[0], grab[1], grab[2] + 12 * i / 20]) for i in range(21)], dt=10)
+    s.action("mode.view")
+    s.write("aesthetics.json")
+
+
 if __name__ == "__main__":
+    aesthetics()
     jug_mouth()
     incidence_free()
     incidence_dome()
