@@ -109,9 +109,9 @@ AestheticsDock::AestheticsDock(SketchDocument& document, QWidget* parent) : QDoc
 
     auto* points = new QGroupBox(tr("Characteristic points"), box);
     auto* pointsLayout = new QVBoxLayout(points);
-    points_ = makeTable({tr("Codon"), tr("u"), tr("κ (1/mm)"), tr("s (mm)"), tr("Small"), tr("Sharp"), tr("Symmetric"), tr("Redundant")}, points);
-    points_->setToolTip(tr("Small: visibility below the thresholds; Sharp: a corner; Symmetric: equal changes on both sides; "
-                           "Redundant: a small extremum the name could do without (thesis §7.3.2)"));
+    points_ = makeTable({tr("Codon"), tr("u"), tr("κ (1/mm)"), tr("s (mm)"), tr("Properties")}, points);
+    points_->setToolTip(tr("The properties of an extremum (thesis §7.3.2): small visibility (its curvature changes and "
+                           "distances to its neighbours below the thresholds), sharp corner, symmetric, redundant"));
     pointsLayout->addWidget(points_);
     layout->addWidget(points);
 
@@ -288,15 +288,17 @@ void AestheticsDock::showAnalysis(const model::Entity& e)
         setCell(points_, r, 1, number(p.u));
         setCell(points_, r, 2, number(p.curvature));
         setCell(points_, r, 3, number(p.arcLength));
-        for (int c = 4; c < 8; ++c) setCell(points_, r, c, QString());
+        setCell(points_, r, 4, QString());  // an inflection has no properties
+        points_->item(r, 4)->setTextAlignment(Qt::AlignLeft | Qt::AlignVCenter);
     }
     for (const aes::Characteristics& c : a.characteristics) {
         if (c.point < 0 || c.point >= points_->rowCount()) continue;
-        const bool flags[] = {c.smallVisibility, c.sharpCorner, c.symmetric, c.redundant};
-        for (int k = 0; k < 4; ++k) {
-            points_->item(c.point, 4 + k)->setText(flags[k] ? QStringLiteral("✓") : QStringLiteral("·"));
-            points_->item(c.point, 4 + k)->setTextAlignment(Qt::AlignCenter);
-        }
+        QStringList flags;
+        if (c.smallVisibility) flags << tr("small visibility");
+        if (c.sharpCorner) flags << tr("sharp corner");
+        if (c.symmetric) flags << tr("symmetric");
+        if (c.redundant) flags << tr("redundant");
+        points_->item(c.point, 4)->setText(flags.isEmpty() ? tr("—") : flags.join(QStringLiteral(", ")));
     }
     lcg_->setRowCount(static_cast<int>(a.lcg.size()));
     for (size_t i = 0; i < a.lcg.size(); ++i) {

@@ -29,8 +29,9 @@ constexpr double kMinSpeed = 1e-9;
 /// The vertical range at first holds this share of the samples (by |kappa|), so that one corner's
 /// spike does not flatten the rest; wheel zoom and drag reach the rest.
 constexpr double kRangeQuantile = 0.98;
-/// Margin around the data, as a fraction of the range.
-constexpr double kMargin = 0.12;
+/// Margin around the data, as a fraction of the range: room for the codon labels over the extreme
+/// points (a label is about a tenth of the plot's usual 150 pixels high).
+constexpr double kMargin = 0.22;
 /// Codon labels stand this many pixels off their point.
 constexpr int kLabelOffset = 4;
 
@@ -45,7 +46,7 @@ CurvaturePlot::CurvaturePlot(QWidget* parent) : QWidget(parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     plot_ = new QCustomPlot(this);
-    plot_->setMinimumHeight(180);
+    plot_->setMinimumHeight(220);
     plot_->plotLayout()->insertRow(0);
     title_ = new QCPTextElement(plot_, QString(), QFont(font().family(), font().pointSize(), QFont::Bold));
     plot_->plotLayout()->addElement(0, 0, title_);
@@ -64,11 +65,10 @@ CurvaturePlot::CurvaturePlot(QWidget* parent) : QWidget(parent)
     tracer_ = new QCPItemTracer(plot_);
     tracer_->setStyle(QCPItemTracer::tsCircle);
     tracer_->setVisible(false);
-    readout_ = new QCPItemText(plot_);
-    readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
-    readout_->position->setCoords(0.98, 0.02);
-    readout_->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
-    readout_->setVisible(false);
+    plot_->plotLayout()->insertRow(1);
+    readout_ = new QCPTextElement(plot_, QString(), QFont(font().family(), font().pointSize() - 1));
+    readout_->setTextColor(kPointColor);
+    plot_->plotLayout()->addElement(1, 0, readout_);
     plot_->setInteractions(QCP::iRangeZoom | QCP::iRangeDrag);
     connect(plot_, &QCustomPlot::mouseMove, this, [this](QMouseEvent* event) { hovered(event); });
     layout->addWidget(plot_);
@@ -77,7 +77,7 @@ CurvaturePlot::CurvaturePlot(QWidget* parent) : QWidget(parent)
 
 QWidget* CurvaturePlot::plot() const { return plot_; }
 QString CurvaturePlot::title() const { return title_->text(); }
-QString CurvaturePlot::readout() const { return readout_->visible() ? readout_->text() : QString(); }
+QString CurvaturePlot::readout() const { return readout_->text().trimmed(); }
 
 QStringList CurvaturePlot::codonLabels() const
 {
@@ -101,7 +101,7 @@ void CurvaturePlot::setCurve(const model::Entity* e)
     for (QCPItemText* label : labels_) plot_->removeItem(label);
     labels_.clear();
     points_->data()->clear();
-    readout_->setVisible(false);
+    readout_->setText(QStringLiteral(" "));  // a space: the row keeps its height
     tracer_->setVisible(false);
     QString title = tr("Select a curve to see its curvature");
     std::vector<solvers::aesthetics::CharacteristicPoint> characteristic;
@@ -149,7 +149,7 @@ void CurvaturePlot::setCurve(const model::Entity* e)
         label->setPositionAlignment(Qt::AlignHCenter | (above ? Qt::AlignBottom : Qt::AlignTop));
         label->setPadding(above ? QMargins(0, 0, 0, kLabelOffset) : QMargins(0, kLabelOffset, 0, 0));
         label->setColor(kPointColor);
-        label->setClipToAxisRect(true);
+        label->setClipToAxisRect(false);  // a label over an extreme point may reach into the margin
         labels_.push_back(label);
     }
     if (!kappa_.empty()) {
@@ -173,8 +173,8 @@ void CurvaturePlot::setCurve(const model::Entity* e)
 void CurvaturePlot::hovered(QMouseEvent* event)
 {
     if (s_.empty() || !plot_->axisRect()->rect().contains(event->pos())) {
-        if (readout_->visible()) {
-            readout_->setVisible(false);
+        if (!readout().isEmpty()) {
+            readout_->setText(QStringLiteral(" "));  // a space: the row keeps its height
             tracer_->setVisible(false);
             plot_->replot(QCustomPlot::rpQueuedReplot);
         }
@@ -188,7 +188,6 @@ void CurvaturePlot::hovered(QMouseEvent* event)
     tracer_->position->setCoords(s_[i], kappa_[i]);
     tracer_->setVisible(true);
     readout_->setText(tr("s = %1 mm, κ = %2 /mm").arg(s_[i], 0, 'f', 2).arg(kappa_[i], 0, 'g', 4));
-    readout_->setVisible(true);
     plot_->replot(QCustomPlot::rpQueuedReplot);
 }
 

@@ -48,7 +48,7 @@ public:
     QWidget* plot() const;
     /// The plot's pixel (plot widget coordinates) of sample i.
     QPoint pixelOfSample(int i) const;
-    QSize sizeHint() const override { return {260, 200}; }
+    QSize sizeHint() const override { return {260, 240}; }
 
 private:
     void hovered(QMouseEvent* event);
@@ -59,7 +59,7 @@ private:
     QCPGraph* points_ = nullptr;  ///< the characteristic points
     std::vector<QCPItemText*> labels_;
     QCPItemTracer* tracer_ = nullptr;
-    QCPItemText* readout_ = nullptr;
+    QCPTextElement* readout_ = nullptr;  ///< a row under the title, off the data
     std::vector<double> kappa_, s_;
     bool signed_ = false;
 };

@@ -15,8 +15,10 @@
 #include "ui/sketch_document.h"
 
 #include <Inventor/Qt/SoQt.h>
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoSwitch.h>
@@ -161,14 +163,18 @@ struct SCurveWindow {
             EXPECT_TRUE(shownAs(dock().pointTable()->item(static_cast<int>(i), 3)->text(), a.points[i].arcLength));
         }
         for (const aes::Characteristics& c : a.characteristics) {
-            EXPECT_EQ(dock().pointTable()->item(c.point, 4)->text() == QStringLiteral("✓"), c.smallVisibility);
-            EXPECT_EQ(dock().pointTable()->item(c.point, 7)->text() == QStringLiteral("✓"), c.redundant);
+            const QString shown = dock().pointTable()->item(c.point, 4)->text();
+            EXPECT_EQ(shown.contains(QStringLiteral("small visibility")), c.smallVisibility) << shown.toStdString();
+            EXPECT_EQ(shown.contains(QStringLiteral("sharp corner")), c.sharpCorner) << shown.toStdString();
+            EXPECT_EQ(shown.contains(QStringLiteral("symmetric")), c.symmetric) << shown.toStdString();
+            EXPECT_EQ(shown.contains(QStringLiteral("redundant")), c.redundant) << shown.toStdString();
         }
         ASSERT_EQ(dock().lcgTable()->rowCount(), static_cast<int>(a.lcg.size()));
         for (size_t i = 0; i < a.lcg.size(); ++i) EXPECT_TRUE(shownAs(dock().lcgTable()->item(static_cast<int>(i), 2)->text(), a.lcg[i].slope));
     }
 
-    void shoot(const QString& suffix)
+    /// `frame`: the camera is first turned to look at it squarely (for the picture only).
+    void shoot(const QString& suffix, SoNode* frame = nullptr)
     {
         const char* shot = std::getenv("SCULPTLINE_AESTHETICS_SHOT");
         if (!shot) return;
@@ -177,6 +183,12 @@ struct SCurveWindow {
         waited.start();
         while (!(window.windowHandle() && window.windowHandle()->isExposed()) && waited.elapsed() < kExposeDeadlineMs)
             QApplication::processEvents(QEventLoop::AllEvents, 50);
+        if (frame) {
+            // Facing the plane (its normal is -y): the camera on the front side, looking along +y.
+            SoCamera* camera = window.viewer()->getCamera();
+            camera->orientation.setValue(SbRotation(SbVec3f(0, 0, -1), SbVec3f(0, 1, 0)) * SbRotation(SbVec3f(0, 1, 0), 0.0f));
+            camera->viewAll(frame, window.viewer()->getViewportRegion(), 1.1f);
+        }
         window.renderViewport();
         QApplication::processEvents();
         // QWidget::grab() is black for the GL area: the viewport's framebuffer is painted over it.
@@ -222,6 +234,7 @@ TEST(AestheticsDock, CombTeethAreScaleTimesCurvatureOnTheTurningSide)
         longest = std::max(longest, (tip - base).norm());
     }
     EXPECT_NEAR(longest / box.diagonal().norm(), scene::kCombLengthFraction, kFloatMm / box.diagonal().norm());
+    w.shoot(QStringLiteral("_comb"), w.comb().root());
 
     // The dock's controls: twice the scale, twice the teeth; four teeth per span
     const double scale = w.comb().scale();
@@ -231,7 +244,6 @@ TEST(AestheticsDock, CombTeethAreScaleTimesCurvatureOnTheTurningSide)
     w.dock().densityBox()->setValue(4);
     EXPECT_EQ(drawnTeeth(w.window.sceneRoot()).size(), static_cast<size_t>(3 * 4 + 1));
     w.expectTeethMatch();
-    w.shoot(QStringLiteral("_comb"));
 }
 
 TEST(AestheticsDock, FollowsAPullOfTheCurve)
@@ -297,6 +309,7 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
     // Within a pixel of sample i: its arc length to the read-out's two decimals, give or take a pixel's worth
     const double pixel = plot->arcLengths().back() / plot->plot()->width();
     EXPECT_NEAR(plot->readout().section(QLatin1Char(' '), 2, 2).toDouble(), plot->arcLengths()[static_cast<size_t>(i)], 2.0 * pixel);
+    w.shoot(QStringLiteral("_plot"));
 }
 
 TEST(AestheticsDock, TellsWhyACurveCannotBeAnalysed)
