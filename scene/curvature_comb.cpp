@@ -162,6 +162,8 @@ void CurvatureComb::entityUpdated(const model::Entity& e)
 
 void CurvatureComb::clear()
 {
+    // Already empty (a hidden comb's curve updated): no field write, no redraw notification.
+    if (teeth_.empty() && teethCoords_->point.getNum() == 0) return;
     teeth_.clear();
     teethCoords_->point.setNum(0);
     teethLines_->numVertices.setNum(0);
