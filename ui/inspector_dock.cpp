@@ -10,6 +10,7 @@
 #include <QSlider>
 #include <QVBoxLayout>
 #include <QTextStream>
+#include <QTimer>
 
 #include <Eigen/Geometry>
 
@@ -86,6 +87,18 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
 }
 
 QString InspectorDock::text() const { return text_->toPlainText(); }
+
+void InspectorDock::followCurve(const model::Model& model, model::EntityId id)
+{
+    // Hidden: show() draws it afresh when the drag ends (the document's entitiesChanged).
+    if (plotPending_ || !plot_->isVisible()) return;
+    plotPending_ = true;
+    QTimer::singleShot(0, this, [this, &model, id]() {
+        plotPending_ = false;
+        const model::Entity* e = model.find(id);
+        plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e : nullptr);
+    });
+}
 
 void InspectorDock::show(const model::Model& model, model::EntityId id)
 {

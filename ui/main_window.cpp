@@ -107,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         inspector_->show(document_->model(), id);
         updateStatus();
     });
+    connect(document_, &SketchDocument::selectionUpdated, this,
+            [this]() { inspector_->followCurve(document_->model(), document_->selection()); });
     connect(document_, &SketchDocument::strokeFinished, this, [this]() {
         recognition_->refresh();
         statusBar()->showMessage(document_->lastStroke().message);

@@ -310,6 +310,21 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
     const double pixel = plot->arcLengths().back() / plot->plot()->width();
     EXPECT_NEAR(plot->readout().section(QLatin1Char(' '), 2, 2).toDouble(), plot->arcLengths()[static_cast<size_t>(i)], 2.0 * pixel);
     w.shoot(QStringLiteral("_plot"));
+
+    // A pull (a drag's frames, no entitiesChanged until it ends): the plot follows the new shape
+    w.model().beginPull(w.curve, 2.25);
+    w.model().pullTo(w.entity().local->evaluate(2.25) + Eigen::Vector3d(0, 30, 0));
+    w.window.document().scheduler().flush();
+    QApplication::processEvents();
+    const solvers::Curve2d pulled = aes::planarCurve(*w.entity().local);
+    const double u1 = pulled.domainEnd();
+    const size_t n = plot->samples().size();
+    for (size_t k : {n / 4, n / 2, 3 * n / 4}) {
+        const double u = u1 * static_cast<double>(k) / static_cast<double>(n - 1);
+        EXPECT_NEAR(plot->samples()[k], aes::signedCurvature(pulled, u), 1e-12) << k;
+    }
+    EXPECT_NE(aes::signedCurvature(pulled, 0.75 * u1), aes::signedCurvature(aes::planarCurve(sCurve()), 0.75 * u1));
+    w.model().endDrag();
 }
 
 TEST(AestheticsDock, TellsWhyACurveCannotBeAnalysed)
