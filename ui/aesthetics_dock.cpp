@@ -176,7 +176,10 @@ AestheticsDock::AestheticsDock(SketchDocument& document, QWidget* parent) : QDoc
 
     connect(&document_, &SketchDocument::selectionChanged, this, [this]() { refresh(); });
     connect(&document_, &SketchDocument::entitiesChanged, this, [this]() { scheduleRefresh(); });
-    connect(&document_, &SketchDocument::selectionUpdated, this, [this]() { scheduleRefresh(); });
+    connect(&document_, &SketchDocument::selectionUpdated, this, [this]() {
+        const model::Entity* e = document_.model().find(document_.selection());
+        if (e && e->kind == model::EntityKind::Curve && !(e->id == curve_ && e->shapeVersion == analysedVersion_)) scheduleRefresh();
+    });
     connect(this, &QDockWidget::visibilityChanged, this, [this](bool visible) {
         if (visible && stale_) refresh();
     });
@@ -219,6 +222,7 @@ void AestheticsDock::refresh()
     ++refreshes_;
     updateScaleNote();
     const model::Entity* e = document_.model().find(document_.selection());
+    analysedVersion_ = -1;
     if (!e || e->kind != model::EntityKind::Curve || !e->world) {
         curve_ = 0;
         clearAnalysis();
@@ -228,6 +232,7 @@ void AestheticsDock::refresh()
         return;
     }
     curve_ = e->id;
+    analysedVersion_ = e->shapeVersion;
     showAnalysis(*e);
 }
 

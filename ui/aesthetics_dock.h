@@ -59,7 +59,8 @@ public:
     int refreshes() const { return refreshes_; }
 
 private:
-    /// One refresh after the current event (a drag's updates come several per frame).
+    /// One refresh after the current event (a drag's updates come several per frame); skipped when
+    /// the curve's shape in its plane is the one analysed (its plane moved: the analysis is the same).
     void scheduleRefresh();
     void showAnalysis(const model::Entity& e);
     void clearAnalysis();
@@ -79,6 +80,7 @@ private:
     QDoubleSpinBox* scale_ = nullptr;
     QLabel* scaleNote_ = nullptr;
     model::EntityId curve_ = 0;
+    int analysedVersion_ = -1;  ///< the shapeVersion of curve_ shown, -1: none
     std::optional<solvers::aesthetics::CurveAnalysis> analysis_;
     bool pending_ = false;
     bool stale_ = false;  ///< a change came while the dock was hidden

@@ -90,13 +90,15 @@ QString InspectorDock::text() const { return text_->toPlainText(); }
 
 void InspectorDock::followCurve(const model::Model& model, model::EntityId id)
 {
-    // Hidden: show() draws it afresh when the drag ends (the document's entitiesChanged).
-    if (plotPending_ || !plot_->isVisible()) return;
+    // Hidden: show() draws it afresh when the drag ends (the document's entitiesChanged). A plane or
+    // a surface has no plot.
+    const model::Entity* e = model.find(id);
+    if (plotPending_ || !plot_->isVisible() || !e || e->kind != model::EntityKind::Curve) return;
     plotPending_ = true;
     QTimer::singleShot(0, this, [this, &model, id]() {
         plotPending_ = false;
-        const model::Entity* e = model.find(id);
-        plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e : nullptr);
+        const model::Entity* now = model.find(id);
+        plot_->setCurve(now && now->kind == model::EntityKind::Curve ? now : nullptr);
     });
 }
 

@@ -276,6 +276,18 @@ TEST(AestheticsDock, FollowsAPullOfTheCurve)
     w.window.document().scheduler().flush();
     QApplication::processEvents();
     w.expectDockMatches(w.expected());
+    // Its plane moved (the curve's shape in the plane unchanged): the comb follows into the world,
+    // the dock has nothing new to analyse
+    const int settled = w.dock().refreshes(), combBuilds = w.comb().rebuilds();
+    model::PlaneFrame moved = w.model().find(kPlane)->frame;
+    moved.origin += Eigen::Vector3d(0, -20, 10);
+    w.model().setPlaneFrame(kPlane, moved);
+    w.window.document().scheduler().flush();
+    QApplication::processEvents();
+    EXPECT_EQ(w.comb().rebuilds(), combBuilds + 1);
+    w.expectTeethMatch();
+    EXPECT_EQ(w.dock().refreshes(), settled);
+    w.expectDockMatches(w.expected());
     // The drag changed the curve enough to tell a stale dock from a live one
     EXPECT_GT(std::abs(after.measures.curvatureMax - kappaMaxBefore), 100.0 * kShownRelative * std::abs(kappaMaxBefore));
 }
