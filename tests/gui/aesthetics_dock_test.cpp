@@ -49,6 +49,17 @@ constexpr double kShownRelative = 5e-4;
 /// Coin keeps coordinates in single precision: at the test curve's ~100 mm from the origin a
 /// coordinate carries ~1e-5 mm of rounding; a tooth (two points) is within 1e-4 mm of exact.
 constexpr double kFloatMm = 1e-4;
+/// The same double computation done twice (the plot's samples against signedCurvature at the same
+/// u; the scale's factor 2): equal to round-off.
+constexpr double kRoundOff = 1e-12;
+/// Arc lengths by two quadratures (the plot's table and analyzeCurve's) of the same curve agree to
+/// kArcLengthRelativeTolerance-level accuracy; 1e-9 relative leaves room for their different panels.
+constexpr double kArcLengthRelative = 1e-9;
+/// The pointer lands on a whole pixel, and the read-out rounds s to two decimals: the sample read
+/// out is within this many pixels' worth of arc length of the one aimed at.
+constexpr double kHoverPixels = 2.0;
+/// The Frenet curvature vector is perpendicular to the tangent to round-off relative to their sizes.
+constexpr double kPerpendicularRelative = 1e-9;
 /// How long the picture for a person waits for the window to be mapped.
 constexpr qint64 kExposeDeadlineMs = 5000;
 
@@ -76,7 +87,7 @@ double shownNumber(const QString& text) { return text.section(QLatin1Char(' '), 
 ::testing::AssertionResult shownAs(const QString& text, double exact)
 {
     const double shown = shownNumber(text);
-    if (std::abs(shown - exact) <= kShownRelative * std::abs(exact) + 1e-12) return ::testing::AssertionSuccess();
+    if (std::abs(shown - exact) <= kShownRelative * std::abs(exact) + kRoundOff) return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure() << "shown \"" << text.toStdString() << "\", exact " << exact;
 }
 
@@ -239,7 +250,7 @@ TEST(AestheticsDock, CombTeethAreScaleTimesCurvatureOnTheTurningSide)
     // The dock's controls: twice the scale, twice the teeth; four teeth per span
     const double scale = w.comb().scale();
     w.dock().scaleBox()->setValue(2.0);
-    EXPECT_NEAR(w.comb().scale(), 2.0 * scale, 1e-12 * scale);
+    EXPECT_NEAR(w.comb().scale(), 2.0 * scale, kRoundOff * scale);
     w.expectTeethMatch();
     w.dock().densityBox()->setValue(4);
     EXPECT_EQ(drawnTeeth(w.window.sceneRoot()).size(), static_cast<size_t>(3 * 4 + 1));
@@ -305,7 +316,7 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
     EXPECT_GT(*std::max_element(plot->samples().begin(), plot->samples().end()), 0.0);
     // Arc length runs from 0 to the curve's length
     EXPECT_EQ(plot->arcLengths().front(), 0.0);
-    EXPECT_NEAR(plot->arcLengths().back(), a.length, 1e-9 * a.length);
+    EXPECT_NEAR(plot->arcLengths().back(), a.length, kArcLengthRelative * a.length);
     QStringList codons;
     for (const auto& p : a.points) codons << QString::fromLatin1(aes::codon(p.kind));
     EXPECT_EQ(plot->codonLabels(), codons);
@@ -320,7 +331,7 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
     EXPECT_TRUE(plot->readout().startsWith(QStringLiteral("s = "))) << plot->readout().toStdString();
     // Within a pixel of sample i: its arc length to the read-out's two decimals, give or take a pixel's worth
     const double pixel = plot->arcLengths().back() / plot->plot()->width();
-    EXPECT_NEAR(plot->readout().section(QLatin1Char(' '), 2, 2).toDouble(), plot->arcLengths()[static_cast<size_t>(i)], 2.0 * pixel);
+    EXPECT_NEAR(plot->readout().section(QLatin1Char(' '), 2, 2).toDouble(), plot->arcLengths()[static_cast<size_t>(i)], kHoverPixels * pixel);
     w.shoot(QStringLiteral("_plot"));
 
     // A pull (a drag's frames, no entitiesChanged until it ends): the plot follows the new shape
@@ -333,7 +344,7 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
     const size_t n = plot->samples().size();
     for (size_t k : {n / 4, n / 2, 3 * n / 4}) {
         const double u = u1 * static_cast<double>(k) / static_cast<double>(n - 1);
-        EXPECT_NEAR(plot->samples()[k], aes::signedCurvature(pulled, u), 1e-12) << k;
+        EXPECT_NEAR(plot->samples()[k], aes::signedCurvature(pulled, u), kRoundOff) << k;
     }
     EXPECT_NE(aes::signedCurvature(pulled, 0.75 * u1), aes::signedCurvature(aes::planarCurve(sCurve()), 0.75 * u1));
     w.model().endDrag();
@@ -358,7 +369,7 @@ TEST(AestheticsDock, TellsWhyACurveCannotBeAnalysed)
     ASSERT_FALSE(w.comb().teeth().empty());
     for (const scene::CombTooth& t : w.comb().teeth()) {
         const auto d = w.model().find(kSpaceCurve)->world->derivatives(t.u, 1);
-        EXPECT_NEAR(t.curvatureVector.dot(d[1]), 0.0, 1e-9 * t.curvatureVector.norm() * d[1].norm()) << t.u;
+        EXPECT_NEAR(t.curvatureVector.dot(d[1]), 0.0, kPerpendicularRelative * t.curvatureVector.norm() * d[1].norm()) << t.u;
     }
     // A polyline (degree 1) on the plane
     const model::EntityId line = w.model().addCurve(kPlane, solvers::Curve3d(1, {0, 0, 1, 2, 2}, {{-20, 0, 0}, {0, 10, 0}, {20, 0, 0}}));

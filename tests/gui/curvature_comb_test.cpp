@@ -17,6 +17,9 @@ namespace {
 
 /// Curvature of an exact rational circle is exact to round-off of its evaluation.
 constexpr double kRoundOff = 1e-12;
+/// Points and tooth directions of the circle, relative to its size: its evaluation (a ratio of
+/// weighted sums) and a normalization lose a few ulps each.
+constexpr double kGeometryRelative = 1e-9;
 
 /// The nine-point quadratic rational circle of radius r about `centre` in the xy plane (NURBS Book
 /// Ex. 7.1 / Fig. 7.16): four spans.
@@ -39,13 +42,13 @@ TEST(CombTeeth, CircleTeethPointToTheCentreWithLengthScaleOverRadius)
     ASSERT_EQ(teeth.size(), 25u);
     for (const CombTooth& t : teeth) {
         EXPECT_NEAR(t.curvatureVector.norm(), 1.0 / r, kRoundOff) << t.u;
-        EXPECT_NEAR((t.base - centre).norm(), r, 1e-9 * r);
+        EXPECT_NEAR((t.base - centre).norm(), r, kGeometryRelative * r);
         const Eigen::Vector3d inward = (centre - t.base).normalized();
         EXPECT_NEAR((t.tip - t.base).dot(inward), scale / r, kRoundOff * scale) << t.u;
-        EXPECT_NEAR((t.tip - t.base - inward * (scale / r)).norm(), 0.0, 1e-9 * scale / r);
+        EXPECT_NEAR((t.tip - t.base - inward * (scale / r)).norm(), 0.0, kGeometryRelative * scale / r);
     }
     // And the default scale makes the longest tooth 15 % of the circle's box diagonal (2R sqrt 2)
-    EXPECT_NEAR(defaultCombScale(teeth) / r, kCombLengthFraction * 2.0 * r * std::sqrt(2.0), 1e-9 * r * r);
+    EXPECT_NEAR(defaultCombScale(teeth) / r, kCombLengthFraction * 2.0 * r * std::sqrt(2.0), kGeometryRelative * r * r);
 }
 
 TEST(CombTeeth, AStraightCurveHasZeroTeethAndNoDefaultScale)
@@ -94,7 +97,7 @@ TEST_F(CombModel, FollowsTheCurveWhileShownAndClearsWhenItGoes)
     model.update();
     EXPECT_EQ(comb.rebuilds(), rebuilds + 1);
     EXPECT_NEAR(comb.teeth().front().curvatureVector.norm(), 1.0 / 20.0, kRoundOff);
-    EXPECT_NEAR((comb.teeth().front().tip - comb.teeth().front().base).norm(), kCombLengthFraction * 40.0 * std::sqrt(2.0), 1e-9);
+    EXPECT_NEAR((comb.teeth().front().tip - comb.teeth().front().base).norm(), kCombLengthFraction * 40.0 * std::sqrt(2.0), kGeometryRelative * 40.0);
     // Another entity's update does not touch it
     const model::EntityId other = model.addCurve(0, circle(5.0, Eigen::Vector3d(50, 0, 0)));
     model.update();
