@@ -6,6 +6,7 @@
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
 #include "ui/autosave.h"
+#include "ui/aesthetics_dock.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/lcurve_dock.h"
@@ -106,6 +107,8 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         inspector_->show(document_->model(), id);
         updateStatus();
     });
+    connect(document_, &SketchDocument::selectionUpdated, this,
+            [this]() { inspector_->followCurve(document_->model(), document_->selection()); });
     connect(document_, &SketchDocument::strokeFinished, this, [this]() {
         recognition_->refresh();
         statusBar()->showMessage(document_->lastStroke().message);
@@ -357,14 +360,22 @@ void MainWindow::createDocks()
     auto* lcurve = new LCurveDock(*document_, this);
     addDockWidget(Qt::RightDockWidgetArea, lcurve);
     tabifyDockWidget(inspector_, lcurve);
+    // The selected curve's aesthetic analysis and the comb's controls: another tab there; View >
+    // Aesthetics brings it forward, View > Curvature comb draws the comb.
+    auto* aesthetics = new AestheticsDock(*document_, this);
+    addDockWidget(Qt::RightDockWidgetArea, aesthetics);
+    tabifyDockWidget(inspector_, aesthetics);
     inspector_->raise();
     lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
     if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0))) {
         viewMenu->addAction(lcurve->toggleViewAction());
+        viewMenu->addAction(aesthetics->showAction());
+        viewMenu->addAction(aesthetics->combAction());
         // Each dock can be closed and brought back (a window fitted to a small screen hides them).
         QMenu* docks = viewMenu->addMenu(tr("&Docks"));
         for (QDockWidget* dock : {static_cast<QDockWidget*>(modes), static_cast<QDockWidget*>(recognition_),
-                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_)})
+                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_),
+                                  static_cast<QDockWidget*>(aesthetics)})
             docks->addAction(dock->toggleViewAction());
     }
     connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);

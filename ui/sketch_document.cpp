@@ -38,6 +38,8 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
     root_->addChild(view_->root());
+    comb_ = std::make_unique<scene::CurvatureComb>(model_);
+    root_->addChild(comb_->root());
     feedback_ = std::make_unique<scene::StrokeFeedback>();
     root_->addChild(feedback_->root());
     // An undo past the last stroke's edit takes its markers and its report with it.
@@ -87,6 +89,7 @@ SketchDocument::~SketchDocument()
     planeDraggers_.reset();
     pullBinding_.reset();
     scheduler_.reset();
+    comb_.reset();
     view_.reset();
     root_->unref();
 }
@@ -123,6 +126,7 @@ void SketchDocument::restoreModel(const model::SceneDocument& doc)
     gridNode_ = grid;
     model::populateModel(doc, model_);
     view_->setHighlighted(0);
+    comb_->setCurve(0);
     Q_EMIT entitiesChanged();
     Q_EMIT selectionChanged(0);
 }
@@ -163,6 +167,7 @@ void SketchDocument::select(model::EntityId id)
     if (id == selection_) return;
     selection_ = id;
     view_->setHighlighted(e && e->kind == model::EntityKind::Curve ? id : 0);
+    comb_->setCurve(id);
     Q_EMIT selectionChanged(id);
 }
 
@@ -248,6 +253,7 @@ void SketchDocument::entityUpdated(const model::Entity& e)
     // The stroke feedback dots move with their plane (planeDraggers_ moves the plane's dragger).
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
     if (e.kind == model::EntityKind::Surface) resketchSurfaceUpdated(e.id);
+    if (e.id == selection_) Q_EMIT selectionUpdated();
 }
 
 bool SketchDocument::dragging() const

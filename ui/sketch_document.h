@@ -4,6 +4,7 @@
 // (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
 #include "model/auxiliary_plane.h"
 #include "model/model.h"
+#include "scene/curvature_comb.h"
 #include "solvers/aesthetics/curve_operators.h"
 #include "scene/model_view.h"
 #include "scene/update_scheduler.h"
@@ -81,6 +82,8 @@ public:
     const model::Model& model() const { return model_; }
     scene::UpdateScheduler& scheduler() { return *scheduler_; }
     scene::ModelView& view() { return *view_; }
+    /// The selected curve's curvature comb (hidden until shown; follows the selection).
+    scene::CurvatureComb& comb() { return *comb_; }
     QUndoStack* undoStack() { return &undo_; }
     manipulators::StrokeInput& strokeInput() { return *strokeInput_; }
     manipulators::CurvePull& curvePull() { return *curvePull_; }
@@ -286,6 +289,8 @@ Q_SIGNALS:
     /// The set of entities or their data changed (lists, inspector).
     void entitiesChanged();
     void selectionChanged(model::EntityId id);
+    /// The selected entity was recomputed by a model update (each frame of a drag that moves it).
+    void selectionUpdated();
     void strokeFinished();
     /// forgetStroke() dropped the last stroke's report (the recognition dock shows nothing).
     void strokeForgotten();
@@ -341,6 +346,7 @@ private:
     model::Model model_;
     model::GridSpec grid_;
     std::unique_ptr<scene::ModelView> view_;
+    std::unique_ptr<scene::CurvatureComb> comb_;
     std::unique_ptr<scene::UpdateScheduler> scheduler_;
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
