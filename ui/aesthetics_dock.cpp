@@ -96,6 +96,7 @@ AestheticsDock::AestheticsDock(SketchDocument& document, QWidget* parent) : QDoc
     operators_ = new QHBoxLayout;
     operators_->setObjectName(QStringLiteral("aesthetics.operators"));
     layout->addLayout(operators_);
+    createOperators(box);
 
     auto* measures = new QGroupBox(tr("Measures"), box);
     auto* form = new QFormLayout(measures);
@@ -231,6 +232,7 @@ void AestheticsDock::refresh()
         message_->setVisible(true);
         return;
     }
+    if (curve_ != e->id && amount_) amount_->setValue(document_.defaultAestheticAmount());
     curve_ = e->id;
     analysedVersion_ = e->shapeVersion;
     showAnalysis(*e);

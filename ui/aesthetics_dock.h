@@ -17,6 +17,8 @@
 class QAction;
 class QCheckBox;
 class QDoubleSpinBox;
+class QComboBox;
+class QPushButton;
 class QHBoxLayout;
 class QLabel;
 class QSpinBox;
@@ -42,6 +44,11 @@ public:
     /// The row under the curve's name where operators on the analysed curve (straighten, soften,
     /// ...) put their buttons; empty until they do.
     QHBoxLayout* operatorRow() const { return operators_; }
+    /// The operators (aesthetics_dock_operators.cpp): the amount (model units) the buttons apply,
+    /// a button per operator ("aesthetics.op.<name>"), and which operator's handle is on the curve.
+    QDoubleSpinBox* amountBox() const { return amount_; }
+    QPushButton* operatorButton(const QString& name) const;
+    QComboBox* handleBox() const { return handle_; }
 
     /// What is shown (tests read it): the curve, the header ("Curve 5: M+0m-"), the error message
     /// (empty when the analysis ran), the analysis, a measure's text by its key ("tension",
@@ -65,6 +72,7 @@ private:
     void showAnalysis(const model::Entity& e);
     void clearAnalysis();
     void updateScaleNote();
+    void createOperators(QWidget* box);
 
     SketchDocument& document_;
     QAction* combAction_ = nullptr;
@@ -72,6 +80,9 @@ private:
     QLabel* header_ = nullptr;
     QLabel* message_ = nullptr;
     QHBoxLayout* operators_ = nullptr;
+    QDoubleSpinBox* amount_ = nullptr;
+    QComboBox* handle_ = nullptr;
+    std::map<QString, QPushButton*> operatorButtons_;
     std::map<QString, QLabel*> measures_;
     QTableWidget* points_ = nullptr;
     QTableWidget* lcg_ = nullptr;

@@ -34,7 +34,9 @@ QString SketchDocument::applyAesthetic(aes::Operator op, double amount)
         try {
             aes::PlaneFrame frame;
             const solvers::Curve2d planar = aes::planarCurve(*e->local, 1e-6, &frame);
-            const aes::OperatorResult r = aes::applyOperator(planar, op, amount);
+            // Straighten finds its own amounts (each step moves until its codons are gone): the
+            // window's amount is for the other operators, and caps nothing here.
+            const aes::OperatorResult r = aes::applyOperator(planar, op, op == aes::Operator::Straighten ? 0.0 : amount);
             const solvers::Curve3d after = aes::spaceCurve(r.curve, frame);
             if (r.nameBefore == r.nameAfter && r.amount == 0.0) {
                 message = tr("%1: nothing to do on \"%2\"").arg(operatorTitle(op), QString::fromStdString(r.nameBefore));
