@@ -253,6 +253,22 @@ bool analyzable(const Curve2d& c, CurveAnalysis& out, const Thresholds& t)
 
 double visibility(const Characteristics& ch) { return (ch.dLeft + ch.dRight) * 0.5 * (std::abs(ch.dkLeft) + std::abs(ch.dkRight)); }
 
+// A straightening step's drive: `curve` becomes the setup's curve at the smallest amount that gives
+// `expected`; the amount and the knots inserted are added up. False when no amount does.
+bool driveToName(const OperatorSetup& s, double length, double cap, const std::string& expected, const Thresholds& t,
+                 Curve2d& curve, double& used, int& inserted)
+{
+    const auto r = driveUntil(s, length, cap, [&](const Curve2d& c) {
+        CurveAnalysis after;
+        return analyzable(c, after, t) && after.name == expected;
+    });
+    if (!r) return false;
+    curve = r->first;
+    used += r->second;
+    inserted += s.insertedKnots;
+    return true;
+}
+
 // One straightening step: the extremum between two inflections with the smallest visibility (or,
 // with `flaggedOnly`, only one flagged small) flattened by the inverse continuation until its two
 // inflections are gone. Returns false when there is none or it cannot be done.
@@ -299,15 +315,7 @@ bool removeUndulation(Curve2d& curve, const Thresholds& t, bool flaggedOnly, dou
         }
         return curveName(out, a.closed);
     }();
-    const auto r = driveUntil(s, a.length, cap, [&](const Curve2d& c) {
-        CurveAnalysis after;
-        return analyzable(c, after, t) && after.name == expected;
-    });
-    if (!r) return false;
-    curve = r->first;
-    used += r->second;
-    inserted += s.insertedKnots;
-    return true;
+    return driveToName(s, a.length, cap, expected, t, curve, used, inserted);
 }
 
 // One redundancy step: the middle extremum of "M+m+M+" (or m+M+m+, m-M-m-, M-m-M-) with the
@@ -329,22 +337,14 @@ bool removeRedundant(Curve2d& curve, const Thresholds& t, double cap, double& us
     }
     if (!best) return false;
     const PointKind k = a.points[best->point].kind;
-    Rule rule = Rule::BMPlus;
-    if (k == PointKind::MinPositive) rule = Rule::BMPlus;
+    // The inverse of the bifurcation that made this middle point (producedKind).
+    Rule rule = Rule::BMPlus;  // an m+ between two M+
     if (k == PointKind::MaxNegative) rule = Rule::BmMinus;
     if (k == PointKind::MaxPositive) rule = Rule::BmPlus;
     if (k == PointKind::MinNegative) rule = Rule::BMMinus;
     const OperatorSetup s = ruleSetup(curve, a, rule, best->point, true);
     const std::string expected = curveName(announcedKinds(a, rule, best->point, true), a.closed);
-    const auto r = driveUntil(s, a.length, cap, [&](const Curve2d& c) {
-        CurveAnalysis after;
-        return analyzable(c, after, t) && after.name == expected;
-    });
-    if (!r) return false;
-    curve = r->first;
-    used += r->second;
-    inserted += s.insertedKnots;
-    return true;
+    return driveToName(s, a.length, cap, expected, t, curve, used, inserted);
 }
 
 }  // namespace
@@ -535,13 +535,13 @@ std::optional<double> ruleAmount(const Curve2d& curve, Rule rule, int at, bool i
 {
     const CurveAnalysis a = analyzeCurve(curve, thresholds);
     const OperatorSetup s = ruleSetup(curve, a, rule, at, inverse);
-    const std::string expected = curveName(announcedKinds(a, rule, at, inverse), a.closed);
-    const auto r = driveUntil(s, a.length, 0.0, [&](const Curve2d& c) {
-        CurveAnalysis after;
-        return analyzable(c, after, thresholds) && after.name == expected;
-    });
-    if (!r) return std::nullopt;
-    return r->second;
+    Curve2d result = curve;
+    double amount = 0.0;
+    int inserted = 0;
+    if (!driveToName(s, a.length, 0.0, curveName(announcedKinds(a, rule, at, inverse), a.closed), thresholds, result, amount, inserted)) {
+        return std::nullopt;
+    }
+    return amount;
 }
 
 std::string announcedName(const CurveAnalysis& a, Rule rule, int at, bool inverse)

@@ -10,22 +10,19 @@
 #include "solvers/aesthetics/curve_operators.h"
 #include "solvers/surfaces/interpolation.h"
 #include "tests/gui/coin_mouse.h"
+#include "tests/gui/window_shot.h"
 #include "ui/aesthetics_dock.h"
 #include "ui/main_window.h"
 #include "ui/sketch_document.h"
 
-#include <Inventor/Qt/SoQt.h>
 #include <Inventor/draggers/SoTranslate1Dragger.h>
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
-#include <QPainter>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QUndoStack>
-#include <QWindow>
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -38,18 +35,6 @@ namespace aes = solvers::aesthetics;
 constexpr model::EntityId kPlane = 1;
 // Ends and undone shapes: round-off of the 50 mm coordinates.
 constexpr double kRoundOff = 1e-9;
-constexpr qint64 kExposeDeadlineMs = 5000;
-
-void startApplication()
-{
-    static int argc = 1;
-    static char name[] = "aesthetic_operators_window_test";
-    static char* argv[] = {name, nullptr};
-    static QApplication* app = nullptr;
-    if (app) return;
-    app = new QApplication(argc, argv);
-    SoQt::init(static_cast<QWidget*>(nullptr));
-}
 
 // Fig. 7-17's curve, an exact quartic in 8 spans, 40 times y = x^4 - x^2/2 on [-1.2, 1.2].
 solvers::Curve3d wCurve()
@@ -89,20 +74,7 @@ struct WWindow {
 
     void shoot()
     {
-        const char* shot = std::getenv("SCULPTLINE_OPERATORS_SHOT");
-        if (!shot) return;
-        QElapsedTimer waited;
-        waited.start();
-        while (!(window.windowHandle() && window.windowHandle()->isExposed()) && waited.elapsed() < kExposeDeadlineMs)
-            QApplication::processEvents(QEventLoop::AllEvents, 50);
-        window.renderViewport();
-        QApplication::processEvents();
-        const QImage viewport = window.grabViewport();
-        QImage image = window.grab().toImage();
-        QPainter painter(&image);
-        painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)), viewport);
-        painter.end();
-        image.save(QString::fromLocal8Bit(shot));
+        if (const char* shot = std::getenv("SCULPTLINE_OPERATORS_SHOT")) guitest::saveWindowShot(window, QString::fromLocal8Bit(shot));
     }
 };
 
@@ -115,7 +87,7 @@ double maxDistance(const solvers::Curve3d& a, const solvers::Curve3d& b)
 
 TEST(AestheticOperatorsWindow, StraightenInTheDockIsOneUndoStepFromMplus0mminus0MplusToMplus)
 {
-    startApplication();
+    guitest::startApplication("aesthetic_operators_window_test");
     WWindow w;
     ASSERT_EQ(w.name(), "M+0m-0M+");
     const solvers::Curve3d before = w.local();
@@ -144,7 +116,7 @@ TEST(AestheticOperatorsWindow, StraightenInTheDockIsOneUndoStepFromMplus0mminus0
 
 TEST(AestheticOperatorsWindow, TheMenuAppliesAnOperatorAndSaysWhenItLimitsTheAmount)
 {
-    startApplication();
+    guitest::startApplication("aesthetic_operators_window_test");
     WWindow w;
     const solvers::Curve3d before = w.local();
     const int steps = w.doc().undoStack()->count();
@@ -165,7 +137,7 @@ TEST(AestheticOperatorsWindow, TheMenuAppliesAnOperatorAndSaysWhenItLimitsTheAmo
 
 TEST(AestheticOperatorsWindow, TheHandleSitsOnTheOperatedPointAndADragOfItIsOneUndoStep)
 {
-    startApplication();
+    guitest::startApplication("aesthetic_operators_window_test");
     WWindow w;
     const solvers::Curve3d before = w.local();
     const int steps = w.doc().undoStack()->count();

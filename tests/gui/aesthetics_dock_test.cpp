@@ -13,6 +13,7 @@
 #include "ui/curvature_plot.h"
 #include "ui/main_window.h"
 #include "ui/sketch_document.h"
+#include "tests/gui/window_shot.h"
 
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
@@ -26,7 +27,6 @@
 #include <QAction>
 #include <QApplication>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QSpinBox>
@@ -60,19 +60,7 @@ constexpr double kArcLengthRelative = 1e-9;
 constexpr double kHoverPixels = 2.0;
 /// The Frenet curvature vector is perpendicular to the tangent to round-off relative to their sizes.
 constexpr double kPerpendicularRelative = 1e-9;
-/// How long the picture for a person waits for the window to be mapped.
-constexpr qint64 kExposeDeadlineMs = 5000;
 
-void startApplication()
-{
-    static int argc = 1;
-    static char name[] = "aesthetics_dock_test";
-    static char* argv[] = {name, nullptr};
-    static QApplication* app = nullptr;
-    if (app) return;
-    app = new QApplication(argc, argv);
-    SoQt::init(static_cast<QWidget*>(nullptr));
-}
 
 /// An S: up over the first half, down over the second, in the plane's frame (z = 0); three spans.
 solvers::Curve3d sCurve(double amplitude = 25.0)
@@ -189,34 +177,21 @@ struct SCurveWindow {
     {
         const char* shot = std::getenv("SCULPTLINE_AESTHETICS_SHOT");
         if (!shot) return;
-        // Rendering before the window is exposed draws into nothing (app/gui/main.cpp waits alike).
-        QElapsedTimer waited;
-        waited.start();
-        while (!(window.windowHandle() && window.windowHandle()->isExposed()) && waited.elapsed() < kExposeDeadlineMs)
-            QApplication::processEvents(QEventLoop::AllEvents, 50);
         if (frame) {
             // Facing the plane (its normal is -y): the camera on the front side, looking along +y.
             SoCamera* camera = window.viewer()->getCamera();
             camera->orientation.setValue(SbRotation(SbVec3f(0, 0, -1), SbVec3f(0, 1, 0)) * SbRotation(SbVec3f(0, 1, 0), 0.0f));
             camera->viewAll(frame, window.viewer()->getViewportRegion(), 1.1f);
         }
-        window.renderViewport();
-        QApplication::processEvents();
-        // QWidget::grab() is black for the GL area: the viewport's framebuffer is painted over it.
-        const QImage viewport = window.grabViewport();
-        QImage image = window.grab().toImage();
-        QPainter painter(&image);
-        painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)), viewport);
-        painter.end();
         QString path = QString::fromLocal8Bit(shot);
         path.insert(path.endsWith(QStringLiteral(".png")) ? path.size() - 4 : path.size(), suffix);
-        image.save(path);
+        guitest::saveWindowShot(window, path);
     }
 };
 
 TEST(AestheticsDock, ShowsTheSelectedCurvesAnalysis)
 {
-    startApplication();
+    guitest::startApplication("aesthetics_dock_test");
     SCurveWindow w;
     const aes::CurveAnalysis a = w.expected();
     // The S turns both ways: the test means something only if its name has both signs
@@ -227,7 +202,7 @@ TEST(AestheticsDock, ShowsTheSelectedCurvesAnalysis)
 
 TEST(AestheticsDock, CombTeethAreScaleTimesCurvatureOnTheTurningSide)
 {
-    startApplication();
+    guitest::startApplication("aesthetics_dock_test");
     SCurveWindow w;
     // Hidden by default: nothing drawn
     EXPECT_TRUE(drawnTeeth(w.window.sceneRoot()).empty());
@@ -259,7 +234,7 @@ TEST(AestheticsDock, CombTeethAreScaleTimesCurvatureOnTheTurningSide)
 
 TEST(AestheticsDock, FollowsAPullOfTheCurve)
 {
-    startApplication();
+    guitest::startApplication("aesthetics_dock_test");
     SCurveWindow w;
     w.window.action(QStringLiteral("view.curvatureComb"))->trigger();
     QApplication::processEvents();
@@ -305,7 +280,7 @@ TEST(AestheticsDock, FollowsAPullOfTheCurve)
 
 TEST(AestheticsDock, PlotIsSignedWithCodons)
 {
-    startApplication();
+    guitest::startApplication("aesthetics_dock_test");
     SCurveWindow w;
     const aes::CurveAnalysis a = w.expected();
     auto* plot = w.window.findChild<CurvaturePlot*>();
@@ -352,7 +327,7 @@ TEST(AestheticsDock, PlotIsSignedWithCodons)
 
 TEST(AestheticsDock, TellsWhyACurveCannotBeAnalysed)
 {
-    startApplication();
+    guitest::startApplication("aesthetics_dock_test");
     SCurveWindow w;
     // The default scene's curve 2 wanders in space
     w.window.document().select(kSpaceCurve);
