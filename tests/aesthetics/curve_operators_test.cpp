@@ -52,8 +52,6 @@ Curve2d flatValley() { return graph([](double x) { return x * x * x * x + 0.1 * 
 // "M+": a parabola, as a cubic (C2 at its knots, as designers' curves are: a quadratic's curvature
 // jumps at every knot a change puts into it).
 Curve2d parabola() { return graph([](double x) { return x * x; }, -1.0, 1.0, 3, 8); }
-// "m+": the bottom of the flat valley alone.
-Curve2d flatBottom() { return graph([](double x) { return x * x * x * x + 0.1 * x * x; }, -0.15, 0.15, 4, 8); }
 
 // Evaluations of two curves at the same parameters agree to this (model units): knot insertion
 // and unmoved control points reproduce a curve to round-off of its coordinates (about 1).
@@ -135,8 +133,12 @@ TEST_P(RuleTest, GivenItsKind_WhenApplied_ThenTheAnnouncedNameAndTheEndsKept)
     const OperatorSetup s = ruleSetup(curve, a, c.rule, c.at, false);
     EXPECT_NEAR((r.curve.evaluate(a.points[c.at].u) - curve.evaluate(a.points[c.at].u)).norm(), *amount, 1e-9);
     // Outside the operated segment nothing moves.
-    if (s.u0 > curve.domainStart()) EXPECT_LT(maxDistance(curve, r.curve, curve.domainStart(), s.u0), kSame);
-    if (s.u1 < curve.domainEnd()) EXPECT_LT(maxDistance(curve, r.curve, s.u1, curve.domainEnd()), kSame);
+    if (s.u0 > curve.domainStart()) {
+        EXPECT_LT(maxDistance(curve, r.curve, curve.domainStart(), s.u0), kSame);
+    }
+    if (s.u1 < curve.domainEnd()) {
+        EXPECT_LT(maxDistance(curve, r.curve, s.u1, curve.domainEnd()), kSame);
+    }
     // The inverse at the new middle point brings the original name back.
     const CurveAnalysis after = analyzeCurve(r.curve);
     // The name matched: the rule's triple replaced point `at`, its middle is point at + 1.
@@ -270,6 +272,46 @@ TEST(CurveOperators, GivenABezierTooStiffForItsConstraints_WhenSoftened_ThenKnot
     EXPECT_GE(s.curve.pointCount() - static_cast<int>(s.blocked.size()), static_cast<int>(s.constraints.size()) + 2);
     // At amount 0 the drag gives the curve back.
     EXPECT_LT(maxDistance(s.curve, OperatorDrag(s).at(0.0), c.domainStart(), c.domainEnd()), kSame);
+}
+
+}  // namespace
+
+namespace {
+
+// A closed uniform cubic around a 16-gon inscribed in a 30 x 15 ellipse, its first vertex on the
+// seam: soften acts on the M+ across the seam (the segment wraps) and keeps the name and everything
+// beyond the neighbours. (The polygon's corners ripple the curvature: M+m+ eight times.)
+TEST(CurveOperators, GivenAClosedCurve_WhenItsVertexAcrossTheSeamIsSoftened_ThenTheNameStaysAndTheFarSideDoesNotMove)
+{
+    // Arrange
+    std::vector<Eigen::Vector2d> polygon;
+    for (int i = 0; i < 16; ++i) polygon.emplace_back(30.0 * std::cos(2 * M_PI * i / 16), 15.0 * std::sin(2 * M_PI * i / 16));
+    const Curve2d c = makeClosedUniform<2>(3, polygon);
+    const CurveAnalysis a = analyzeCurve(c);
+    ASSERT_EQ(a.name, "M+m+M+m+M+m+M+m+");
+    const auto toSeam = [&](double u) { return std::min(u - c.domainStart(), c.domainEnd() - u); };
+    int seamVertex = -1;  // the M+ nearest the seam (u = 0 or the period)
+    for (size_t i = 0; i < a.points.size(); ++i) {
+        if (a.points[i].kind != PointKind::MaxPositive) continue;
+        if (seamVertex < 0 || toSeam(a.points[i].u) < toSeam(a.points[seamVertex].u)) seamVertex = static_cast<int>(i);
+    }
+    ASSERT_GE(seamVertex, 0);
+    // Its neighbours lie on both sides of the seam: the operated segment wraps.
+    const int n = static_cast<int>(a.points.size());
+    ASSERT_TRUE(seamVertex == 0 || seamVertex == n - 1);
+    OperatorOptions o;
+    o.at = seamVertex;
+    // Act
+    const OperatorResult r = applyOperator(c, Operator::Soften, 0.2, o);
+    // Assert
+    EXPECT_EQ(r.nameAfter, a.name);
+    const CurveAnalysis b = analyzeCurve(r.curve);
+    ASSERT_EQ(b.points.size(), a.points.size());
+    EXPECT_LT(b.points[seamVertex].curvature, a.points[seamVertex].curvature);
+    // The opposite vertex (half a period away) and its neighbourhood do not move.
+    const double half = 0.5 * (c.domainEnd() - c.domainStart());
+    EXPECT_LT(maxDistance(c, r.curve, a.points[seamVertex].u + half - 2.0, a.points[seamVertex].u + half + 2.0), kSame);
+    EXPECT_TRUE(r.curve.isClosed());
 }
 
 }  // namespace
