@@ -169,9 +169,16 @@ void SurfaceAnalysisDisplay::setStripes(int stripes)
         if (entry->mode == SurfaceDisplay::Zebra) stripe(*entry);
 }
 
-void SurfaceAnalysisDisplay::cameraChanged(void* self, SoSensor*)
+void SurfaceAnalysisDisplay::cameraChanged(void* self, SoSensor* sensor)
 {
     auto* display = static_cast<SurfaceAnalysisDisplay*>(self);
+    // Only a new position or orientation changes what is reflected; a zoom of an orthographic
+    // camera, a new focal distance or clipping planes leave the stripes as they are.
+    const ZebraView view = display->zebraView();
+    const ZebraView& last = display->lastView_;
+    if (sensor && view.eye == last.eye && view.direction == last.direction && view.up == last.up && view.perspective == last.perspective)
+        return;
+    display->lastView_ = view;
     bool any = false;
     for (auto& [id, entry] : display->entries_) {
         if (entry->mode != SurfaceDisplay::Zebra) continue;

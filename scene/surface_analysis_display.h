@@ -54,9 +54,9 @@ double robustRange(const std::vector<double>& values, double percentile = kRange
 
 /// What the eye sees of the environment at a vertex, for the zebra.
 struct ZebraView {
-    SbVec3f eye;        ///< camera position (perspective) in world coordinates
-    SbVec3f direction;  ///< view direction (unit), used for every vertex of an orthographic camera
-    SbVec3f up;         ///< camera up (unit)
+    SbVec3f eye{0, 0, 0};         ///< camera position (perspective) in world coordinates
+    SbVec3f direction{0, 0, -1};  ///< view direction (unit), used for every vertex of an orthographic camera
+    SbVec3f up{0, 1, 0};          ///< camera up (unit)
     bool perspective = true;
 };
 /// The zebra texture coordinate: stripes * (asin(r.up) / pi + 1/2); one black stripe per unit.
@@ -116,6 +116,7 @@ private:
 
     std::map<model::EntityId, std::unique_ptr<Entry>> entries_;
     std::unique_ptr<SoNodeSensor> cameraSensor_;
+    ZebraView lastView_;  ///< the view the stripes were last made for by a camera change
     int stripes_ = kDefaultZebraStripes;
     int recolours_ = 0;
     int cameraUpdates_ = 0;

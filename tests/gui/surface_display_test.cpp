@@ -16,6 +16,7 @@
 #include <Inventor/SoPickedPoint.h>
 #include <Inventor/actions/SoRayPickAction.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoMaterial.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -50,6 +51,8 @@ constexpr float kSeenDistance = 0.6f;
 constexpr int kHueMargin = 80;
 /// Luminance thresholds of the zebra's black and white on screen (unlit, 0 and 255 texels).
 constexpr int kDark = 70, kBright = 185;
+/// Long enough for the delay queue (camera sensor) and a redraw (0.1-2 s a frame under Xvfb).
+constexpr qint64 kIdleMs = 1500;
 
 void startApplication()
 {
@@ -244,6 +247,27 @@ TEST(SurfaceDisplay, GivenTheBottleSelected_WhenZebraAndMoreStripes_ThenOnlyItIs
     EXPECT_TRUE(w.window.action(QStringLiteral("view.surfaceZebra"))->isChecked());
     auto* texture = findIn<SoTextureCoordinate2>(w.node(kBottle), "SurfaceAnalysis");
     ASSERT_NE(texture, nullptr);
+    // The stripes follow the viewer's camera: still while it is still, restriped when it turns.
+    auto idle = [](qint64 ms) {
+        QElapsedTimer t;
+        t.start();
+        while (t.elapsed() < ms) QApplication::processEvents(QEventLoop::AllEvents, 20);
+    };
+    w.frame();
+    idle(kIdleMs);
+    const int updates = w.analysis().cameraUpdates();
+    const SbVec2f first = texture->point[0];
+    w.frame();
+    idle(kIdleMs);
+    EXPECT_EQ(w.analysis().cameraUpdates(), updates);
+    SoCamera* camera = w.window.viewer()->getCamera();
+    const SbRotation turned = camera->orientation.getValue() * SbRotation(SbVec3f(0, 0, 1), 0.3f);
+    camera->orientation = turned;
+    idle(kIdleMs);
+    EXPECT_GT(w.analysis().cameraUpdates(), updates);
+    EXPECT_NE(texture->point[0], first);
+    camera->orientation = turned * SbRotation(SbVec3f(0, 0, 1), -0.3f);
+    idle(kIdleMs);
     auto periods = [&]() {
         std::set<int> seen;
         for (int i = 0; i < texture->point.getNum(); ++i) seen.insert(static_cast<int>(std::floor(texture->point[i][0])));
