@@ -1,5 +1,7 @@
 #include "scene/surface_analysis_display.h"
 
+#include "solvers/math_constants.h"
+
 #include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoComplexity.h>
@@ -25,7 +27,6 @@ namespace {
 const SbColor kNegative(0.15f, 0.3f, 1.0f);
 const SbColor kZero(1.0f, 1.0f, 1.0f);
 const SbColor kPositive(1.0f, 0.15f, 0.1f);
-constexpr double kPi = 3.14159265358979323846;
 const char* const kWrapperName = "SurfaceAnalysis";
 
 /// The face set of a surface node (scene/geometry_nodes.cpp's makeMeshNode), or -1.
@@ -111,7 +112,7 @@ float zebraCoordinate(const SbVec3f& point, const SbVec3f& normal, const ZebraVi
     // the camera's horizontal plane.
     const SbVec3f r = e - 2.0f * e.dot(n) * n;
     const double elevation = std::asin(std::clamp(static_cast<double>(r.dot(view.up)), -1.0, 1.0));
-    return static_cast<float>(stripes * (elevation / kPi + 0.5));
+    return static_cast<float>(stripes * (elevation / solvers::kPi + 0.5));
 }
 
 struct SurfaceAnalysisDisplay::Entry {

@@ -6,6 +6,7 @@
 #include "scene/model_view.h"
 #include "scene/surface_analysis_display.h"
 #include "solvers/bspline/surface_curvature.h"
+#include "solvers/math_constants.h"
 
 #include <Inventor/SoDB.h>
 #include <Inventor/actions/SoSearchAction.h>
@@ -126,6 +127,28 @@ TEST(SurfaceAnalysis, GivenOneSpike_WhenTheRangeIsTaken_ThenItDoesNotWashTheMapO
     EXPECT_GT(range, 0.9);
     EXPECT_EQ(robustRange({}), 0.0);
     EXPECT_EQ(robustRange({NAN, -2.0}), 2.0);
+}
+
+TEST(SurfaceAnalysis, GivenAMirrorTiltedByTheta_WhenItsZebraCoordinateIsTaken_ThenTheReflectedRayRisesByTwoTheta)
+{
+    // An orthographic camera looking down -z with +y up sees a mirror whose normal is tilted by
+    // theta from +z towards +y: r = e - 2 (e.n) n = (0, sin 2theta, cos 2theta), elevation 2 theta
+    // (the law of reflection), so s = stripes (2 theta / pi + 1/2).
+    ZebraView view;
+    view.direction = SbVec3f(0, 0, -1);
+    view.up = SbVec3f(0, 1, 0);
+    view.perspective = false;
+    const int stripes = 10;
+    for (double theta : {0.0, 0.1, 0.3, -0.5, 0.7}) {
+        const SbVec3f n(0, static_cast<float>(std::sin(theta)), static_cast<float>(std::cos(theta)));
+        const float expected = static_cast<float>(stripes * (2 * theta / solvers::kPi + 0.5));
+        EXPECT_NEAR(zebraCoordinate(SbVec3f(3, 4, 5), n, view, stripes), expected, kCoordinateTolerance) << theta;
+        // Either side of the surface reflects alike (two-sided, like its shading)
+        EXPECT_NEAR(zebraCoordinate(SbVec3f(3, 4, 5), -n, view, stripes), expected, kCoordinateTolerance) << theta;
+    }
+    // A tilt sideways (about the view's up axis) keeps the elevation: the stripes run horizontally
+    const SbVec3f sideways(static_cast<float>(std::sin(0.4)), 0, static_cast<float>(std::cos(0.4)));
+    EXPECT_NEAR(zebraCoordinate(SbVec3f(0, 0, 0), sideways, view, stripes), stripes / 2.0f, kCoordinateTolerance);
 }
 
 TEST(SurfaceAnalysis, GivenARevolvedSurface_WhenGaussianThenMean_ThenEachVertexHasTheMapsColourOfItsCurvature)
