@@ -40,6 +40,12 @@ void dragBottle(benchmark::State& state, scene::SurfaceDisplay mode)
     state.counters["recolours"] =
         benchmark::Counter(view.surfaceAnalysis().recolours() - recoloursBefore, benchmark::Counter::kAvgIterations);
     state.counters["in_place"] = benchmark::Counter(view.inPlaceUpdates(), benchmark::Counter::kAvgIterations);
+    size_t vertices = 0;
+    for (const auto& [id, e] : model.entities()) {
+        const std::vector<double>* u = view.surfaceAnalysis().gridU(id);
+        if (u) vertices += u->size() * view.surfaceAnalysis().gridV(id)->size();
+    }
+    state.counters["analysed_vertices"] = static_cast<double>(vertices);
 }
 
 void BM_SurfaceAnalysisDragBottleShaded(benchmark::State& state) { dragBottle(state, scene::SurfaceDisplay::Shaded); }
