@@ -65,6 +65,13 @@ SurfaceDisplayMenu::SurfaceDisplayMenu(QMainWindow* window, QMenu* viewMenu, Ske
     legend_->setTextFormat(Qt::RichText);
     legend_->hide();
     window->statusBar()->addPermanentWidget(legend_);
+    // Opening a document gives the viewer a new camera (SoQt makes one for a graph without): once the
+    // window has shown the document, the zebra looks through it, and the all-surfaces mode, which
+    // stays, is drawn on the new surfaces.
+    connect(&document_, &SketchDocument::replaced, this, [this]() {
+        QMetaObject::invokeMethod(
+            this, [this]() { if (camera_) document_.view().surfaceAnalysis().setCamera(camera_()); }, Qt::QueuedConnection);
+    });
     connect(&document_, &SketchDocument::selectionChanged, this, [this]() { refresh(); });
     connect(&document_, &SketchDocument::entitiesChanged, this, [this]() { refresh(); });
 }

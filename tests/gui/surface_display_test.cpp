@@ -13,7 +13,9 @@
 
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SoDB.h>
 #include <Inventor/SoPickedPoint.h>
+#include <Inventor/sensors/SoSensorManager.h>
 #include <Inventor/actions/SoRayPickAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
@@ -319,6 +321,31 @@ TEST(SurfaceDisplay, GivenMeanCurvature_WhenTheProfileChanges_ThenTheColoursFoll
     // Then the colours are those of the new surface's H
     expectColoursOfCurvature(w, kBottle, false);
     EXPECT_NE(*w.analysis().values(kBottle), before);
+}
+
+TEST(SurfaceDisplay, GivenZebraOnAllSurfaces_WhenTheDocumentIsOpenedAgain_ThenItsSurfacesAreStripedThroughTheNewCamera)
+{
+    startApplication();
+    BottleWindow w;
+    w.window.document().select(0);
+    w.trigger("view.surfaceZebra");
+    // When the same document is opened again (new entities, a new camera in the viewer)
+    w.window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/models/bottle_surfaces.json"), QString());
+    QApplication::processEvents();
+    // Then the all-surfaces mode stays, and the zebra looks through the viewer's camera of now
+    EXPECT_EQ(w.analysis().mode(kBottle), scene::SurfaceDisplay::Zebra);
+    EXPECT_TRUE(w.window.action(QStringLiteral("view.surfaceZebra"))->isChecked());
+    SoCamera* camera = w.window.viewer()->getCamera();
+    ASSERT_NE(camera, nullptr);
+    EXPECT_EQ(w.analysis().camera(), camera);
+    auto* texture = findIn<SoTextureCoordinate2>(w.node(kBottle), "SurfaceAnalysis");
+    ASSERT_NE(texture, nullptr);
+    const SbVec2f first = texture->point[0];
+    const int updates = w.analysis().cameraUpdates();
+    camera->orientation = camera->orientation.getValue() * SbRotation(SbVec3f(0, 0, 1), 0.3f);
+    SoDB::getSensorManager()->processDelayQueue(FALSE);
+    EXPECT_GT(w.analysis().cameraUpdates(), updates);
+    EXPECT_NE(texture->point[0], first);
 }
 
 }  // namespace sculptline::ui
