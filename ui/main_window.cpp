@@ -12,6 +12,7 @@
 #include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
+#include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
 #include "ui/view_navigation.h"
@@ -306,6 +307,10 @@ void MainWindow::createActions()
     make(viewMenu, "view.hidePlane", tr("&Hide the selected plane"), QKeySequence(QStringLiteral("H")), [this]() { hideSelectedPlane(); });
     make(viewMenu, "view.hidePlanes", tr("Hide &all planes"), QKeySequence(QStringLiteral("Ctrl+Shift+H")), [this]() { setPlanesVisible(false); });
     make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
+    viewMenu->addSeparator();
+    // Zebra and curvature colouring of the selected surface (all surfaces when none is selected).
+    new SurfaceDisplayMenu(this, viewMenu, *document_,
+                           viewer_ ? std::function<SoCamera*()>([this]() { return viewer_->getCamera(); }) : std::function<SoCamera*()>());
 }
 
 void MainWindow::hideSelectedPlane()

@@ -239,6 +239,13 @@ def surfaces_drag():
     pts = [r([start[k] + (end[k] - start[k]) * i / 60 for k in range(3)]) for i in range(61)]
     s.stroke(pts, dt=10)
     s.write("surfaces_drag.json")
+    # The same drag with every surface coloured by Gaussian curvature (View > Surface display):
+    # recoloured at every event; the model it leaves is the plain drag's.
+    s = Session()
+    s.action("view.surfaceGaussian")
+    s.action("mode.sketch")
+    s.stroke(pts, dt=10)
+    s.write("surfaces_drag_gaussian.json")
 
 
 def extrude():
