@@ -396,12 +396,19 @@ double signedCurvature(const Curve2d& curve, double u)
     return cross(d[1], d[2]) / (speed * speed * speed);
 }
 
-std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& input)
+namespace {
+
+// The points; their arc lengths only when asked (the quadrature is most of the cost of a name).
+std::vector<CharacteristicPoint> findPoints(const Curve2d& input, bool withArcLengths)
 {
     if (input.degree() < 2) throw GeometryError("degree: a curve of degree 1 has no curvature to analyze");
     if (input.degree() > kMaxAnalysisDegree) {
         throw GeometryError("degree: " + std::to_string(input.degree()) + " is above " + std::to_string(kMaxAnalysisDegree) +
                             ", the highest the exact analysis handles");
+    }
+    if (input.pointCount() > kMaxAnalysisPoints) {
+        throw GeometryError("points: " + std::to_string(input.pointCount()) + " control points, the analysis takes at most " +
+                            std::to_string(kMaxAnalysisPoints));
     }
     if (input.isCollapsed()) throw GeometryError("curve: its control points coincide (no curvature)");
     // Curvature does not change with translation; centred, the homogeneous products of a rational
@@ -435,12 +442,25 @@ std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& input)
         out.push_back({u, kind, k, 0.0});
     }
     std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.u < b.u; });
-    const ArcLengthParameterization<2> arc(curve);
     for (auto& p : out) {
-        p.arcLength = arc.lengthAt(p.u);
         if (p.kind == PointKind::Inflection) p.curvature = signedCurvature(curve, p.u);
     }
+    if (withArcLengths) {
+        const ArcLengthParameterization<2> arc(curve);
+        for (auto& p : out) p.arcLength = arc.lengthAt(p.u);
+    }
     return out;
+}
+
+}  // namespace
+
+std::vector<CharacteristicPoint> characteristicPoints(const Curve2d& curve) { return findPoints(curve, true); }
+
+std::string nameOf(const Curve2d& curve)
+{
+    std::vector<PointKind> kinds;
+    for (const auto& p : findPoints(curve, false)) kinds.push_back(p.kind);
+    return curveName(kinds, curve.isClosed());
 }
 
 CurveAnalysis analyzeCurve(const Curve2d& curve, const Thresholds& thresholds)

@@ -138,6 +138,14 @@ double neighbourParameter(const Curve2d& c, const CurveAnalysis& a, int i, int s
     return a.points[j].u;
 }
 
+void checkSize(const Curve2d& c)
+{
+    if (c.pointCount() > kMaxOperatorPoints) {
+        throw GeometryError("points: " + std::to_string(c.pointCount()) + " control points, the operators take at most " +
+                            std::to_string(kMaxOperatorPoints) + " (remove knots first)");
+    }
+}
+
 void checkPoint(const CurveAnalysis& a, int at)
 {
     if (at < 0 || at >= static_cast<int>(a.points.size())) {
@@ -241,11 +249,11 @@ std::vector<PointKind> announcedKinds(const CurveAnalysis& a, Rule rule, int i, 
     return out;
 }
 
-bool analyzable(const Curve2d& c, CurveAnalysis& out, const Thresholds& t)
+// The curve's name is `name` (a curve that cannot be analysed, collapsed by a huge amount, has none).
+bool named(const Curve2d& c, const std::string& name)
 {
     try {
-        out = analyzeCurve(c, t);
-        return true;
+        return nameOf(c) == name;
     } catch (const GeometryError&) {
         return false;
     }
@@ -255,13 +263,10 @@ double visibility(const Characteristics& ch) { return (ch.dLeft + ch.dRight) * 0
 
 // A straightening step's drive: `curve` becomes the setup's curve at the smallest amount that gives
 // `expected`; the amount and the knots inserted are added up. False when no amount does.
-bool driveToName(const OperatorSetup& s, double length, double cap, const std::string& expected, const Thresholds& t,
-                 Curve2d& curve, double& used, int& inserted)
+bool driveToName(const OperatorSetup& s, double length, double cap, const std::string& expected, Curve2d& curve, double& used,
+                 int& inserted)
 {
-    const auto r = driveUntil(s, length, cap, [&](const Curve2d& c) {
-        CurveAnalysis after;
-        return analyzable(c, after, t) && after.name == expected;
-    });
+    const auto r = driveUntil(s, length, cap, [&](const Curve2d& c) { return named(c, expected); });
     if (!r) return false;
     curve = r->first;
     used += r->second;
@@ -315,7 +320,7 @@ bool removeUndulation(Curve2d& curve, const Thresholds& t, bool flaggedOnly, dou
         }
         return curveName(out, a.closed);
     }();
-    return driveToName(s, a.length, cap, expected, t, curve, used, inserted);
+    return driveToName(s, a.length, cap, expected, curve, used, inserted);
 }
 
 // One redundancy step: the middle extremum of "M+m+M+" (or m+M+m+, m-M-m-, M-m-M-) with the
@@ -344,7 +349,7 @@ bool removeRedundant(Curve2d& curve, const Thresholds& t, double cap, double& us
     if (k == PointKind::MinNegative) rule = Rule::BMMinus;
     const OperatorSetup s = ruleSetup(curve, a, rule, best->point, true);
     const std::string expected = curveName(announcedKinds(a, rule, best->point, true), a.closed);
-    return driveToName(s, a.length, cap, expected, t, curve, used, inserted);
+    return driveToName(s, a.length, cap, expected, curve, used, inserted);
 }
 
 }  // namespace
@@ -491,6 +496,7 @@ Curve2d OperatorDrag::at(double lambda, editing::ManipulationReport* report) con
 
 OperatorSetup ruleSetup(const Curve2d& curve, const CurveAnalysis& a, Rule rule, int at, bool inverse)
 {
+    checkSize(curve);
     checkPoint(a, at);
     const PointKind want = inverse ? producedKind(rule) : ruleKind(rule);
     if (a.points[at].kind != want) {
@@ -538,7 +544,7 @@ std::optional<double> ruleAmount(const Curve2d& curve, Rule rule, int at, bool i
     Curve2d result = curve;
     double amount = 0.0;
     int inserted = 0;
-    if (!driveToName(s, a.length, 0.0, curveName(announcedKinds(a, rule, at, inverse), a.closed), thresholds, result, amount, inserted)) {
+    if (!driveToName(s, a.length, 0.0, curveName(announcedKinds(a, rule, at, inverse), a.closed), result, amount, inserted)) {
         return std::nullopt;
     }
     return amount;
@@ -564,6 +570,7 @@ OperatorResult applyRule(const Curve2d& curve, Rule rule, int at, double lambda,
 
 OperatorSetup operatorSetup(const Curve2d& curve, const CurveAnalysis& a, Operator op, const OperatorOptions& o)
 {
+    checkSize(curve);
     const int n = static_cast<int>(a.points.size());
     const double u0 = curve.domainStart(), u1 = curve.domainEnd();
     const auto extremumWhere = [&](const std::function<bool(const CharacteristicPoint&)>& ok,
@@ -688,6 +695,7 @@ OperatorSetup operatorSetup(const Curve2d& curve, const CurveAnalysis& a, Operat
 OperatorResult applyOperator(const Curve2d& curve, Operator op, double amount, const OperatorOptions& o)
 {
     if (!std::isfinite(amount) || amount < 0.0) throw GeometryError("amount: must be a finite number >= 0");
+    checkSize(curve);
     const CurveAnalysis before = analyzeCurve(curve, o.thresholds);
     OperatorResult r{curve, before.name, before.name, before.measures, before.measures, 0, 0.0, {}, ""};
     Curve2d c = curve;
@@ -695,8 +703,7 @@ OperatorResult applyOperator(const Curve2d& curve, Operator op, double amount, c
         // Fig. 7-17: undulations (0X0 codons, smallest visibility first) by inverse continuations,
         // then redundant extrema (M+m+M+ -> M+) by inverse bifurcations, each step driven until its
         // codons are gone.
-        constexpr int kMaxSteps = 32;
-        for (int step = 0; step < kMaxSteps; ++step) {
+        for (int step = 0; step < kMaxStraightenSteps; ++step) {
             if (!removeUndulation(c, o.thresholds, false, amount, r.amount, r.insertedKnots) &&
                 !removeRedundant(c, o.thresholds, amount, r.amount, r.insertedKnots)) {
                 break;
@@ -719,13 +726,11 @@ OperatorResult applyOperator(const Curve2d& curve, Operator op, double amount, c
         double used = amount;
         // These operators change measures, not names (§7.4: no new characteristic points): beyond the
         // largest amount that keeps the name, the amount is limited to it (bisection, 40 halvings).
-        CurveAnalysis after;
-        if (!analyzable(moved, after, o.thresholds) || after.name != a.name) {
+        if (!named(moved, a.name)) {
             double lo = 0.0, hi = amount;
             for (int i = 0; i < 40; ++i) {
                 const double mid = 0.5 * (lo + hi);
-                CurveAnalysis m;
-                (analyzable(drag.at(mid), m, o.thresholds) && m.name == a.name ? lo : hi) = mid;
+                (named(drag.at(mid), a.name) ? lo : hi) = mid;
             }
             used = lo;
             moved = drag.at(used, &report);

@@ -27,6 +27,13 @@ enum class Rule { CmPlus, CMMinus, BMPlus, BmMinus, BmPlus, BMMinus };
 
 enum class Operator { Straighten, Soften, Sharpen, Convex, Concave, Tension, Accelerate };
 
+/// The most control points an operator or rule takes: searching an amount analyses the curve a few
+/// hundred times (about 1 ms each at 200 points), and straighten repeats that per step, so a bigger
+/// curve could hold the window for seconds. Sketched curves have tens.
+constexpr int kMaxOperatorPoints = 200;
+/// Straighten's steps at most (each removes two characteristic points).
+constexpr int kMaxStraightenSteps = 16;
+
 /// "Cm+", "CM-", ... / "straighten", "soften", ...; parse returns nullopt for an unknown name.
 const char* ruleName(Rule r);
 std::optional<Rule> parseRule(const std::string& name);

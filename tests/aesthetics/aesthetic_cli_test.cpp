@@ -77,7 +77,17 @@ TEST(AestheticCli, GivenImpossibleInput_WhenApplied_ThenExitTwoWithOneLineNaming
         json input;
         std::string field;
     };
+    json big = w;
+    big["knots"] = json::array();
+    big["points"] = json::array();
+    for (int i = 0; i < 4; ++i) big["knots"].push_back(0.0);
+    for (int i = 1; i < 198; ++i) big["knots"].push_back(i / 198.0);
+    for (int i = 0; i < 4; ++i) big["knots"].push_back(1.0);
+    for (int i = 0; i < 201; ++i) big["points"].push_back({i, std::sin(0.3 * i), 0.0});
+    big.erase("degree");
+    big["degree"] = 3;
     const Case cases[] = {
+        {{{"curve", big}, {"operator", "straighten"}}, "curve.points: 201 control points"},
         {{{"curve", w}, {"operator", "smoothen"}, {"amount", 1}}, "operator: unknown"},
         {{{"curve", w}, {"operator", "soften"}}, "amount: missing"},
         {{{"curve", w}, {"operator", "soften"}, {"amount", -1}}, "amount"},

@@ -323,6 +323,10 @@ TEST(CurveAnalysis, GivenBadInput_WhenAnalyzed_ThenAClearError)
     // A polyline has no curvature; a collapsed curve none either.
     EXPECT_THROW(analyzeCurve(makeClampedUniform<2>(1, {{0, 0}, {1, 0}, {1, 1}})), GeometryError);
     EXPECT_THROW(analyzeCurve(makeClampedUniform<2>(3, {{1, 1}, {1, 1}, {1, 1}, {1, 1}})), GeometryError);
+    // More control points than the analysis takes (it would hold its caller for long).
+    std::vector<Eigen::Vector2d> many;
+    for (int i = 0; i <= kMaxAnalysisPoints; ++i) many.emplace_back(i, std::sin(0.1 * i));
+    EXPECT_THROW(analyzeCurve(makeClampedUniform<2>(3, many)), GeometryError);
     // Thresholds must be positive.
     Thresholds t;
     t.distance = -1.0;

@@ -315,3 +315,22 @@ TEST(CurveOperators, GivenAClosedCurve_WhenItsVertexAcrossTheSeamIsSoftened_Then
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CurveOperators, GivenACurveAboveTheSizeLimit_WhenOperated_ThenRefusedNamingItsPoints)
+{
+    std::vector<Eigen::Vector2d> pts;
+    for (int i = 0; i <= kMaxOperatorPoints; ++i) pts.emplace_back(i, std::sin(0.3 * i));
+    const Curve2d big = makeClampedUniform<2>(3, pts);
+    try {
+        applyOperator(big, Operator::Straighten, 0.0);
+        FAIL() << "a curve of " << pts.size() << " points was operated on";
+    } catch (const GeometryError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("points: 201", 0), 0u) << e.what();
+    }
+    pts.pop_back();  // at the limit: analysed and operated on
+    EXPECT_NO_THROW(applyOperator(makeClampedUniform<2>(3, pts), Operator::Soften, 0.01));
+}
+
+}  // namespace
