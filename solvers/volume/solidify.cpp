@@ -164,12 +164,11 @@ Solid solidify(const std::vector<Surface3d>& surfaces, const SolidOptions& optio
         closed[k] = boundaryEdges(coarse).empty();
         const bool shell = !closed[k] && t > 0.0;
         boundaryArea += shell ? 2.0 * area(coarse) + t * boundaryLength(coarse) : area(coarse);
-        const auto [a, b] = bounds(coarse.vertices);
-        const Eigen::Vector3d pad = Eigen::Vector3d::Constant(shell ? 0.5 * t : 0.0);
-        corners.push_back(a - pad);
-        corners.push_back(b + pad);
+        const auto [a, b] = bounds(shell ? thicken(coarse, t).vertices : coarse.vertices);
+        corners.push_back(a);
+        corners.push_back(b);
         if (closed[k] || shell) {
-            extents[k] = (b - a + 2.0 * pad).minCoeff();
+            extents[k] = (b - a).minCoeff();
         } else {
             openCorners.push_back(a);
             openCorners.push_back(b);
