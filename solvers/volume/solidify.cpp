@@ -22,6 +22,10 @@ constexpr double kMemoryFractionOfRam = 0.25;
 // Chord tolerance of the first, coarse tessellation that only sizes the model and estimates the
 // memory: the display's (tessellation.h), relative to the model's size.
 constexpr double kCoarseChordRelative = 1e-3;
+// The tessellations of one call share kMaxTessellationVertices (a million vertices, about 100 MB of
+// meshes), each surface getting at least this many: many surfaces cannot multiply the time spent
+// before the memory check, at the price of a coarser tessellation of each when there are hundreds.
+constexpr int kMinVerticesPerSurface = 4096;
 // Boundary segments are sampled into the coverage hash at most this many times in total, so that
 // the closure check stays linear in the boundary size whatever the tolerance.
 constexpr double kMaxCoverageSamples = 1e6;
@@ -151,6 +155,7 @@ Solid solidify(const std::vector<Surface3d>& surfaces, const SolidOptions& optio
         throw GeometryError("surfaces: the model has no finite, non-zero extent (bounding-box diagonal " +
                             number(controlDiagonal) + ")");
     const double weldTolerance = kWeldRelative * controlDiagonal;
+    const int budget = std::max(kMinVerticesPerSurface, kMaxTessellationVertices / static_cast<int>(surfaces.size()));
 
     // Coarse meshes: the solid's bounds, its boundary area and which surfaces close on themselves.
     const double t = options.thickness;
@@ -160,7 +165,7 @@ Solid solidify(const std::vector<Surface3d>& surfaces, const SolidOptions& optio
     std::vector<Eigen::Vector3d> openCorners;  // of the surfaces that must close up together
     std::vector<double> extents(surfaces.size(), std::numeric_limits<double>::infinity());
     for (size_t k = 0; k < surfaces.size(); ++k) {
-        const TriangleMesh coarse = surfaceMesh(surfaces[k], kCoarseChordRelative * controlDiagonal, weldTolerance);
+        const TriangleMesh coarse = surfaceMesh(surfaces[k], kCoarseChordRelative * controlDiagonal, weldTolerance, budget);
         closed[k] = boundaryEdges(coarse).empty();
         const bool shell = !closed[k] && t > 0.0;
         boundaryArea += shell ? 2.0 * area(coarse) + t * boundaryLength(coarse) : area(coarse);
@@ -218,7 +223,7 @@ Solid solidify(const std::vector<Surface3d>& surfaces, const SolidOptions& optio
     std::vector<TriangleMesh> open;
     std::vector<int> openIds;
     for (size_t k = 0; k < surfaces.size(); ++k) {
-        TriangleMesh mesh = surfaceMesh(surfaces[k], chord, weldTolerance);
+        TriangleMesh mesh = surfaceMesh(surfaces[k], chord, weldTolerance, budget);
         if (boundaryEdges(mesh).empty()) {
             solids.push_back(std::move(mesh));
         } else if (t > 0.0) {

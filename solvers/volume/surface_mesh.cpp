@@ -93,10 +93,11 @@ TriangleMesh weld(const TriangleMesh& mesh, double tolerance)
     return out;
 }
 
-TriangleMesh surfaceMesh(const Surface3d& surface, double chordTolerance, double weldTolerance)
+TriangleMesh surfaceMesh(const Surface3d& surface, double chordTolerance, double weldTolerance, int maxVertices)
 {
     TessellationTolerance tolerance;
     tolerance.chordTolerance = chordTolerance;
+    tolerance.maxVertices = maxVertices;
     const GridMesh grid = tessellate(surface, tolerance);
     TriangleMesh mesh{grid.vertices, grid.triangles, grid.normals};
     mesh = weld(mesh, weldTolerance);

@@ -3,6 +3,7 @@
 // thickened shells with square edges, and the watertightness and measures of a mesh.
 // Plain C++ and Eigen: no OpenVDB here (that is level_set.cpp's business).
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/bspline/tessellation.h"
 
 #include <Eigen/Core>
 #include <array>
@@ -26,7 +27,9 @@ using Edge = std::array<int, 2>;
 /// has none (a degenerate point), the area-weighted normal of the triangles around the vertex.
 /// @param chordTolerance model units, > 0.
 /// @param weldTolerance  model units, >= 0: vertices closer than this become one.
-TriangleMesh surfaceMesh(const Surface3d& surface, double chordTolerance, double weldTolerance);
+/// @param maxVertices    the tessellation's vertex budget (TessellationTolerance::maxVertices).
+TriangleMesh surfaceMesh(const Surface3d& surface, double chordTolerance, double weldTolerance,
+                         int maxVertices = kMaxTessellationVertices);
 
 /// Merges vertices closer than `tolerance` (a spatial hash with cells of that size), drops
 /// triangles with a repeated vertex, averages normals of merged vertices (when present).
