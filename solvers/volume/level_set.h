@@ -28,8 +28,9 @@ struct LevelSetSolid {
 /// @param closedMeshes closed triangle meshes, model units; gaps narrower than a voxel are tolerated.
 /// @param voxelSize    model units, > 0.
 /// @param origin       model point mapped to the grid's origin: the meshes are converted relative to
-///                     it, so that single-precision index coordinates keep their resolution far
-///                     from the model's origin. Pass the centre of the model's bounds.
+///                     it, in index units (the grids have a unit transform), so that single-precision
+///                     coordinates keep their resolution far from the model's origin and cannot
+///                     overflow. Pass the centre of the model's bounds.
 /// @note The cost is about proportional to the narrow band's voxel count (estimateMemory() in
 ///       solidify.h); callers check it first.
 LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, double voxelSize,

@@ -140,7 +140,7 @@ double area(const TriangleMesh& mesh)
 {
     double sum = 0.0;
     for (const Eigen::Vector3i& t : mesh.triangles)
-        sum += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).norm();
+        sum += 0.5 * (mesh.vertices[t[1]] - mesh.vertices[t[0]]).cross(mesh.vertices[t[2]] - mesh.vertices[t[0]]).stableNorm();
     return sum;
 }
 

@@ -191,3 +191,23 @@ TEST(Solidify, GivenASolidSmallerThanTwoVoxels_WhenSolidified_ThenTheErrorNamesI
     EXPECT_EQ(message.rfind("voxel_size: 1 is more than 1/2 of the smallest extent", 0), 0u) << message;
     EXPECT_NE(message.find("of surfaces[1]"), std::string::npos) << message;
 }
+
+TEST(Solidify, GivenASphereFarFromTheOriginOrOfHugeSize_WhenSolidified_ThenTheSameRelativeVolume)
+{
+    // The work is done relative to the model's centre, in voxel units: a float world coordinate at
+    // 1e6 would have a resolution of 0.06, a third of the default voxel; 1e100 does not fit a float.
+    // (Far from the origin the kernel's tessellation also refined on round-off: 20 s, not 20 ms.)
+    const vol::Solid far = vol::solidify({sphere(10.0, {1e6, -2e6, 3e6})});
+    EXPECT_NEAR(far.volume, sphereVolume(10.0), kSphereVolume * sphereVolume(10.0));
+    EXPECT_TRUE(far.watertight);
+
+    const vol::Solid huge = vol::solidify({sphere(1e100)});
+    EXPECT_NEAR(huge.volume / sphereVolume(1e100), 1.0, kSphereVolume);
+    EXPECT_TRUE(huge.watertight);
+
+    // A patch of (1e160)² has an area that overflows a double: refused, not reported as infinity.
+    vol::SolidOptions shell;
+    shell.thickness = 1e159;
+    const std::string message = errorOf([&] { vol::solidify({flatPatch(1e160, 1e160)}, shell); });
+    EXPECT_EQ(message.rfind("surfaces: the model's area overflows", 0), 0u) << message;
+}
