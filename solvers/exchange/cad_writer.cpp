@@ -10,6 +10,9 @@
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
+#include <IGESData_IGESWriter.hxx>
+#include <IGESSelect_WorkLibrary.hxx>
+#include <Interface_FloatWriter.hxx>
 #include <IGESControl_Controller.hxx>
 #include <IGESControl_Writer.hxx>
 #include <Interface_Static.hxx>
@@ -20,17 +23,17 @@
 #include <STEPControl_Controller.hxx>
 #include <STEPControl_Writer.hxx>
 #include <Standard_Failure.hxx>
+#include <StepData_Protocol.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepData_StepWriter.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <mutex>
 #include <sstream>
-#include <unistd.h>
 
 namespace sculptline::solvers::exchange {
 namespace {
@@ -49,20 +52,28 @@ void quietOcct()
 
 std::string indexed(const char* name, size_t i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
 
-// STEPControl_Writer writes files only (no stream in 7.6): a private temporary file, read back.
-std::string writeStepText(STEPControl_Writer& writer)
+// Reals with 17 significant digits, enough to read back the same double (IEEE 754 §5.12.2): the
+// translators' own defaults keep 12 (STEP) and 9 (IGES) digits, up to 2e-9 relative, which moves
+// a rational point of a 25 mm sphere by a nanometre. "%E" keeps the decimal point both formats need.
+// Zero suppression stays off: in OCCT 7.6 it cuts the exponent of 17-digit mantissas (0.6 came
+// back as 5.9999999999999).
+void fullPrecision(Interface_FloatWriter& writer)
 {
-    std::string templ = (std::filesystem::temp_directory_path() / "sculptline-step-XXXXXX").string();
-    const int fd = mkstemp(templ.data());
-    if (fd < 0) throw ExchangeError("path: cannot create a temporary file for the STEP writer");
-    close(fd);
-    const IFSelect_ReturnStatus status = writer.Write(templ.c_str());
-    std::ifstream in(templ, std::ios::binary);
+    writer.SetFormat("%.16E");  // resets the "%f" range form and zero suppression
+    writer.SetZeroSuppress(Standard_False);
+}
+
+// STEPControl_Writer::Write takes a file name only (OCCT 7.6); its model is sent through
+// StepData_StepWriter as StepSelect_WorkLibrary::WriteFile does, with full precision, to a stream.
+std::string stepText(STEPControl_Writer& writer)
+{
+    const Handle(StepData_Protocol) protocol = Handle(StepData_Protocol)::DownCast(writer.WS()->Protocol());
+    if (protocol.IsNull()) throw ExchangeError("format: the STEP translator has no protocol");
+    StepData_StepWriter out(writer.Model());
+    fullPrecision(out.FloatWriter());
+    out.SendModel(protocol);
     std::ostringstream text;
-    text << in.rdbuf();
-    in.close();
-    std::remove(templ.c_str());
-    if (status != IFSelect_RetDone) throw ExchangeError("path: the STEP writer failed");
+    if (!out.Print(text)) throw ExchangeError("path: the STEP writer failed");
     return text.str();
 }
 
@@ -93,7 +104,7 @@ std::string encodeStep(const ExchangeContent& content)
         if (writer.Transfer(compound, STEPControl_AsIs) != IFSelect_RetDone) {
             throw ExchangeError("curves: the STEP translator refused the geometry");
         }
-        return writeStepText(writer);
+        return stepText(writer);
     } catch (const Standard_Failure& e) {
         throw ExchangeError(std::string("curves: OpenCASCADE failed (") + e.GetMessageString() + ")");
     }
@@ -114,9 +125,13 @@ std::string encodeIges(const ExchangeContent& content)
                 throw ExchangeError(indexed("surfaces", i) + ": the IGES translator refused it");
             }
         }
+        // As IGESControl_Writer::Write(stream), with full precision.
         writer.ComputeModel();
+        IGESData_IGESWriter out(writer.Model());
+        fullPrecision(out.FloatWriter());
+        out.SendModel(IGESSelect_WorkLibrary::DefineProtocol());
         std::ostringstream text;
-        if (!writer.Write(text)) throw ExchangeError("path: the IGES writer failed");
+        if (!out.Print(text)) throw ExchangeError("path: the IGES writer failed");
         return text.str();
     } catch (const Standard_Failure& e) {
         throw ExchangeError(std::string("curves: OpenCASCADE failed (") + e.GetMessageString() + ")");

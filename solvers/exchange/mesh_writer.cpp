@@ -2,6 +2,8 @@
 
 #include "solvers/bspline/tessellation.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <cstdarg>
 #include <cstdint>
@@ -38,13 +40,19 @@ void putFacet(std::string& out, const Eigen::Vector3d& normal, const Eigen::Vect
     out.push_back('\0');
 }
 
+// A facet whose cross product is below this fraction of its squared edge lengths has no area up to
+// round-off: a grid row collapsed to a point (a sphere's pole) leaves copies of that point a few
+// ulps apart, and their cross product points anywhere. 1e-12 is ~5000 ulps of the edges' product.
+constexpr double kDegenerateFacet = 1e-12;
+
 // The facet's unit normal, or `fallback` normalized when the facet has no area (or the zero vector).
 Eigen::Vector3d facetNormal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                             const Eigen::Vector3d& fallback)
 {
     const Eigen::Vector3d n = (b - a).cross(c - a);
     const double length = n.norm();
-    if (length > 0.0 && std::isfinite(length)) return n / length;
+    const double scale = (b - a).squaredNorm() + (c - a).squaredNorm();
+    if (length > kDegenerateFacet * scale && std::isfinite(length)) return n / length;
     const double f = fallback.norm();
     return f > 0.0 ? Eigen::Vector3d(fallback / f) : Eigen::Vector3d::Zero();
 }
