@@ -178,6 +178,10 @@ void MainWindow::createActions()
     make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
+    make(file, "file.exportStep", tr("Export &STEP..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Step); });
+    make(file, "file.exportIges", tr("Export &IGES..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Iges); });
+    make(file, "file.exportStl", tr("Export S&TL..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Stl); });
+    make(file, "file.exportObj", tr("Export &OBJ..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Obj); });
     make(file, "file.recover", tr("Recover &Unsaved Work..."), QKeySequence(), [this]() { recoverFromMenu(); });
     make(file, "file.autosaveInterval", tr("Autosave &Interval..."), QKeySequence(), [this]() { chooseAutosaveInterval(); });
     file->addSeparator();
@@ -751,7 +755,7 @@ model::EntityId MainWindow::curveNear(const QPoint& position) const
 
 bool MainWindow::refuseDialog(const char* action) const
 {
-    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv\n";
+    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj\n";
     return automated_;
 }
 

@@ -11,6 +11,7 @@
 #include "model/document.h"
 #include "scene/stroke_feedback.h"
 #include "solvers/editing/curve_manipulation.h"
+#include "solvers/exchange/exchange.h"
 #include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "solvers/stroke/user_model.h"
@@ -77,6 +78,11 @@ public:
     /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
+    /// Writes the world geometry (curves, surfaces; network meshes to STL/OBJ only) in `format`
+    /// (solvers/exchange/exchange.h). Returns the bytes written.
+    /// @throws solvers::exchange::ExchangeError naming what cannot be written (nothing to export,
+    ///         a path that cannot be written).
+    std::uintmax_t exportGeometry(const QString& path, solvers::exchange::Format format);
 
     model::Model& model() { return model_; }
     const model::Model& model() const { return model_; }

@@ -42,6 +42,10 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--replay", options.replay, "Play a recorded session (JSON) through the viewer");
     cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
+    cli.add_option("--export-step", options.exportStep, "Export the curves and surfaces as STEP AP214 (exact B-splines) after the replay");
+    cli.add_option("--export-iges", options.exportIges, "Export the curves and surfaces as IGES (exact B-splines) after the replay");
+    cli.add_option("--export-stl", options.exportStl, "Export the surfaces (tessellated) and meshes as binary STL after the replay");
+    cli.add_option("--export-obj", options.exportObj, "Export the curves, surfaces and meshes as Wavefront OBJ after the replay");
     cli.add_option("--stats", options.stats, "Write the replay's update latencies (JSON: count, p50, p99, max)");
     cli.add_option("--autosave-interval", options.autosaveInterval,
                    "Seconds between autosaves of unsaved work to the recovery file (default 120; 0 = off)")

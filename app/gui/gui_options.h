@@ -15,6 +15,10 @@ struct GuiOptions {
     std::string replay;  ///< session JSON to play through the viewer's Qt event path
     std::string save;  ///< document JSON written after the replay
     std::string exportIv;  ///< Open Inventor file written after the replay
+    std::string exportStep;  ///< STEP AP214 of the world curves and surfaces, after the replay
+    std::string exportIges;  ///< IGES of the same
+    std::string exportStl;  ///< binary STL of the surfaces (tessellated) and network meshes
+    std::string exportObj;  ///< OBJ of everything (curves as polylines)
     std::string stats;  ///< latency statistics of the replay (JSON)
     bool listActions = false;  ///< print every action name and leave
     bool nurbsNodes = false;  ///< draw with SoNurbsCurve/SoNurbsSurface (frame-time comparison only)
@@ -29,7 +33,8 @@ struct GuiOptions {
     /// Run by a script (a replay, an output flag or --quit): nobody is there to answer a dialog.
     bool scripted() const
     {
-        return quit || !replay.empty() || !save.empty() || !exportIv.empty() || !screenshot.empty() || !stats.empty();
+        return quit || !replay.empty() || !save.empty() || !exportIv.empty() || !exportStep.empty() || !exportIges.empty() ||
+               !exportStl.empty() || !exportObj.empty() || !screenshot.empty() || !stats.empty();
     }
 };
 

@@ -69,6 +69,14 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
     };
     if (!options.save.empty()) attempt("--save", [&]() { doc.save(QString::fromStdString(options.save)); });
     if (!options.exportIv.empty()) attempt("--export-iv", [&]() { doc.exportIv(QString::fromStdString(options.exportIv)); });
+    using sculptline::solvers::exchange::Format;
+    const std::pair<const std::string*, Format> exports[] = {{&options.exportStep, Format::Step}, {&options.exportIges, Format::Iges},
+                                                             {&options.exportStl, Format::Stl}, {&options.exportObj, Format::Obj}};
+    for (const auto& [path, format] : exports) {
+        if (path->empty()) continue;
+        attempt(std::string("--export-") + sculptline::solvers::exchange::formatName(format),
+                [&]() { doc.exportGeometry(QString::fromStdString(*path), format); });
+    }
     if (!options.screenshot.empty()) {
         const QImage image = window.grabViewport();
         if (image.isNull() || !image.save(QString::fromStdString(options.screenshot), "PNG")) {
