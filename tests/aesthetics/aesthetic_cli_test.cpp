@@ -1,7 +1,7 @@
 // sculptline-cli aesthetic, run as the real binary: Fig. 7-17's straightening in a tilted plane (the
 // result stays in it), a rule at its announced amount, and clear refusals. Given / When / Then.
 #include "solvers/aesthetics/curve_operators.h"
-#include "solvers/surfaces/interpolation.h"
+#include "tests/aesthetics/graph_curves.h"
 #include "tests/cli/cli_runner.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 using namespace sculptline::cli_test;
 namespace aes = sculptline::solvers::aesthetics;
 using namespace sculptline::solvers;
+namespace testcurves = sculptline::testcurves;
 
 namespace {
 
@@ -20,18 +21,7 @@ const std::string kPrefix = "sculptline-cli: ";
 // 8 spans; placed in the plane through (0, 0, 2) spanned by x and (0, cos 0.4, sin 0.4).
 Curve3d tiltedW()
 {
-    ControlMatrix data(5, 2);
-    std::vector<double> params;
-    for (int i = 0; i <= 4; ++i) {
-        const double t = i / 4.0, x = -1.2 + 2.4 * t;
-        data.row(i) << x, x * x * x * x - 0.5 * x * x;
-        params.push_back(t);
-    }
-    const surfaces::CurveInterpolator interp(params, 4);
-    const ControlMatrix rows = interp.solve(data);
-    std::vector<Eigen::Vector2d> cps;
-    for (int i = 0; i < rows.rows(); ++i) cps.emplace_back(rows(i, 0), rows(i, 1));
-    const Curve2d w = Curve2d(4, interp.knots(), cps).refine({0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875});
+    const Curve2d w = testcurves::figure717();
     const aes::PlaneFrame frame{{0, 0, 2}, {1, 0, 0}, {0, std::cos(0.4), std::sin(0.4)}};
     return aes::spaceCurve(w, frame);
 }

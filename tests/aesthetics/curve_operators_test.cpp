@@ -4,7 +4,7 @@
 #include "solvers/aesthetics/curve_operators.h"
 
 #include "solvers/bspline/geometry_error.h"
-#include "solvers/surfaces/interpolation.h"
+#include "tests/aesthetics/graph_curves.h"
 
 #include <gtest/gtest.h>
 
@@ -15,28 +15,10 @@ namespace {
 
 using namespace sculptline::solvers;
 using namespace sculptline::solvers::aesthetics;
+namespace testcurves = sculptline::testcurves;
 
-// y = f(x) for x in [x0, x1], f a polynomial of degree <= `degree`: the degree-`degree` interpolant
-// at degree + 1 uniform parameters is that polynomial exactly (x is linear in the parameter), one
-// Bezier span; then `spans` uniform spans by knot insertion (no shape change), for freedom.
-Curve2d graph(const std::function<double(double)>& f, double x0, double x1, int degree, int spans)
-{
-    ControlMatrix data(degree + 1, 2);
-    std::vector<double> params;
-    for (int i = 0; i <= degree; ++i) {
-        const double t = double(i) / degree, x = x0 + (x1 - x0) * t;
-        data.row(i) << x, f(x);
-        params.push_back(t);
-    }
-    const surfaces::CurveInterpolator interp(params, degree);
-    const ControlMatrix rows = interp.solve(data);
-    std::vector<Eigen::Vector2d> cps;
-    for (int i = 0; i < rows.rows(); ++i) cps.emplace_back(rows(i, 0), rows(i, 1));
-    const Curve2d bezier(degree, interp.knots(), cps);
-    std::vector<double> x;
-    for (int k = 1; k < spans; ++k) x.push_back(double(k) / spans);
-    return x.empty() ? bezier : bezier.refine(x);
-}
+
+
 
 Curve2d mirrored(const Curve2d& c)
 {
@@ -46,12 +28,12 @@ Curve2d mirrored(const Curve2d& c)
 }
 
 // "M+0m-0M+": a W, two convex valleys and a bump between (Fig. 7-17's black curve).
-Curve2d wCurve() { return graph([](double x) { return x * x * x * x - 0.5 * x * x; }, -1.2, 1.2, 4, 8); }
+Curve2d wCurve() { return testcurves::figure717(); }
 // "M+m+M+": a flat-bottomed valley.
-Curve2d flatValley() { return graph([](double x) { return x * x * x * x + 0.1 * x * x; }, -1.2, 1.2, 4, 8); }
+Curve2d flatValley() { return testcurves::flatValley(); }
 // "M+": a parabola, as a cubic (C2 at its knots, as designers' curves are: a quadratic's curvature
 // jumps at every knot a change puts into it).
-Curve2d parabola() { return graph([](double x) { return x * x; }, -1.0, 1.0, 3, 8); }
+Curve2d parabola() { return testcurves::polynomialGraph([](double x) { return x * x; }, -1.0, 1.0, 3, 8); }
 
 // Evaluations of two curves at the same parameters agree to this (model units): knot insertion
 // and unmoved control points reproduce a curve to round-off of its coordinates (about 1).
@@ -262,7 +244,7 @@ TEST(CurveOperators, GivenACurve_WhenAccelerated_ThenTheEndTangentGrowsByTheHand
 TEST(CurveOperators, GivenABezierTooStiffForItsConstraints_WhenSoftened_ThenKnotsAreInsertedAndCounted)
 {
     // Arrange: one cubic span (4 control points) cannot take soften's 5 constraints plus freedom.
-    const Curve2d c = graph([](double x) { return x * x * x - x; }, -1.0, 0.2, 3, 1);
+    const Curve2d c = testcurves::polynomialGraph([](double x) { return x * x * x - x; }, -1.0, 0.2, 3, 1);
     const CurveAnalysis a = analyzeCurve(c);
     ASSERT_FALSE(a.characteristics.empty());
     const OperatorSetup s = operatorSetup(c, a, Operator::Soften, {});

@@ -5,7 +5,7 @@
 #include "manipulators/aesthetic_drag.h"
 #include "model/model.h"
 #include "scene/update_scheduler.h"
-#include "solvers/surfaces/interpolation.h"
+#include "tests/aesthetics/graph_curves.h"
 
 #include <Inventor/SoInteraction.h>
 #include <gtest/gtest.h>
@@ -20,23 +20,8 @@ namespace aes = solvers::aesthetics;
 // Round-off at the 100 mm scale.
 constexpr double kTolerance = 1e-9;
 
-// y = (x^4 + 0.1 x^2) on [-1.2, 1.2], scaled by 40 ("M+m+M+", a flat-bottomed valley), exact quartic
-// in 8 spans, in plane-local coordinates (z = 0).
-solvers::Curve3d valley()
-{
-    solvers::ControlMatrix data(5, 2);
-    std::vector<double> params;
-    for (int i = 0; i <= 4; ++i) {
-        const double t = i / 4.0, x = -1.2 + 2.4 * t;
-        data.row(i) << 40 * x, 40 * (x * x * x * x + 0.1 * x * x);
-        params.push_back(t);
-    }
-    const solvers::surfaces::CurveInterpolator interp(params, 4);
-    const solvers::ControlMatrix rows = interp.solve(data);
-    std::vector<Eigen::Vector3d> cps;
-    for (int i = 0; i < rows.rows(); ++i) cps.emplace_back(rows(i, 0), rows(i, 1), 0.0);
-    return solvers::Curve3d(4, interp.knots(), cps).refine({0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875});
-}
+// The flat-bottomed valley ("M+m+M+") scaled by 40, in plane-local coordinates (z = 0).
+solvers::Curve3d valley() { return aes::spaceCurve(testcurves::flatValley(40.0), aes::PlaneFrame{}); }
 
 struct ValleyScene {
     model::Model model;

@@ -8,7 +8,7 @@
 #include "manipulators/aesthetic_drag.h"
 #include "model/document.h"
 #include "solvers/aesthetics/curve_operators.h"
-#include "solvers/surfaces/interpolation.h"
+#include "tests/aesthetics/graph_curves.h"
 #include "tests/gui/coin_mouse.h"
 #include "tests/gui/window_shot.h"
 #include "ui/aesthetics_dock.h"
@@ -37,21 +37,7 @@ constexpr model::EntityId kPlane = 1;
 constexpr double kRoundOff = 1e-9;
 
 // Fig. 7-17's curve, an exact quartic in 8 spans, 40 times y = x^4 - x^2/2 on [-1.2, 1.2].
-solvers::Curve3d wCurve()
-{
-    solvers::ControlMatrix data(5, 2);
-    std::vector<double> params;
-    for (int i = 0; i <= 4; ++i) {
-        const double t = i / 4.0, x = -1.2 + 2.4 * t;
-        data.row(i) << 40 * x, 40 * (x * x * x * x - 0.5 * x * x);
-        params.push_back(t);
-    }
-    const solvers::surfaces::CurveInterpolator interp(params, 4);
-    const solvers::ControlMatrix rows = interp.solve(data);
-    std::vector<Eigen::Vector3d> cps;
-    for (int i = 0; i < rows.rows(); ++i) cps.emplace_back(rows(i, 0), rows(i, 1), 0.0);
-    return solvers::Curve3d(4, interp.knots(), cps).refine({0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875});
-}
+solvers::Curve3d wCurve() { return aes::spaceCurve(testcurves::figure717(40.0), aes::PlaneFrame{}); }
 
 struct WWindow {
     MainWindow window;

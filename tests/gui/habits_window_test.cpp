@@ -8,6 +8,7 @@
 #include "model/document.h"
 #include "solvers/io/geometry_json.h"
 #include "solvers/stroke/stroke_json.h"
+#include "tests/gui/window_shot.h"
 #include "ui/main_window.h"
 #include "ui/recognition_dock.h"
 #include "ui/sketch_document.h"
@@ -16,7 +17,6 @@
 
 #include <QAction>
 #include <QApplication>
-#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
 #include <QListWidget>
@@ -33,16 +33,7 @@
 namespace sculptline::ui {
 namespace {
 
-void startApplication()
-{
-    static int argc = 1;
-    static char name[] = "habits_window_test";
-    static char* argv[] = {name, nullptr};
-    static QApplication* app = nullptr;
-    if (app) return;
-    app = new QApplication(argc, argv);
-    SoQt::init(static_cast<QWidget*>(nullptr));
-}
+void startApplication() { guitest::startApplication("habits_window_test"); }
 
 /// A closed loop of radius r, flattened to `ratio` in y, centred at (cx, cy) on a plane facing +z at
 /// z = 0, drawn counter-clockwise from angle 0 in 80 samples (0.01 s apart), with its rays.
@@ -91,18 +82,7 @@ void screenshot(MainWindow& window, const char* name)
 {
     const char* dir = std::getenv("SCULPTLINE_HABITS_SHOTS");
     if (!dir) return;
-    QElapsedTimer waited;
-    waited.start();
-    while (!(window.windowHandle() && window.windowHandle()->isExposed()) && waited.elapsed() < 5000)
-        QApplication::processEvents(QEventLoop::AllEvents, 50);
-    window.renderViewport();
-    QApplication::processEvents();
-    const QImage viewport = window.grabViewport();
-    QImage image = window.grab().toImage();
-    QPainter painter(&image);
-    painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)), viewport);
-    painter.end();
-    image.save(QString::fromLocal8Bit(dir) + QLatin1Char('/') + QLatin1String(name));
+    guitest::saveWindowShot(window, QString::fromLocal8Bit(dir) + QLatin1Char('/') + QLatin1String(name));
 }
 
 /// Largest distance of the curve's samples from a circle fitted through its centroid (mean radius),
