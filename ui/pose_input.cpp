@@ -20,9 +20,10 @@
 namespace sculptline::ui {
 namespace {
 
-/// The live stroke's look: the colour and width of a mouse stroke's trail would do; a dark orange,
-/// 2 px, unlit and unpickable, so that it never takes a click meant for what lies behind it.
-constexpr float kLiveColor[3] = {0.85f, 0.45f, 0.1f};
+/// The live stroke's look: cyan, a colour no curve (warm colours), surface (blues, greens, violet) or
+/// selection (white) has, so it reads as "not a curve yet"; 2 px, unlit and unpickable, so that it
+/// never takes a click meant for what lies behind it.
+constexpr float kLiveColor[3] = {0.1f, 0.9f, 0.9f};
 constexpr float kLiveWidth = 2.0f;
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
 // The one input layer of 6-DOF devices (a tracked pointer, a second hand's controller, a 3D mouse):
 // poses become the same model edits as the mouse's (../shared/interfaces.md, "6-DOF input").
-//   pointer + trigger: draws a stroke in space, shown live as a polyline; on release it is fitted
+//   pointer + trigger: draws a stroke in space, shown live as a cyan polyline; on release it is fitted
 //     (SketchDocument::addSpaceStroke). While the plane is carried (plane + grip) when the trigger
 //     goes down, the stroke is planar on the carried plane instead: each position is projected onto
 //     the plane as it is at that moment, so the stroke moves with the hand that holds the plane.

@@ -7,10 +7,10 @@
 #include "manipulators/stroke_input.h"
 #include "solvers/bspline/projection.h"
 #include "solvers/editing/oversketch.h"
+#include "solvers/geometry/plane_fit.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
 
-#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cmath>
@@ -24,18 +24,13 @@ namespace {
 /// path by a few degrees instead of putting a hook (a false corner) at its end.
 constexpr double kSnapRamp = 0.15;
 
-/// Largest distance of the points from their least-squares plane (the status line's measure of
-/// how far from planar a space curve is).
+/// Largest distance of the points from their best-fit plane: the status line's measure of how far
+/// from planar a space curve is.
 double offPlane(const std::vector<Eigen::Vector3d>& pts)
 {
-    Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (const Eigen::Vector3d& p : pts) c += p;
-    c /= static_cast<double>(pts.size());
-    Eigen::MatrixXd a(pts.size(), 3);
-    for (size_t i = 0; i < pts.size(); ++i) a.row(static_cast<Eigen::Index>(i)) = (pts[i] - c).transpose();
-    const Eigen::Vector3d n = Eigen::JacobiSVD<Eigen::MatrixXd>(a, Eigen::ComputeThinV).matrixV().col(2);
+    const solvers::PlaneFit plane = solvers::bestFitPlane(pts);
     double d = 0.0;
-    for (const Eigen::Vector3d& p : pts) d = std::max(d, std::abs((p - c).dot(n)));
+    for (const Eigen::Vector3d& p : pts) d = std::max(d, std::abs((p - plane.centroid).dot(plane.normal)));
     return d;
 }
 

@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 
 namespace sculptline::stroketest {
 namespace {
@@ -25,21 +24,6 @@ std::vector<Vec3> densePoints(const solvers::Curve3d& c)
     std::vector<Vec3> pts;
     for (int i = 0; i <= 2000; ++i) pts.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / 2000));
     return pts;
-}
-
-/// Largest distance of the points from their least-squares plane (smallest singular direction).
-double distanceFromBestPlane(const std::vector<Vec3>& pts)
-{
-    Vec3 centroid = Vec3::Zero();
-    for (const Vec3& p : pts) centroid += p;
-    centroid /= static_cast<double>(pts.size());
-    Eigen::MatrixXd a(pts.size(), 3);
-    for (size_t i = 0; i < pts.size(); ++i) a.row(static_cast<Eigen::Index>(i)) = (pts[i] - centroid).transpose();
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinV);
-    const Vec3 normal = svd.matrixV().col(2);
-    double d = 0.0;
-    for (const Vec3& p : pts) d = std::max(d, std::abs((p - centroid).dot(normal)));
-    return d;
 }
 
 TEST(Stroke3d, GivenNoisyHelixDrawnInSpace_WhenFitted_ThenNonPlanarCurveWithinToleranceOfThePath)

@@ -11,6 +11,10 @@ a surface spanning x -80..80, y -90..30 at z 7..45). Positions in mm, orientatio
                     stroke and two pointer strokes (one while the plane turns) are drawn on it, then
                     lets go; one more pointer stroke in the air
   pose_plane_undo.json  the same, then two undos (the air stroke; the whole carry, one step)
+  pose_helix_undo.json  the helix, then one undo (the space curve is one undo step)
+  pose_live.json    the helix with the trigger still held at the end: the live polyline, no curve yet
+  pose_oversketch.json  in Over-sketch mode, a pointer stroke over the middle of the default scene's
+                    space curve, raised 4 mm along z: the curve follows it, its ends kept
 """
 import json
 import math
@@ -169,8 +173,41 @@ def slerp(a, b, s):
     return [c / n for c in q]
 
 
+# The default scene's space curve (data/default_scene.json).
+DEFAULT_KNOTS = [0, 0, 0, 0, 1, 2, 3, 3, 3, 3]
+DEFAULT_POINTS = [[-90, -40, 10], [-60, 40, 90], [-20, 80, 20], [20, -10, 110], [60, 30, 40], [90, 70, 95]]
+
+
+def de_boor(u, degree=3, knots=DEFAULT_KNOTS, points=DEFAULT_POINTS):
+    """The NURBS Book A3.1 by de Boor's recurrence."""
+    k = max(i for i in range(degree, len(points)) if knots[i] <= u)
+    d = [list(points[j + k - degree]) for j in range(degree + 1)]
+    for r in range(1, degree + 1):
+        for j in range(degree, r - 1, -1):
+            i = j + k - degree
+            a = (u - knots[i]) / (knots[i + degree + 1 - r] - knots[i])
+            d[j] = [(1 - a) * d[j - 1][c] + a * d[j][c] for c in range(3)]
+    return d[degree]
+
+
+def oversketch():
+    events = [{"type": "action", "name": "mode.oversketch", "t": 0}]
+    n = 120
+    pts = []
+    for i in range(n + 1):
+        s = i / n
+        p = de_boor(1.1 + 0.8 * s)
+        p[2] += 4.0 * (math.sin(math.pi * s) + 0.2)
+        pts.append(p)
+    s, t = pointer_stroke(pts, 20)
+    return events + s
+
+
 def main():
     write("pose_helix.json", helix())
+    write("pose_helix_undo.json", helix() + [{"type": "key", "key": "Ctrl+Z", "t": 4500}])
+    write("pose_live.json", helix()[:-1])
+    write("pose_oversketch.json", oversketch())
     write("pose_bridge.json", bridge())
     write("pose_plane.json", plane(False))
     write("pose_plane_undo.json", plane(True))
