@@ -7,6 +7,7 @@
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/nodes/SoCamera.h>
 
+#include <QLabel>
 #include <QSocketNotifier>
 #include <QStatusBar>
 #include <QTimer>
@@ -38,7 +39,12 @@ SpaceMouse::SpaceMouse(MainWindow& window, QObject* parent) : QObject(parent), w
     });
     if (spnav_open() == -1 || spnav_fd() < 0) {
         message_ = tr("No 3D mouse: spacenavd is not running (or no device is attached); the mouse and keyboard work as before.");
-        window_.statusBar()->showMessage(message_, 15000);
+        // A label of its own beside the status bar's message, gone after kNoticeMs: the message line
+        // stays the mode's and the last stroke's (a start-up notice must not replace what they say).
+        auto* notice = new QLabel(message_, window_.statusBar());
+        notice->setObjectName(QStringLiteral("spaceMouseNotice"));
+        window_.statusBar()->addPermanentWidget(notice);
+        QTimer::singleShot(kNoticeMs, notice, [notice]() { notice->deleteLater(); });
         if (window_.automated()) std::cerr << "sculptline: " << message_.toStdString() << "\n";
         return;
     }

@@ -33,6 +33,8 @@ constexpr double kMaxSpeed = 200.0;
 constexpr double kMaxTurnRate = 1.5707963267948966;
 /// The cap at rest this long ends a plane move (one undo step).
 constexpr int kIdleMs = 300;
+/// How long the "No 3D mouse" notice stays in the status bar: long enough to be read at start-up.
+constexpr int kNoticeMs = 15000;
 
 SpaceMouseStep spaceMouseStep(const int axes[6], double seconds);
 
@@ -40,8 +42,8 @@ class SpaceMouse : public QObject {
     Q_OBJECT
 
 public:
-    /// Connects to spacenavd (spnav_open); without it, the status message (and in an automated run
-    /// a line on stderr), once.
+    /// Connects to spacenavd (spnav_open); without it, a notice in the status bar (a label of its
+    /// own, "spaceMouseNotice", for kNoticeMs) and in an automated run a line on stderr, once.
     SpaceMouse(MainWindow& window, QObject* parent);
     ~SpaceMouse() override;
     bool connected() const { return notifier_ != nullptr; }
