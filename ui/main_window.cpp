@@ -6,6 +6,7 @@
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
 #include "ui/autosave.h"
+#include "ui/pose_input.h"
 #include "ui/aesthetics_dock.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
@@ -94,6 +95,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         viewer_->setPopupMenuEnabled(FALSE);
         viewer_->setEventCallback(&MainWindow::viewerEvent, this);
         document_->setCamera([this]() { return viewer_->getCamera(); });
+        new PoseInput(*this);  // 6-DOF devices and the 3D mouse (ui/pose_input.h)
     }
     createActions();
     createDocks();

@@ -74,6 +74,7 @@ public:
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
+    bool automated() const { return automated_; }
 
     /// Tells a person in a dialog why the document they asked for is not the one open (the
     /// default scene is shown instead).

@@ -241,6 +241,24 @@ public:
     /// Removes the pins (position and tangent constraints) of the selected curve (undoable).
     void removeSelectionPins();
     void addStroke(const manipulators::FinishedStroke& stroke);
+
+    /// 6-DOF input (ui/sketch_document_space.cpp). A stroke drawn in space (world points, seconds
+    /// since the trigger went down): fitted into a space curve with no plane, its ends snapped onto
+    /// curves within kSpaceSnapDistance; in over-sketch mode it over-sketches the nearest curve.
+    void addSpaceStroke(const std::vector<Eigen::Vector3d>& world, const std::vector<double>& times);
+    /// A pointer stroke drawn while `plane` is carried: planar on it (the positions projected along
+    /// its normal), then the planar stroke path of addStroke.
+    void addStrokeOnPlane(model::EntityId plane, const std::vector<Eigen::Vector3d>& world, const std::vector<double>& times);
+    /// The non-dominant hand carries a plane: live moves between begin and end, one undo step.
+    void beginCarry(model::EntityId plane);
+    void carryTo(const Eigen::Vector3d& origin, const Eigen::Quaterniond& rotation);
+    void endCarry();
+    model::EntityId carriedPlane() const { return carried_; }
+    /// A space stroke's end this close to a curve (model units) starts or ends on it. A pen held in
+    /// the air has nothing to rest on: its endpoints scatter by a few millimetres around the point
+    /// meant (hand tremor, no haptic stop), ten times a tablet's; 5 mm catches that, and is 2.5 % of
+    /// the default 200 mm plane, so a stroke meant to end in the air rarely snaps by accident.
+    static constexpr double kSpaceSnapDistance = 5.0;
     /// The stroke feedback and the last stroke's report and recognition are dropped (an undo took
     /// the stroke back): nothing on screen speaks of a stroke that is no longer there.
     void forgetStroke();
@@ -316,6 +334,14 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    void oversketchInSpace(const std::vector<Eigen::Vector3d>& world);
+    struct SpaceSnap {
+        model::EntityId curve = 0;
+        Eigen::Vector3d point;
+        double distance = 0.0;
+    };
+    /// The curve point nearest to `world` within kSpaceSnapDistance, if any.
+    std::optional<SpaceSnap> snapToCurve(const Eigen::Vector3d& world) const;
     /// Re-sketch tool (ui/sketch_document_resketch.cpp): a marking or a line's new shape.
     void resketchStroke(const manipulators::FinishedStroke& stroke);
     std::optional<model::PlaneFrame> resketchPlane(const manipulators::StrokeHit& start);
@@ -416,6 +442,8 @@ private:
     /// stack), the grabbed point and the drag plane.
     model::EntityId extrudeProfile_ = 0, extrusion_ = 0;
     model::PlaneFrame extrudeFrame_;
+    model::EntityId carried_ = 0;  ///< the plane a pose carries (0: none)
+    model::PlaneFrame carriedFrom_;
 };
 
 }  // namespace sculptline::ui

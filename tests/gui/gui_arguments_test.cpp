@@ -77,11 +77,12 @@ TEST(GuiArguments, BadSessionsAreRefusedBeforeAnyWindow)
     expectError("--replay /nonexistent/session.json", "/nonexistent/session.json: cannot open file");
     const std::string dir = testing::TempDir();
     const std::pair<const char*, const char*> cases[] = {
-        {R"({"events": [{"type": "jump"}]})", "events[0].type: must be press, move, release, key, action or wait"},
+        {R"({"events": [{"type": "jump"}]})", "events[0].type: must be press, move, release, key, action, wait or pose"},
         {R"({"events": [{"type": "press", "x": 10}]})", "events[0]"},
         {R"({"events": [{"type": "press", "x": 1, "y": 2, "button": "thumb"}]})", "events[0].button"},
         {R"({"events": [{"type": "key", "key": "Ctrl+Nonsense"}]})", "events[0].key"},
         {R"({"events": [{"type": "wait", "ms": -5}]})", "events[0].ms"},
+        {R"({"events": [{"type": "pose", "device": "pointer", "position": [0, 0, 0], "orientation": [0, 0, 0, 3]}]})", "events[0].orientation"},
         {R"({"size": [1, 2], "events": []})", "size[0]"},
         {R"({"events": )", "malformed JSON"},
         {R"([1, 2])", "session: must be a JSON object"},
