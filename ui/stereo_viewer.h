@@ -1,9 +1,14 @@
 #pragma once
-// The examiner viewer with stereo: SoQt 1.6's own stereo rendering (SoQtViewer::setStereoType:
-// anaglyph through colour masks, quad-buffer through GL_BACK_LEFT/RIGHT, interleaved rows through a
-// stencil mask; Coin's SoCamera skews the frustum of each eye toward the focal point, Bourke's
-// "off-axis" method), with the eye separation set before every frame from the model's size and the
-// camera's distance to it (scene/eye_separation.h).
+// The examiner viewer with stereo: SoQt 1.6's own stereo rendering for anaglyph (colour masks) and
+// quad-buffer (GL_BACK_LEFT/RIGHT) through SoQtViewer::setStereoType; Coin's SoCamera skews each
+// eye's frustum so that the focal plane has no parallax (Bourke's "off-axis" method). The eye
+// separation is set before every frame from the model's size and the camera's distance to it
+// (scene/eye_separation.h).
+//
+// Interleaved rows are drawn here, not by SoQt: SoQt writes its row mask into the stencil buffer with
+// glDrawPixels(GL_STENCIL_INDEX, GL_BITMAP), which Mesa rejects ("Unsupported format/type"), leaving
+// no mask (seen under Xvfb with llvmpipe). The same mask is drawn as one-pixel rectangles instead,
+// and the two eyes are rendered through it.
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 
 #include <QString>
@@ -35,7 +40,15 @@ protected:
     void actualRedraw() override;
 
 private:
+    /// Sets the eye separation for the coming frame (the 1/30 rule on the scene's bounding box).
+    void updateEyeSeparation(SoCamera& camera);
+    /// Near and far planes around the scene, as SoQt's auto-clipping sets them.
+    void fitClippingPlanes(SoCamera& camera);
+    /// Left eye on the odd rows counted from the bottom (as SoQt's own mask), right eye on the even ones.
+    void renderInterleavedRows(SoCamera& camera);
+
     float lastSeparation_ = 0.0f;
+    bool interleavedRows_ = false;
 };
 
 }  // namespace sculptline::ui

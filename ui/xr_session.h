@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include <QObject>
+#include <QPointer>
+#include <QWidget>
 #include <QString>
 
 #include <memory>
@@ -88,6 +90,7 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
     SoQtViewer* viewer_;
+    QPointer<QWidget> viewerAlive_;  ///< the viewer's base widget: null once the viewer is deleted
 };
 
 }  // namespace sculptline::ui

@@ -6,6 +6,7 @@ namespace sculptline::ui {
 struct VrSession::Impl {};
 
 VrSession::VrSession(SoQtViewer* viewer, QObject* parent) : QObject(parent), viewer_(viewer) {}
+// viewerAlive_ stays null: nothing here touches the viewer.
 VrSession::~VrSession() = default;
 bool VrSession::compiledWithOpenXr() { return false; }
 bool VrSession::running() const { return false; }

@@ -112,7 +112,8 @@ struct VrSession::Impl {
     void renderEye(SoQtViewer* viewer, const XrView& view, Eye& eye, QOpenGLFunctions& gl);
 };
 
-VrSession::VrSession(SoQtViewer* viewer, QObject* parent) : QObject(parent), impl_(std::make_unique<Impl>()), viewer_(viewer)
+VrSession::VrSession(SoQtViewer* viewer, QObject* parent)
+    : QObject(parent), impl_(std::make_unique<Impl>()), viewer_(viewer), viewerAlive_(viewer->getBaseWidget())
 {
     // Paced by xrWaitFrame, which blocks until the runtime wants the next frame.
     impl_->timer.setInterval(0);
@@ -134,7 +135,13 @@ bool VrSession::running() const { return impl_->session != XR_NULL_HANDLE; }
 void VrSession::stop()
 {
     impl_->timer.stop();
-    if (auto* gl = dynamic_cast<QGLWidget*>(viewer_->getGLWidget())) gl->makeCurrent();
+    const bool held = impl_->instance != XR_NULL_HANDLE || impl_->session != XR_NULL_HANDLE || impl_->root;
+    if (!held) return;
+    // The main window deletes its viewer before its child objects (this one among them): then the GL
+    // context is gone with it, and only the OpenXR handles are left to free.
+    if (viewerAlive_) {
+        if (auto* gl = dynamic_cast<QGLWidget*>(viewer_->getGLWidget())) gl->makeCurrent();
+    }
     impl_->destroy();
 }
 
@@ -353,6 +360,7 @@ QString VrSession::Impl::createActions()
 
 void VrSession::Impl::destroy()
 {
+    // Null when the viewer (and its context) is gone: the GL names went with it.
     QOpenGLFunctions* gl = QOpenGLContext::currentContext() ? QOpenGLContext::currentContext()->functions() : nullptr;
     for (Eye& eye : eyes) {
         if (eye.swapchain != XR_NULL_HANDLE) xrDestroySwapchain(eye.swapchain);

@@ -51,8 +51,8 @@ TEST_F(EyeSeparation, ScalesWithTheModel)
 
 TEST_F(EyeSeparation, UsesTheViewingDirection)
 {
-    // Given a camera looking along +x (turned -90° about z) at a cube 20 units along +x
-    camera_->orientation.setValue(SbRotation(SbVec3f(0, 0, 1), static_cast<float>(-M_PI / 2)));
+    // Given a camera looking along +x (its -z turned -90° about y) at a cube 20 units along +x
+    camera_->orientation.setValue(SbRotation(SbVec3f(0, 1, 0), static_cast<float>(-M_PI / 2)));
     const SbBox3f box(19, -1, -1, 21, 1, 1);
     // Then the depth is measured along that direction
     EXPECT_NEAR(sculptline::scene::eyeSeparation(box, *camera_), (20.0f - std::sqrt(3.0f)) / 30.0f, kTolerance);

@@ -226,19 +226,21 @@ TEST_F(StereoWindow, InterleavedRowsCarryTheTwoEyesOnAlternateRows)
     // Given the sphere scene, when View > Stereo > Interleaved rows is chosen
     select(ui::StereoMode::InterleavedRows);
     if (!window_->action(QStringLiteral("view.stereo.interleavedRows"))->isChecked()) {
-        // Xvfb's Mesa (llvmpipe) offers stencil buffers; a display without one must say so.
+        // Xvfb's Mesa (llvmpipe) offers 8 stencil bits; a display without any must say so.
         EXPECT_FALSE(window_->statusBar()->currentMessage().isEmpty());
         GTEST_SKIP() << "no stencil buffer on this display: " << window_->statusBar()->currentMessage().toStdString();
     }
     const QImage image = shot("stereo_interleaved_rows");
-    // Then the rows SoQt's stencil mask gives the left eye (odd rows counted from the bottom, that is
-    // even rows from the top of an even-height viewport) and the others hold images apart by the parallax
+    // Then the rows the stencil mask gives the left eye (odd rows counted from the bottom, as in SoQt's
+    // own mask: even rows from the top of an even-height viewport) and the others hold images apart
+    // by the parallax
     ASSERT_EQ(image.height() % 2, 0);
     const auto left = centroidX(image, red, [](int y) { return y % 2 == 0; });
     const auto right = centroidX(image, red, [](int y) { return y % 2 == 1; });
     ASSERT_TRUE(left && right) << "no sphere on one set of rows";
     const double predicted = predictedParallax(expectedSeparation(), kFocalDistance, kSphereDepth, kViewportWidth, kViewportHeight, kHeightAngle);
     EXPECT_NEAR(*right - *left, predicted, kParallaxTolerancePx) << "even rows at " << *left << ", odd rows at " << *right;
+    std::cout << "interleaved rows: parallax " << *right - *left << " px, predicted " << predicted << " px\n";
 }
 
 TEST_F(StereoWindow, QuadBufferWithoutStereoBuffersSaysSoAndStaysMono)
