@@ -31,7 +31,8 @@ public:
     /// Switches to `mode` as its menu entry does; returns the status message when the viewer stays
     /// mono (empty when `mode` is on).
     QString select(StereoMode mode);
-    /// View > VR session…: starts an OpenXR session, or says in the status bar why there is none.
+    /// View > VR session…: starts an OpenXR session (ui/xr_session.h); returns the status-bar line
+    /// that says what runs, or plainly why nothing does.
     QString startVr();
 
 private:
