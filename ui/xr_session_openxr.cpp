@@ -48,7 +48,8 @@ const Eigen::Vector3d kLocalStand(0.0, -0.3, -0.5);
 /// Near and far clipping planes of the eye cameras (metres).
 constexpr double kNearMetres = 0.05;
 constexpr double kFarMetres = 100.0;
-/// Swapchain formats, preferred first: sRGB (the runtime then does the gamma), then plain RGBA8.
+/// Swapchain formats: sRGB where offered (Coin's colours are already gamma-encoded, as the
+/// compositor then reads them), else plain RGBA8, else the runtime's first.
 constexpr int64_t kGlSrgb8Alpha8 = 0x8C43;
 constexpr int64_t kGlRgba8 = 0x8058;
 
@@ -259,7 +260,7 @@ QString VrSession::Impl::create(SoQtViewer* viewer)
     xrEnumerateSwapchainFormats(session, formatCount, &formatCount, formats.data());
     if (formats.empty()) return QStringLiteral("the runtime offers no swapchain format");
     int64_t format = formats.front();
-    for (int64_t wanted : {kGlRgba8, kGlSrgb8Alpha8})
+    for (int64_t wanted : {kGlRgba8, kGlSrgb8Alpha8})  // the later match wins: sRGB over RGBA8
         for (int64_t f : formats)
             if (f == wanted) format = f;
     QOpenGLFunctions* gl = QOpenGLContext::currentContext() ? QOpenGLContext::currentContext()->functions() : nullptr;
@@ -512,6 +513,10 @@ void VrSession::Impl::renderEye(SoQtViewer* viewer, const XrView& view, Eye& eye
     camera->right = float(nearDistance * std::tan(view.fov.angleRight));
     camera->top = float(nearDistance * std::tan(view.fov.angleUp));
     camera->bottom = float(nearDistance * std::tan(view.fov.angleDown));
+    // The desktop's document may have been replaced (File > Open): the headset follows it.
+    SoNode* scene = viewer->getSceneGraph();
+    if (root->getNumChildren() > 1 && root->getChild(1) != scene) root->removeChild(1);
+    if (scene && root->getNumChildren() == 1) root->addChild(scene);
     SoGLRenderAction* desktop = viewer->getSceneManager()->getGLRenderAction();
     SoGLRenderAction action(SbViewportRegion(short(eye.width), short(eye.height)));
     action.setCacheContext(desktop->getCacheContext());
