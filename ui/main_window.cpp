@@ -13,6 +13,7 @@
 #include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
+#include "ui/stereo_menu.h"
 #include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
@@ -84,7 +85,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
     history_ = new UndoHistory(*document_, this);
     navigation_ = std::make_unique<ViewNavigation>();
     if (withViewer) {
-        viewer_ = new SoQtExaminerViewer(central);
+        viewer_ = new StereoExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
         // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
         viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
@@ -315,6 +316,8 @@ void MainWindow::createActions()
     // Zebra and curvature colouring of the selected surface (all surfaces when none is selected).
     new SurfaceDisplayMenu(this, viewMenu, *document_,
                            viewer_ ? std::function<SoCamera*()>([this]() { return viewer_->getCamera(); }) : std::function<SoCamera*()>());
+    // View > Stereo and View > VR session… (ui/stereo_menu.h).
+    new StereoMenu(this, viewMenu, static_cast<StereoExaminerViewer*>(viewer_));
 }
 
 void MainWindow::hideSelectedPlane()

@@ -55,6 +55,12 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--user-model", options.userModel,
                    "Recognition habits file (JSON) to read and update; default $SCULPTLINE_USER_MODEL, else "
                    "recognition_habits.json in the user's config folder (scripted runs: none, habits in memory only)");
+    cli.add_option("--stereo", options.stereo,
+                   "Stereo view: anaglyph (red/cyan glasses), quad-buffer (stereo OpenGL), interleaved-rows (passive 3D "
+                   "display) or off; where the display cannot, a message and the view stays mono")
+        ->check(CLI::IsMember({"anaglyph", "quad-buffer", "interleaved-rows", "off"}));
+    cli.add_flag("--vr", options.vr,
+                 "Start a VR session through OpenXR (View > VR session…); without an OpenXR runtime, a message and the desktop goes on");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
     cli.add_flag("--nurbs-nodes", options.nurbsNodes,
                  "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "

@@ -11,6 +11,7 @@
 #include "ui/replay_session.h"
 #include "ui/replayer.h"
 #include "ui/sketch_document.h"
+#include "ui/stereo_menu.h"
 
 #include <Inventor/Qt/SoQt.h>
 
@@ -102,6 +103,20 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
     return status;
 }
 
+/// --stereo and --vr act as their View menu entries do; what the display cannot give is said on
+/// stderr (the status bar says it too) and the run goes on, mono and on the desktop.
+void applyImmersiveFlags(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions& options)
+{
+    using sculptline::ui::StereoMenu;
+    auto* menu = window.findChild<StereoMenu*>();
+    if (!menu) return;
+    if (const auto mode = sculptline::ui::stereoModeFromName(options.stereo)) {
+        const QString message = menu->select(*mode);
+        if (!message.isEmpty()) std::cerr << "sculptline: --stereo " << options.stereo << ": " << message.toStdString() << "\n";
+    }
+    if (options.vr) std::cerr << "sculptline: --vr: " << menu->startVr().toStdString() << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -175,6 +190,8 @@ int main(int argc, char** argv)
         }
     }
     window.show();
+    // After show(): the quad-buffer and interleaved modes recreate the GL widget with another format.
+    applyImmersiveFlags(window, options);
     // Before the replay, so that a script may continue recovered work.
     if (options.recover) {
         window.offerRecovery(recovery, false);

@@ -153,3 +153,17 @@ TEST(GuiArguments, NoDisplayIsAMessageNotAnAbort)
 }
 
 }  // namespace
+
+TEST(GuiArguments, StereoAndVrFlags)
+{
+    // Given the help, the stereo and VR flags are there
+    const ProgramRun help = runSculptline("--help");
+    for (const char* flag : {"--stereo", "--vr", "anaglyph", "quad-buffer", "interleaved-rows"})
+        EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+    // And an unknown stereo mode is refused before anything starts, naming the flag
+    expectError("--stereo sideways --quit", "--stereo");
+    // And every stereo mode and the VR session have an action
+    const ProgramRun actions = runSculptline("--list-actions");
+    for (const char* name : {"view.stereo.off\t", "view.stereo.anaglyph\t", "view.stereo.quadBuffer\t", "view.stereo.interleavedRows\t", "view.vr\t"})
+        EXPECT_NE(actions.output.find(name), std::string::npos) << name << "\n" << actions.output;
+}
