@@ -1,6 +1,12 @@
 #include "ui/stereo_menu.h"
 
+#include "ui/pose_event.h"
+#include "ui/pose_input.h"
 #include "ui/xr_session.h"
+
+#include "solvers/io/geometry_json.h"
+
+#include <nlohmann/json.hpp>
 
 #include <QAction>
 #include <QActionGroup>
@@ -88,6 +94,17 @@ QString StereoMenu::startVr()
     if (!xr_) {
         xr_ = new VrSession(viewer_, this);
         connect(xr_, &VrSession::message, this, [this](const QString& m) { window_->statusBar()->showMessage(m, kMessageMs); });
+        // The controllers feed the same 6-DOF input layer as recorded pose events (ui/pose_input.h),
+        // through the replay format's pose event, the one documented form of a pose.
+        connect(xr_, &VrSession::poseEvent, this, [this](const XrPoseEvent& e) {
+            PoseInput* poses = window_->findChild<PoseInput*>();
+            if (!poses) return;
+            try {
+                poses->handle(poseEventFromJson(toReplayEvent(e), "vr"), e.t / 1000.0);
+            } catch (const solvers::io::InputError& error) {
+                window_->statusBar()->showMessage(tr("VR pose ignored: %1").arg(QString::fromStdString(error.what())), kMessageMs);
+            }
+        });
     }
     const QString message = xr_->start();
     window_->statusBar()->showMessage(message, kMessageMs);

@@ -7,6 +7,9 @@
 #include "ui/main_window.h"
 #include "ui/stereo_menu.h"
 #include "ui/stereo_viewer.h"
+#include "ui/sketch_document.h"
+#include "ui/xr_session.h"
+#include "model/model.h"
 #include "window_shot.h"
 
 #include <Inventor/nodes/SoBaseColor.h>
@@ -17,6 +20,7 @@
 #include <Inventor/nodes/SoTranslation.h>
 
 #include <QAction>
+#include <QCoreApplication>
 #include <QStatusBar>
 
 #include <gtest/gtest.h>
@@ -280,6 +284,36 @@ TEST_F(StereoWindow, VrWithoutRuntimeSaysSoAndTheDesktopGoesOn)
     // And the desktop view still draws the scene
     const QImage image = shot("stereo_vr_refused");
     EXPECT_TRUE(centroidX(image, red, anyRow).has_value());
+}
+
+TEST_F(StereoWindow, VrControllerPosesDrawThroughTheSixDofInputLayer)
+{
+    // Given a VR session object (its start fails here: no runtime), whose controller signal is the
+    // only way a headset's poses reach the model
+    setenv("XR_RUNTIME_JSON", "/nonexistent/sculptline-test-runtime.json", 1);
+    window_->action(QStringLiteral("view.vr"))->trigger();
+    auto* vr = window_->findChild<ui::VrSession*>();
+    ASSERT_NE(vr, nullptr);
+    const auto curves = [&] {
+        int n = 0;
+        for (const auto& [id, e] : window_->document().model().entities()) n += e.kind == model::EntityKind::Curve;
+        return n;
+    };
+    const int before = curves();
+    // When the right controller sweeps a quarter helix (60 mm radius, 40 mm rise) with its trigger held, then lets go
+    constexpr int kSamples = 120;
+    for (int i = 0; i <= kSamples + 1; ++i) {
+        const double a = 0.5 * M_PI * std::min(i, kSamples) / kSamples;
+        ui::XrPoseEvent e;
+        e.device = "pointer";
+        e.position = Eigen::Vector3d(60.0 * std::cos(a), 60.0 * std::sin(a), 40.0 * a / (0.5 * M_PI));
+        if (i <= kSamples) e.buttons = {"trigger"};
+        e.t = 11.0 * i;  // a 90 Hz headset's frames
+        Q_EMIT vr->poseEvent(e);
+        QCoreApplication::processEvents();
+    }
+    // Then the 6-DOF input layer made one space curve of it, as it does for a recorded pointer stroke
+    EXPECT_EQ(curves(), before + 1);
 }
 
 }  // namespace
