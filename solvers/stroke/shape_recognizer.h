@@ -96,7 +96,7 @@ struct RecognizeOptions {
     /// Chosen by leave-one-subject-out on the development subjects and their perturbed copies
     /// (unistroke-report --augment --loso crossingTail 0,0.05,0.1,0.15,0.2: 0.05 on all five folds,
     /// pooled 96.7 % against 96.5 % without the rule); on the strokes as drawn alone it changes two
-    /// of 2,400 (a delete mark gained, a circle drawn 1.3 times round lost).
+    /// of 2,400 (a delete mark gained, a circle whose ends cross lost).
     double crossingTail = 0.05;
     /// recognizeStroke: an open stroke that turns around its centre by at least this angle (and by
     /// less than `maxLoopTurn`: not a spiral or a pigtail) is a loop whose ends the hand did not quite
