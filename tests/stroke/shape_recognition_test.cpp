@@ -266,8 +266,8 @@ TEST(ShapeRecognition, GivenAStrokeCrossingItselfWithBothEndsOut_WhenRecognized_
 
 TEST(ShapeRecognition, GivenASquareOvershotAlongItsFirstSide_WhenRecognized_ThenStillAClosedSquare)
 {
-    // Started a little before the first corner and drawn on past it along the same side: both ends
-    // stick out of the loop, but the stroke arrives the way it left, so it is a closed square.
+    // Started a little before the first corner (the start sticks out) and drawn on past it along the
+    // first side (the end runs on the loop): a closed square.
     const solvers::stroke::Stroke square = penAlong({{-10, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}, {0, 0, 0}, {0, 0, 0}, {15, 0, 0}}, kPenStep);
 
     const auto r = solvers::stroke::recognizeStroke(square);
