@@ -12,8 +12,10 @@
 //   unistroke-report --perturb-dev             the development strokes rotated, stretched, left open,
 //                                              overshot and sped up (Perturbation): accuracy per gesture
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
-// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
-// The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
+// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
+// crossingTail).
+// The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
+// held-out ones are not for tuning.
 #include "unistroke_eval.h"
 
 #include "solvers/stroke/stroke_fitter.h"
@@ -403,7 +405,7 @@ int main(int argc, char** argv)
             return 0;
         }
         else {
-            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev\n";
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] --loso OPTION V1,V2,..\n";
             return 2;
         }
     }
