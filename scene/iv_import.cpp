@@ -156,9 +156,23 @@ private:
             const auto* shape = static_cast<const SoIndexedShape*>(node);
             const int n = shape->coordIndex.getNum();
             const int32_t* index = shape->coordIndex.getValues(0);
-            for (int i = 0; i < n; ++i) {
+            // Coin 4.0.0 crashes on a FaceSet face of fewer than 3 vertices, and its IndexedLineSet
+            // makes a segment of a 1-vertex line: every face and line must have enough vertices.
+            const int least = node->isOfType(SoIndexedFaceSet::getClassTypeId()) ? 3 : 2;
+            int run = 0, runs = 0;
+            for (int i = 0; i <= n; ++i) {
+                if (i == n || index[i] == -1) {
+                    if (i == n && run == 0) break;  // ended by its -1, or empty
+                    ++runs;
+                    if (run < least)
+                        return (least == 3 ? "face " : "line ") + std::to_string(runs) + " of " + type + " has " + std::to_string(run) +
+                               " vertices (" + std::to_string(least) + " or more needed)";
+                    run = 0;
+                    continue;
+                }
                 if (index[i] < -1) return "coordIndex " + std::to_string(index[i]) + " of " + type + " is negative";
                 if (index[i] >= coords) return past("coordIndex", index[i]);
+                ++run;
             }
         } else if (node->isOfType(SoPointSet::getClassTypeId())) {
             const auto* set = static_cast<const SoPointSet*>(node);
@@ -170,12 +184,16 @@ private:
             const auto* shape = static_cast<const SoNonIndexedShape*>(node);
             const SoMFInt32& counts = node->isOfType(SoFaceSet::getClassTypeId()) ? static_cast<const SoFaceSet*>(node)->numVertices
                                                                                     : static_cast<const SoLineSet*>(node)->numVertices;
+            const long long least = node->isOfType(SoFaceSet::getClassTypeId()) ? 3 : 2;  // a FaceSet face of 1 or 2 crashes Coin 4.0.0
             long long used = shape->startIndex.getValue();
             if (used < 0) return "startIndex of " + type + " is negative";
             for (int i = 0; i < counts.getNum(); ++i) {
                 const long long v = counts[i];
-                if (v == -1 && i == counts.getNum() - 1) break;  // SO_FACE_SET_USE_REST_OF_VERTICES
-                if (v < 1) return "numVertices " + std::to_string(v) + " of " + type + " must be positive (or -1 last)";
+                if (v == -1 && i == counts.getNum() - 1) {  // SO_FACE_SET_USE_REST_OF_VERTICES
+                    if (coords - used < least) return "the last numVertices (-1) of " + type + " leaves " + std::to_string(coords - used) + " vertices";
+                    break;
+                }
+                if (v < least) return "numVertices " + std::to_string(v) + " of " + type + " must be " + std::to_string(least) + " or more (or -1 last)";
                 used += v;
                 if (used > coords) return past("numVertices up to", used);
             }

@@ -98,11 +98,24 @@ TEST(IvImport, GivenACoordinateIndexPastTheCoordinates_ThenRefusedBeforeCoinDraw
                    "coordIndex 3 of IndexedLineSet is past its 1 coordinates");
 }
 
+TEST(IvImport, GivenFacesAndLinesWithTooFewVertices_ThenRefused)
+{
+    const std::string coords = "Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] } ";
+    expectRefused(kHeader + "Separator { " + coords + "IndexedFaceSet { coordIndex [ 0, 1, 2, -1, 0, 1, -1 ] } }",
+                  "face 2 of IndexedFaceSet has 2 vertices (3 or more needed)");
+    expectRefused(kHeader + "Separator { " + coords + "IndexedFaceSet { coordIndex [ -1, 0, 1, 2 ] } }", "face 1 of IndexedFaceSet has 0 vertices");
+    expectRefused(kHeader + "Separator { " + coords + "IndexedLineSet { coordIndex [ 0, -1 ] } }", "line 1 of IndexedLineSet has 1 vertices (2 or more needed)");
+    EXPECT_EQ(refusal(kHeader + "Separator { " + coords + "IndexedFaceSet { coordIndex [ 0, 1, 2 ] } }"), "");  // no final -1
+}
+
 TEST(IvImport, GivenNonIndexedCountsPastTheCoordinates_ThenRefused)
 {
     const std::string coords = "Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] } ";
     expectRefused(kHeader + "Separator { " + coords + "FaceSet { numVertices [ 3, 3 ] } }", "numVertices up to 6 of FaceSet is past its 3 coordinates");
-    expectRefused(kHeader + "Separator { " + coords + "LineSet { numVertices [ 0 ] } }", "numVertices 0 of LineSet must be positive");
+    expectRefused(kHeader + "Separator { " + coords + "LineSet { numVertices [ 1 ] } }", "numVertices 1 of LineSet must be 2 or more");
+    // Found by fuzz-iv-import: Coin 4.0.0 dereferences null in SoFaceSet::generatePrimitives.
+    expectRefused(kHeader + "Separator { " + coords + "FaceSet { numVertices 1 } }", "numVertices 1 of FaceSet must be 3 or more");
+    expectRefused(kHeader + "Separator { " + coords + "FaceSet { startIndex 1 numVertices -1 } }", "the last numVertices (-1) of FaceSet leaves 2 vertices");
     expectRefused(kHeader + "Separator { " + coords + "PointSet { startIndex 2 numPoints 2 } }",
                    "startIndex + numPoints 4 of PointSet is past its 3 coordinates");
     expectRefused(kHeader + "Separator { " + coords + "FaceSet { startIndex -1 } }", "startIndex of FaceSet is negative");
@@ -124,7 +137,7 @@ TEST(IvImport, GivenTransformsThatOverflow_ThenRefusedAsNotFinite)
 TEST(IvImport, GivenNothingToDraw_ThenRefused)
 {
     expectRefused(kHeader + "Separator { Material { diffuseColor 1 0 0 } }", "nothing to draw");
-    expectRefused(kHeader + "Separator { Coordinate3 { point [ 0 0 0 ] } IndexedFaceSet { } }", "nothing to draw");
+    expectRefused(kHeader + "Separator { Coordinate3 { point [ 0 0 0 ] } PointSet { numPoints 0 } }", "nothing to draw");
 }
 
 TEST(IvImport, GivenMorePrimitivesThanTheBudget_ThenRefused)
