@@ -28,8 +28,9 @@ struct IvLimits {
     /// Points of all Coordinate3 nodes: 2e6 points are 24 MB in Coin's floats.
     std::size_t maxCoordinates = 2000000;
     /// Values traversed once every USE is expanded (each USE draws its node again): stops a file
-    /// of a few kilobytes whose nested USEs multiply into billions of triangles.
-    double maxInstancedValues = 64e6;
+    /// of a few kilobytes whose nested USEs multiply into billions of triangles. A mesh of
+    /// maxPrimitives triangles holds about 22 million values (2e6 points, 4 indices a triangle).
+    double maxInstancedValues = 24e6;
     /// Triangles, line segments and points drawn (counted by Coin after the text check).
     std::size_t maxPrimitives = 4000000;
     /// Largest coordinate after the transforms, model units: the document's own limit (Coin draws in

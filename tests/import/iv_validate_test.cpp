@@ -165,6 +165,7 @@ TEST(IvValidate, GivenIntegersOutOfRange_ThenRefused)
 TEST(IvValidate, GivenUnknownEnumValue_ThenRefused)
 {
     expectRefused(kHeader + "DrawStyle { style WIREFRAME }", "style: unknown value WIREFRAME");
+    expectRefused(kHeader + "Complexity { type SCREEN_SPACE value 1 }", "type: unknown value SCREEN_SPACE");
 }
 
 TEST(IvValidate, GivenBinaryBytes_ThenRefused)
