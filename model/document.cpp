@@ -56,6 +56,28 @@ const json& optionalArray(const json& j, const std::string& key)
     return *it;
 }
 
+/// "references": [{"path": absolute, "relative"?: from the document's folder}] (reference .iv files;
+/// their contents are read and validated by the program that shows them, not here).
+std::vector<ReferenceSpec> referencesFromJson(const json& refs)
+{
+    std::vector<ReferenceSpec> out;
+    auto text = [](const json& j, const std::string& path) {
+        if (!j.is_string() || j.get_ref<const std::string&>().empty()) throw io::InputError(path + ": must be a non-empty string");
+        const std::string& s = j.get_ref<const std::string&>();
+        if (s.find('\0') != std::string::npos) throw io::InputError(path + ": must not contain a NUL character");
+        return s;
+    };
+    for (size_t i = 0; i < refs.size(); ++i) {
+        const std::string path = "references[" + std::to_string(i) + "]";
+        if (!refs[i].is_object()) throw io::InputError(path + ": must be a JSON object");
+        ReferenceSpec r;
+        r.path = text(io::member(refs[i], "path", path), path + ".path");
+        if (const auto it = refs[i].find("relative"); it != refs[i].end()) r.relative = text(*it, path + ".relative");
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
 PlaneSpec planeFromJson(const json& j, const std::string& path)
 {
     if (!j.is_object()) throw io::InputError(path + ": must be a JSON object");
@@ -510,6 +532,7 @@ SceneDocument documentFromJson(const json& j)
     }
     for (size_t i = 0; i < meshes.size(); ++i) doc.meshes[i].fixed = readState(meshes[i], "meshes[" + std::to_string(i) + "]");
     for (size_t i = 0; i < points.size(); ++i) doc.points[i].fixed = readState(points[i], "points[" + std::to_string(i) + "]");
+    doc.references = referencesFromJson(optionalArray(j, "references"));
     return doc;
 }
 

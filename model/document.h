@@ -34,6 +34,13 @@ struct GridSpec {
     double spacing = 10.0;  ///< distance between lines, model units, in (0, size]
 };
 
+/// A reference .iv file drawn to sketch over (not part of the model): saved as its path, absolute
+/// and relative to the document's folder ("relative", tried first: a folder moved with its files).
+struct ReferenceSpec {
+    std::string path;
+    std::string relative;  ///< empty when not saved with one
+};
+
 struct SceneDocument {
     GridSpec grid;
     std::vector<PlaneSpec> planes;
@@ -90,6 +97,8 @@ struct SceneDocument {
         bool fixed = false;
     };
     std::vector<PointSpec> points;
+    /// "references": [{"path", "relative"?}] (the GUI reads and validates the files).
+    std::vector<ReferenceSpec> references;
 };
 
 /// The document format this program writes: "format": "sculptline", "version": kDocumentVersion.

@@ -314,6 +314,7 @@ void MainWindow::createActions()
     make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
     viewMenu->addSeparator();
     // Zebra and curvature colouring of the selected surface (all surfaces when none is selected).
+    createReferenceActions(file, edit, viewMenu);
     new SurfaceDisplayMenu(this, viewMenu, *document_,
                            viewer_ ? std::function<SoCamera*()>([this]() { return viewer_->getCamera(); }) : std::function<SoCamera*()>());
     // View > Stereo and View > VR session… (ui/stereo_menu.h).
@@ -648,7 +649,7 @@ model::EntityId MainWindow::curveNear(const QPoint& position) const
 
 bool MainWindow::refuseDialog(const char* action) const
 {
-    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj\n";
+    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj/--import-reference\n";
     return automated_;
 }
 

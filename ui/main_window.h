@@ -128,6 +128,9 @@ private:
     bool saveDocument();
     bool saveDocumentAs();
     void exportDocument();
+    /// File > Import Reference, Edit > Remove References, View > References (main_window_references.cpp).
+    void createReferenceActions(QMenu* file, QMenu* edit, QMenu* view);
+    void importReference();
     /// File > Export STEP/IGES/STL/OBJ: a file dialog, then SketchDocument::exportGeometry.
     void exportGeometry(solvers::exchange::Format format);
     void addPlaneFacingViewer();

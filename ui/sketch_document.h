@@ -18,6 +18,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoStack>
 
 #include <map>
@@ -26,6 +27,7 @@
 #include <optional>
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 class SoCamera;
@@ -46,6 +48,9 @@ struct StrokeHit;
 }  // namespace sculptline::manipulators
 
 namespace sculptline::ui {
+
+class ReferenceSet;
+struct Reference;
 
 /// What the last finished stroke became (status bar, inspector).
 struct StrokeReport {
@@ -78,6 +83,20 @@ public:
     /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
+    /// The document as saved: modelToJson plus "references" (relative to `folder` when given).
+    nlohmann::json documentJson(const QString& folder) const;
+
+    /// Reference geometry (ui/reference_set.h, ui/sketch_document_references.cpp): File > Import
+    /// Reference reads and validates `path` and adds it as one undo step; returns what it draws.
+    /// @throws solvers::io::InputError "path: problem" (nothing is added).
+    QString importReference(const QString& path);
+    /// Adds an already validated reference (--import-reference checks the file before Qt starts).
+    void addReference(const Reference& reference);
+    /// Removes every reference, one undo step; false when there was none.
+    bool removeReferences();
+    ReferenceSet& references() { return *references_; }
+    /// The references the last load()/restoreModel() could not read, one line each.
+    const QStringList& referenceProblems() const { return referenceProblems_; }
     /// Writes the world geometry (curves, surfaces; network meshes to STL/OBJ only) in `format`
     /// (solvers/exchange/exchange.h). Returns the bytes written.
     /// @throws solvers::exchange::ExchangeError naming what cannot be written (nothing to export,
@@ -393,6 +412,8 @@ private:
     /// Puts the aesthetic handle where its operator acts on the selection now (after edits, undo).
     void placeAestheticHandle();
     void aestheticDragFinished(model::EntityId curve, const solvers::Curve3d& before, double amount, const std::string& message);
+    std::unique_ptr<ReferenceSet> references_;
+    QStringList referenceProblems_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     QUndoStack undo_;

@@ -42,6 +42,8 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--replay", options.replay, "Play a recorded session (JSON) through the viewer");
     cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
+    cli.add_option("--import-reference", options.importReference,
+                   "Import an Open Inventor (.iv) file as reference geometry (one undo step) before the replay");
     cli.add_option("--export-step", options.exportStep, "Export the curves and surfaces as STEP AP214 (exact B-splines) after the replay");
     cli.add_option("--export-iges", options.exportIges, "Export the curves and surfaces as IGES (exact B-splines) after the replay");
     cli.add_option("--export-stl", options.exportStl, "Export the surfaces (tessellated) and meshes as binary STL after the replay");

@@ -15,6 +15,7 @@ struct GuiOptions {
     std::string replay;  ///< session JSON to play through the viewer's Qt event path
     std::string save;  ///< document JSON written after the replay
     std::string exportIv;  ///< Open Inventor file written after the replay
+    std::string importReference;  ///< .iv file imported as reference geometry, before the replay
     std::string exportStep;  ///< STEP AP214 of the world curves and surfaces, after the replay
     std::string exportIges;  ///< IGES of the same
     std::string exportStl;  ///< binary STL of the surfaces (tessellated) and network meshes

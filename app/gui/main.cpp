@@ -8,6 +8,7 @@
 #include "model/document.h"
 #include "ui/main_window.h"
 #include "ui/recovery_file.h"
+#include "ui/reference_set.h"
 #include "ui/replay_session.h"
 #include "ui/replayer.h"
 #include "ui/sketch_document.h"
@@ -133,6 +134,13 @@ int main(int argc, char** argv)
     const app::StartDocument start = app::openStartDocument(options, haveDisplay() && !options.scripted() && !options.listActions);
     if (start.exitStatus != 0) return start.exitStatus;
     std::optional<ui::ReplaySession> session;
+    std::optional<ui::Reference> reference;
+    try {
+        if (!options.importReference.empty()) reference = ui::ReferenceSet::load(QString::fromStdString(options.importReference));
+    } catch (const std::exception& e) {
+        std::cerr << "sculptline: --import-reference: " << e.what() << "\n";
+        return 2;
+    }
     try {
         if (!options.replay.empty()) session = ui::loadReplaySession(options.replay);
     } catch (const std::exception& e) {
@@ -202,6 +210,11 @@ int main(int argc, char** argv)
     } else {
         if (!start.error.empty()) window.reportOpenFailure(QString::fromStdString(start.error));
         window.offerRecovery(recovery, true);
+    }
+    // After the document (and recovered work), before the replay: a replay's Ctrl+Z takes it back.
+    if (reference) {
+        window.document().addReference(*reference);
+        std::cerr << "sculptline: reference " << options.importReference << ": " << reference->summary.toStdString() << "\n";
     }
     const int width = options.width > 0 ? options.width : session ? session->width : 0;
     const int height = options.width > 0 ? options.height : session ? session->height : 0;
