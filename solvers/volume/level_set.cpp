@@ -7,6 +7,10 @@
 #include <openvdb/tools/MeshToVolume.h>
 #include <openvdb/tools/VolumeToMesh.h>
 
+#include <openvdb/util/NullInterrupter.h>
+
+#include <algorithm>
+#include <atomic>
 #include <mutex>
 
 namespace sculptline::solvers::volume {
@@ -21,12 +25,35 @@ void initializeOpenVdb()
     std::call_once(once, [] { openvdb::initialize(); });
 }
 
+// OpenVDB's cancellation hook: MeshToVolume asks wasInterrupted() between (and inside) its passes,
+// possibly from several TBB threads; the answer is latched so one "cancel" stops them all.
+class ProgressInterrupter : public openvdb::util::NullInterrupter {
+public:
+    ProgressInterrupter(const Progress& progress, double from, double to) : progress_(progress), from_(from), to_(to) {}
+    bool wasInterrupted(int percent = -1) override
+    {
+        if (cancelled_.load(std::memory_order_relaxed)) return true;
+        if (!progress_) return false;
+        const double done = percent < 0 ? 0.0 : std::min(percent, 100) / 100.0;
+        std::lock_guard<std::mutex> lock(mutex_);  // the callback need not be re-entrant
+        if (!progress_(from_ + (to_ - from_) * done)) cancelled_ = true;
+        return cancelled_;
+    }
+    bool cancelled() const { return cancelled_; }
+
+private:
+    const Progress& progress_;
+    double from_, to_;
+    std::atomic<bool> cancelled_{false};
+    std::mutex mutex_;
+};
+
 // The grids work in index space (a unit transform): the mesh is moved to `origin` and scaled by
 // 1 / voxelSize in double precision before the cast to float, so that neither a model far from the
 // origin nor one of huge or tiny size loses float precision or overflows (1e200 mm does not fit a
 // float; 1e200 / voxel does, the caller bounds it by kMaxVoxelsAcross).
 openvdb::FloatGrid::Ptr levelSet(const TriangleMesh& mesh, const openvdb::math::Transform& xform,
-                                 const Eigen::Vector3d& origin, double voxelSize)
+                                 const Eigen::Vector3d& origin, double voxelSize, ProgressInterrupter& interrupter)
 {
     std::vector<openvdb::Vec3s> points;
     points.reserve(mesh.vertices.size());
@@ -39,27 +66,37 @@ openvdb::FloatGrid::Ptr levelSet(const TriangleMesh& mesh, const openvdb::math::
     for (const Eigen::Vector3i& t : mesh.triangles)
         triangles.emplace_back(static_cast<openvdb::Index32>(t[0]), static_cast<openvdb::Index32>(t[1]),
                                static_cast<openvdb::Index32>(t[2]));
-    return openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(xform, points, triangles,
-                                                              static_cast<float>(kHalfWidthVoxels));
+    openvdb::FloatGrid::Ptr grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(
+        interrupter, xform, points, triangles, static_cast<float>(kHalfWidthVoxels));
+    if (interrupter.cancelled()) throw Cancelled();  // the grid is partial
+    return grid;
 }
 
 }  // namespace
 
 LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, double voxelSize,
-                              const Eigen::Vector3d& origin, double adaptivity)
+                              const Eigen::Vector3d& origin, double adaptivity, const Progress& progress)
 {
+    // Shares of the work (fractions of the whole), measured roughly on a sphere: the level sets
+    // take most of it, meshing and measuring the union the rest.
+    constexpr double kLevelSetsDone = 0.8, kMeshDone = 0.9;
     initializeOpenVdb();
     const openvdb::math::Transform::Ptr xform = openvdb::math::Transform::createLinearTransform(1.0);
     openvdb::FloatGrid::Ptr grid;
-    for (const TriangleMesh& mesh : closedMeshes) {
+    const double share = kLevelSetsDone / static_cast<double>(std::max<size_t>(closedMeshes.size(), 1));
+    for (size_t k = 0; k < closedMeshes.size(); ++k) {
+        const TriangleMesh& mesh = closedMeshes[k];
+        reportProgress(progress, share * static_cast<double>(k));
         if (mesh.triangles.empty()) continue;
-        openvdb::FloatGrid::Ptr next = levelSet(mesh, *xform, origin, voxelSize);
+        ProgressInterrupter interrupter(progress, share * static_cast<double>(k), share * static_cast<double>(k + 1));
+        openvdb::FloatGrid::Ptr next = levelSet(mesh, *xform, origin, voxelSize, interrupter);
         if (!grid) {
             grid = next;
         } else {
             openvdb::tools::csgUnion(*grid, *next);  // grid = min(grid, next); next is emptied
         }
     }
+    reportProgress(progress, kLevelSetsDone);
     LevelSetSolid out;
     if (!grid) return out;
     out.activeVoxels = static_cast<size_t>(grid->activeVoxelCount());
@@ -68,6 +105,7 @@ LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, dou
     std::vector<openvdb::Vec3I> triangles;
     std::vector<openvdb::Vec4I> quads;
     openvdb::tools::volumeToMesh(*grid, points, triangles, quads, 0.0, adaptivity);
+    reportProgress(progress, kMeshDone);
     out.mesh.vertices.reserve(points.size());
     for (const openvdb::Vec3s& p : points) out.mesh.vertices.push_back(origin + voxelSize * Eigen::Vector3d(p.x(), p.y(), p.z()));
     out.mesh.triangles.reserve(triangles.size() + 2 * quads.size());
@@ -81,6 +119,7 @@ LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, dou
         out.volume = openvdb::tools::levelSetVolume(*grid) * voxelSize * voxelSize * voxelSize;
         out.area = openvdb::tools::levelSetArea(*grid) * voxelSize * voxelSize;
     }
+    reportProgress(progress, 1.0);
     return out;
 }
 
