@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cmath>
 #include <mutex>
 
 namespace sculptline::solvers::volume {
@@ -25,25 +27,41 @@ void initializeOpenVdb()
     std::call_once(once, [] { openvdb::initialize(); });
 }
 
+// Narrow-band voxels a level set converts per second on one of this machine's cores (README
+// "Solids": 1.3-1.8 million with the benchmark); only paces the progress bar, see below.
+constexpr double kLevelSetVoxelsPerSecond = 1.5e6;
+
 // OpenVDB's cancellation hook: MeshToVolume asks wasInterrupted() between (and inside) its passes,
-// possibly from several TBB threads; the answer is latched so one "cancel" stops them all.
+// every few hundredths of a millisecond, possibly from several TBB threads; the answer is latched so
+// one "cancel" stops them all. OpenVDB 10 asks without a percentage (-1), so the fraction reported
+// is paced by time against what the narrow band's size lets expect, 1 - exp(-elapsed / expected):
+// it moves while the work does and approaches the stage's end without claiming it.
 class ProgressInterrupter : public openvdb::util::NullInterrupter {
 public:
-    ProgressInterrupter(const Progress& progress, double from, double to) : progress_(progress), from_(from), to_(to) {}
+    ProgressInterrupter(const Progress& progress, double from, double to, double expectedSeconds)
+        : progress_(progress), from_(from), to_(to), expected_(std::max(expectedSeconds, 1e-3)),
+          start_(std::chrono::steady_clock::now())
+    {
+    }
     bool wasInterrupted(int percent = -1) override
     {
         if (cancelled_.load(std::memory_order_relaxed)) return true;
         if (!progress_) return false;
-        const double done = percent < 0 ? 0.0 : std::min(percent, 100) / 100.0;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double done = percent < 0 ? 1.0 - std::exp(-elapsed / expected_) : std::min(percent, 100) / 100.0;
         std::lock_guard<std::mutex> lock(mutex_);  // the callback need not be re-entrant
-        if (!progress_(from_ + (to_ - from_) * done)) cancelled_ = true;
+        // Some passes do give a percentage, of that pass only: the fraction never goes back.
+        done_ = std::max(done_, done);
+        if (!progress_(from_ + (to_ - from_) * done_)) cancelled_ = true;
         return cancelled_;
     }
     bool cancelled() const { return cancelled_; }
 
 private:
     const Progress& progress_;
-    double from_, to_;
+    double from_, to_, expected_;
+    double done_ = 0.0;
+    std::chrono::steady_clock::time_point start_;
     std::atomic<bool> cancelled_{false};
     std::mutex mutex_;
 };
@@ -88,7 +106,9 @@ LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, dou
         const TriangleMesh& mesh = closedMeshes[k];
         reportProgress(progress, share * static_cast<double>(k));
         if (mesh.triangles.empty()) continue;
-        ProgressInterrupter interrupter(progress, share * static_cast<double>(k), share * static_cast<double>(k + 1));
+        const double bandVoxels = area(mesh) / (voxelSize * voxelSize) * 2.0 * kHalfWidthVoxels;
+        ProgressInterrupter interrupter(progress, share * static_cast<double>(k), share * static_cast<double>(k + 1),
+                                        bandVoxels / kLevelSetVoxelsPerSecond);
         openvdb::FloatGrid::Ptr next = levelSet(mesh, *xform, origin, voxelSize, interrupter);
         if (!grid) {
             grid = next;

@@ -190,5 +190,5 @@ TEST(SolidEntity, GivenAnOpenPatchAsAClosedSolid_WhenConverted_ThenTheErrorIsRec
 
     const model::Entity& e = *m.find(solid);
     EXPECT_FALSE(e.solid);
-    EXPECT_NE(e.buildError.find("encloses nothing"), std::string::npos) << e.buildError;
+    EXPECT_NE(e.buildError.find("enclose nothing"), std::string::npos) << e.buildError;
 }
