@@ -1,3 +1,4 @@
+#include "model/document_solids.h"
 #include "model/document.h"
 
 #include "solvers/io/geometry_json.h"
@@ -426,6 +427,7 @@ SceneDocument documentFromJson(const json& j)
         }
         doc.meshes.push_back(std::move(spec));
     }
+    readSolids(j, doc, usedIds);
     const json& constraints = optionalArray(j, "constraints");
     // The kind of every entity the document names, for the constraints' checks.
     std::map<int, EntityKind> kinds;

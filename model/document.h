@@ -3,8 +3,10 @@
 // from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
 // its error messages are testable on their own.
 #include "model/constraint.h"
+#include "model/solid_recipe.h"
 #include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/volume/solidify.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json_fwd.hpp>
@@ -99,6 +101,15 @@ struct SceneDocument {
     std::vector<PointSpec> points;
     /// "references": [{"path", "relative"?}] (the GUI reads and validates the files).
     std::vector<ReferenceSpec> references;
+    /// Solids (model/document_solids.h): made from surfaces by a recipe, with their last result.
+    struct SolidSpec {
+        int id = 0;
+        std::vector<int> surfaces;
+        SolidRecipe recipe;
+        std::optional<solvers::volume::Solid> result;
+        bool fixed = false;
+    };
+    std::vector<SolidSpec> solids;
 };
 
 /// The document format this program writes: "format": "sculptline", "version": kDocumentVersion.

@@ -16,6 +16,7 @@
 #include "ui/stereo_menu.h"
 #include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
+#include "ui/solid_builder.h"
 #include "ui/undo_history.h"
 #include "ui/view_navigation.h"
 
@@ -141,6 +142,7 @@ MainWindow::~MainWindow()
     // A normal end: the recovery file goes; the history must not follow the stack being emptied.
     delete autosaver_;
     delete history_;
+    delete solids_;  // joins a running conversion while the model it reads still exists
     delete document_;
     document_ = nullptr;
     delete viewer_;
@@ -301,6 +303,7 @@ void MainWindow::createActions()
                                 });
     holdTangent->setCheckable(true);
     createAestheticsMenu();
+    createSolidMenu();
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),

@@ -29,6 +29,7 @@ class EntityListDock;
 class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
+class SolidBuilder;
 class UndoHistory;
 class ViewNavigation;
 
@@ -104,6 +105,7 @@ protected:
 private:
     void createActions();
     void createAestheticsMenu();  // main_window_aesthetics.cpp
+    void createSolidMenu();       // main_window_solid.cpp
     void resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();
@@ -157,6 +159,7 @@ private:
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::Sketch;
     std::optional<model::Construction> surfaceMode_;
+    SolidBuilder* solids_ = nullptr;  ///< Solid menu's conversions (main_window_solid.cpp)
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
     QMenu* contextMenu_ = nullptr;
