@@ -41,7 +41,10 @@ SpaceMouse::SpaceMouse(MainWindow& window, QObject* parent) : QObject(parent), w
         message_ = tr("No 3D mouse: spacenavd is not running (or no device is attached); the mouse and keyboard work as before.");
         // A label of its own beside the status bar's message, gone after kNoticeMs: the message line
         // stays the mode's and the last stroke's (a start-up notice must not replace what they say).
-        auto* notice = new QLabel(message_, window_.statusBar());
+        // Short, with the whole sentence as its tool tip: a long permanent label would cut off the
+        // status line beside it.
+        auto* notice = new QLabel(tr("No 3D mouse"), window_.statusBar());
+        notice->setToolTip(message_);
         notice->setObjectName(QStringLiteral("spaceMouseNotice"));
         window_.statusBar()->addPermanentWidget(notice);
         QTimer::singleShot(kNoticeMs, notice, [notice]() { notice->deleteLater(); });
