@@ -11,6 +11,8 @@
 #include <Inventor/nodes/SoNormal.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "refusal.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -32,18 +34,12 @@ constexpr double kFloatTolerance = 1e-4;
 
 std::string refusal(const std::string& text, const IvLimits& limits = {})
 {
-    try {
-        importIvText(text, limits);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return sculptline::test::refusal([](const std::string& t, const IvLimits& l) { importIvText(t, l); }, text, limits);
 }
 
 void expectRefused(const std::string& text, const std::string& expected, const IvLimits& limits = {})
 {
-    const std::string message = refusal(text, limits);
-    EXPECT_NE(message.find(expected), std::string::npos) << "refused with \"" << message << "\", expected \"" << expected << "\"";
+    sculptline::test::expectRefusedBy([](const std::string& t, const IvLimits& l) { importIvText(t, l); }, text, expected, limits);
 }
 
 int countOf(SoNode* root, SoType type)

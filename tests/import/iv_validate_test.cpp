@@ -4,6 +4,8 @@
 
 #include "solvers/io/geometry_json.h"
 
+#include "refusal.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -16,21 +18,14 @@ using sculptline::solvers::io::InputError;
 
 const std::string kHeader = "#Inventor V2.1 ascii\n\n";
 
-/// The message validateIvText refuses `text` with ("" when it accepts it).
 std::string refusal(const std::string& text, const IvLimits& limits = {})
 {
-    try {
-        validateIvText(text, limits);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return sculptline::test::refusal([](const std::string& t, const IvLimits& l) { validateIvText(t, l); }, text, limits);
 }
 
 void expectRefused(const std::string& text, const std::string& expected, const IvLimits& limits = {})
 {
-    const std::string message = refusal(text, limits);
-    EXPECT_NE(message.find(expected), std::string::npos) << "refused with \"" << message << "\", expected \"" << expected << "\"";
+    sculptline::test::expectRefusedBy([](const std::string& t, const IvLimits& l) { validateIvText(t, l); }, text, expected, limits);
 }
 
 TEST(IvValidate, GivenPlainGeometry_WhenValidated_ThenCounted)
