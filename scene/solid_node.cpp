@@ -1,6 +1,7 @@
 #include "scene/solid_node.h"
 
 #include <Eigen/Geometry>
+#include <Inventor/nodes/SoPolygonOffset.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 namespace sculptline::scene {
@@ -30,7 +31,15 @@ std::vector<Eigen::Vector3d> vertexNormals(const solvers::volume::TriangleMesh& 
 
 SoSeparator* makeSolidNode(const solvers::volume::TriangleMesh& mesh)
 {
-    return makeMeshNode(mesh.vertices, vertexNormals(mesh), mesh.triangles, solidStyle());
+    SoSeparator* node = makeMeshNode(mesh.vertices, vertexNormals(mesh), mesh.triangles, solidStyle());
+    // A closed solid lies on its source surfaces to within a voxel: without an offset the two depth-
+    // fight and the surfaces' blue covers most of the solid. Pulled one depth unit toward the eye, the
+    // solid is what shows where they coincide; a shell (offset ± t/2) covers its surface anyway.
+    auto* offset = new SoPolygonOffset;
+    offset->factor = -1.0f;
+    offset->units = -1.0f;
+    node->insertChild(offset, 0);
+    return node;
 }
 
 }  // namespace sculptline::scene
