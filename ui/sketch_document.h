@@ -354,6 +354,9 @@ private:
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
     void oversketchInSpace(const std::vector<Eigen::Vector3d>& world);
+    /// Over-sketches curve `target` with `stroke` (in the curve's local frame) as one undo step;
+    /// `done` is the message's first words ("Curve %1 over-sketched").
+    void applyOversketch(model::EntityId target, const solvers::Curve3d& curve, const std::vector<Eigen::Vector3d>& stroke, const QString& done);
     struct SpaceSnap {
         model::EntityId curve = 0;
         Eigen::Vector3d point;

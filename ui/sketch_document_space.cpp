@@ -139,19 +139,7 @@ void SketchDocument::oversketchInSpace(const std::vector<Eigen::Vector3d>& world
             p.z() = 0.0;
         }
     }
-    try {
-        double maxError = 0.0;
-        solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke, {}, nullptr, &maxError);
-        model::requireCurveExtent(changed);
-        lastStroke_.fitted = true;
-        lastStroke_.controlPoints = changed.pointCount();
-        lastStroke_.maxError = maxError;
-        lastStroke_.message = tr("Curve %1 over-sketched in space: %2 control points, max error %3 mm").arg(target).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
-        undo_.push(new ReplaceCurveCommand(*this, target, *curve->local, std::move(changed)));
-    } catch (const std::exception& e) {
-        lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
-    }
-    Q_EMIT strokeFinished();
+    applyOversketch(target, *curve->local, stroke, tr("Curve %1 over-sketched in space"));
 }
 
 void SketchDocument::addStrokeOnPlane(model::EntityId plane, const std::vector<Eigen::Vector3d>& world, const std::vector<double>& times)
