@@ -212,6 +212,12 @@ public:
     /// A conversion of `solid` at `version` failed or was cancelled: buildError says why, the last
     /// good mesh stays. Ignored for a stale version.
     bool setSolidError(EntityId solid, int version, const std::string& error);
+    /// A solid made otherwise (Solid > Shell thickness or Voxel size with the solid selected, an undo
+    /// of that): its recipe is replaced and sourceVersion bumped, observers told. With `result` (an
+    /// undo or redo that kept the conversion of that recipe) it is current at once; without, the last
+    /// mesh stays on show and the solid is due (Entity::solidStale()), like after a surface edit.
+    /// @throws std::invalid_argument when `solid` is no solid or the recipe is invalid.
+    void setSolidRecipe(EntityId solid, const SolidRecipe& recipe, const std::optional<solvers::volume::Solid>& result = std::nullopt);
     /// The mesh entity addMesh(curves) would add (built, id 0), without adding it.
     /// @throws std::invalid_argument as addMesh does.
     Entity makeMesh(const std::vector<EntityId>& curves) const;

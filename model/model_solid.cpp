@@ -52,6 +52,24 @@ bool Model::setSolidError(EntityId id, int version, const std::string& error)
     return true;
 }
 
+void Model::setSolidRecipe(EntityId id, const SolidRecipe& recipe, const std::optional<solvers::volume::Solid>& result)
+{
+    auto it = entities_.find(id);
+    if (it == entities_.end() || it->second.kind != EntityKind::Solid) throw std::invalid_argument("entity " + std::to_string(id) + " is not a solid");
+    if (const std::string error = validate(recipe); !error.empty()) throw std::invalid_argument(error);
+    Entity& e = it->second;
+    e.solidRecipe = recipe;
+    // A new version: a conversion still running for the old recipe is stale when it ends.
+    ++e.sourceVersion;
+    e.buildError.clear();
+    if (result) {
+        e.solid = result;
+        e.solidVersion = e.sourceVersion;
+        ++e.shapeVersion;
+    }
+    for (ModelObserver* o : observers_) o->entityUpdated(e);
+}
+
 SolidJob solidJob(const Model& model, const std::vector<EntityId>& surfaces, const SolidRecipe& recipe)
 {
     if (const std::string error = validate(recipe); !error.empty()) throw std::invalid_argument(error);

@@ -106,6 +106,10 @@ private:
     void createActions();
     void createAestheticsMenu();  // main_window_aesthetics.cpp
     void createSolidMenu();       // main_window_solid.cpp
+    /// The selected entity when it is a solid, else null (main_window_solid.cpp).
+    const model::Entity* selectedSolid() const;
+    /// Gives `solid` a new recipe (undoable; it converts again), the outcome in the status bar.
+    void changeSolid(model::EntityId solid, const model::SolidRecipe& recipe);
     void resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();

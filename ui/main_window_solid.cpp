@@ -51,26 +51,65 @@ void MainWindow::createSolidMenu()
     });
     add("solid.cancel", tr("C&ancel the running conversion"), [this]() { solids_->cancel(); });
     menu->addSeparator();
-    add("solid.thickness", tr("Shell &thickness..."), [this]() {
+    // With a solid selected, the two settings change that solid (one undo step; it converts
+    // again); otherwise they are what the next Make solid uses.
+    add("solid.thickness", tr("Shell &thickness... (of the selected solid, or of new shells)"), [this]() {
         if (automated_) {
             std::fprintf(stderr, "sculptline: solid.thickness needs a dialog, which an automated run cannot answer\n");
             return;
         }
+        const model::Entity* solid = selectedSolid();
+        if (solid && solid->solidRecipe->mode != model::SolidMode::Shell) {
+            statusBar()->showMessage(tr("Solid %1 is closed: it has no shell thickness").arg(solid->id), 5000);
+            return;
+        }
         bool ok = false;
-        const double t = QInputDialog::getDouble(this, tr("Shell thickness"), tr("Thickness (mm):"), solids_->thickness(),
-                                                 kMinDialogValue, kMaxDialogValue, 3, &ok);
-        if (ok) solids_->setThickness(t);
+        const double t = QInputDialog::getDouble(this, tr("Shell thickness"), tr("Thickness (mm):"),
+                                                 solid ? solid->solidRecipe->thickness : solids_->thickness(), kMinDialogValue,
+                                                 kMaxDialogValue, 3, &ok);
+        if (!ok) return;
+        if (!solid) {
+            solids_->setThickness(t);
+            return;
+        }
+        model::SolidRecipe recipe = *solid->solidRecipe;
+        recipe.thickness = t;
+        changeSolid(solid->id, recipe);
     });
-    add("solid.voxelSize", tr("&Voxel size... (0: from the model's size)"), [this]() {
+    add("solid.voxelSize", tr("&Voxel size... (of the selected solid, or of new solids; 0: from the model's size)"), [this]() {
         if (automated_) {
             std::fprintf(stderr, "sculptline: solid.voxelSize needs a dialog, which an automated run cannot answer\n");
             return;
         }
+        const model::Entity* solid = selectedSolid();
         bool ok = false;
-        const double v = QInputDialog::getDouble(this, tr("Voxel size"), tr("Voxel size (mm, 0 = default):"), solids_->voxelSize(),
-                                                 0.0, kMaxDialogValue, 4, &ok);
-        if (ok) solids_->setVoxelSize(v < kMinDialogValue ? 0.0 : v);
+        const double v = QInputDialog::getDouble(this, tr("Voxel size"), tr("Voxel size (mm, 0 = default):"),
+                                                 solid ? solid->solidRecipe->voxelSize : solids_->voxelSize(), 0.0, kMaxDialogValue, 4, &ok);
+        if (!ok) return;
+        const double voxel = v < kMinDialogValue ? 0.0 : v;
+        if (!solid) {
+            solids_->setVoxelSize(voxel);
+            return;
+        }
+        model::SolidRecipe recipe = *solid->solidRecipe;
+        recipe.voxelSize = voxel;
+        changeSolid(solid->id, recipe);
     });
+}
+
+const model::Entity* MainWindow::selectedSolid() const
+{
+    const model::Entity* e = document_->model().find(document_->selection());
+    return e && e->kind == model::EntityKind::Solid ? e : nullptr;
+}
+
+void MainWindow::changeSolid(model::EntityId solid, const model::SolidRecipe& recipe)
+{
+    try {
+        if (document_->setSolidRecipe(solid, recipe)) statusBar()->showMessage(tr("Solid %1 converts again; Ctrl+Z brings the last one back").arg(solid), 5000);
+    } catch (const std::exception& e) {
+        statusBar()->showMessage(tr("Cannot change solid %1: %2").arg(solid).arg(QString::fromStdString(e.what())), 8000);
+    }
 }
 
 }  // namespace sculptline::ui

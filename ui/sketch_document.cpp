@@ -225,6 +225,19 @@ void SketchDocument::setSculptStiffness(model::EntityId surface, double stiffnes
     undo_.push(new SetRecipeCommand(*this, surface, *e->recipe, after, tr("Sculpt stiffness %1 %").arg(std::lround(100 * stiffness))));
 }
 
+bool SketchDocument::setSolidRecipe(model::EntityId solid, const model::SolidRecipe& recipe)
+{
+    const model::Entity* e = model_.find(solid);
+    if (!e || e->kind != model::EntityKind::Solid) throw std::invalid_argument("entity " + std::to_string(solid) + " is not a solid");
+    if (const std::string error = model::validate(recipe); !error.empty()) throw std::invalid_argument(error);
+    if (*e->solidRecipe == recipe) return false;
+    const QString text = recipe.mode == model::SolidMode::Shell && recipe.thickness != e->solidRecipe->thickness
+                             ? tr("Solid %1: shell %2 mm thick").arg(solid).arg(recipe.thickness)
+                             : tr("Solid %1: voxel size %2").arg(solid).arg(recipe.voxelSize > 0.0 ? tr("%1 mm").arg(recipe.voxelSize) : tr("from the model's size"));
+    undo_.push(new SetSolidRecipeCommand(*this, solid, *e->solidRecipe, recipe, text));
+    return true;
+}
+
 void SketchDocument::toggleSelectionFixed()
 {
     const model::Entity* e = model_.find(selection_);

@@ -138,6 +138,11 @@ public:
     void setSculptBase(model::EntityId surface);
     /// Sets a sculpt's stiffness λ (undoable); the surface is solved again.
     void setSculptStiffness(model::EntityId surface, double stiffness);
+    /// A solid made otherwise: its shell thickness or voxel size (Solid menu with the solid
+    /// selected), one undo step; it converts again (ui/solid_builder.h). Returns false when the
+    /// recipe is the one it has.
+    /// @throws std::invalid_argument when `solid` is no solid or the recipe is invalid.
+    bool setSolidRecipe(model::EntityId solid, const model::SolidRecipe& recipe);
     model::EntityId sculptBase() const { return sculptBase_; }
     /// What Sculpt mode's input does (thesis ch. 6): a stroke becomes a target curve, or the bound
     /// of the sculpt (a closed stroke over the surface); a click drops a point handle, blocks or

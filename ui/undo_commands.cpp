@@ -92,6 +92,23 @@ void SetRecipeCommand::apply(const model::SurfaceRecipe& recipe)
     doc_.notifyChanged();
 }
 
+SetSolidRecipeCommand::SetSolidRecipeCommand(SketchDocument& doc, model::EntityId solid, model::SolidRecipe before,
+                                             model::SolidRecipe after, const QString& text)
+    : doc_(doc), solid_(solid), before_(before), after_(after)
+{
+    setText(text);
+}
+
+void SetSolidRecipeCommand::swapTo(const model::SolidRecipe& recipe, const std::optional<solvers::volume::Solid>& result,
+                                   std::optional<solvers::volume::Solid>& leaving)
+{
+    const model::Entity* e = doc_.model().find(solid_);
+    // Only a current conversion belongs to the recipe being left (a stale one shows older input).
+    leaving = e && !e->solidStale() ? e->solid : std::nullopt;
+    doc_.model().setSolidRecipe(solid_, recipe, result);
+    doc_.notifyChanged();
+}
+
 SetIncidenceKCommand::SetIncidenceKCommand(SketchDocument& doc, model::EntityId surface, int before, int after)
     : doc_(doc), surface_(surface), before_(before), after_(after)
 {

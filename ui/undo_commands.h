@@ -73,6 +73,27 @@ private:
     model::SurfaceRecipe before_, after_;
 };
 
+/// A solid's new recipe (its shell thickness or voxel size). The solid converts again off the GUI
+/// thread (ui/solid_builder.h); each side keeps the conversion it had when it was left, so an undo,
+/// or a redo after a finished conversion, shows its solid at once instead of converting again.
+class SetSolidRecipeCommand : public QUndoCommand {
+public:
+    SetSolidRecipeCommand(SketchDocument& doc, model::EntityId solid, model::SolidRecipe before, model::SolidRecipe after,
+                          const QString& text);
+    void redo() override { swapTo(after_, afterResult_, beforeResult_); }
+    void undo() override { swapTo(before_, beforeResult_, afterResult_); }
+
+private:
+    /// Keeps the solid's current conversion in `leaving`, then applies `recipe` with `result`.
+    void swapTo(const model::SolidRecipe& recipe, const std::optional<solvers::volume::Solid>& result,
+                std::optional<solvers::volume::Solid>& leaving);
+
+    SketchDocument& doc_;
+    model::EntityId solid_;
+    model::SolidRecipe before_, after_;
+    std::optional<solvers::volume::Solid> beforeResult_, afterResult_;
+};
+
 /// Removes one of the designer's constraints; undo restores it under its id.
 class RemoveConstraintCommand : public QUndoCommand {
 public:

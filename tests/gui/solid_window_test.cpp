@@ -15,6 +15,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QInputDialog>
 #include <QProcess>
 #include <QProgressBar>
 #include <QTimer>
@@ -76,6 +77,24 @@ struct Window {
         return t.elapsed();
     }
 };
+
+/// Answers the next modal dialog the way a person would: types `value` into the QInputDialog that
+/// opens, and presses OK.
+void answerNextDialog(double value)
+{
+    QTimer::singleShot(0, [value]() {
+        QElapsedTimer waited;
+        waited.start();
+        QInputDialog* dialog = nullptr;
+        while (!dialog && waited.elapsed() < kCancelDeadlineMs) {
+            dialog = qobject_cast<QInputDialog*>(QApplication::activeModalWidget());
+            if (!dialog) QApplication::processEvents(QEventLoop::AllEvents, 10);
+        }
+        ASSERT_TRUE(dialog) << "no dialog opened";
+        dialog->setDoubleValue(value);
+        dialog->accept();
+    });
+}
 
 /// The volume `sculptline-cli solid` reports for the sphere at the default voxel.
 double cliVolume()
@@ -192,6 +211,55 @@ TEST(SolidWindow, GivenTheSphere_WhenAClosedSolidIsMade_ThenOneWatertightSolidWi
     const double r15 = 4.0 / 3.0 * M_PI * 15.0 * 15.0 * 15.0;
     EXPECT_NEAR(rebuilt.solid->volume, r15, 0.01 * r15);
     EXPECT_TRUE(rebuilt.solid->watertight);
+}
+
+TEST(SolidWindow, GivenASolidSelected_WhenItsVoxelSizeIsChangedFromTheMenu_ThenItConvertsAgainAtThatSizeAndUndoRedoShowEachResultAtOnce)
+{
+    startApplication();
+    Window w;
+    w.window.action(QStringLiteral("solid.closed"))->trigger();
+    w.waitIdle(kConversionDeadlineMs);
+    ASSERT_EQ(w.solids(), 1) << w.builder().lastMessage().toStdString();
+    model::EntityId id = 0;
+    for (const auto& [key, e] : w.doc().model().entities())
+        if (e.kind == model::EntityKind::Solid) id = key;
+    const solvers::volume::Solid first = *w.doc().model().find(id)->solid;
+    const int undoSteps = w.doc().undoStack()->count();
+    // About twice the default voxel the first conversion chose, to the dialog's 4 decimals.
+    const double coarse = std::round(2.0 * first.voxelSize * 1e4) / 1e4;
+
+    // When the designer selects the solid and types a voxel size into Solid > Voxel size
+    w.doc().select(id);
+    w.window.setAutomated(false);  // the dialog is answered below, as a person would
+    answerNextDialog(coarse);
+    w.window.action(QStringLiteral("solid.voxelSize"))->trigger();
+    w.window.setAutomated(true);
+
+    // Then that solid (not only new ones) converts again at the new size, as one undo step
+    EXPECT_EQ(w.doc().undoStack()->count(), undoSteps + 1);
+    EXPECT_DOUBLE_EQ(w.doc().model().find(id)->solidRecipe->voxelSize, coarse);
+    QElapsedTimer started;
+    started.start();
+    while (w.doc().model().find(id)->solidStale() && started.elapsed() < kConversionDeadlineMs)
+        QApplication::processEvents(QEventLoop::AllEvents, 20);
+    const model::Entity& rebuilt = *w.doc().model().find(id);
+    ASSERT_FALSE(rebuilt.solidStale()) << w.builder().lastMessage().toStdString();
+    EXPECT_DOUBLE_EQ(rebuilt.solid->voxelSize, coarse);
+    EXPECT_TRUE(rebuilt.solid->watertight);
+    const double r10 = 4.0 / 3.0 * M_PI * 1000.0;
+    EXPECT_NEAR(rebuilt.solid->volume, r10, 0.02 * r10) << "a coarser voxel, still near the sphere";
+    const double coarseVolume = rebuilt.solid->volume;
+    EXPECT_NE(coarseVolume, first.volume);
+    EXPECT_EQ(w.solids(), 1);
+
+    // When undone, then redone: each shows its own conversion at once
+    w.doc().undoStack()->undo();
+    EXPECT_FALSE(w.doc().model().find(id)->solidStale()) << "undo brings the first conversion back, no new one";
+    EXPECT_EQ(w.doc().model().find(id)->solid->volume, first.volume);
+    EXPECT_FALSE(w.builder().busy());
+    w.doc().undoStack()->redo();
+    EXPECT_FALSE(w.doc().model().find(id)->solidStale()) << "redo keeps the coarse conversion";
+    EXPECT_EQ(w.doc().model().find(id)->solid->volume, coarseVolume);
 }
 
 }  // namespace sculptline::ui

@@ -192,3 +192,48 @@ TEST(SolidEntity, GivenAnOpenPatchAsAClosedSolid_WhenConverted_ThenTheErrorIsRec
     EXPECT_FALSE(e.solid);
     EXPECT_NE(e.buildError.find("enclose nothing"), std::string::npos) << e.buildError;
 }
+
+TEST(SolidEntity, GivenAConvertedSolid_WhenItsRecipeIsChanged_ThenItIsDueWithTheOldMeshShownAndAnUndoWithTheOldResultIsCurrentAtOnce)
+{
+    SphereSolid s;
+    model::convertStaleSolids(s.m);
+    const model::Entity before = *s.m.find(s.solid);
+    ASSERT_TRUE(before.solid);
+    const int oldVersion = before.sourceVersion;
+    // Twice the default voxel the first conversion chose: a coarser, different result.
+    model::SolidRecipe coarse = closedRecipe();
+    coarse.voxelSize = 2.0 * before.solid->voxelSize;
+
+    // When the voxel size is changed in place
+    s.m.setSolidRecipe(s.solid, coarse);
+
+    // Then it is due, still showing the last mesh, and a conversion of the old recipe is refused
+    const model::Entity& due = *s.m.find(s.solid);
+    EXPECT_TRUE(due.solidStale());
+    EXPECT_EQ(*due.solidRecipe, coarse);
+    ASSERT_TRUE(due.solid);
+    EXPECT_EQ(due.solid->volume, before.solid->volume);
+    EXPECT_FALSE(s.m.setSolidResult(s.solid, oldVersion, *before.solid));
+
+    // When converted, the result is made at the new voxel size, and still holds the sphere's goal
+    EXPECT_EQ(model::convertStaleSolids(s.m), 1);
+    const model::Entity& coarseSolid = *s.m.find(s.solid);
+    EXPECT_FALSE(coarseSolid.solidStale());
+    EXPECT_DOUBLE_EQ(coarseSolid.solid->voxelSize, coarse.voxelSize);
+    EXPECT_NE(coarseSolid.solid->volume, before.solid->volume);
+    EXPECT_TRUE(coarseSolid.solid->watertight);
+
+    // When the old recipe comes back with its result (an undo)
+    s.m.setSolidRecipe(s.solid, *before.solidRecipe, before.solid);
+    const model::Entity& undone = *s.m.find(s.solid);
+    EXPECT_FALSE(undone.solidStale()) << "no new conversion";
+    EXPECT_EQ(*undone.solidRecipe, *before.solidRecipe);
+    EXPECT_EQ(undone.solid->volume, before.solid->volume);
+
+    // An invalid recipe or a non-solid is refused and changes nothing
+    model::SolidRecipe noThickness{model::SolidMode::Shell, 0.0, 0.0};
+    EXPECT_THROW(s.m.setSolidRecipe(s.solid, noThickness), std::invalid_argument);
+    EXPECT_THROW(s.m.setSolidRecipe(s.surface, closedRecipe()), std::invalid_argument);
+    EXPECT_EQ(*s.m.find(s.solid)->solidRecipe, *before.solidRecipe);
+    EXPECT_FALSE(s.m.find(s.solid)->solidStale());
+}
