@@ -655,6 +655,26 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 
 namespace sculptline::solvers::stroke {
 
+namespace {
+
+// RecognizeOptions::nearLoopTurn: an open stroke turning most of the way round whose end heads for
+// its start, not far off (a figure the hand stopped short of closing on its last side).
+bool nearlyClosed(const StrokeGeometry& g, double turn, const RecognizeOptions& o)
+{
+    const auto& q = g.points;
+    const int n = static_cast<int>(q.size());
+    if (o.nearLoopTurn <= 0.0 || turn < o.nearLoopTurn || turn >= o.maxLoopTurn || n < 3 || !(g.extent > 0.0)) return false;
+    const Point2 gap = q.front() - q.back();
+    if (gap.norm() > o.nearLoopGap * g.length) return false;
+    int j = n - 1;  // the stroke's heading over the last tenth of its extent
+    while (j > 0 && (q[j] - q[n - 1]).norm() < 0.1 * g.extent) --j;
+    const Point2 heading = q[n - 1] - q[j];
+    const double off = std::atan2(std::abs(heading.x() * gap.y() - heading.y() * gap.x()), heading.dot(gap));
+    return off <= o.nearLoopHeading;
+}
+
+}  // namespace
+
 StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOptions, const RecognizeOptions& options)
 {
     StrokeRecognition out{fitStroke(stroke, fitOptions), {}};
@@ -705,7 +725,7 @@ StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOpt
     const Recognition& r = out.recognition;
     if (!r.geometry.closed && fitOptions.conditioning.closure == Closure::Auto && r.circle.valid) {
         const double turn = std::abs(sweep(r.geometry.points, r.circle.center));
-        if (turn >= options.minLoopTurn && turn < options.maxLoopTurn) {
+        if (turn >= options.minLoopTurn && turn < options.maxLoopTurn || nearlyClosed(r.geometry, turn, options)) {
             FitOptions closed = fitOptions;
             closed.conditioning.closure = Closure::Closed;
             out.fit = fitStroke(stroke, closed);

@@ -103,6 +103,15 @@ struct RecognizeOptions {
     /// bring together; it is fitted again as a closed stroke (radians: 300 and 380 degrees).
     double minLoopTurn = 5.24;
     double maxLoopTurn = 6.63;
+    /// recognizeStroke: ... and so is an open stroke that turns by at least `nearLoopTurn` (and
+    /// less than maxLoopTurn) whose end heads for its start: the closing segment, end to start, is
+    /// within `nearLoopHeading` of the stroke's direction over its last tenth of the extent, and no
+    /// longer than `nearLoopGap` of the stroke's length. A hand that stops short of closing a
+    /// figure stops on the last side, still drawing towards the start; the open strokes that turn
+    /// as far (a question mark's hook, a spiral's inner end) end heading elsewhere. 0 turns it off.
+    double nearLoopTurn = 4.0;
+    double nearLoopHeading = 0.87;
+    double nearLoopGap = 0.3;
     /// UserModel::applyHabits: a stroke within this mean distance (share of the extent) of a shape
     /// the user corrected before is read as that correction.
     double habitDistance = 0.1;

@@ -81,6 +81,9 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "maxOvershoot") o.maxOvershoot = v;
     else if (k == "minLoopTurn") o.minLoopTurn = v;
     else if (k == "crossingTail") o.crossingTail = v;
+    else if (k == "nearLoopTurn") o.nearLoopTurn = v;
+    else if (k == "nearLoopHeading") o.nearLoopHeading = v;
+    else if (k == "nearLoopGap") o.nearLoopGap = v;
     else return false;
     return true;
 }
@@ -129,11 +132,11 @@ void leaveOneSubjectOut(const std::vector<st::Recording>& recs, const std::strin
         correct += mine.first;
         total += mine.second;
         correctDefault += dc;
-        std::cout << "| " << out << " | " << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
+        std::cout << "| " << out << " | " << std::defaultfloat << std::setprecision(6) << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
                   << 100.0 * mine.first / mine.second << " % | " << 100.0 * dc / mine.second << " % |" << std::defaultfloat << '\n';
     }
-    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % | " << 100.0 * correctDefault / total
-              << " % |" << std::defaultfloat << '\n';
+    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % (" << correct << '/' << total << ") | "
+              << 100.0 * correctDefault / total << " % (" << correctDefault << '/' << total << ") |" << std::defaultfloat << '\n';
 }
 
 double turnDeg(const std::vector<sculptline::solvers::stroke::Point2>& pts, const sculptline::solvers::stroke::Point2& c)
@@ -177,6 +180,21 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         if (std::getenv("DUMP_LOOP") && rec.circle.valid) {  // turn about the fitted circle's centre, end gap / extent
             const auto& q = rec.geometry.points;
             std::cout << "  turn=" << std::setprecision(3) << turnDeg(q, rec.circle.center) << " gap=" << (q.back() - q.front()).norm() / rec.geometry.extent;
+            // How far the closing segment (end -> start) is from the stroke's heading at its end and
+            // at its start (degrees), headings over a tenth of the extent.
+            const auto heading = [&](bool atEnd) {
+                const int n = static_cast<int>(q.size());
+                const int a = atEnd ? n - 1 : 0, step = atEnd ? -1 : 1;
+                int j = a;
+                while (j + step >= 0 && j + step < n && (q[j] - q[a]).norm() < 0.1 * rec.geometry.extent) j += step;
+                return sk::Point2(atEnd ? q[a] - q[j] : q[j] - q[a]);
+            };
+            const sk::Point2 gapDir = q.front() - q.back();
+            const auto angle = [](const sk::Point2& u, const sk::Point2& v) {
+                return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180 / M_PI;
+            };
+            std::cout << " hend=" << angle(heading(true), gapDir) << " hstart=" << angle(heading(false), gapDir)
+                      << " gaplen=" << gapDir.norm() / rec.geometry.length;
         }
         if (std::getenv("DUMP_VERTICES")) {  // vertices in units of the extent, from the points' first sample
             std::cout << "  V:";
