@@ -81,6 +81,13 @@ struct RecognizeOptions {
     /// 0,0.05,0.1,0.15,0.2,0.3): 0.05 on four of the five folds, 0.1 on the fifth; pooled 97.2 %
     /// against 96.9 % at the former 0.2.
     double edgeTrim = 0.05;
+    /// A rectangle or square also scores by how closely the stroke follows it with its corners
+    /// rounded, by a radius of up to this share of its shorter half-side (the best of 0, 0.05, ...):
+    /// a hand drawing fast rounds the corners off, and the straight sides are what makes it a
+    /// rectangle rather than an ellipse (an ellipse misses a rounded rectangle's sides, a rectangle
+    /// rounded by half its half-side misses a circle by a fifth of its radius). The rectangle is
+    /// still regularized with sharp corners. 0 = sharp corners only.
+    double cornerRounding = 0.5;
     double shortEdge = 0.08;       ///< edges shorter than this share of the extent are merged
     /// recognizeStroke: a loop that the conditioning closed by trimming more than this share of its
     /// length as overshoot was a stroke crossing itself (an x, a delete mark), not a loop that

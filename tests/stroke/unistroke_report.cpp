@@ -6,6 +6,7 @@
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
 //   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
 //   unistroke-report --augment --loso ...      the same on s02-s06 and their perturbed copies
+//   unistroke-report --augment-rounded --loso ...  ... and copies with corners rounded (8 %, 12 %)
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -36,6 +37,7 @@ namespace {
 
 sculptline::solvers::stroke::RecognizeOptions gOptions;
 bool gAugment = false;
+bool gAugmentRounded = false;
 
 // The development recordings and, for each, the same stroke drawn otherwise as a person might
 // (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
@@ -47,7 +49,12 @@ std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
         {30, 1, 0, 0, 1, 0}, {0, 0.7, 0, 0, 1, 0}, {0, 1.5, 0, 0, 1, 0}, {0, 1, 0.03, 0, 1, 0}, {0, 1, 0.06, 0, 1, 0}, {0, 1, 0, 0, 1, 0.03},
     };
     std::vector<st::Recording> out = recs;
-    for (const auto& p : ways)
+    std::vector<st::Perturbation> all = ways;
+    if (gAugmentRounded) {  // --augment-rounded: also with corners rounded over 8 % and 12 % of the length
+        all.push_back({0, 1, 0, 0, 1, 0, 0.08});
+        all.push_back({0, 1, 0, 0, 1, 0, 0.12});
+    }
+    for (const auto& p : all)
         for (const auto& r : recs) {
             out.push_back(r);
             out.back().stroke = st::perturbStroke(r.stroke, p);
@@ -82,6 +89,7 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "minLoopTurn") o.minLoopTurn = v;
     else if (k == "crossingTail") o.crossingTail = v;
     else if (k == "nearLoopTurn") o.nearLoopTurn = v;
+    else if (k == "cornerRounding") o.cornerRounding = v;
     else if (k == "nearLoopHeading") o.nearLoopHeading = v;
     else if (k == "nearLoopGap") o.nearLoopGap = v;
     else return false;
@@ -166,8 +174,8 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare (--perturb-dev).
         st::Perturbation pert;
         if (const char* e = std::getenv("DUMP_PERTURB")) {
-            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
-                        &pert.extendShare);
+            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
+                        &pert.extendShare, &pert.roundShare, &pert.keepEvery, &pert.leadInShare);
         }
         const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
         const sk::FitResult& fit = sr.fit;
@@ -318,6 +326,13 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"overshoot 15 %", {0, 1, 0, 0.15, 1}},
         {"end extended 3 %", {0, 1, 0, 0, 1, 0.03}},
         {"end extended 6 %", {0, 1, 0, 0, 1, 0.06}},
+        {"both ends past the start 3 %", {0, 1, 0, 0, 1, 0.03, 0, 1, 0.03}},
+        {"both ends past the start 5 %", {0, 1, 0, 0, 1, 0.05, 0, 1, 0.05}},
+        {"corners rounded 4 %", {0, 1, 0, 0, 1, 0, 0.04}},
+        {"corners rounded 8 %", {0, 1, 0, 0, 1, 0, 0.08}},
+        {"corners rounded 12 %", {0, 1, 0, 0, 1, 0, 0.12}},
+        {"every 2nd sample", {0, 1, 0, 0, 1, 0, 0, 2}},
+        {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
         {"times x2", {0, 1, 0, 0, 2}},
     };
@@ -398,6 +413,8 @@ int main(int argc, char** argv)
             return 0;
         } else if (!std::strcmp(argv[i], "--augment")) {  // --loso also on the perturbed copies (perturbDev)
             gAugment = true;
+        } else if (!std::strcmp(argv[i], "--augment-rounded")) {  // ... and on copies with rounded corners
+            gAugment = gAugmentRounded = true;
         } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
             const std::string k = argv[++i];
             std::vector<double> values;
