@@ -766,7 +766,7 @@ StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOpt
     const Recognition& r = out.recognition;
     if (!r.geometry.closed && fitOptions.conditioning.closure == Closure::Auto && r.circle.valid) {
         const double turn = std::abs(sweep(r.geometry.points, r.circle.center));
-        if (turn >= options.minLoopTurn && turn < options.maxLoopTurn || nearlyClosed(r.geometry, turn, options)) {
+        if ((turn >= options.minLoopTurn && turn < options.maxLoopTurn) || nearlyClosed(r.geometry, turn, options)) {
             FitOptions closed = fitOptions;
             closed.conditioning.closure = Closure::Closed;
             out.fit = fitStroke(stroke, closed);
