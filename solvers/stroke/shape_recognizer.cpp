@@ -280,6 +280,38 @@ std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
     return out;
 }
 
+// The largest distance of the points from the rectangle (square) of regularRectangle with its corners
+// rounded by the radius, among f * its shorter half-side for f = 0, 0.05, .. maxShare, that fits
+// closest (RecognizeOptions::cornerRounding). The rounded rectangle is the Minkowski sum of the
+// rectangle shrunk by the radius and a disc of that radius; distances are those to its outline.
+double roundedRectangleResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, bool square, double maxShare)
+{
+    const double th = quadOrientation(v);
+    const Point2 ux(std::cos(th), std::sin(th)), uy(-ux.y(), ux.x());
+    Point2 c = Point2::Zero();
+    for (const auto& p : v) c += p / 4.0;
+    double hx = 0, hy = 0;
+    for (const auto& p : v) {
+        hx += std::abs((p - c).dot(ux)) / 4.0;
+        hy += std::abs((p - c).dot(uy)) / 4.0;
+    }
+    if (square) hx = hy = 0.5 * (hx + hy);
+    double best = std::numeric_limits<double>::infinity();
+    const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));
+    for (int i = 0; i <= steps; ++i) {
+        const double r = 0.05 * i * std::min(hx, hy);
+        double worst = 0.0;
+        for (const auto& p : pts) {
+            const double qx = std::abs((p - c).dot(ux)) - (hx - r), qy = std::abs((p - c).dot(uy)) - (hy - r);
+            const double outside = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
+            worst = std::max(worst, std::abs(outside - r));
+            if (worst >= best) break;
+        }
+        best = std::min(best, worst);
+    }
+    return best;
+}
+
 // Rhombus: diagonals through the centroid, perpendicular, with the measured half-lengths.
 std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
 {
@@ -610,10 +642,19 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             // dropped those to "polyline" however well the rectangle fitted.
             const double guess = std::pow(o.guessedVertex, guessed);
             const auto ideal = [&](const std::vector<Point2>& shape) { return score(polylineResidual(g.points, shape, true), sigma) * guess; };
+            // A rectangle or square whose rounded-corner form (cornerRounding) fits closer than the
+            // round shapes do has no guessed vertices held against it: the curve its corners were
+            // guessed on is its own rounded corners.
+            const auto rectangular = [&](bool square) {
+                const double sharp = ideal(regularRectangle(g.vertices, square));
+                if (o.cornerRounding <= 0.0) return sharp;
+                const double rounded = roundedRectangleResidual(g.points, g.vertices, square, o.cornerRounding);
+                return std::max(sharp, score(rounded, sigma) * (rounded < smooth ? 1.0 : guess));
+            };
             // The orientation rule of ShapeKind: square on its sides, diamond on a corner; a shape
             // with equal sides is reported as a square rather than a rectangle.
-            add(ShapeKind::Square, ideal(regularRectangle(g.vertices, true)) * (q.axisAligned || !q.right ? 1.0 : 0.5));
-            add(ShapeKind::Rectangle, ideal(regularRectangle(g.vertices, false)) * (q.equal ? 0.7 : 1.0));
+            add(ShapeKind::Square, rectangular(true) * (q.axisAligned || !q.right ? 1.0 : 0.5));
+            add(ShapeKind::Rectangle, rectangular(false) * (q.equal ? 0.7 : 1.0));
             // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
             // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
             add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));
@@ -654,6 +695,26 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 }  // namespace sculptline::solvers::stroke
 
 namespace sculptline::solvers::stroke {
+
+namespace {
+
+// RecognizeOptions::nearLoopTurn: an open stroke turning most of the way round whose end heads for
+// its start, not far off (a figure the hand stopped short of closing on its last side).
+bool nearlyClosed(const StrokeGeometry& g, double turn, const RecognizeOptions& o)
+{
+    const auto& q = g.points;
+    const int n = static_cast<int>(q.size());
+    if (o.nearLoopTurn <= 0.0 || turn < o.nearLoopTurn || turn >= o.maxLoopTurn || n < 3 || !(g.extent > 0.0)) return false;
+    const Point2 gap = q.front() - q.back();
+    if (gap.norm() > o.nearLoopGap * g.length) return false;
+    int j = n - 1;  // the stroke's heading over the last tenth of its extent
+    while (j > 0 && (q[j] - q[n - 1]).norm() < 0.1 * g.extent) --j;
+    const Point2 heading = q[n - 1] - q[j];
+    const double off = std::atan2(std::abs(heading.x() * gap.y() - heading.y() * gap.x()), heading.dot(gap));
+    return off <= o.nearLoopHeading;
+}
+
+}  // namespace
 
 StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOptions, const RecognizeOptions& options)
 {
@@ -705,7 +766,7 @@ StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOpt
     const Recognition& r = out.recognition;
     if (!r.geometry.closed && fitOptions.conditioning.closure == Closure::Auto && r.circle.valid) {
         const double turn = std::abs(sweep(r.geometry.points, r.circle.center));
-        if (turn >= options.minLoopTurn && turn < options.maxLoopTurn) {
+        if ((turn >= options.minLoopTurn && turn < options.maxLoopTurn) || nearlyClosed(r.geometry, turn, options)) {
             FitOptions closed = fitOptions;
             closed.conditioning.closure = Closure::Closed;
             out.fit = fitStroke(stroke, closed);

@@ -318,6 +318,59 @@ stroke::Stroke perturbStroke(const stroke::Stroke& s, const Perturbation& p)
             if (timed) out.times.push_back(tEnd + j * dt);
         }
     }
+    if (p.leadInShare > 0.0) {  // straight in along the line of the first 5 %, before the first sample
+        size_t k = 0;
+        while (k + 1 < n && arc[k] < 0.05 * arc.back()) ++k;
+        const Eigen::Vector3d dir = (s.points[k] - s.points[0]).normalized();
+        const double step = arc.back() / double(n - 1), dt = timed ? (s.times.back() - s.times.front()) / double(n - 1) : 0.0;
+        std::vector<Eigen::Vector3d> pts;
+        std::vector<double> ts;
+        const int lead = static_cast<int>(std::floor(p.leadInShare * arc.back() / step));
+        for (int j = lead; j >= 1; --j) {
+            pts.push_back(s.points[0] - j * step * dir);
+            if (timed) ts.push_back(s.times[0] - j * dt);
+        }
+        out.points.insert(out.points.begin(), pts.begin(), pts.end());
+        if (timed) {
+            out.times.insert(out.times.begin(), ts.begin(), ts.end());
+            for (auto& t : out.times) t += lead * dt;  // from 0 again
+        }
+    }
+    if (p.roundShare > 0.0 && out.points.size() > 2) {  // box filter along the arc, window shrunk at the ends
+        const size_t m = out.points.size();
+        std::vector<double> u(m, 0.0);
+        for (size_t i = 1; i < m; ++i) u[i] = u[i - 1] + (out.points[i] - out.points[i - 1]).norm();
+        const double half = 0.5 * p.roundShare * u.back();
+        std::vector<Eigen::Vector3d> q(m);
+        for (size_t i = 0; i < m; ++i) {
+            const double w = std::min({half, u[i], u.back() - u[i]});
+            // The mean of the polyline over [u_i - w, u_i + w], each segment weighted by its length inside.
+            Eigen::Vector3d acc = Eigen::Vector3d::Zero();
+            double len = 0.0;
+            for (size_t k = 1; k < m; ++k) {
+                const double a = std::max(u[k - 1], u[i] - w), b = std::min(u[k], u[i] + w);
+                if (b <= a || u[k] <= u[k - 1]) continue;
+                const double ta = (a - u[k - 1]) / (u[k] - u[k - 1]), tb = (b - u[k - 1]) / (u[k] - u[k - 1]);
+                const Eigen::Vector3d pa = out.points[k - 1] + ta * (out.points[k] - out.points[k - 1]);
+                const Eigen::Vector3d pb = out.points[k - 1] + tb * (out.points[k] - out.points[k - 1]);
+                acc += 0.5 * (b - a) * (pa + pb);
+                len += b - a;
+            }
+            q[i] = len > 0.0 ? Eigen::Vector3d(acc / len) : out.points[i];
+        }
+        out.points = q;
+    }
+    if (p.keepEvery > 1 && out.points.size() > 2) {
+        stroke::Stroke kept;
+        const size_t m = out.points.size();
+        for (size_t i = 0; i < m; ++i) {
+            if (i % static_cast<size_t>(p.keepEvery) != 0 && i + 1 != m) continue;
+            kept.points.push_back(out.points[i]);
+            if (out.times.size() == m) kept.times.push_back(out.times[i]);
+        }
+        out.points = kept.points;
+        out.times = kept.times;
+    }
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     for (const auto& q : out.points) c += q;
     c /= double(out.points.size());

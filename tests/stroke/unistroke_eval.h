@@ -107,8 +107,16 @@ namespace sculptline::stroketest {
 /// length drawn again (a loop overshot along its first side; the repeated samples are spaced and
 /// timed as the originals), or drawn on straight past its end by `extendShare` of its length (the
 /// closing corner overshot), and its times scaled by `timeScale` (a slower or faster hand).
+/// Also: each point moved to the mean of the path within `roundShare` of the stroke's length around
+/// it (a box filter along the arc: corners rounded off with a radius of about a quarter of that, as
+/// a hand drawing fast does), and only every `keepEvery`-th sample kept (ends kept: a coarser pen).
 struct Perturbation {
     double rotateDeg = 0, aspect = 1, cutShare = 0, overshootShare = 0, timeScale = 1, extendShare = 0;
+    double roundShare = 0;
+    int keepEvery = 1;
+    /// Drawn from a little before its start: a straight lead-in of this share of its length, on the
+    /// line of its first 5 % (with extendShare: a loop begun and ended past the same corner).
+    double leadInShare = 0;
 };
 solvers::stroke::Stroke perturbStroke(const solvers::stroke::Stroke& stroke, const Perturbation& p);
 

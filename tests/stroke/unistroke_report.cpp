@@ -6,6 +6,7 @@
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
 //   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
 //   unistroke-report --augment --loso ...      the same on s02-s06 and their perturbed copies
+//   unistroke-report --augment-rounded --loso ...  ... and copies with corners rounded (8 %, 12 %)
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -13,7 +14,8 @@
 //                                              overshot and sped up (Perturbation): accuracy per gesture
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
-// crossingTail).
+// crossingTail, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing).
+// Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
 // held-out ones are not for tuning.
 #include "unistroke_eval.h"
@@ -36,6 +38,7 @@ namespace {
 
 sculptline::solvers::stroke::RecognizeOptions gOptions;
 bool gAugment = false;
+bool gAugmentRounded = false;
 
 // The development recordings and, for each, the same stroke drawn otherwise as a person might
 // (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
@@ -47,7 +50,12 @@ std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
         {30, 1, 0, 0, 1, 0}, {0, 0.7, 0, 0, 1, 0}, {0, 1.5, 0, 0, 1, 0}, {0, 1, 0.03, 0, 1, 0}, {0, 1, 0.06, 0, 1, 0}, {0, 1, 0, 0, 1, 0.03},
     };
     std::vector<st::Recording> out = recs;
-    for (const auto& p : ways)
+    std::vector<st::Perturbation> all = ways;
+    if (gAugmentRounded) {  // --augment-rounded: also with corners rounded over 8 % and 12 % of the length
+        all.push_back({0, 1, 0, 0, 1, 0, 0.08});
+        all.push_back({0, 1, 0, 0, 1, 0, 0.12});
+    }
+    for (const auto& p : all)
         for (const auto& r : recs) {
             out.push_back(r);
             out.back().stroke = st::perturbStroke(r.stroke, p);
@@ -81,6 +89,10 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "maxOvershoot") o.maxOvershoot = v;
     else if (k == "minLoopTurn") o.minLoopTurn = v;
     else if (k == "crossingTail") o.crossingTail = v;
+    else if (k == "nearLoopTurn") o.nearLoopTurn = v;
+    else if (k == "cornerRounding") o.cornerRounding = v;
+    else if (k == "nearLoopHeading") o.nearLoopHeading = v;
+    else if (k == "nearLoopGap") o.nearLoopGap = v;
     else return false;
     return true;
 }
@@ -129,11 +141,11 @@ void leaveOneSubjectOut(const std::vector<st::Recording>& recs, const std::strin
         correct += mine.first;
         total += mine.second;
         correctDefault += dc;
-        std::cout << "| " << out << " | " << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
+        std::cout << "| " << out << " | " << std::defaultfloat << std::setprecision(6) << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
                   << 100.0 * mine.first / mine.second << " % | " << 100.0 * dc / mine.second << " % |" << std::defaultfloat << '\n';
     }
-    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % | " << 100.0 * correctDefault / total
-              << " % |" << std::defaultfloat << '\n';
+    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % (" << correct << '/' << total << ") | "
+              << 100.0 * correctDefault / total << " % (" << correctDefault << '/' << total << ") |" << std::defaultfloat << '\n';
 }
 
 double turnDeg(const std::vector<sculptline::solvers::stroke::Point2>& pts, const sculptline::solvers::stroke::Point2& c)
@@ -163,8 +175,8 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare (--perturb-dev).
         st::Perturbation pert;
         if (const char* e = std::getenv("DUMP_PERTURB")) {
-            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
-                        &pert.extendShare);
+            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
+                        &pert.extendShare, &pert.roundShare, &pert.keepEvery, &pert.leadInShare);
         }
         const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
         const sk::FitResult& fit = sr.fit;
@@ -177,6 +189,21 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         if (std::getenv("DUMP_LOOP") && rec.circle.valid) {  // turn about the fitted circle's centre, end gap / extent
             const auto& q = rec.geometry.points;
             std::cout << "  turn=" << std::setprecision(3) << turnDeg(q, rec.circle.center) << " gap=" << (q.back() - q.front()).norm() / rec.geometry.extent;
+            // How far the closing segment (end -> start) is from the stroke's heading at its end and
+            // at its start (degrees), headings over a tenth of the extent.
+            const auto heading = [&](bool atEnd) {
+                const int n = static_cast<int>(q.size());
+                const int a = atEnd ? n - 1 : 0, step = atEnd ? -1 : 1;
+                int j = a;
+                while (j + step >= 0 && j + step < n && (q[j] - q[a]).norm() < 0.1 * rec.geometry.extent) j += step;
+                return sk::Point2(atEnd ? q[a] - q[j] : q[j] - q[a]);
+            };
+            const sk::Point2 gapDir = q.front() - q.back();
+            const auto angle = [](const sk::Point2& u, const sk::Point2& v) {
+                return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v)) * 180 / M_PI;
+            };
+            std::cout << " hend=" << angle(heading(true), gapDir) << " hstart=" << angle(heading(false), gapDir)
+                      << " gaplen=" << gapDir.norm() / rec.geometry.length;
         }
         if (std::getenv("DUMP_VERTICES")) {  // vertices in units of the extent, from the points' first sample
             std::cout << "  V:";
@@ -300,6 +327,13 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"overshoot 15 %", {0, 1, 0, 0.15, 1}},
         {"end extended 3 %", {0, 1, 0, 0, 1, 0.03}},
         {"end extended 6 %", {0, 1, 0, 0, 1, 0.06}},
+        {"both ends past the start 3 %", {0, 1, 0, 0, 1, 0.03, 0, 1, 0.03}},
+        {"both ends past the start 5 %", {0, 1, 0, 0, 1, 0.05, 0, 1, 0.05}},
+        {"corners rounded 4 %", {0, 1, 0, 0, 1, 0, 0.04}},
+        {"corners rounded 8 %", {0, 1, 0, 0, 1, 0, 0.08}},
+        {"corners rounded 12 %", {0, 1, 0, 0, 1, 0, 0.12}},
+        {"every 2nd sample", {0, 1, 0, 0, 1, 0, 0, 2}},
+        {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
         {"times x2", {0, 1, 0, 0, 2}},
     };
@@ -380,6 +414,8 @@ int main(int argc, char** argv)
             return 0;
         } else if (!std::strcmp(argv[i], "--augment")) {  // --loso also on the perturbed copies (perturbDev)
             gAugment = true;
+        } else if (!std::strcmp(argv[i], "--augment-rounded")) {  // ... and on copies with rounded corners
+            gAugment = gAugmentRounded = true;
         } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
             const std::string k = argv[++i];
             std::vector<double> values;
