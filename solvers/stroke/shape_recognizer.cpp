@@ -259,19 +259,33 @@ QuadShape classifyQuad(const std::vector<Point2>& v, const RecognizeOptions& o)
     return q;
 }
 
-// Rectangle (or square) with the quad's orientation, centred on its vertices' centroid.
-std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
+// The rectangle (or square) a quad stands for: the quad's orientation, centred on its vertices'
+// centroid, half-sides the vertices' mean distances from the centre along each axis.
+struct RectangleFrame {
+    Point2 c, ux, uy;
+    double hx = 0.0, hy = 0.0;
+};
+
+RectangleFrame rectangleFrame(const std::vector<Point2>& v, bool square)
 {
     const double th = quadOrientation(v);
-    const Point2 ux(std::cos(th), std::sin(th)), uy(-ux.y(), ux.x());
-    Point2 c = Point2::Zero();
-    for (const auto& p : v) c += p / 4.0;
-    double hx = 0, hy = 0;
+    RectangleFrame f;
+    f.ux = Point2(std::cos(th), std::sin(th));
+    f.uy = Point2(-f.ux.y(), f.ux.x());
+    f.c = Point2::Zero();
+    for (const auto& p : v) f.c += p / 4.0;
     for (const auto& p : v) {
-        hx += std::abs((p - c).dot(ux)) / 4.0;
-        hy += std::abs((p - c).dot(uy)) / 4.0;
+        f.hx += std::abs((p - f.c).dot(f.ux)) / 4.0;
+        f.hy += std::abs((p - f.c).dot(f.uy)) / 4.0;
     }
-    if (square) hx = hy = 0.5 * (hx + hy);
+    if (square) f.hx = f.hy = 0.5 * (f.hx + f.hy);
+    return f;
+}
+
+// Rectangle (or square) of rectangleFrame, one corner per vertex.
+std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
+{
+    const auto [c, ux, uy, hx, hy] = rectangleFrame(v, square);
     std::vector<Point2> out;
     for (const auto& p : v) {  // each vertex snaps to the corner in its quadrant: drawing order kept
         const double sx = (p - c).dot(ux) >= 0 ? 1 : -1, sy = (p - c).dot(uy) >= 0 ? 1 : -1;
@@ -286,16 +300,7 @@ std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
 // rectangle shrunk by the radius and a disc of that radius; distances are those to its outline.
 double roundedRectangleResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, bool square, double maxShare)
 {
-    const double th = quadOrientation(v);
-    const Point2 ux(std::cos(th), std::sin(th)), uy(-ux.y(), ux.x());
-    Point2 c = Point2::Zero();
-    for (const auto& p : v) c += p / 4.0;
-    double hx = 0, hy = 0;
-    for (const auto& p : v) {
-        hx += std::abs((p - c).dot(ux)) / 4.0;
-        hy += std::abs((p - c).dot(uy)) / 4.0;
-    }
-    if (square) hx = hy = 0.5 * (hx + hy);
+    const auto [c, ux, uy, hx, hy] = rectangleFrame(v, square);
     double best = std::numeric_limits<double>::infinity();
     const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));
     for (int i = 0; i <= steps; ++i) {
