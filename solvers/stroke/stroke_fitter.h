@@ -19,6 +19,10 @@ struct FitOptions {
     /// false: every conditioned sample enters the least squares ("speed-only" sampling of thesis
     /// Fig. 4-3 a, whose density follows the hand's slowness); true: eqs. 4-2/4-3.
     bool dynamicSampling = true;
+    /// After the error-driven fit of an open stroke without corners, look for fewer control points
+    /// with averaged knots and corrected parameters (stroke_fitter.cpp); kept only when every kept
+    /// raw sample stays within the tolerance. Loops and strokes with corners keep the error-driven fit.
+    bool fewerControlPoints = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;
@@ -32,10 +36,14 @@ struct FitResult {
     Curve3d curve{1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}};
     std::vector<int> corners;            ///< raw-sample indices of the corners (G0 joints of the curve)
     std::vector<int> samples;            ///< raw-sample indices used by the least squares
-    double maxError = 0.0;               ///< max distance of a conditioned sample to the curve (an upper
-                                         ///< bound: distance to a curve point near the foot point)
+    /// Raw-sample indices left out of the fit and of maxError (ConditionedStroke::dropped: hooks,
+    /// a loop's overshoot), increasing.
+    std::vector<int> dropped;
+    double maxError = 0.0;               ///< max distance of a raw sample not dropped to the curve
+                                         ///< (projected: measureSamples), model units
+    int refinements = 0;                 ///< refits needed to bring every kept sample within tolerance
     double tolerance = 0.0;              ///< the tolerance used, model units
-    bool converged = false;              ///< maxError <= tolerance
+    bool converged = false;              ///< maxError <= tolerance (every kept raw sample within it)
     std::vector<std::string> warnings;   ///< repairs made to the input
     ConditionedStroke conditioned;       ///< the smoothed input (for tests and recognition)
 };

@@ -52,6 +52,8 @@ TEST(StrokeCli, GivenStroke_WhenFit_ThenCurveCornersSamplesAndErrorWithinToleran
     EXPECT_GE(o["samples"].size(), 4u);
     EXPECT_EQ(o["tolerance"], 0.8);
     EXPECT_LE(o["max_error"].get<double>(), 0.8);
+    ASSERT_TRUE(o["dropped_samples"].is_array());  // no hook, no loop: nothing dropped
+    EXPECT_TRUE(o["dropped_samples"].empty());
     EXPECT_TRUE(o.contains("elapsed_ms"));
     EXPECT_EQ(o["curve"]["points"][0].size(), 2u);  // a 2D stroke gives 2D points
 }

@@ -1,0 +1,197 @@
+// Given synthesized and real pen strokes, when fitted, then the tolerance bounds the distance of
+// every raw sample the fit keeps (max_error reports exactly that), smoothing does not eat shape on
+// sparse strokes, the curve does not depend on the sampling density, few samples are dropped, and
+// the control-point count follows the tolerance.
+#include "fit_checks.h"
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/stroke/fit_check.h"
+#include "solvers/stroke/stroke_fitter.h"
+#include "unistroke_eval.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+namespace sculptline::stroketest {
+namespace {
+
+// The dense polyline of fit_checks.h (20,000 segments, equal steps in parameter) is off by up to its
+// sagitta and, where the parameter speed peaks (beside a G0 corner), by up to ~4e-3 units on these
+// 100-300-unit strokes (measured); the fitter's projection is exact to Newton's convergence.
+// Agreement within this is "the same number".
+constexpr double kMeasureAgreement = 1e-2;
+
+std::vector<Vec3> keptSamples(const Stroke& s, const FitResult& r)
+{
+    std::vector<Vec3> out;
+    for (size_t i = 0; i < s.points.size(); ++i)
+        if (!std::binary_search(r.dropped.begin(), r.dropped.end(), static_cast<int>(i))) out.push_back(s.points[i]);
+    return out;
+}
+
+// Largest distance from points of `a` (2,000 along its domain) to the curve `b`, and back.
+double hausdorff(const solvers::Curve3d& a, const solvers::Curve3d& b)
+{
+    auto along = [](const solvers::Curve3d& c) {
+        std::vector<Vec3> p;
+        for (int i = 0; i <= 2000; ++i) p.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / 2000));
+        return p;
+    };
+    return std::max(maxDeviation(b, along(a)), maxDeviation(a, along(b)));
+}
+
+std::vector<std::pair<std::string, Shape>> shapes()
+{
+    return {{"s-curve", sCurveShape(200)}, {"spiral", spiralShape(100, 2.5)}, {"flourish", flourishShape(300)},
+            {"circle", circleShape({10, 20, 0}, 80)}, {"square", polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)}};
+}
+
+TEST(FitTolerance, GivenNoisyShapesAtSeveralTolerances_WhenFitted_ThenEveryKeptRawSampleWithinToleranceAndMaxErrorExact)
+{
+    for (const auto& [name, shape] : shapes()) {
+        for (double tol : {0.0, 0.3, 2.0}) {  // 0: the default, 0.5 % of the extent
+            // Arrange
+            DrawOptions d;
+            d.noise = 0.1;
+            const Stroke s = draw(shape, d);
+            FitOptions o;
+            o.tolerance = tol;
+            // Act
+            const FitResult r = fitStroke(s, o);
+            // Assert
+            const double independent = maxDeviation(r.curve, keptSamples(s, r));
+            EXPECT_TRUE(r.converged) << name << " tol " << tol;
+            EXPECT_LE(r.maxError, r.tolerance) << name << " tol " << tol;
+            EXPECT_LE(independent, r.tolerance + kMeasureAgreement) << name << " tol " << tol;
+            EXPECT_NEAR(r.maxError, independent, kMeasureAgreement) << name << " tol " << tol;
+        }
+    }
+}
+
+// Sparse real strokes (the fast drawings: 10 px between samples) keep their loops and tails: with
+// smoothing bounded by the noise and the tolerance, even a tolerance of 0.05 px is met at every
+// sample (two unbounded mean-filter passes cut a pigtail's loop by 3-4 px).
+TEST(FitTolerance, GivenSparseRealCurvedStrokes_WhenFittedAtTinyTolerance_ThenEverySampleWithin)
+{
+    constexpr double kTinyTolerance = 0.05;  // px; the example
+    constexpr int kSparse = 60;              // samples: the fast drawings of a ~200 px gesture
+    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
+    int tried = 0;
+    for (const Recording& rec : recs) {
+        if (rec.gesture != "pigtail" && rec.gesture != "left_curly_brace" && rec.gesture != "right_curly_brace") continue;
+        if (static_cast<int>(rec.stroke.points.size()) > kSparse) continue;
+        ++tried;
+        FitOptions o;
+        o.tolerance = kTinyTolerance;
+        const FitResult r = fitStroke(rec.stroke, o);
+        EXPECT_TRUE(r.converged) << rec.subject << " " << rec.gesture << " " << rec.number << ": " << r.maxError;
+        EXPECT_LE(maxDeviation(r.curve, keptSamples(rec.stroke, r)), kTinyTolerance + kMeasureAgreement)
+            << rec.subject << " " << rec.gesture << " " << rec.speed << " " << rec.number;
+    }
+    EXPECT_GE(tried, 20) << "the development subjects have sparse pigtails and braces";
+}
+
+// The same shape drawn with half, once and twice the samples (what the window gives at another
+// size or pen rate) gives essentially the same curve: each is within the tolerance of samples of
+// one shape, so two of them differ by at most twice the tolerance plus the noise between them.
+TEST(FitTolerance, GivenSameStrokeAtThreeDensities_WhenFitted_ThenTheCurvesAgree)
+{
+    constexpr double kNoise = 0.05;
+    for (const auto& [name, shape] : shapes()) {
+        std::vector<FitResult> fits;
+        for (int samples : {60, 120, 240}) {
+            DrawOptions d;
+            d.noise = kNoise;
+            fits.push_back(fitStroke(drawWithSamples(shape, samples, d)));
+        }
+        const double tol = fits[1].tolerance;
+        for (size_t k : {0u, 2u}) {
+            EXPECT_LE(hausdorff(fits[k].curve, fits[1].curve), 2.0 * tol + 6.0 * kNoise) << name << " density " << k;
+            EXPECT_EQ(fits[k].curve.isClosed(), fits[1].curve.isClosed()) << name;
+        }
+    }
+}
+
+// Dropped samples (hooks, loop overshoot farther than the tolerance from the curve) stay few on
+// real strokes: the development subjects' 2,400 drawings, default fit. Every stroke converges.
+TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenFewSamplesDropped)
+{
+    // Of one stroke's samples. The drops on these logs (no pressure, so no hooks) are overshoot
+    // trimmed where conditioning closes a loop: up to 35 % of a fast x or star, whose ends meet
+    // near its start (measured; README "Fitting"), a few per cent of a circle.
+    constexpr double kMaxDroppedShare = 0.4;
+    // Of all samples of all strokes (measured 3.2 %).
+    constexpr double kMaxTotalDroppedShare = 0.05;
+    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
+    size_t dropped = 0, samples = 0;
+    std::map<int, int> histogram;
+    std::map<std::string, size_t> byGesture;
+    for (const Recording& rec : recs) {
+        const FitResult r = fitStroke(rec.stroke);
+        const double share = double(r.dropped.size()) / rec.stroke.points.size();
+        EXPECT_LE(share, kMaxDroppedShare) << rec.subject << " " << rec.gesture << " " << rec.speed << " " << rec.number;
+        dropped += r.dropped.size();
+        samples += rec.stroke.points.size();
+        ++histogram[static_cast<int>(r.dropped.size())];
+        byGesture[rec.gesture] += r.dropped.size();
+        EXPECT_TRUE(r.converged) << rec.subject << " " << rec.gesture << " " << rec.number << ": " << r.maxError << " > " << r.tolerance;
+    }
+    std::string h;
+    for (const auto& [count, strokes] : histogram) h += " " + std::to_string(count) + ":" + std::to_string(strokes);
+    std::printf("dropped samples per stroke (count:strokes):%s; %zu of %zu samples\nper gesture:", h.c_str(), dropped, samples);
+    for (const auto& [g, n] : byGesture) std::printf(" %s %zu", g.c_str(), n);
+    std::printf("\n");
+    EXPECT_LE(static_cast<double>(dropped), kMaxTotalDroppedShare * static_cast<double>(samples)) << h;
+}
+
+TEST(FitTolerance, GivenCleanSCurve_WhenTheToleranceIsLoosened_ThenFewerControlPoints)
+{
+    DrawOptions d;
+    d.noise = 0.02;
+    const Stroke s = draw(sCurveShape(200), d);
+    std::vector<int> counts;
+    for (double tol : {0.25, 0.5, 1.0}) {
+        FitOptions o;
+        o.tolerance = tol;
+        const FitResult r = fitStroke(s, o);
+        ASSERT_TRUE(r.converged) << tol;
+        counts.push_back(r.curve.pointCount());
+    }
+    EXPECT_LE(counts[1], counts[0]);
+    EXPECT_LE(counts[2], counts[1]);
+    EXPECT_LT(counts[2], counts[0]) << "1.0 against 0.25";
+}
+
+// measureSamples against the independent dense-polyline measure of fit_checks.h: no sample's
+// bound below its distance, and the same maximum, on open curves, loops and loops with corners.
+// (The kernel's CurveProjector is no reference here: on the square it misses foot points beside
+// the triple knots at a closed curve's seam, reporting 2.83 where the curve passes at 0.57.)
+TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolylineMeasure)
+{
+    for (const auto& [name, shape] : shapes()) {
+        DrawOptions d;
+        d.noise = 0.5;
+        const Stroke s = draw(shape, d);
+        FitOptions o;
+        o.tolerance = 3.0;  // loose: many samples away from the curve
+        const FitResult r = fitStroke(s, o);
+        const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0);
+        double worst = 0;
+        for (size_t i = 0; i < s.points.size(); ++i) {
+            const double dense = maxDeviation(r.curve, {s.points[i]});
+            worst = std::max(worst, dense);
+            EXPECT_GE(dev.bound[i], dense - kMeasureAgreement) << name << " sample " << i << ": a bound below the distance";
+        }
+        EXPECT_NEAR(dev.maxError, worst, kMeasureAgreement) << name;
+    }
+}
+
+TEST(FitTolerance, GivenBadCheckInput_WhenMeasured_ThenClearError)
+{
+    const solvers::Curve3d c(3, {0, 0, 0, 0, 1, 1, 1, 1}, {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(3, 0, 0)});
+    EXPECT_THROW(measureSamples(c, {Vec3(0, 0, 0)}, {}, 0.0), solvers::GeometryError);
+    EXPECT_THROW(measureSamples(c, {Vec3(0, 0, 0)}, {1, 0}, 0.1), solvers::GeometryError);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest
