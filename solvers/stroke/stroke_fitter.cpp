@@ -239,21 +239,29 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     SplineFitOptions sopt = options.spline;
     sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
     FitPass fit;
-    for (int round = 0;; ++round) {
-        fit = fitConditioned(cs, fitPoints, corners, samples, sopt);
-        const SampleDeviation dev = measureSamples(fit.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
-        res.maxError = dev.maxError;
-        res.converged = dev.maxError <= res.tolerance;
-        res.refinements = round;
-        if (res.converged || round == kMaxRefinements || sopt.tolerance <= kMinInnerShare * res.tolerance) break;
-        sopt.tolerance = std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / dev.maxError);
-    }
-    if (res.converged && !cs.closed && corners.empty() && options.fewerControlPoints) {
-        // FitOptions::fewerControlPoints: the fewest control points with knots averaged over the
-        // samples' parameters (The NURBS Book eq. 9.69) and the parameters corrected toward their
-        // foot points (Hoschek), searched by bisection below the error-driven count. A count is
-        // taken only when every kept raw sample lies within the tolerance (measureSamples); its
-        // samples' own distances reject it first, without that measure.
+    // The averaged-knot search (FitOptions::fewerControlPoints) applies to open strokes without
+    // corners; there the error-driven fit is first only its ceiling, and its refinement rounds run
+    // only if the search finds nothing.
+    const bool search = !cs.closed && corners.empty() && options.fewerControlPoints;
+    int round = 0;
+    auto refine = [&](int rounds) {
+        for (;; ++round) {
+            fit = fitConditioned(cs, fitPoints, corners, samples, sopt);
+            const SampleDeviation dev = measureSamples(fit.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
+            res.maxError = dev.maxError;
+            res.converged = dev.maxError <= res.tolerance;
+            res.refinements = round;
+            if (res.converged || round >= rounds || sopt.tolerance <= kMinInnerShare * res.tolerance) break;
+            sopt.tolerance = std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / dev.maxError);
+        }
+    };
+    refine(search ? 0 : kMaxRefinements);
+    if (search) {
+        // The fewest control points with knots averaged over the samples' parameters (The NURBS
+        // Book eq. 9.69) and the parameters corrected toward their foot points (Hoschek), searched
+        // by bisection below the error-driven count (at it, when that count missed a sample). A
+        // count is taken only when every kept raw sample lies within the tolerance
+        // (measureSamples); the samples' own distances reject it first, without that measure.
         SplineFitOptions alt = sopt;
         alt.knotPlacement = KnotPlacement::Averaged;
         alt.averagedCorrections = kAveragedCorrections;
@@ -263,23 +271,39 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // (KnotRemoval::AllKnots) therefore counts up from the smallest instead and so never keeps
         // more than the default's bisection.
         const bool scan = options.spline.removal == KnotRemoval::AllKnots;
-        int lo = 4, hi = fit.curve.pointCount() - 1;
+        const int ceiling = fit.curve.pointCount() - (res.converged ? 1 : 0);
+        // The search runs on the samples' own distances (cheap); only the count it ends at is
+        // measured on every raw sample, and if that misses, the next counts up (kVerifySteps).
+        constexpr int kVerifySteps = 3;
+        auto trial = [&](int count) {
+            alt.averagedControlPoints = count;
+            return fitConditioned(cs, fitPoints, corners, samples, alt);
+        };
+        int lo = 4, hi = ceiling, best = -1;
+        FitPass bestPass;
         while (lo <= hi) {
             const int mid = scan ? lo : (lo + hi) / 2;
-            alt.averagedControlPoints = mid;
-            FitPass a = fitConditioned(cs, fitPoints, corners, samples, alt);
-            bool ok = a.maxError <= res.tolerance;
-            if (ok) {
-                const SampleDeviation dev = measureSamples(a.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
-                ok = dev.maxError <= res.tolerance;
-                if (ok) {
-                    fit = std::move(a);
-                    res.maxError = dev.maxError;
-                }
-            }
+            FitPass a = trial(mid);
+            const bool ok = a.maxError <= res.tolerance;
+            if (ok) best = mid, bestPass = std::move(a);
             if (ok && scan) break;
             if (ok) hi = mid - 1;
             else lo = mid + 1;
+        }
+        for (int count = best, step = 0; count > 0 && count <= ceiling && step <= kVerifySteps; ++count, ++step) {
+            FitPass a = count == best ? std::move(bestPass) : trial(count);
+            if (!(a.maxError <= res.tolerance)) continue;
+            const SampleDeviation dev = measureSamples(a.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
+            if (dev.maxError <= res.tolerance) {
+                fit = std::move(a);
+                res.maxError = dev.maxError;
+                res.converged = true;
+                break;
+            }
+        }
+        if (!res.converged) {
+            ++round;
+            refine(kMaxRefinements);
         }
     }
     if (!res.converged) {
