@@ -279,26 +279,49 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             alt.averagedControlPoints = count;
             return fitConditioned(cs, fitPoints, corners, samples, alt);
         };
-        int lo = 4, hi = ceiling, best = -1;
-        FitPass bestPass;
-        while (lo <= hi) {
-            const int mid = scan ? lo : (lo + hi) / 2;
-            FitPass a = trial(mid);
-            const bool ok = a.maxError <= res.tolerance;
-            if (ok) best = mid, bestPass = std::move(a);
-            if (ok && scan) break;
-            if (ok) hi = mid - 1;
-            else lo = mid + 1;
-        }
-        for (int count = best, step = 0; count > 0 && count <= ceiling && step <= kVerifySteps; ++count, ++step) {
-            FitPass a = count == best ? std::move(bestPass) : trial(count);
-            if (!(a.maxError <= res.tolerance)) continue;
+        auto take = [&](FitPass& a) {
+            if (!(a.maxError <= res.tolerance)) return false;
             const SampleDeviation dev = measureSamples(a.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
-            if (dev.maxError <= res.tolerance) {
-                fit = std::move(a);
-                res.maxError = dev.maxError;
-                res.converged = true;
-                break;
+            if (!(dev.maxError <= res.tolerance)) return false;
+            fit = std::move(a);
+            res.maxError = dev.maxError;
+            return res.converged = true;
+        };
+        bool found = false;
+        if (scan) {
+            for (int count = 4; count <= ceiling && !found; ++count) {
+                FitPass a = trial(count);
+                found = take(a);
+            }
+        } else {
+            int lo = 4, hi = ceiling, best = -1;
+            FitPass bestPass;
+            while (lo <= hi) {
+                const int mid = (lo + hi) / 2;
+                FitPass a = trial(mid);
+                const bool ok = a.maxError <= res.tolerance;
+                if (ok) best = mid, bestPass = std::move(a);
+                if (ok) hi = mid - 1;
+                else lo = mid + 1;
+            }
+            for (int count = best, step = 0; count > 0 && count <= ceiling && step <= kVerifySteps && !found; ++count, ++step) {
+                FitPass a = count == best ? std::move(bestPass) : trial(count);
+                found = take(a);
+            }
+        }
+        if (!found && res.converged && sopt.removal == KnotRemoval::LastRound) {
+            // Nothing below the error-driven count: its knots are tried for removal again, all of
+            // them (KnotRemoval::AllKnots; spiral 19 -> 18), which costs a second error-driven fit
+            // only on such strokes.
+            SplineFitOptions all = sopt;
+            all.removal = KnotRemoval::AllKnots;
+            FitPass a = fitConditioned(cs, fitPoints, corners, samples, all);
+            if (a.curve.pointCount() < fit.curve.pointCount()) {
+                const SampleDeviation dev = measureSamples(a.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
+                if (dev.maxError <= res.tolerance) {
+                    fit = std::move(a);
+                    res.maxError = dev.maxError;
+                }
             }
         }
         if (!res.converged) {

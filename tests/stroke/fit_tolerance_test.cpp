@@ -144,6 +144,40 @@ TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenFewSamplesDropped)
     EXPECT_LE(static_cast<double>(dropped), kMaxTotalDroppedShare * static_cast<double>(samples)) << h;
 }
 
+// Smoothing follows the noise that is there: a jittery stroke is smoothed (by up to the share of
+// the tolerance ConditioningOptions::smoothingShare allows), a clean one is left almost as drawn,
+// and the noise estimate (fourth differences, robust median) finds the sigma the strokes were drawn
+// with. 1,000 samples: the median of ~1,000 fourth differences has a relative standard error of
+// ~3 %, so 25 % is a wide band that a biased estimator (second differences, which read the
+// curvature of the 10-sample-per-unit flourish as noise) would still leave.
+TEST(FitTolerance, GivenJitteryAndCleanStrokes_WhenFitted_ThenNoiseEstimatedAndOnlyTheJitterySmoothed)
+{
+    constexpr double kEstimateBand = 0.25;
+    for (const auto& [name, shape] : shapes()) {
+        for (double sigma : {0.0, 0.3, 1.0}) {
+            // Arrange
+            DrawOptions d;
+            d.noise = sigma;
+            const Stroke s = drawWithSamples(shape, 1000, d);
+            // Act
+            const FitResult r = fitStroke(s);
+            // Assert
+            const ConditionedStroke& cs = r.conditioned;
+            const ConditioningOptions copt;
+            if (sigma > 0.0) {
+                EXPECT_NEAR(cs.noise, sigma, kEstimateBand * sigma) << name << " sigma " << sigma;
+                // The filter moves points by about sigma; the budget caps it at share * tolerance.
+                EXPECT_GT(cs.smoothingShift, 0.5 * std::min(sigma, copt.smoothingShare * r.tolerance)) << name << " sigma " << sigma;
+            } else {
+                // Only the synthesis' own rounding and the shape's fourth derivative remain.
+                EXPECT_LT(cs.noise, 0.02) << name;
+                EXPECT_LE(cs.smoothingShift, copt.noiseMultiple * cs.noise + 1e-12) << name;
+            }
+            EXPECT_LE(cs.smoothingShift, copt.smoothingShare * r.tolerance + 1e-12) << name << " sigma " << sigma;
+        }
+    }
+}
+
 TEST(FitTolerance, GivenCleanSCurve_WhenTheToleranceIsLoosened_ThenFewerControlPoints)
 {
     DrawOptions d;
