@@ -73,4 +73,20 @@ std::string constraintShapeError(ConstraintType type, const std::vector<EntityKi
     return name + ": unknown type";
 }
 
+solvers::Curve3d preimageCurve(const solvers::Curve2d& domain)
+{
+    std::vector<Eigen::Vector3d> uv;
+    uv.reserve(domain.points().size());
+    for (const Eigen::Vector2d& p : domain.points()) uv.emplace_back(p.x(), p.y(), 0.0);
+    return solvers::Curve3d(domain.degree(), domain.knots(), std::move(uv), domain.weights(), domain.isClosed());
+}
+
+solvers::Curve2d preimageDomain(const solvers::Curve3d& preimage)
+{
+    std::vector<Eigen::Vector2d> uv;
+    uv.reserve(preimage.points().size());
+    for (const Eigen::Vector3d& p : preimage.points()) uv.emplace_back(p.x(), p.y());
+    return solvers::Curve2d(preimage.degree(), preimage.knots(), std::move(uv), preimage.weights(), preimage.isClosed());
+}
+
 }  // namespace sculptline::model

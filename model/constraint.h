@@ -84,6 +84,12 @@ struct Constraint {
 std::string constraintShapeError(ConstraintType type, const std::vector<EntityKind>& targets, size_t parameters,
                                  size_t indices);
 
+/// A curve-on-surface pre-image as it is stored (`Constraint::preimage`: points [u, v, 0]) from the
+/// domain curve the incidence solver reads, and back; degree, knots and closure are kept, so
+/// preimageDomain(preimageCurve(d)) == d exactly.
+solvers::Curve3d preimageCurve(const solvers::Curve2d& domain);
+solvers::Curve2d preimageDomain(const solvers::Curve3d& preimage);
+
 /// Placement and construction records are derived from the entity they make (its plane, its recipe
 /// and inputs), kept by the model as the entity changes; the others are the designer's, added and
 /// removed as such (and saved).

@@ -495,11 +495,7 @@ private:
             solvers::incidence::IncidenceCurve in;
             in.target = *curve->world;
             in.fixed = curve->fixed;
-            if (c->preimage) {
-                std::vector<Eigen::Vector2d> uv;
-                for (const Eigen::Vector3d& p : c->preimage->points()) uv.emplace_back(p.x(), p.y());
-                in.domain = solvers::Curve2d(c->preimage->degree(), c->preimage->knots(), uv);
-            }
+            if (c->preimage) in.domain = preimageDomain(*c->preimage);
             curves.push_back(std::move(in));
         }
         return curves;

@@ -347,6 +347,7 @@ SoSeparator* ModelView::makeSurfaceEntityNode(const model::Entity& e, bool reuse
     node->setName(entityNodeName(model::EntityKind::Surface, e.id).c_str());
     nodes_[e.id] = node;
     builtShape_[e.id] = e.shapeVersion;
+    applySurfaceDisplay(e);
     return node;
 }
 
@@ -385,6 +386,8 @@ void ModelView::entityRemoved(const model::Entity& e)
     frames_.erase(e.id);
     builtShape_.erase(e.id);
     grids_.erase(e.id);
+    analysis_->remove(e.id);
+    displays_.erase(e.id);
     if (highlighted_ == e.id) highlighted_ = 0;
     marked_.erase(std::remove(marked_.begin(), marked_.end(), e.id), marked_.end());
 }
@@ -485,7 +488,38 @@ bool ModelView::updateSurfaceInPlace(const model::Entity& e)
     builtShape_[e.id] = e.shapeVersion;
     ++gridReuses_;
     ++inPlaceUpdates_;
+    applySurfaceDisplay(e);
     return true;
+}
+
+void ModelView::applySurfaceDisplay(const model::Entity& e)
+{
+    const auto grid = grids_.find(e.id);
+    const auto node = nodes_.find(e.id);
+    const bool meshed = e.surface && grid != grids_.end() && node != nodes_.end() && grid->second.node == node->second;
+    if (!meshed) {
+        analysis_->remove(e.id);  // nothing drawn from the kernel's mesh (failed, hidden, NURBS nodes)
+        return;
+    }
+    analysis_->apply(e.id, node->second, grid->second.fields, *e.surface, grid->second.u, grid->second.v, surfaceDisplay(e.id));
+}
+
+void ModelView::setSurfaceDisplay(model::EntityId id, SurfaceDisplay mode)
+{
+    if (id == 0) {
+        defaultDisplay_ = mode;
+        displays_.clear();
+    } else {
+        displays_[id] = mode;
+    }
+    for (const auto& [eid, e] : model_.entities())
+        if (e.kind == model::EntityKind::Surface && (id == 0 || eid == id)) applySurfaceDisplay(e);
+}
+
+SurfaceDisplay ModelView::surfaceDisplay(model::EntityId id) const
+{
+    const auto it = displays_.find(id);
+    return it != displays_.end() ? it->second : defaultDisplay_;
 }
 
 void ModelView::constraintAdded(const model::Constraint& c)

@@ -9,6 +9,7 @@
 // A curve on a plane is tessellated once, in the plane's local frame, and placed by the plane's one
 // SoTransform: a plane drag rewrites two fields, however many curves the plane carries.
 #include "scene/geometry_nodes.h"
+#include "scene/surface_analysis_display.h"
 #include "model/model.h"
 
 #include <map>
@@ -65,6 +66,13 @@ public:
     void setMarked(const std::vector<model::EntityId>& ids);
     const std::vector<model::EntityId>& marked() const { return marked_; }
 
+    /// Surface display mode (scene/surface_analysis_display.h) of surface `id`; id 0 sets it for
+    /// every surface, present and future, and drops the per-surface choices. Kept through rebuilds
+    /// and drags; a view setting, not saved.
+    void setSurfaceDisplay(model::EntityId id, SurfaceDisplay mode);
+    SurfaceDisplay surfaceDisplay(model::EntityId id) const;
+    SurfaceAnalysisDisplay& surfaceAnalysis() { return *analysis_; }
+
     void entityAdded(const model::Entity& entity) override;
     void entityRemoved(const model::Entity& entity) override;
     void entityUpdated(const model::Entity& entity) override;
@@ -94,6 +102,9 @@ private:
     /// Rewrites the vertices and normals of surface `e`'s node on its kept grid when only its
     /// control points (or weights) changed; false (nothing done) when it cannot.
     bool updateSurfaceInPlace(const model::Entity& entity);
+
+    /// Draws surface `e`'s node in its display mode (after every build or in-place rewrite).
+    void applySurfaceDisplay(const model::Entity& e);
 
     /// The parameter grid a surface was last tessellated on.
     struct SurfaceGrid {
@@ -131,6 +142,9 @@ private:
     std::vector<model::EntityId> marked_;
     /// Curves the drag in progress moved (drawn changed until it ends).
     std::set<model::EntityId> changedInDrag_;
+    std::unique_ptr<SurfaceAnalysisDisplay> analysis_ = std::make_unique<SurfaceAnalysisDisplay>();
+    SurfaceDisplay defaultDisplay_ = SurfaceDisplay::Shaded;
+    std::map<model::EntityId, SurfaceDisplay> displays_;  ///< per-surface choices over the default
     bool nurbsNodes_ = false;
     bool polygonsVisible_ = false;
     int nodeBuilds_ = 0;

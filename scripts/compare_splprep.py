@@ -6,7 +6,7 @@ subjects only).
 
     scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real]
         BUILD_DIR defaults to build-stroke and needs stroke-export and sculptline-cli built there;
-        the OCCT column needs occt-fit (built when CMake finds Debian's libocct-*-dev), else "-".
+        the OCCT column needs occt-fit (built with the project, OpenCASCADE being required), else "-".
         --check: exit status 1 if, in a compared mode, a synthesized stroke needs more control points
         than splprep, or the total over all strokes exceeds either peer's total; ctest runs it so
         (tests/stroke/CMakeLists.txt). The wider goal, no more than the fewer of the two peers on

@@ -13,6 +13,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # Reports abort the program (so the test fails) and name file and line.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+# OpenCASCADE's translators leak a little per process (scripts/lsan-occt.supp); the list of
+# suppressions used stays off stderr, which the CLI tests expect empty.
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$root/scripts/lsan-occt.supp:print_suppressions=0}
 # Three stroke tests hold thresholds that the fits of this build (clang, -O1) miss by one: 17 control
 # points against speed-only sampling's 16, one false corner on a smooth curve and on the flourish.
 # No sanitizer reports anything there, and they pass in the Release build (GCC, -O2) that ./test.sh
@@ -27,7 +30,14 @@ compiler_sensitive='StrokeFit.GivenFig43Stroke_WhenDynamicThresholdSampling|Corn
 # code at -O1 with ASan) an input is 10-30 times slower than in Release: a few legal lift and surface
 # inputs take 0.3-1.4 s here against 27-60 ms in Release, so a 1 s limit would report hangs that are
 # not there. The campaigns (scripts/fuzz.sh) keep the 1 s limit and report such inputs for a look.
+#
+# `solid` is left out of the short runs (its seeds still run under ASan/UBSan in ctest's fuzz_solid):
+# every input converts a volume through OpenVDB, 14 inputs a second in this build, so 20,000 runs
+# would take 25 minutes, and the first CI run with it found an input whose tessellation took over
+# 5 s (build-asan/fuzz-artifacts/solid/timeout-4f94554f..., kept as tests/fuzz/slow/solid_tessellation.json,
+# not yet fixed: README "Solids"). Campaigns on it: scripts/fuzz.sh --seconds N solid.
 runs=${FUZZ_RUNS:-20000}
 if ((runs > 0)); then
-  "$root/scripts/fuzz.sh" --runs "$runs" --seed 1 --timeout 5 --fresh all
+  mapfile -t short_targets < <(ls "$root/tests/fuzz/corpus" | grep -vx solid)
+  "$root/scripts/fuzz.sh" --runs "$runs" --seed 1 --timeout 5 --fresh "${short_targets[@]}"
 fi

@@ -10,6 +10,7 @@
 #include <QSlider>
 #include <QVBoxLayout>
 #include <QTextStream>
+#include <QTimer>
 
 #include <Eigen/Geometry>
 
@@ -87,10 +88,24 @@ InspectorDock::InspectorDock(QWidget* parent) : QDockWidget(tr("Inspector"), par
 
 QString InspectorDock::text() const { return text_->toPlainText(); }
 
+void InspectorDock::followCurve(const model::Model& model, model::EntityId id)
+{
+    // Hidden: show() draws it afresh when the drag ends (the document's entitiesChanged). A plane or
+    // a surface has no plot.
+    const model::Entity* e = model.find(id);
+    if (plotPending_ || !plot_->isVisible() || !e || e->kind != model::EntityKind::Curve) return;
+    plotPending_ = true;
+    QTimer::singleShot(0, this, [this, &model, id]() {
+        plotPending_ = false;
+        const model::Entity* now = model.find(id);
+        plot_->setCurve(now && now->kind == model::EntityKind::Curve ? now : nullptr);
+    });
+}
+
 void InspectorDock::show(const model::Model& model, model::EntityId id)
 {
     const model::Entity* e = model.find(id);
-    plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e->world : std::nullopt);
+    plot_->setCurve(e && e->kind == model::EntityKind::Curve ? e : nullptr);
     filling_ = true;
     sculpt_ = e && e->recipe && e->recipe->mode == model::Construction::Sculpt ? id : 0;
     stiffness_->setVisible(sculpt_ != 0);

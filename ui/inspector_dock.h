@@ -28,6 +28,9 @@ class InspectorDock : public QDockWidget {
 public:
     explicit InspectorDock(QWidget* parent = nullptr);
     void show(const model::Model& model, model::EntityId id);
+    /// The selected curve `id` changed shape (a drag's frame): its curvature plot follows, once per
+    /// event-loop turn however many updates came, while the plot is visible.
+    void followCurve(const model::Model& model, model::EntityId id);
     /// The text shown (tests read it).
     QString text() const;
     /// The control point list (one checkable item per unique point of the selected curve).
@@ -61,6 +64,7 @@ private:
     std::vector<QDoubleSpinBox*> distances_;
     bool filling_ = false;
     CurvaturePlot* plot_ = nullptr;
+    bool plotPending_ = false;
 };
 
 }  // namespace sculptline::ui

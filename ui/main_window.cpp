@@ -6,11 +6,13 @@
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
 #include "ui/autosave.h"
+#include "ui/aesthetics_dock.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
+#include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_history.h"
 #include "ui/view_navigation.h"
@@ -64,8 +66,6 @@ constexpr double kCurvePickRadius = 12.0;
 constexpr float kSameDepth = 0.5f;
 /// Samples per curve when looking for the nearest one on screen.
 constexpr int kCurvePickSamples = 128;
-/// How the view moves, in every mode (ui/view_navigation.h).
-const QString kNavigationHint = QStringLiteral("View: middle-drag or Alt+left turns, right-drag pans, wheel zooms; right-click: menu.");
 
 }  // namespace
 
@@ -106,16 +106,20 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         inspector_->show(document_->model(), id);
         updateStatus();
     });
+    connect(document_, &SketchDocument::selectionUpdated, this,
+            [this]() { inspector_->followCurve(document_->model(), document_->selection()); });
     connect(document_, &SketchDocument::strokeFinished, this, [this]() {
         recognition_->refresh();
         statusBar()->showMessage(document_->lastStroke().message);
         if (automated_) {
             const StrokeReport& r = document_->lastStroke();
             std::cerr << "sculptline: " << r.message.toStdString()
-                      << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString()) << "\n";
+                      << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString())
+                      << (r.habit.isEmpty() ? std::string() : "; " + r.habit.toStdString()) << "\n";
         }
     });
     connect(document_, &SketchDocument::strokeForgotten, this, [this]() { recognition_->refresh(); });
+    connect(document_, &SketchDocument::habitsChanged, this, [this](const QString& message) { statusBar()->showMessage(message, 10000); });
     connect(document_, &SketchDocument::surfaceStateChanged, this, [this]() {
         updateStatus();
         // A replay has nobody reading the status bar: its log says what the surface modes did.
@@ -172,6 +176,10 @@ void MainWindow::createActions()
     make(file, "file.save", tr("&Save"), QKeySequence::Save, [this]() { saveDocument(); });
     make(file, "file.saveAs", tr("Save &As..."), QKeySequence::SaveAs, [this]() { saveDocumentAs(); });
     make(file, "file.exportIv", tr("&Export Open Inventor (.iv)..."), QKeySequence(), [this]() { exportDocument(); });
+    make(file, "file.exportStep", tr("Export &STEP..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Step); });
+    make(file, "file.exportIges", tr("Export &IGES..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Iges); });
+    make(file, "file.exportStl", tr("Export S&TL..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Stl); });
+    make(file, "file.exportObj", tr("Export &OBJ..."), QKeySequence(), [this]() { exportGeometry(solvers::exchange::Format::Obj); });
     make(file, "file.recover", tr("Recover &Unsaved Work..."), QKeySequence(), [this]() { recoverFromMenu(); });
     make(file, "file.autosaveInterval", tr("Autosave &Interval..."), QKeySequence(), [this]() { chooseAutosaveInterval(); });
     file->addSeparator();
@@ -198,6 +206,8 @@ void MainWindow::createActions()
          QKeySequence(QStringLiteral("N")), [this]() { document_->chooseNextCandidate(); });
     make(edit, "stroke.useFreeform", tr("Use the freeform curve for the last stroke"), QKeySequence(),
          [this]() { document_->chooseRecognized(false); });
+    // Thesis §3.1.3: the user model learns from corrections; the designer can start afresh.
+    make(edit, "stroke.forgetHabits", tr("Forget recognition &habits"), QKeySequence(), [this]() { document_->forgetHabits(); });
 
     QMenu* plane = menuBar()->addMenu(tr("&Plane"));
     make(plane, "plane.add", tr("&Add plane facing the view"), QKeySequence(QStringLiteral("Ctrl+P")), [this]() { addPlaneFacingViewer(); });
@@ -287,6 +297,7 @@ void MainWindow::createActions()
                                     document_->setSculptCurveTangent(document_->sculptBase(), document_->recognizedCurve(), on);
                                 });
     holdTangent->setCheckable(true);
+    createAestheticsMenu();
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
@@ -298,6 +309,10 @@ void MainWindow::createActions()
     make(viewMenu, "view.hidePlane", tr("&Hide the selected plane"), QKeySequence(QStringLiteral("H")), [this]() { hideSelectedPlane(); });
     make(viewMenu, "view.hidePlanes", tr("Hide &all planes"), QKeySequence(QStringLiteral("Ctrl+Shift+H")), [this]() { setPlanesVisible(false); });
     make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
+    viewMenu->addSeparator();
+    // Zebra and curvature colouring of the selected surface (all surfaces when none is selected).
+    new SurfaceDisplayMenu(this, viewMenu, *document_,
+                           viewer_ ? std::function<SoCamera*()>([this]() { return viewer_->getCamera(); }) : std::function<SoCamera*()>());
 }
 
 void MainWindow::hideSelectedPlane()
@@ -352,14 +367,22 @@ void MainWindow::createDocks()
     auto* lcurve = new LCurveDock(*document_, this);
     addDockWidget(Qt::RightDockWidgetArea, lcurve);
     tabifyDockWidget(inspector_, lcurve);
+    // The selected curve's aesthetic analysis and the comb's controls: another tab there; View >
+    // Aesthetics brings it forward, View > Curvature comb draws the comb.
+    auto* aesthetics = new AestheticsDock(*document_, this);
+    addDockWidget(Qt::RightDockWidgetArea, aesthetics);
+    tabifyDockWidget(inspector_, aesthetics);
     inspector_->raise();
     lcurve->toggleViewAction()->setObjectName(QStringLiteral("view.lcurve"));
     if (auto* viewMenu = qobject_cast<QMenu*>(action(QStringLiteral("view.all"))->associatedWidgets().value(0))) {
         viewMenu->addAction(lcurve->toggleViewAction());
+        viewMenu->addAction(aesthetics->showAction());
+        viewMenu->addAction(aesthetics->combAction());
         // Each dock can be closed and brought back (a window fitted to a small screen hides them).
         QMenu* docks = viewMenu->addMenu(tr("&Docks"));
         for (QDockWidget* dock : {static_cast<QDockWidget*>(modes), static_cast<QDockWidget*>(recognition_),
-                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_)})
+                                  static_cast<QDockWidget*>(entities_), static_cast<QDockWidget*>(inspector_),
+                                  static_cast<QDockWidget*>(aesthetics)})
             docks->addAction(dock->toggleViewAction());
     }
     connect(document_, &SketchDocument::entitiesChanged, lcurve, &LCurveDock::refresh);
@@ -408,116 +431,6 @@ void MainWindow::setMode(Mode mode, std::optional<model::Construction> surfaceMo
         if (a->objectName() == modeActionName()) a->setChecked(true);
     }
     updateStatus();
-}
-
-void MainWindow::updateStatus()
-{
-    const model::EntityId plane = document_->activePlane();
-    QString text;
-    switch (mode_) {
-    case Mode::View: text = tr("View: drag to turn, right-drag to pan, wheel to zoom. S: sketch, E: select."); break;
-    case Mode::Sketch:
-        text = plane ? tr("Sketch: draw with the left button on plane %1; drag the plane's jack to move or turn it. Ctrl+P: new plane.").arg(plane)
-                     : tr("Sketch: there is no plane to draw on; Ctrl+P adds one facing the view.");
-        break;
-    case Mode::Oversketch:
-        text = tr("Over-sketch: draw over a curve (start on it, or near a curve of plane %1) to redraw that part of it.").arg(plane);
-        break;
-    case Mode::Lift: text = tr("Lift: draw from a point of one curve to a point of another; the stroke becomes a space curve of least curvature between them."); break;
-    case Mode::Pull:
-        text = tr("Pull: press on a curve and drag; the curve changes as little as it can to follow the point, keeping its pins "
-                  "and fixed points. Shift+click pins a point.");
-        break;
-    case Mode::Select: text = tr("Select: click a curve or a plane's jack; Delete removes the selection."); break;
-    case Mode::Sculpt: {
-        if (document_->sculptBase() == 0) {
-            text = tr("Sculpt: select a surface first (E, then click it or pick it in the list), then press Y.");
-            break;
-        }
-        const model::EntityId s = document_->sculptBase();
-        switch (document_->sculptTool()) {
-        case SketchDocument::SculptTool::Target:
-            text = tr("Sculpt surface %1: draw a target curve on the active plane; the surface's nearest curve moves onto it. Drag the plane to move it live. "
-                      "Alt+B bound, Alt+H handles, Alt+K block, Alt+D distance.").arg(s);
-            break;
-        case SketchDocument::SculptTool::Bound:
-            text = tr("Sculpt surface %1: draw a closed loop over the surface; only the region inside deforms (Alt+T: back to targets).").arg(s);
-            break;
-        case SketchDocument::SculptTool::Handle:
-            text = tr("Sculpt surface %1: click the surface to drop a handle; drag its jack to pull the point, turn its axes' ends to tilt the normal.").arg(s);
-            break;
-        case SketchDocument::SculptTool::Block:
-            text = tr("Sculpt surface %1: click near a control point to block it (it never moves) or free it again.").arg(s);
-            break;
-        case SketchDocument::SculptTool::Distance:
-            text = tr("Sculpt surface %1: click two surface points; their distance is held (set it in the inspector).").arg(s);
-            break;
-        case SketchDocument::SculptTool::Resketch: text = document_->resketchGuidance(); break;
-        }
-        break;
-    }
-    case Mode::Surface: text = surfaceGuidance(); break;
-    case Mode::Incidence:
-        text = document_->incidenceBase() != 0
-                   ? tr("Curves on surface %1: draw a curve on the active plane; the surface is solved to pass through it. Drag the plane or "
-                        "over-sketch the curve (O) and the surface follows; Ctrl+Shift+F fixes a curve (met exactly). The L-curve dock picks k.")
-                         .arg(document_->incidenceBase())
-                   : tr("Interpolation: click the curves a surface should pass through, then Enter (select a surface first and press I to draw onto it).");
-        if (!document_->surfaceMessage().isEmpty()) text = document_->surfaceMessage() + QStringLiteral("  ") + text;
-        break;
-    }
-    // The view moves the same way in every mode, so every mode's message ends with it.
-    if (mode_ != Mode::View) text += QStringLiteral("  ") + kNavigationHint;
-    statusBar()->showMessage(text);
-}
-
-QString MainWindow::modeActionName() const
-{
-    switch (mode_) {
-    case Mode::View: return QStringLiteral("mode.view");
-    case Mode::Sketch: return QStringLiteral("mode.sketch");
-    case Mode::Oversketch: return QStringLiteral("mode.oversketch");
-    case Mode::Lift: return QStringLiteral("mode.lift");
-    case Mode::Pull: return QStringLiteral("mode.pull");
-    case Mode::Select: return QStringLiteral("mode.select");
-    case Mode::Sculpt: return QStringLiteral("mode.sculpt");
-    case Mode::Incidence: return QStringLiteral("mode.incidence");
-    case Mode::Surface: break;
-    }
-    // "boundary-rotation" -> "mode.boundaryRotation"
-    QString name = QStringLiteral("mode.");
-    bool upper = false;
-    for (const char* c = surfaceMode_ ? model::constructionName(*surfaceMode_) : ""; *c; ++c) {
-        if (*c == '-') {
-            upper = true;
-            continue;
-        }
-        name += upper ? QChar(*c).toUpper() : QChar(*c);
-        upper = false;
-    }
-    return name;
-}
-
-QString MainWindow::surfaceGuidance() const
-{
-    if (!document_->surfaceMessage().isEmpty()) return document_->surfaceMessage();
-    if (!surfaceMode_) return QString();
-    const QString mode = QString::fromLatin1(model::constructionName(*surfaceMode_));
-    if (surfaceMode_ == model::Construction::Extrude) return tr("Extrude: press on a curve and drag; the surface follows the pointer.");
-    if (surfaceMode_ == model::Construction::Gordon) {
-        return tr("Gordon: click two or more curves of one family, Enter, then the curves crossing them, Enter (%1 picked). Esc forgets.")
-            .arg(document_->surfaceInputs().size());
-    }
-    if (surfaceMode_ == model::Construction::Network) {
-        return tr("Network: click the curves of a closed loop in order (or one closed curve), then Enter (%1 picked). Esc forgets.")
-            .arg(document_->surfaceInputs().size());
-    }
-    const model::InputCount count = model::surfaceInputCount(*surfaceMode_);
-    const int picked = static_cast<int>(document_->surfaceInputs().size());
-    QString text = tr("%1: click the %2").arg(mode, QString::fromStdString(model::surfaceInputRole(*surfaceMode_, picked)));
-    text += count.min == count.max ? tr(" (%1 of %2).").arg(picked + 1).arg(count.max)
-                                   : tr(" (%1 picked; Enter builds with %2 or more).").arg(picked).arg(count.min);
-    return text + tr(" Esc forgets the picks.");
 }
 
 void MainWindow::updateTitle()
@@ -730,7 +643,7 @@ model::EntityId MainWindow::curveNear(const QPoint& position) const
 
 bool MainWindow::refuseDialog(const char* action) const
 {
-    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv\n";
+    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj\n";
     return automated_;
 }
 

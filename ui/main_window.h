@@ -5,6 +5,7 @@
 // user what the current mode does with the mouse.
 #include "model/model.h"
 #include "model/document.h"
+#include "solvers/exchange/exchange.h"
 
 #include <QImage>
 #include <QMainWindow>
@@ -101,6 +102,7 @@ protected:
 
 private:
     void createActions();
+    void createAestheticsMenu();  // main_window_aesthetics.cpp
     void resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();
@@ -125,6 +127,8 @@ private:
     bool saveDocument();
     bool saveDocumentAs();
     void exportDocument();
+    /// File > Export STEP/IGES/STL/OBJ: a file dialog, then SketchDocument::exportGeometry.
+    void exportGeometry(solvers::exchange::Format format);
     void addPlaneFacingViewer();
     static SbBool viewerEvent(void* self, QEvent* event);
     /// Turns, pans or zooms the view for the buttons that do not draw (every mode); true when

@@ -19,6 +19,12 @@ RecognitionDock::RecognitionDock(SketchDocument& document, QAction* useShape, QA
     summary_ = new QLabel(box);
     summary_->setWordWrap(true);
     layout->addWidget(summary_);
+    habit_ = new QLabel(box);
+    habit_->setObjectName(QStringLiteral("recognition.habit"));
+    habit_->setWordWrap(true);
+    habit_->setStyleSheet(QStringLiteral("QLabel { background: #fff3c4; color: #5a4500; padding: 3px; }"));
+    habit_->setToolTip(tr("You corrected a similar stroke before; Edit > Forget recognition habits starts afresh"));
+    layout->addWidget(habit_);
     candidates_ = new QListWidget(box);
     candidates_->setSelectionMode(QAbstractItemView::NoSelection);
     candidates_->setToolTip(tr("Click a candidate to use that shape for the last stroke"));
@@ -39,9 +45,12 @@ void RecognitionDock::refresh()
 {
     const StrokeReport& report = document_.lastStroke();
     summary_->setText(report.message.isEmpty() ? tr("Draw a stroke in sketch mode.") : report.message);
+    habit_->setText(report.habit);
+    habit_->setVisible(!report.habit.isEmpty());
     candidates_->clear();
     for (const auto& [kind, score] : report.candidates) {
-        candidates_->addItem(QStringLiteral("%1  %2").arg(kind, -10).arg(score, 0, 'f', 2));
+        const bool habit = candidates_->count() == 0 && !report.habit.isEmpty();  // moved to the front by it
+        candidates_->addItem(QStringLiteral("%1  %2%3").arg(kind, -10).arg(score, 0, 'f', 2).arg(habit ? tr("  (your habit)") : QString()));
     }
     const bool choice = document_.recognitionChoiceAvailable();
     useShape_->setText(report.recognized.isEmpty() ? tr("Use the recognized shape") : tr("Use the recognized %1").arg(report.recognized));

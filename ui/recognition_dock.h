@@ -23,6 +23,7 @@ public:
 private:
     SketchDocument& document_;
     QLabel* summary_ = nullptr;
+    QLabel* habit_ = nullptr;  ///< shown when one of the designer's habits decided the shape
     QListWidget* candidates_ = nullptr;
     QAction* useShape_ = nullptr;
     QAction* useFreeform_ = nullptr;

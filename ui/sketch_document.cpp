@@ -1,5 +1,6 @@
 #include "ui/sketch_document.h"
 
+#include "manipulators/aesthetic_drag.h"
 #include "manipulators/curve_pull.h"
 #include "manipulators/plane_binding.h"
 #include "manipulators/point_handles.h"
@@ -37,6 +38,8 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
     root_->addChild(view_->root());
+    comb_ = std::make_unique<scene::CurvatureComb>(model_);
+    root_->addChild(comb_->root());
     feedback_ = std::make_unique<scene::StrokeFeedback>();
     root_->addChild(feedback_->root());
     // An undo past the last stroke's edit takes its markers and its report with it.
@@ -59,6 +62,7 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
                                     [this](model::EntityId point, const manipulators::PointPose& before,
                                            const manipulators::PointPose& after) { pointDragFinished(point, before, after); });
     root_->addChild(pointHandles_->root());
+    setUpAesthetics();
     root_->addChild(planeDraggers_->root());
     // Sculpt mode's click tools: a click on the surface drops a handle, blocks a point, picks a
     // distance's end; those tools draw no strokes.
@@ -80,9 +84,12 @@ SketchDocument::~SketchDocument()
     model_.endDrag();
     model_.removeObserver(this);
     pointHandles_.reset();
+    aestheticBinding_.reset();
+    aestheticHandle_.reset();
     planeDraggers_.reset();
     pullBinding_.reset();
     scheduler_.reset();
+    comb_.reset();
     view_.reset();
     root_->unref();
 }
@@ -119,6 +126,7 @@ void SketchDocument::restoreModel(const model::SceneDocument& doc)
     gridNode_ = grid;
     model::populateModel(doc, model_);
     view_->setHighlighted(0);
+    comb_->setCurve(0);
     Q_EMIT entitiesChanged();
     Q_EMIT selectionChanged(0);
 }
@@ -159,6 +167,7 @@ void SketchDocument::select(model::EntityId id)
     if (id == selection_) return;
     selection_ = id;
     view_->setHighlighted(e && e->kind == model::EntityKind::Curve ? id : 0);
+    comb_->setCurve(id);
     Q_EMIT selectionChanged(id);
 }
 
@@ -244,9 +253,13 @@ void SketchDocument::entityUpdated(const model::Entity& e)
     // The stroke feedback dots move with their plane (planeDraggers_ moves the plane's dragger).
     if (e.kind == model::EntityKind::Plane && e.id == feedbackPlane_) feedback_->setFrame(e.frame);
     if (e.kind == model::EntityKind::Surface) resketchSurfaceUpdated(e.id);
+    if (e.id == selection_) Q_EMIT selectionUpdated();
 }
 
-bool SketchDocument::dragging() const { return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0; }
+bool SketchDocument::dragging() const
+{
+    return planeDraggers_->dragging() != 0 || pointHandles_->dragging() != 0 || aestheticBinding_->active();
+}
 
 void SketchDocument::pointDragFinished(model::EntityId point, const manipulators::PointPose& before, const manipulators::PointPose& after)
 {

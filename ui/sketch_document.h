@@ -4,13 +4,17 @@
 // (ui/undo_commands.h) that changes the model; the Coin side follows the model as its observer.
 #include "model/auxiliary_plane.h"
 #include "model/model.h"
+#include "scene/curvature_comb.h"
+#include "solvers/aesthetics/curve_operators.h"
 #include "scene/model_view.h"
 #include "scene/update_scheduler.h"
 #include "model/document.h"
 #include "scene/stroke_feedback.h"
 #include "solvers/editing/curve_manipulation.h"
+#include "solvers/exchange/exchange.h"
 #include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
+#include "solvers/stroke/user_model.h"
 
 #include <QObject>
 #include <QString>
@@ -35,6 +39,8 @@ struct PointPose;
 class StrokeInput;
 class CurvePull;
 class CurvePullBinding;
+class AestheticHandle;
+class AestheticDragBinding;
 struct FinishedStroke;
 struct StrokeHit;
 }  // namespace sculptline::manipulators
@@ -50,6 +56,9 @@ struct StrokeReport {
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
+    /// Non-empty when one of the designer's habits (a correction of a similar stroke) decided the
+    /// shape: says which and what the recognizer alone would have picked.
+    QString habit;
 };
 
 struct ResketchState;
@@ -69,11 +78,18 @@ public:
     /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
+    /// Writes the world geometry (curves, surfaces; network meshes to STL/OBJ only) in `format`
+    /// (solvers/exchange/exchange.h). Returns the bytes written.
+    /// @throws solvers::exchange::ExchangeError naming what cannot be written (nothing to export,
+    ///         a path that cannot be written).
+    std::uintmax_t exportGeometry(const QString& path, solvers::exchange::Format format);
 
     model::Model& model() { return model_; }
     const model::Model& model() const { return model_; }
     scene::UpdateScheduler& scheduler() { return *scheduler_; }
     scene::ModelView& view() { return *view_; }
+    /// The selected curve's curvature comb (hidden until shown; follows the selection).
+    scene::CurvatureComb& comb() { return *comb_; }
     QUndoStack* undoStack() { return &undo_; }
     manipulators::StrokeInput& strokeInput() { return *strokeInput_; }
     manipulators::CurvePull& curvePull() { return *curvePull_; }
@@ -195,6 +211,23 @@ public:
     /// The next-ranked candidate after the one in use (wrapping), for the hot key / replays.
     void chooseNextCandidate();
 
+    /// The designer's recognition habits (thesis §3.1.3, Table 3-2: the user model adapts to its
+    /// user). Choosing another candidate for the last stroke, or its freeform fit instead of the
+    /// shape, teaches the model (UserModel::learnShape); every recognition applies it, and a shape a
+    /// habit decided is used for the new curve at once (one undo step with the stroke).
+    /// Reads the model kept at `path` (empty: kept in memory only, nothing read or written); a file
+    /// that does not exist is an empty model. Returns an empty string, or the message saying why
+    /// the file could not be read (the model is then empty and the unreadable file is left as it is
+    /// until a correction overwrites it). Never throws.
+    QString openUserModel(const QString& path);
+    const solvers::stroke::UserModel& userModel() const { return userModel_; }
+    const QString& userModelPath() const { return userModelPath_; }
+    /// Forgets every learned habit (the file is rewritten without them); returns how many.
+    int forgetHabits();
+    /// The default place of the model: the user's config folder (QStandardPaths::AppConfigLocation)
+    /// /recognition_habits.json.
+    static QString defaultUserModelPath();
+
     /// Undoable edits.
     void addPlane(const model::PlaneFrame& frame);
     /// Which control points of `curve` stay fixed when it is pulled.
@@ -243,15 +276,32 @@ public:
     void entityRemoved(const model::Entity& entity) override;
     void entityUpdated(const model::Entity& entity) override;
 
+    /// Aesthetic operators (thesis §7.4) on the selected planar curve: applied at once with
+    /// `amount` (one undo step); the status text says the name before and after, or why not.
+    QString applyAesthetic(solvers::aesthetics::Operator op, double amount);
+    /// Shows the operator's handle on the selected curve's operated point (or hides it: nullopt);
+    /// dragging it sets the amount live, one undo step per drag. Returns why not, or empty.
+    QString showAestheticHandle(std::optional<solvers::aesthetics::Operator> op);
+    std::optional<solvers::aesthetics::Operator> aestheticHandleOperator() const { return handleOperator_; }
+    /// A fiftieth of the selected curve's length (0 without a curve): the menu's amount.
+    double defaultAestheticAmount() const;
+    manipulators::AestheticHandle& aestheticHandle() { return *aestheticHandle_; }
+
 Q_SIGNALS:
+    /// An aesthetic operator was applied or refused (status bar).
+    void aestheticApplied(const QString& message);
     /// load() replaced the document (and cleared the undo stack).
     void replaced();
     /// The set of entities or their data changed (lists, inspector).
     void entitiesChanged();
     void selectionChanged(model::EntityId id);
+    /// The selected entity was recomputed by a model update (each frame of a drag that moves it).
+    void selectionUpdated();
     void strokeFinished();
     /// forgetStroke() dropped the last stroke's report (the recognition dock shows nothing).
     void strokeForgotten();
+    /// A habit was learned or the habits were forgotten; `message` says what happened (status bar).
+    void habitsChanged(const QString& message);
     /// The surface mode's picks or message changed (status bar).
     void surfaceStateChanged();
 
@@ -279,7 +329,8 @@ private:
     void recognize(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
     /// The last sketched curve replaced by `target` (undoable), when it differs.
-    void replaceRecognizedCurve(const solvers::Curve3d& target);
+    /// False (with the reason in lastStroke_) when the target is refused.
+    bool replaceRecognizedCurve(const solvers::Curve3d& target);
     /// Pulling a curve point (solvers/editing's constrained manipulation, factored at the grab).
     std::optional<model::PlaneFrame> grabCurve(const manipulators::StrokeHit& hit);
     /// A pull ended (manipulators::CurvePullBinding): one undo step, and the solver's remark.
@@ -301,6 +352,7 @@ private:
     model::Model model_;
     model::GridSpec grid_;
     std::unique_ptr<scene::ModelView> view_;
+    std::unique_ptr<scene::CurvatureComb> comb_;
     std::unique_ptr<scene::UpdateScheduler> scheduler_;
     std::unique_ptr<manipulators::StrokeInput> strokeInput_;
     std::unique_ptr<manipulators::CurvePull> curvePull_;
@@ -308,6 +360,13 @@ private:
     std::unique_ptr<manipulators::CurvePullBinding> pullBinding_;
     std::unique_ptr<manipulators::PlaneDraggers> planeDraggers_;  ///< one dragger per plane, bound to the model
     std::unique_ptr<manipulators::PointHandles> pointHandles_;  ///< one jack per point (sculpt handles)
+    std::unique_ptr<manipulators::AestheticHandle> aestheticHandle_;
+    std::unique_ptr<manipulators::AestheticDragBinding> aestheticBinding_;
+    std::optional<solvers::aesthetics::Operator> handleOperator_;
+    void setUpAesthetics();
+    /// Puts the aesthetic handle where its operator acts on the selection now (after edits, undo).
+    void placeAestheticHandle();
+    void aestheticDragFinished(model::EntityId curve, const solvers::Curve3d& before, double amount, const std::string& message);
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     QUndoStack undo_;
@@ -324,6 +383,15 @@ private:
     std::optional<solvers::stroke::FitResult> lastFit_;
     std::optional<solvers::stroke::Recognition> recognition_;
     int candidateInUse_ = -1;
+    /// The recognizer's own pick for the last stroke, before the habits re-ranked it.
+    solvers::stroke::ShapeKind recognizerKind_ = solvers::stroke::ShapeKind::Freeform;
+    bool habitFromLastStroke_ = false;  ///< the newest habit was learned from the last stroke
+    solvers::stroke::UserModel userModel_ = solvers::stroke::UserModel::predefined();
+    QString userModelPath_;
+    /// The designer chose `intended` for the last stroke: remember it, and save the model.
+    void learnCorrection(solvers::stroke::ShapeKind intended);
+    /// Writes the model to userModelPath_ (atomically); the message on failure, else empty.
+    QString saveUserModel() const;
     StrokeMode strokeMode_ = StrokeMode::Sketch;
     model::EntityId sculptBase_ = 0;
     model::EntityId incidenceBase_ = 0;

@@ -36,12 +36,10 @@ model::Constraint onSurface(const model::Entity& curve, model::EntityId surface,
                                  shape.domainEnd(solvers::Direction::V) - shape.domainStart(solvers::Direction::V));
     if ((hi - lo).maxCoeff() <= kMinPreimageExtent * size)
         throw std::invalid_argument("curve " + std::to_string(curve.id) + " lies beyond the surface's edge: it projects onto one point of it");
-    std::vector<Eigen::Vector3d> uv;
-    for (const Eigen::Vector2d& p : domain.points()) uv.emplace_back(p.x(), p.y(), 0.0);
     model::Constraint c;
     c.type = model::ConstraintType::CurveOnSurface;
     c.targets = {curve.id, surface};
-    c.preimage = solvers::Curve3d(domain.degree(), domain.knots(), uv);
+    c.preimage = model::preimageCurve(domain);
     return c;
 }
 
@@ -118,9 +116,7 @@ model::EntityId SketchDocument::surfaceThroughCurves(const std::vector<model::En
                 model::Constraint c;
                 c.type = model::ConstraintType::CurveOnSurface;
                 c.targets = {id, 0};
-                std::vector<Eigen::Vector3d> uv;
-                for (const Eigen::Vector2d& p : rimDomain->points()) uv.emplace_back(p.x(), p.y(), 0.0);
-                c.preimage = solvers::Curve3d(rimDomain->degree(), rimDomain->knots(), uv, {}, true);
+                c.preimage = model::preimageCurve(*rimDomain);
                 constraints.push_back(std::move(c));
             } else {
                 constraints.push_back(onSurface(*model_.find(id), 0, *sheet.surface));

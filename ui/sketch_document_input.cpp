@@ -225,6 +225,19 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
         recognize(fit);
+        if (!lastStroke_.habit.isEmpty() && regularizedFit_) {
+            // A habit decided the shape: the designer chose it for a stroke like this one before, so
+            // the curve is made as that shape at once (the freeform fit stays one click away).
+            try {
+                model::requireCurveExtent(*regularizedFit_, std::max(model::kMinCurveExtent, kMinCandidateFraction * model::curveExtent(fit.curve)));
+                added.back().local = *regularizedFit_;
+                candidateInUse_ = 0;
+                lastStroke_.controlPoints = regularizedFit_->pointCount();
+                lastStroke_.message += tr("; made a %1 by your habit").arg(lastStroke_.recognized);
+            } catch (const std::exception&) {
+                // Too small a shape to use: the freeform fit stays, the dock still offers the shape.
+            }
+        }
         // Sampling points and corners where the stroke was drawn (indices into the raw samples),
         // in the plane's frame so that they follow the plane.
         const model::PlaneFrame& drawn = added.size() > 1 ? added.front().frame : stroke.frame;
@@ -297,10 +310,20 @@ void SketchDocument::recognize(const solvers::stroke::FitResult& fit)
     lastFit_ = fit;
     candidateInUse_ = -1;
     recognizedCurve_ = 0;
+    habitFromLastStroke_ = false;
     try {
         // The recognizer of the stroke issue; the freeform fit stays the default curve, the
         // regularized primitive is one click away (RecognitionDock), and so is every other candidate.
-        const solvers::stroke::Recognition r = solvers::stroke::recognizeShape(fit);
+        // The designer's habits re-rank the candidates first (a similar stroke corrected before).
+        solvers::stroke::Recognition r = solvers::stroke::recognizeShape(fit);
+        recognizerKind_ = r.kind;
+        userModel_.applyHabits(r, fit);
+        if (r.kind != recognizerKind_) {
+            lastStroke_.habit = tr("Your habit decided: %1 (you made a stroke like this one a %1 before; "
+                                   "the recognizer alone picked %2)")
+                                    .arg(QString::fromLatin1(solvers::stroke::shapeName(r.kind)),
+                                         QString::fromLatin1(solvers::stroke::shapeName(recognizerKind_)));
+        }
         recognition_ = r;
         lastStroke_.recognized = QString::fromLatin1(solvers::stroke::shapeName(r.kind));
         for (const solvers::stroke::ShapeCandidate& c : r.candidates) {
@@ -321,14 +344,19 @@ bool SketchDocument::recognitionChoiceAvailable() const
 void SketchDocument::chooseRecognized(bool regularized)
 {
     if (!recognitionChoiceAvailable()) return;
+    const bool wasShape = candidateInUse_ >= 0;
     candidateInUse_ = regularized ? 0 : -1;
-    replaceRecognizedCurve(regularized ? *regularizedFit_ : *freeformFit_);
+    if (!replaceRecognizedCurve(regularized ? *regularizedFit_ : *freeformFit_)) return;
+    // The offered shape confirms (and takes back a lesson of this stroke); the freeform fit instead
+    // of a shape in use is a correction.
+    if (regularized) learnCorrection(recognition_->kind);
+    else if (wasShape) learnCorrection(solvers::stroke::ShapeKind::Freeform);
 }
 
-void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
+bool SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
 {
     const model::Entity* curve = model_.find(recognizedCurve_);
-    if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return;
+    if (curve->local->points() == target.points() && curve->local->knots() == target.knots()) return true;
     try {
         // A candidate must keep the stroke's size: the line through the ends of a stroke drawn as
         // a loop is a point, which nobody asked for and no solver can edit.
@@ -337,10 +365,11 @@ void SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Shape not used: %1").arg(QString::fromStdString(e.what()));
         Q_EMIT strokeFinished();
-        return;
+        return false;
     }
     undo_.push(new ReplaceCurveCommand(*this, recognizedCurve_, *curve->local, target));
     Q_EMIT strokeFinished();
+    return true;
 }
 
 void SketchDocument::chooseCandidate(int index)
@@ -351,7 +380,7 @@ void SketchDocument::chooseCandidate(int index)
         solvers::stroke::regularizeAs(*recognition_, *lastFit_, recognition_->candidates[static_cast<size_t>(index)].kind);
     candidateInUse_ = index;
     lastStroke_.message = tr("Curve %1 is now the %2").arg(recognizedCurve_).arg(lastStroke_.candidates[static_cast<size_t>(index)].first);
-    replaceRecognizedCurve(target);
+    if (replaceRecognizedCurve(target)) learnCorrection(recognition_->candidates[static_cast<size_t>(index)].kind);
 }
 
 void SketchDocument::chooseNextCandidate()

@@ -42,12 +42,19 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--replay", options.replay, "Play a recorded session (JSON) through the viewer");
     cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
+    cli.add_option("--export-step", options.exportStep, "Export the curves and surfaces as STEP AP214 (exact B-splines) after the replay");
+    cli.add_option("--export-iges", options.exportIges, "Export the curves and surfaces as IGES (exact B-splines) after the replay");
+    cli.add_option("--export-stl", options.exportStl, "Export the surfaces (tessellated) and meshes as binary STL after the replay");
+    cli.add_option("--export-obj", options.exportObj, "Export the curves, surfaces and meshes as Wavefront OBJ after the replay");
     cli.add_option("--stats", options.stats, "Write the replay's update latencies (JSON: count, p50, p99, max)");
     cli.add_option("--autosave-interval", options.autosaveInterval,
                    "Seconds between autosaves of unsaved work to the recovery file (default 120; 0 = off)")
         ->check(CLI::Range(0, 24 * 3600));
     cli.add_flag("--recover", options.recover,
                  "Reopen the unsaved work of a session that ended without saving, without asking");
+    cli.add_option("--user-model", options.userModel,
+                   "Recognition habits file (JSON) to read and update; default $SCULPTLINE_USER_MODEL, else "
+                   "recognition_habits.json in the user's config folder (scripted runs: none, habits in memory only)");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
     cli.add_flag("--nurbs-nodes", options.nurbsNodes,
                  "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "
@@ -83,6 +90,13 @@ std::string defaultDocumentPath()
     const char* env = std::getenv("SCULPTLINE_DATA_DIR");
     const std::string dir = (env && *env) ? env : SCULPTLINE_DATA_DIR;
     return dir + "/default_scene.json";
+}
+
+std::string userModelPath(const GuiOptions& options, const std::string& personal)
+{
+    if (!options.userModel.empty()) return options.userModel;
+    if (const char* env = std::getenv("SCULPTLINE_USER_MODEL"); env && *env) return env;
+    return options.scripted() ? std::string() : personal;
 }
 
 }  // namespace sculptline::app

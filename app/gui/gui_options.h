@@ -15,6 +15,10 @@ struct GuiOptions {
     std::string replay;  ///< session JSON to play through the viewer's Qt event path
     std::string save;  ///< document JSON written after the replay
     std::string exportIv;  ///< Open Inventor file written after the replay
+    std::string exportStep;  ///< STEP AP214 of the world curves and surfaces, after the replay
+    std::string exportIges;  ///< IGES of the same
+    std::string exportStl;  ///< binary STL of the surfaces (tessellated) and network meshes
+    std::string exportObj;  ///< OBJ of everything (curves as polylines)
     std::string stats;  ///< latency statistics of the replay (JSON)
     bool listActions = false;  ///< print every action name and leave
     bool nurbsNodes = false;  ///< draw with SoNurbsCurve/SoNurbsSurface (frame-time comparison only)
@@ -22,11 +26,15 @@ struct GuiOptions {
     int autosaveInterval = 120;  ///< seconds between autosaves to the recovery file; 0 = off
     bool autosaveIntervalGiven = false;  ///< on the command line (else File > Autosave Interval's setting)
     bool recover = false;  ///< reopen the unsaved work of a session that died, without asking
+    /// The recognition habits file (--user-model); empty: $SCULPTLINE_USER_MODEL, else the user's
+    /// config folder for a person, nothing (habits in memory only) for a script (userModelPath()).
+    std::string userModel;
 
     /// Run by a script (a replay, an output flag or --quit): nobody is there to answer a dialog.
     bool scripted() const
     {
-        return quit || !replay.empty() || !save.empty() || !exportIv.empty() || !screenshot.empty() || !stats.empty();
+        return quit || !replay.empty() || !save.empty() || !exportIv.empty() || !exportStep.empty() || !exportIges.empty() ||
+               !exportStl.empty() || !exportObj.empty() || !screenshot.empty() || !stats.empty();
     }
 };
 
@@ -39,6 +47,12 @@ struct ParseResult {
 
 /// Parses argv with CLI11; status 2 and a message for a bad flag or value.
 ParseResult parseGuiOptions(int argc, const char* const* argv);
+
+/// Where the window keeps the recognition habits: --user-model, else $SCULPTLINE_USER_MODEL, else
+/// `personal` (the user's config folder) when nobody scripts the run; empty for a script without
+/// either (its habits live in memory only: a replay must repeat whatever the person's habits, and
+/// must not write into their home).
+std::string userModelPath(const GuiOptions& options, const std::string& personal);
 
 /// The default document: $SCULPTLINE_DATA_DIR/default_scene.json when that variable is set, else the
 /// data/ directory of the source tree the program was built from.

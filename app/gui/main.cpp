@@ -69,6 +69,14 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
     };
     if (!options.save.empty()) attempt("--save", [&]() { doc.save(QString::fromStdString(options.save)); });
     if (!options.exportIv.empty()) attempt("--export-iv", [&]() { doc.exportIv(QString::fromStdString(options.exportIv)); });
+    using sculptline::solvers::exchange::Format;
+    const std::pair<const std::string*, Format> exports[] = {{&options.exportStep, Format::Step}, {&options.exportIges, Format::Iges},
+                                                             {&options.exportStl, Format::Stl}, {&options.exportObj, Format::Obj}};
+    for (const auto& [path, format] : exports) {
+        if (path->empty()) continue;
+        attempt(std::string("--export-") + sculptline::solvers::exchange::formatName(format),
+                [&]() { doc.exportGeometry(QString::fromStdString(*path), format); });
+    }
     if (!options.screenshot.empty()) {
         const QImage image = window.grabViewport();
         if (image.isNull() || !image.save(QString::fromStdString(options.screenshot), "PNG")) {
@@ -149,6 +157,10 @@ int main(int argc, char** argv)
     // The default scene (or the fresh sheet that replaces a document that cannot be opened) opens
     // untitled, so that File > Save asks where instead of overwriting it.
     window.showDocument(start.document, QString::fromStdString(start.path));
+    const QString habitsFile =
+        QString::fromStdString(app::userModelPath(options, ui::SketchDocument::defaultUserModelPath().toStdString()));
+    const QString habitsMessage = window.document().openUserModel(habitsFile);
+    if (!habitsMessage.isEmpty()) std::cerr << "sculptline: " << habitsMessage.toStdString() << "\n";
     const QString recovery = ui::recoveryFolder();
     // A script gets the flag or the default, never a person's setting: its runs must repeat.
     const int interval = options.autosaveIntervalGiven || options.scripted() ? options.autosaveInterval

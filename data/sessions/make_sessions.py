@@ -31,6 +31,12 @@ def arc(cx, cy, r, n=40):
             for i in range(n)]
 
 
+def loop(cx, cy, rx, ry, n=60):
+    """A closed loop, counter-clockwise on screen from its rightmost point."""
+    return [(round(cx + rx * math.cos(2 * math.pi * i / n)), round(cy - ry * math.sin(2 * math.pi * i / n)))
+            for i in range(n + 1)]
+
+
 def drag(start, end, t0, steps=30, dt=10):
     path = [(round(start[0] + (end[0] - start[0]) * i / steps), round(start[1] + (end[1] - start[1]) * i / steps))
             for i in range(steps + 1)]
@@ -122,6 +128,16 @@ def main():
     write("hundred_edits.json", h + [{"type": "wait", "ms": 50}])
     undos = [{"type": "key", "key": "Ctrl+Z", "t": th + 50 + 5 * k} for k in range(4 * HUNDRED_EDIT_ROUNDS)]
     write("hundred_edits_undone.json", h + undos + [{"type": "wait", "ms": 50}])
+
+    # Recognition habits (thesis §3.1.3): a flattened loop, recognized as an ellipse, corrected to
+    # the circle (N twice: the recognized ellipse, then the second candidate); then, in another
+    # session on the same habits file, a smaller, rounder loop elsewhere, which the habit makes a circle.
+    c, t = stroke(loop(490, 250, 75, 60), 50)
+    write("habits_correct.json", [{"type": "action", "name": "mode.sketch", "t": 0}] + c +
+          [{"type": "action", "name": "stroke.nextCandidate", "t": t + 40},
+           {"type": "action", "name": "stroke.nextCandidate", "t": t + 60}, {"type": "wait", "ms": 50}])
+    c, t = stroke(loop(480, 240, 60, 50), 50)
+    write("habits_similar.json", [{"type": "action", "name": "mode.sketch", "t": 0}] + c + [{"type": "wait", "ms": 50}])
 
     # The --stats goal: drag the default plane of ../bench_20_curves_5_planes.json (20 curves on 5
     # planes) for 120 pointer events at 125 Hz, to and fro.

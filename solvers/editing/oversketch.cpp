@@ -14,8 +14,8 @@ namespace sculptline::solvers::editing {
 // timings: `sculptline-bench --benchmark_filter=EditingOversketch`, CPU time):
 //                        local-c2                     blend
 //   continuity           C2 (simple knots)            C2 (simple knots)
-//   outside the span     unchanged to 1e-12, at the   unchanged to 1e-12 as a point set; the part
-//                        same parameters              after the edit is re-parameterised (shifted)
+//   outside the span     unchanged to 1e-12, at the   unchanged to 1e-12, at the same parameters
+//                        same parameters              (new knots fill the old interval)
 //   changed arc (u)      [0.26,0.74] [0.26,0.74] [0.30,0.70]   [0.26,0.74] [0.26,0.70] [0.26,0.70]
 //   control points       29 / 34 / 37                 29 / 31 / 43
 //   20 edits, one region 30 -> 34 (max 39)            30 -> 31 (max 31)
@@ -25,9 +25,9 @@ namespace sculptline::solvers::editing {
 //                                                                        the wave's 0.34)
 //   time, one edit       0.8 ms                       0.16 ms
 //   past an open end     extends the curve            replaces the end
-// local-c2 stays the default: the curve outside [t_k, t_l] is the old curve at the same parameters
-// (whatever refers to curve parameters, such as constraints at u, keeps its meaning), it extends a
-// curve past its ends, and C2 holds by construction. blend now meets the tolerance too, keeps
+// local-c2 stays the default: it extends a curve past its ends, and C2 holds by construction. Both
+// keep the curve outside the edit at the same parameters (whatever refers to curve parameters, such
+// as constraints at u, keeps its meaning). blend now meets the tolerance too, keeps
 // fewer control points, is 5x faster and has slightly gentler transitions; it stays available,
 // with its `scale` (eq. 4-23).
 

@@ -14,7 +14,10 @@
 //   with as many control points as C1's density M gives over the stroke's length and growing until
 //   the fit meets the tolerance; a region redrawn again is replaced again, so repeated edits keep
 //   the count bounded. Re-parameterisation (§4.2, last bullet): the kept parts keep their knots, the new
-//   part gets uniform knots at C1's mean knot spacing.
+//   part gets uniform knots, scaled to fill the old parameter interval between the kept parts (a
+//   closed curve keeps its period), so the curve outside the edit keeps its parameters as well as
+//   its shape, as local-c2 does (shifting the far part instead moved the far end of a 110-unit curve
+//   by 0.3 at its old parameter).
 #include "solvers/editing/oversketch.h"
 
 #include "solvers/bspline/geometry_error.h"
@@ -275,6 +278,24 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
             first = cs;  // the loop has no room for longer transitions: keep eq. 4-25's choice
             last = ce;
         }
+        if (!c.isClosed() && first != kNone && last != kNone) {
+            // Open, kept parts on both sides: the new part must fit in the kept parts' old interval
+            // [U[a+p], U[b+1]] (so that they keep their parameters). Where that interval is less than
+            // kMinFill of the parameter length the new part wants at C1's speed, the parameter speed
+            // would jump more than 1/kMinFill-fold through the transitions (or the knots would
+            // collapse, for an interval of zero): CT_s and CT_e step outwards, one each per round,
+            // lengthening the transitions, until it fits or the curve's ends are reached.
+            constexpr double kMinFill = 0.5;
+            auto wanted = [&] {
+                return std::max(deltaMin, leftGap(first)) + st.length / v + std::max(deltaMin, rightGap(last));
+            };
+            while (U[last + 1] - U[first + p] < kMinFill * wanted() && (first > lowest || last < highest)) {
+                if (first > lowest) --first;
+                if (last < highest) ++last;
+            }
+            // A curve of so few points that nothing can be kept: the stroke replaces it all.
+            if (!(U[last + 1] > U[first + p])) first = last = kNone;
+        }
         const double deltaS = first == kNone ? 0.0 : std::max(deltaMin, leftGap(first));
         const double deltaE = last == kNone ? 0.0 : std::max(deltaMin, rightGap(last));
 
@@ -289,19 +310,30 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
                 P.resize(P.size() + m, Pt<Dim>::Zero());
                 P.insert(P.end(), poly.pts.begin() + b, poly.pts.end());
                 const int total = static_cast<int>(P.size());
+                // Spacings of the new knots: δ_s, the stroke's m - p spans, δ_e. Between two kept
+                // parts they are scaled to fill the old [U[a+p], U[b+1]] exactly, so both kept parts
+                // keep their knot values and the curve outside the edit keeps its parameters.
+                double hs = st.length / v / (m - p), dS = deltaS, dE = deltaE;
+                if (a >= 0 && b < n) {
+                    const double k = (U[b + 1] - U[a + p]) / (dS + (m - p) * hs + dE);
+                    hs *= k;
+                    dS *= k;
+                    dE *= k;
+                }
                 KnotVector K;
                 if (a >= 0) {
                     K.assign(U.begin(), U.begin() + a + p + 1);
-                    K.push_back(K.back() + deltaS);
+                    K.push_back(K.back() + dS);
                 } else {
-                    K.assign(p + 1, U[p]);
+                    // The start is replaced: the new part ends where the kept right part begins.
+                    K.assign(p + 1, b < n ? U[b + 1] - dE - (m - p) * hs : U[p]);
                 }
-                const double t0 = K.back(), hs = st.length / v / (m - p);
+                const double t0 = K.back();
                 for (int i = 1; i <= m - p; ++i) K.push_back(t0 + hs * i);
                 const double t1 = K.back();
                 if (b < n) {
-                    const double shift = t1 + deltaE - U[b + 1];
-                    for (int i = b + 1; i <= n + p; ++i) K.push_back(U[i] + shift);
+                    if (a >= 0) K.back() = U[b + 1] - dE;  // no round-off drift into the kept knots
+                    for (int i = b + 1; i <= n + p; ++i) K.push_back(U[i]);
                 } else {
                     K.insert(K.end(), p, t1);
                 }
@@ -328,7 +360,10 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         // Unwrapped indices: first <= iS < iE <= last, the kept chain runs from last to first + n.
         const int e = last;
         const int kept = first + n - last + 1;
-        if (kept < keptMin || kept > n) {
+        // The kept chain's own knot spacings; the new ones must fit in what remains of the period.
+        double keptLength = 0.0;
+        for (int i = 1; i < kept + p - 1; ++i) keptLength += knotAt(e + i + 1) - knotAt(e + i);
+        if (kept < keptMin || kept > n || !(period - keptLength > 1e-9 * period)) {
             if (attempt >= kMaxRefinements) {
                 throw GeometryError("stroke: the over-sketch with its transitions covers the whole closed curve");
             }
@@ -337,18 +372,27 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         }
         for (int m = m0;; m = grow(m)) {
             const int N = kept + m;
-            const double hs = st.length / v / (m - p);
-            std::vector<double> spacing(N, hs);
+            // The new spacings (δ_e, δ_s and the stroke's m - p spans) are scaled so that the period
+            // stays C1's: with the kept knots' values unchanged, the kept arc keeps its parameters.
+            std::vector<double> spacing(N, st.length / v / (m - p));
             spacing[0] = deltaE;
             for (int i = 1; i < kept + p - 1; ++i) spacing[i] = knotAt(e + i + 1) - knotAt(e + i);
             spacing[kept + p - 1] = deltaS;
+            double newLength = 0.0;
+            for (int i = 0; i < N; ++i) {
+                if (i == 0 || i >= kept + p - 1) newLength += spacing[i];
+            }
+            const double k = (period - keptLength) / newLength;
+            for (int i = 0; i < N; ++i) {
+                if (i == 0 || i >= kept + p - 1) spacing[i] *= k;
+            }
             std::vector<Pt<Dim>> Q;
             for (int i = 0; i < kept; ++i) Q.push_back(poly.at(e + i));
             Q.resize(N + p, Pt<Dim>::Zero());
             for (int i = 0; i < p; ++i) Q[N + i] = Q[i];  // wrapped copies of kept (hence fixed) points
             // Unwrapped convention: knots[i] starts the support of point i, spacings periodic.
             KnotVector K(N + 2 * p + 1);
-            K[0] = knotAt(e + 1) - deltaE;
+            K[0] = knotAt(e + 1) - spacing[0];
             for (size_t i = 1; i < K.size(); ++i) K[i] = K[i - 1] + spacing[(i - 1) % N];
             std::vector<double> W;
             if (c.isRational()) {

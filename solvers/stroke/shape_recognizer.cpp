@@ -1,12 +1,14 @@
 #include "solvers/stroke/shape_recognizer.h"
 
 #include "solvers/bspline/periodic.h"
+#include "solvers/stroke/features.h"
 #include "solvers/geometry/plane_fit.h"
 #include "solvers/math_constants.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -90,7 +92,7 @@ double turnAt(const Point2& a, const Point2& k, const Point2& b)
 }
 
 // Returns how many of the final vertices were inserted here (the corner detector did not find them).
-int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength)
+int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength, int sameCorner)
 {
     auto& idx = g.vertexIndex;
     const std::vector<int> detected = idx;
@@ -154,9 +156,66 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
     }
     g.vertices.clear();
     for (int k : idx) g.vertices.push_back(g.points[k]);
+    // A vertex within `sameCorner` samples of a detected corner is that corner, located at the
+    // sample beside it (the farthest point and the sharpest turn of one rounded corner differ by a
+    // sample or two, and which of them the detector or the refinement picks varies with noise).
     int inserted = 0;
-    for (int k : idx) inserted += std::find(detected.begin(), detected.end(), k) == detected.end();
+    for (int k : idx) {
+        bool near = false;
+        for (int d : detected) {
+            const int gap = std::abs(k - d);
+            near = near || (g.closed ? std::min(gap, n - gap) : gap) <= sameCorner;
+        }
+        inserted += !near;
+    }
     return inserted;
+}
+
+
+// The polygon's vertices as the intersections of straight lines fitted (total least squares) to the
+// middle of each edge, the samples within `trim` of an edge's length from either end left out: a
+// hand rounds a corner off, overshoots it or hooks at it, and the sample where it turned most lies
+// inside or outside the corner the sides meet at. The sides are what the hand drew straight
+// (Douglas and Peucker's split points are samples too; fitting the pieces is the usual second step,
+// e.g. Sezgin et al. 2001 §3). An open stroke's ends are its end samples projected onto the end
+// edges' lines. A vertex stays at its sample where the two lines are within `minAngle` of parallel
+// or meet farther than `maxShift` from it.
+std::vector<Point2> edgeLineVertices(const StrokeGeometry& g, double trim, double minAngle, double maxShift)
+{
+    const auto& idx = g.vertexIndex;
+    const int n = static_cast<int>(g.points.size());
+    const size_t m = idx.size();
+    const size_t edges = g.closed ? m : m - 1;
+    std::vector<LineFit> lines;
+    for (size_t e = 0; e < edges; ++e) {
+        const int a = idx[e], b = idx[(e + 1) % m];
+        const int count = ((b - a) % n + n) % n;  // samples a..b along the stroke, cyclically
+        const int skip = static_cast<int>(std::floor(trim * count));
+        std::vector<Point2> mid;
+        for (int k = skip; k <= count - skip; ++k) mid.push_back(g.points[(a + k) % n]);
+        if (mid.size() < 2) mid = {g.points[a], g.points[b]};
+        lines.push_back(fitLine(mid));
+    }
+    std::vector<Point2> v = g.vertices;
+    const double sinMin = std::sin(minAngle);
+    for (size_t i = 0; i < m; ++i) {
+        const bool end = !g.closed && (i == 0 || i == m - 1);
+        if (end) {
+            const LineFit& l = lines[i == 0 ? 0 : edges - 1];
+            v[i] = l.point + l.direction * (g.vertices[i] - l.point).dot(l.direction);
+            continue;
+        }
+        const LineFit& l0 = lines[(i + edges - 1) % edges];
+        const LineFit& l1 = lines[i % edges];
+        const double cross = l0.direction.x() * l1.direction.y() - l0.direction.y() * l1.direction.x();
+        if (std::abs(cross) < sinMin) continue;
+        // l0.point + s d0 = l1.point + t d1
+        const Point2 w = l1.point - l0.point;
+        const double sParam = (w.x() * l1.direction.y() - w.y() * l1.direction.x()) / cross;
+        const Point2 x = l0.point + sParam * l0.direction;
+        if ((x - g.vertices[i]).norm() <= maxShift) v[i] = x;
+    }
+    return v;
 }
 
 double score(double residual, double scale) { return std::exp(-(residual / scale) * (residual / scale)); }
@@ -230,6 +289,72 @@ std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
     const double p = 0.5 * (v[0] - v[2]).norm(), q = 0.5 * std::abs((v[1] - v[3]).dot(d2));
     const double s = (v[1] - c).dot(d2) >= 0 ? 1 : -1;
     return {c + p * d1, c + s * q * d2, c - p * d1, c - s * q * d2};
+}
+
+
+// strokeExtent of the stroke as a curve rather than as samples: twice the largest distance of a
+// point from the centroid of the polyline (each segment weighted by its length; a loop's closing gap
+// included). The samples' centroid moves towards where the pen was slow or the device sampled
+// densely, and with it every threshold relative to the extent: measured on the development
+// strokes, resampling them at half or twice their spacing changed the sample extent by up to 10 %.
+double curveExtent(const std::vector<Eigen::Vector3d>& p, bool closed)
+{
+    const size_t n = p.size();
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double total = 0.0;
+    for (size_t i = 0; i + 1 < n + (closed ? 1 : 0); ++i) {
+        const Eigen::Vector3d& a = p[i];
+        const Eigen::Vector3d& b = p[(i + 1) % n];
+        const double l = (b - a).norm();
+        c += 0.5 * l * (a + b);
+        total += l;
+    }
+    if (!(total > 0.0)) return 0.0;
+    c /= total;
+    double r2 = 0.0;
+    for (const auto& q : p) r2 = std::max(r2, (q - c).squaredNorm());
+    return 2.0 * std::sqrt(r2);
+}
+
+// The conditioned stroke at uniform arc-length spacing (linear interpolation of position and time;
+// a loop's closing gap is walked too, at the last sample's time). The recognizer reads shape at
+// this one resolution, whatever the pen's sample density: see RecognizeOptions::sampleSpacing.
+ConditionedStroke uniformResample(const ConditionedStroke& cs, double step)
+{
+    ConditionedStroke out;
+    out.closed = cs.closed;
+    out.timed = cs.timed;
+    out.extent = curveExtent(cs.points, cs.closed);
+    std::vector<Eigen::Vector3d> p = cs.points;
+    std::vector<double> t = cs.time;
+    std::vector<int> src = cs.source;
+    if (cs.closed) {
+        p.push_back(cs.points.front());
+        t.push_back(cs.time.back());
+        src.push_back(cs.source.back());
+    }
+    std::vector<double> arc(p.size(), 0.0);
+    for (size_t i = 1; i < p.size(); ++i) arc[i] = arc[i - 1] + (p[i] - p[i - 1]).norm();
+    const double total = arc.back();
+    // At least 16 intervals (a stroke of a few samples keeps a shape to measure).
+    const int m = std::max(16, static_cast<int>(std::lround(total / std::max(step, 1e-300))));
+    const int count = cs.closed ? m : m + 1;  // a loop does not repeat its first sample
+    size_t seg = 0;
+    for (int k = 0; k < count; ++k) {
+        const double a = total * k / m;
+        while (seg + 2 < p.size() && arc[seg + 1] <= a) ++seg;
+        const double len = arc[seg + 1] - arc[seg];
+        const double u = len > 0.0 ? std::clamp((a - arc[seg]) / len, 0.0, 1.0) : 0.0;
+        out.points.push_back((1 - u) * p[seg] + u * p[seg + 1]);
+        out.time.push_back((1 - u) * t[seg] + u * t[seg + 1]);
+        out.source.push_back(u < 0.5 ? src[seg] : src[seg + 1]);
+        out.arc.push_back(k == 0 ? 0.0 : out.arc.back() + (out.points[k] - out.points[k - 1]).norm());
+    }
+    if (!cs.closed) {  // the ends exactly
+        out.points.back() = p.back();
+        out.time.back() = t.back();
+    }
+    return out;
 }
 
 }  // namespace
@@ -361,13 +486,34 @@ static Curve3d regularize(Recognition& rec, const FitResult& fit, ShapeKind kind
     return fit.curve;
 }
 
+// G for recognition: the plane, length and speed of strokeGeometry(fit), with the points resampled at
+// the spacing of RecognizeOptions::sampleSpacing and the corners detected again on them (thesis
+// §4.1.1 features, default options), so that neither the points nor the corners depend on how
+// densely the pen sampled. Returns the number of corners.
+static int recognitionGeometry(const FitResult& fit, const RecognizeOptions& o, StrokeGeometry& g)
+{
+    g = strokeGeometry(fit);
+    if (o.sampleSpacing <= 0.0) return static_cast<int>(fit.corners.size());
+    const ConditionedStroke rs = uniformResample(fit.conditioned, o.sampleSpacing * curveExtent(fit.conditioned.points, g.closed));
+    g.extent = rs.extent;
+    const std::vector<int> corner = detectCorners(rs, computeFeatures(rs));
+    g.points.clear();
+    for (const auto& p : rs.points) g.points.emplace_back((p - g.origin).dot(g.axisU), (p - g.origin).dot(g.axisV));
+    g.vertexIndex.clear();
+    if (!g.closed) g.vertexIndex.push_back(0);
+    for (int k : corner) g.vertexIndex.push_back(k);
+    if (!g.closed) g.vertexIndex.push_back(static_cast<int>(g.points.size()) - 1);
+    g.vertices.clear();
+    for (int k : g.vertexIndex) g.vertices.push_back(g.points[k]);
+    return static_cast<int>(corner.size());
+}
+
 Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
 {
     Recognition rec;
-    rec.geometry = strokeGeometry(fit);
+    const int corners = recognitionGeometry(fit, o, rec.geometry);
     const StrokeGeometry& g = rec.geometry;
     const double sigma = o.residualScale * g.extent;
-    const int corners = static_cast<int>(fit.corners.size());
     auto add = [&](ShapeKind k, double s) { rec.candidates.push_back({k, std::clamp(s, 0.0, 1.0)}); };
 
     rec.line = fitLine(g.points);
@@ -382,38 +528,114 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             add(ShapeKind::Arc, score(rec.circle.maxResidual, sigma) * bend);
         }
     }
-    if (g.closed) {
-        rec.ellipse = fitEllipse(g.points);
-        const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
-        if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * (corners <= 1 ? 1.0 : 0.5));
-        if (rec.ellipse.valid) {
-            // A circle is an ellipse too; the ellipse is the better answer only when elongated.
-            add(ShapeKind::Ellipse, score(rec.ellipse.maxResidual, sigma) * std::clamp((roundness - 1.0) / 0.2, 0.3, 1.0) *
-                                        (corners <= 1 ? 1.0 : 0.5));
+    if (g.closed) rec.ellipse = fitEllipse(g.points);
+    // Every stroke's polygon is refined, an open one without corners too: a fast V or check whose
+    // bottom the hand rounded off has no sharp corner, but its farthest point from the chord turns
+    // it by far more than minCornerTurn, and the two sides fit it where no arc does.
+    // The residual of a loop's polygon (infinite without one), for the round shapes' corner test.
+    double loopPolygonResidual = std::numeric_limits<double>::infinity();
+    const int inserted =
+        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent,
+                       o.sampleSpacing > 0.0 ? 2 : 0);
+    if (g.vertices.size() >= 3u) {
+        // The better of the polygon through the samples where the stroke turned and the polygon
+        // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked
+        // corners); the recognized polygon has those vertices.
+        const auto fitPolygon = [&](const StrokeGeometry& h, std::vector<Point2>& best) {
+            const std::vector<Point2> lines = edgeLineVertices(h, o.edgeTrim, o.collinearAngle, o.shortEdge * h.extent);
+            const double atSamples = polylineResidual(h.points, h.vertices, h.closed);
+            const double atLines = polylineResidual(h.points, lines, h.closed);
+            best = atLines < atSamples ? lines : h.vertices;
+            return std::min(atSamples, atLines);
+        };
+        std::vector<Point2> polygon;
+        double residual = fitPolygon(g, polygon);
+        // The simplest polygon that fits: a loop's vertex goes while the polygon without it still
+        // lies within vertexInsertion of every sample, the distance at which refineVertices would
+        // have inserted a vertex (typically a second vertex beside the seam, where the hand stopped
+        // short of the first corner or went on past it).
+        for (bool dropped = true; dropped && g.closed && g.vertexIndex.size() > 3u;) {
+            dropped = false;
+            double bestResidual = o.vertexInsertion * sigma;
+            StrokeGeometry best;
+            std::vector<Point2> bestPolygon;
+            for (size_t v = 0; v < g.vertexIndex.size(); ++v) {
+                StrokeGeometry h = g;
+                h.vertexIndex.erase(h.vertexIndex.begin() + static_cast<long>(v));
+                h.vertices.erase(h.vertices.begin() + static_cast<long>(v));
+                std::vector<Point2> hp;
+                const double r = fitPolygon(h, hp);
+                if (r <= bestResidual) {
+                    bestResidual = r;
+                    best = std::move(h);
+                    bestPolygon = std::move(hp);
+                    dropped = true;
+                }
+            }
+            if (dropped) {
+                rec.geometry = std::move(best);
+                polygon = std::move(bestPolygon);
+                residual = bestResidual;
+            }
         }
-    }
-    int inserted = 0;
-    if (corners > 0 || g.closed) {
-        inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent);
-    }
-    if (g.vertices.size() >= 3u && (corners > 0 || g.closed)) {
+        rec.geometry.vertices = polygon;
         // Vertices the corner detector did not see are the recognizer's guesses: one is expected on
         // a loop (its seam, and the vertex opposite when it has no corner), more mean the polygon
-        // is being fitted to a curve (a brace's curls, a circle's arcs).
-        const int guessed = std::max(0, inserted - (g.closed ? 2 : 0));
-        const double fitScore = score(polylineResidual(g.points, g.vertices, g.closed), sigma) * std::pow(o.guessedVertex, guessed);
+        // is being fitted to a curve (a brace's curls, a circle's arcs). Unless, on a loop, the
+        // polygon lies closer to the stroke than the circle and the ellipse do: then the curve it
+        // would be approximating is not there (a rectangle whose corners the hand, or the fitter's
+        // smoothing, rounded off beyond the corner detector's sharpness test; a circle's inscribed
+        // square misses it by 0.29 radius, a fitted circle by the pen's noise).
+        double smooth = std::numeric_limits<double>::infinity();
+        if (g.closed && rec.circle.valid) smooth = std::min(smooth, rec.circle.maxResidual);
+        if (g.closed && rec.ellipse.valid) smooth = std::min(smooth, rec.ellipse.maxResidual);
+        // The same on an open stroke against an arc that would be chosen over freeform (a bracket
+        // whose corners the hand rounded off); a curve no arc fits (a pigtail, a question mark)
+        // keeps its guessed vertices against it.
+        bool arcCompetes = false;
+        for (const ShapeCandidate& c : rec.candidates) arcCompetes = arcCompetes || (c.kind == ShapeKind::Arc && c.score >= o.freeformScore);
+        if (!g.closed && arcCompetes) smooth = std::min(smooth, rec.circle.maxResidual);
+        const bool polygonFitsBetter = (g.closed || arcCompetes) && residual < smooth;
+        loopPolygonResidual = g.closed ? residual : loopPolygonResidual;
+        const int guessed = polygonFitsBetter ? 0 : std::max(0, inserted - (g.closed ? 2 : 0));
+        const double fitScore = score(residual, sigma) * std::pow(o.guessedVertex, guessed);
         if (g.closed && g.vertices.size() == 3) {
             add(ShapeKind::Triangle, fitScore);
         } else if (g.closed && g.vertices.size() == 4) {
             const QuadShape q = classifyQuad(g.vertices, o);
-            const double sq = q.right && q.equal ? 1.0 : 0.4, rc = q.right ? 1.0 : 0.4;
-            const double dm = q.equal ? (q.right ? (q.axisAligned ? 0.5 : 1.0) : 1.0) : 0.4;
-            add(ShapeKind::Square, fitScore * sq * (q.axisAligned || !q.right ? 1.0 : 0.5));
-            add(ShapeKind::Rectangle, fitScore * rc * (q.equal ? 0.7 : 1.0));
-            add(ShapeKind::Diamond, fitScore * dm);
+            // Each regular quadrilateral scores by how closely the stroke follows that shape itself
+            // (the regularized polygon, the same residual scale): a hand's rectangle is a quad
+            // whose angles stray by 7 degrees at the median and 15 at the 95th percentile
+            // (development rectangles), and a few of them more; a yes/no test at a fixed angle
+            // dropped those to "polyline" however well the rectangle fitted.
+            const double guess = std::pow(o.guessedVertex, guessed);
+            const auto ideal = [&](const std::vector<Point2>& shape) { return score(polylineResidual(g.points, shape, true), sigma) * guess; };
+            // The orientation rule of ShapeKind: square on its sides, diamond on a corner; a shape
+            // with equal sides is reported as a square rather than a rectangle.
+            add(ShapeKind::Square, ideal(regularRectangle(g.vertices, true)) * (q.axisAligned || !q.right ? 1.0 : 0.5));
+            add(ShapeKind::Rectangle, ideal(regularRectangle(g.vertices, false)) * (q.equal ? 0.7 : 1.0));
+            // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
+            // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
+            add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));
             add(ShapeKind::Polyline, fitScore * 0.5);
         } else {
             add(ShapeKind::Polyline, fitScore);
+        }
+    }
+    if (g.closed) {
+        // Corners count against a round loop only where the polygon through them lies closer to
+        // the stroke than the circle or ellipse does. The corner detector reads turning angles
+        // over a few samples, and the pointer's pixel grid, coarse in plane units in a small
+        // window, turns a drawn circle's samples by as much as a corner there: a circle whose
+        // inscribed polygon misses it by more than its own fit does is a circle with a jittered
+        // outline, whatever the window's size.
+        const auto cornered = [&](double smoothResidual) { return corners >= 2 && loopPolygonResidual < smoothResidual ? 0.5 : 1.0; };
+        const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
+        if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * cornered(rec.circle.maxResidual));
+        if (rec.ellipse.valid) {
+            // A circle is an ellipse too; the ellipse is the better answer only when elongated.
+            add(ShapeKind::Ellipse, score(rec.ellipse.maxResidual, sigma) * std::clamp((roundness - 1.0) / 0.2, 0.3, 1.0) *
+                                        cornered(rec.ellipse.maxResidual));
         }
     }
     add(ShapeKind::Freeform, o.freeformScore);

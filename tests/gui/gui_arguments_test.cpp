@@ -42,7 +42,7 @@ TEST(GuiArguments, HelpListsTheFlags)
 {
     const ProgramRun run = runSculptline("--help");
     EXPECT_EQ(run.status, 0);
-    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--stats", "--list-actions",
+    for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--export-step", "--export-iges", "--export-stl", "--export-obj", "--stats", "--list-actions",
                              "--autosave-interval", "--recover"}) {
         EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
     }
@@ -55,7 +55,8 @@ TEST(GuiArguments, ActionsAreListedWithoutADisplay)
     // Then every command is there by name, with its hot key
     EXPECT_EQ(run.status, 0) << run.output;
     for (const char* line : {"mode.sketch\tS\t", "mode.revolve\tR\t", "mode.railRotation\tG\t", "edit.undo\tCtrl+Z\t",
-                             "file.exportIv\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t"}) {
+                             "file.exportIv\t", "file.exportStep\t", "file.exportIges\t", "file.exportStl\t",
+                             "file.exportObj\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t"}) {
         EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
     }
 }

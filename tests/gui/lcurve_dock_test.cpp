@@ -8,6 +8,7 @@
 #include "scene/state_colors.h"
 #include "ui/entity_list_dock.h"
 #include "ui/lcurve_dock.h"
+#include "tests/gui/window_shot.h"
 #include "ui/main_window.h"
 #include "ui/sketch_document.h"
 
@@ -17,7 +18,6 @@
 
 #include <QAction>
 #include <QApplication>
-#include <QElapsedTimer>
 #include <QGLWidget>
 #include <QMouseEvent>
 #include <QPainter>
@@ -36,19 +36,8 @@ namespace {
 constexpr model::EntityId kPlane = 1, kFreeCurve = 3, kFixedCurve = 4, kSheet = 5;
 /// A point to click must lie this many pixels from every other, so that the click can only mean it.
 constexpr double kClickClearance = 4.0;
-/// How long the picture for a person waits for the window to be mapped.
-constexpr qint64 kExposeDeadlineMs = 5000;
 
-void startApplication()
-{
-    static int argc = 1;
-    static char name[] = "lcurve_dock_test";
-    static char* argv[] = {name, nullptr};
-    static QApplication* app = nullptr;
-    if (app) return;
-    app = new QApplication(argc, argv);
-    SoQt::init(static_cast<QWidget*>(nullptr));
-}
+void startApplication() { guitest::startApplication("lcurve_dock_test"); }
 
 /// The main window on the two arches, shown, with the sheet selected.
 struct ArchesWindow {
@@ -79,22 +68,9 @@ struct ArchesWindow {
     {
         const char* shot = std::getenv("SCULPTLINE_LCURVE_SHOT");
         if (!shot) return;
-        // Rendering before the window is exposed draws into nothing (app/gui/main.cpp waits alike).
-        QElapsedTimer waited;
-        waited.start();
-        while (!(window.windowHandle() && window.windowHandle()->isExposed()) && waited.elapsed() < kExposeDeadlineMs)
-            QApplication::processEvents(QEventLoop::AllEvents, 50);
-        window.renderViewport();
-        QApplication::processEvents();
-        // QWidget::grab() is black for the GL area: the viewport's framebuffer is painted over it.
-        const QImage viewport = window.grabViewport();
-        QImage image = window.grab().toImage();
-        QPainter painter(&image);
-        painter.drawImage(window.viewport()->mapTo(&window, QPoint(0, 0)), viewport);
-        painter.end();
         QString path = QString::fromLocal8Bit(shot);
         path.insert(path.endsWith(QStringLiteral(".png")) ? path.size() - 4 : path.size(), suffix);
-        image.save(path);
+        guitest::saveWindowShot(window, path);
     }
     /// A k other than the used one and the corner whose point is clear of all others on screen.
     int clearPoint()

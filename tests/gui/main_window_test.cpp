@@ -60,7 +60,8 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     const QList<QAction*> actions = window.namedActions();
     EXPECT_GE(actions.size(), 15);
     for (const char* expected : {"mode.sketch", "mode.select", "mode.oversketch", "plane.add", "edit.undo", "edit.redo",
-                                 "edit.delete", "file.save", "file.exportIv", "view.controlPolygons"}) {
+                                 "edit.delete", "file.save", "file.exportIv", "file.exportStep", "file.exportIges",
+                                 "file.exportStl", "file.exportObj", "view.controlPolygons"}) {
         EXPECT_NE(window.action(QString::fromLatin1(expected)), nullptr) << expected;
     }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -72,6 +73,26 @@ TEST(StartDocument, AGoodDocumentOpensUnderItsName)
     EXPECT_EQ(start.document.planes.size(), 1u);
     EXPECT_TRUE(start.document.curves.empty());
     std::remove(good.c_str());
+}
+
+TEST(UserModelPath, FlagThenEnvironmentThenThePersonsFolderAndNothingForAScript)
+{
+    // Given no flag and no SCULPTLINE_USER_MODEL
+    unsetenv("SCULPTLINE_USER_MODEL");
+    GuiOptions person;
+    GuiOptions script;
+    script.quit = true;
+    // Then a person's window keeps its habits in the config folder, a script keeps none (it must
+    // repeat on any machine, and write nothing into a home folder)
+    EXPECT_EQ(userModelPath(person, "/home/x/.config/habits.json"), "/home/x/.config/habits.json");
+    EXPECT_EQ(userModelPath(script, "/home/x/.config/habits.json"), "");
+    // When the environment names a file, both use it; when the flag names one, it wins
+    setenv("SCULPTLINE_USER_MODEL", "/tmp/env_habits.json", 1);
+    EXPECT_EQ(userModelPath(person, "/home/x/.config/habits.json"), "/tmp/env_habits.json");
+    EXPECT_EQ(userModelPath(script, "/home/x/.config/habits.json"), "/tmp/env_habits.json");
+    script.userModel = "/tmp/flag_habits.json";
+    EXPECT_EQ(userModelPath(script, "/home/x/.config/habits.json"), "/tmp/flag_habits.json");
+    unsetenv("SCULPTLINE_USER_MODEL");
 }
 
 }  // namespace

@@ -152,6 +152,45 @@ TEST(SurfaceModels, BottleWithPlugAndHandle)
     EXPECT_GT(surfacePixels("bottle.png"), kMinSurfacePixels);
 }
 
+// The handle's section regularized as The NURBS Book's nine-point circle (A7.1, makeArc): degree 2,
+// closed, weights 1 and sqrt(2)/2 alternating, the weight-1 points on the circle.
+void expectExactCircle(const model::Entity& curve, const std::string& window)
+{
+    ASSERT_TRUE(curve.world) << window;
+    const auto& c = *curve.world;
+    ASSERT_TRUE(c.isRational()) << window << ": the section is not a recognized circle";
+    EXPECT_EQ(c.degree(), 2) << window;
+    EXPECT_TRUE(c.isClosed()) << window;
+    std::vector<Eigen::Vector3d> onCircle;
+    for (size_t i = 0; i < c.points().size(); ++i) {
+        if (c.weight(static_cast<int>(i)) == 1.0) onCircle.push_back(c.points()[i]);
+    }
+    ASSERT_GE(onCircle.size(), 4u) << window;
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    const size_t distinct = onCircle.size() - 1;  // the first point repeats at the end
+    for (size_t i = 0; i < distinct; ++i) centre += onCircle[i];
+    centre /= static_cast<double>(distinct);
+    const double radius = (onCircle[0] - centre).norm();
+    // Round-off of a regularized circle's construction, relative to its radius.
+    constexpr double kRelativeRoundOff = 1e-9;
+    for (const Eigen::Vector3d& p : onCircle) EXPECT_NEAR((p - centre).norm(), radius, kRelativeRoundOff * radius) << window;
+}
+
+TEST(SurfaceModels, BottleHandleIsACircleInEveryWindowSize)
+{
+    // The same session replayed in windows of 800 x 600 (its own size), 1200 x 850 and 1600 x 1000
+    for (const std::string name : {"bottle.json", "bottle_1200x850.json", "bottle_1600x1000.json"}) {
+        const model::Model model = readModel(name);
+        int sweeps = 0;
+        for (const model::Entity* s : surfaces(model)) {
+            if (s->recipe->mode != model::Construction::Sweep) continue;
+            ++sweeps;
+            expectExactCircle(*model.find(s->inputs[0]), name);
+        }
+        EXPECT_EQ(sweeps, 1) << name;
+    }
+}
+
 TEST(SurfaceModels, BoatSkinnedThroughFiveSections)
 {
     const model::Model model = readModel("boat.json");

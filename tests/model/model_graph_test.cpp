@@ -310,6 +310,28 @@ TEST(ModelGraph, ConstraintsThatDoNotFitAreRefusedAndNothingIsAdded)
     EXPECT_EQ(plan.steps[plan.stepOf.at(s.loft)].solver, "unsolved");
 }
 
+TEST(ModelGraph, APreimageIsStoredAsAFlatCurveAndReadBackExactly)
+{
+    // Given domain curves as the incidence solver makes them: an open cubic and a closed degree-1 rim
+    const solvers::Curve2d open(3, {0, 0, 0, 0, 0.5, 1, 1, 1, 1},
+                                {{0.1, 0.2}, {0.3, 0.25}, {0.5, 0.6}, {0.7, 0.4}, {0.9, 0.8}});
+    const solvers::Curve2d rim(1, {-1, 0, 1, 2, 3, 4, 5}, {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}, {}, true);
+    for (const solvers::Curve2d& domain : {open, rim}) {
+        // When stored as a constraint's pre-image and read back
+        const solvers::Curve3d stored = preimageCurve(domain);
+        const solvers::Curve2d back = preimageDomain(stored);
+        // Then the stored points are [u, v, 0], and degree, knots, points and closure come back exactly
+        for (size_t i = 0; i < domain.points().size(); ++i) {
+            EXPECT_EQ(stored.points()[i], Eigen::Vector3d(domain.points()[i].x(), domain.points()[i].y(), 0.0));
+        }
+        EXPECT_EQ(stored.isClosed(), domain.isClosed());
+        EXPECT_EQ(back.degree(), domain.degree());
+        EXPECT_EQ(back.knots(), domain.knots());
+        EXPECT_EQ(back.points(), domain.points());
+        EXPECT_EQ(back.isClosed(), domain.isClosed());
+    }
+}
+
 TEST(ModelGraph, DocumentsWithEveryConstraintTypeRoundTrip)
 {
     // An older document: a pin numbered among the entities, fixed points on the curve

@@ -17,6 +17,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <optional>
 
 namespace sculptline::model {
 namespace {
@@ -436,6 +437,24 @@ EntityId addRim(Model& model, EntityId ground)
     }
     return model.addCurve(ground, solvers::makeClosedUniform<3>(3, circle));
 }
+
+/// `curve` on `sheet` (a curve-on-surface constraint; `preimage` empty: found by projection).
+void putOn(Model& model, EntityId curve, EntityId sheet, std::optional<solvers::Curve3d> preimage = std::nullopt)
+{
+    Constraint on;
+    on.type = ConstraintType::CurveOnSurface;
+    on.targets = {curve, sheet};
+    on.preimage = std::move(preimage);
+    model.addConstraint(on);
+}
+
+/// An arch across the rim on a vertical plane through the origin along `direction` (in z = 0).
+EntityId addArch(Model& model, const Eigen::Vector3d& direction)
+{
+    const Eigen::Vector3d along = direction.normalized();
+    const EntityId plane = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-along.y(), along.x(), 0), 150));
+    return model.addCurve(plane, arch(model.find(plane)->frame, along));
+}
 }  // namespace dome
 
 TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenTheRimHoldsAndTheSheetBulges)
@@ -445,19 +464,11 @@ TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenThe
     const EntityId sheet = model.addSurface(flatSheet(20));
     const EntityId ground = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 150));
     const EntityId rim = dome::addRim(model, ground);
-    auto onSheet = [&](EntityId curve) {
-        Constraint on;
-        on.type = ConstraintType::CurveOnSurface;
-        on.targets = {curve, sheet};
-        model.addConstraint(on);
-    };
-    onSheet(rim);
+    dome::putOn(model, rim, sheet);
     model.setFixed(rim, true);
     // ... and B, an arch 20 mm high across it on a vertical plane along (2, 1)
-    const Eigen::Vector3d alongB = Eigen::Vector3d(2, 1, 0).normalized();
-    const EntityId planeB = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongB.y(), alongB.x(), 0), 150));
-    const EntityId b = model.addCurve(planeB, dome::arch(model.find(planeB)->frame, alongB));
-    onSheet(b);
+    const EntityId b = dome::addArch(model, Eigen::Vector3d(2, 1, 0));
+    dome::putOn(model, b, sheet);
 
     // When the model is updated
     model.update();
@@ -477,10 +488,8 @@ TEST(IncidenceStep, GivenAFixedRimAndArchesAcrossIt_WhenTheSheetIsSolved_ThenThe
     EXPECT_GE(centreAB, dome::kCentreRiseAtLeast);
 
     // When C is added across both, along (-1, 2)
-    const Eigen::Vector3d alongC = Eigen::Vector3d(-1, 2, 0).normalized();
-    const EntityId planeC = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongC.y(), alongC.x(), 0), 150));
-    const EntityId c = model.addCurve(planeC, dome::arch(model.find(planeC)->frame, alongC));
-    onSheet(c);
+    const EntityId c = dome::addArch(model, Eigen::Vector3d(-1, 2, 0));
+    dome::putOn(model, c, sheet);
     model.update();
     const Entity& s2 = *model.find(sheet);
     ASSERT_FALSE(s2.failed()) << s2.buildError;
@@ -525,24 +534,10 @@ TEST(IncidenceStep, GivenASheetBoundedByAFixedRim_WhenArchesCrossIt_ThenTheRimHo
     const EntityId rim = dome::addRim(model, ground);
     const solvers::incidence::BoundedSheet bounded = solvers::incidence::sheetBoundedBy(*model.find(rim)->world);
     const EntityId sheet = model.addSurface(bounded.surface);
-    Constraint onRim;
-    onRim.type = ConstraintType::CurveOnSurface;
-    onRim.targets = {rim, sheet};
-    std::vector<Eigen::Vector3d> boundary;
-    for (const Eigen::Vector2d& p : bounded.rimDomain.points()) boundary.emplace_back(p.x(), p.y(), 0.0);
-    onRim.preimage = solvers::Curve3d(1, bounded.rimDomain.knots(), boundary, {}, true);
-    model.addConstraint(onRim);
+    dome::putOn(model, rim, sheet, preimageCurve(bounded.rimDomain));
     model.setFixed(rim, true);
-    auto onSheet = [&](EntityId curve) {
-        Constraint on;
-        on.type = ConstraintType::CurveOnSurface;
-        on.targets = {curve, sheet};
-        model.addConstraint(on);
-    };
-    const Eigen::Vector3d alongB = Eigen::Vector3d(2, 1, 0).normalized();
-    const EntityId planeB = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongB.y(), alongB.x(), 0), 150));
-    const EntityId b = model.addCurve(planeB, dome::arch(model.find(planeB)->frame, alongB));
-    onSheet(b);
+    const EntityId b = dome::addArch(model, Eigen::Vector3d(2, 1, 0));
+    dome::putOn(model, b, sheet);
     // When the model is updated
     model.update();
     const Entity& s = *model.find(sheet);
@@ -559,11 +554,9 @@ TEST(IncidenceStep, GivenASheetBoundedByAFixedRim_WhenArchesCrossIt_ThenTheRimHo
     EXPECT_LE(bInside, kBoundedArchTolerance);
     EXPECT_GE(top.z(), dome::kCentreRiseAtLeast);
     // When C is added across B, then taken away again
-    const Eigen::Vector3d alongC = Eigen::Vector3d(-1, 2, 0).normalized();
-    const EntityId planeC = model.addPlane(PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(-alongC.y(), alongC.x(), 0), 150));
     const std::vector<Eigen::Vector3d> withB = s.surface->points();
-    const EntityId c = model.addCurve(planeC, dome::arch(model.find(planeC)->frame, alongC));
-    onSheet(c);
+    const EntityId c = dome::addArch(model, Eigen::Vector3d(-1, 2, 0));
+    dome::putOn(model, c, sheet);
     model.update();
     const Entity& s2 = *model.find(sheet);
     ASSERT_FALSE(s2.failed()) << s2.buildError;

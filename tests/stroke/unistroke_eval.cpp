@@ -218,3 +218,56 @@ std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& reco
 }
 
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+
+stroke::Stroke transformStroke(const stroke::Stroke& s, double scale, double spacing)
+{
+    stroke::Stroke out;
+    const size_t n = s.points.size();
+    std::vector<double> arc(n, 0.0);
+    for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + scale * (s.points[i] - s.points[i - 1]).norm();
+    const bool timed = s.times.size() == n;
+    if (spacing == 1.0 || n < 2 || arc.back() <= 0.0) {
+        for (size_t i = 0; i < n; ++i) out.points.push_back(scale * s.points[i]);
+        out.times = s.times;
+        return out;
+    }
+    const double step = spacing * arc.back() / double(n - 1);
+    size_t seg = 0;
+    for (double a = 0.0; a < arc.back() - 0.5 * step; a += step) {
+        while (seg + 2 < n && arc[seg + 1] <= a) ++seg;
+        const double len = arc[seg + 1] - arc[seg];
+        const double t = len > 0.0 ? std::clamp((a - arc[seg]) / len, 0.0, 1.0) : 0.0;
+        out.points.push_back(scale * ((1 - t) * s.points[seg] + t * s.points[seg + 1]));
+        if (timed) out.times.push_back((1 - t) * s.times[seg] + t * s.times[seg + 1]);
+    }
+    out.points.push_back(scale * s.points.back());
+    if (timed) out.times.push_back(s.times.back());
+    return out;
+}
+
+InvarianceResult measureInvariance(const std::vector<Recording>& recordings, double scale, double spacing,
+                                   const stroke::RecognizeOptions& options)
+{
+    InvarianceResult res;
+    res.scale = scale;
+    res.spacing = spacing;
+    for (const auto& r : recordings) {
+        Recording t = r;
+        t.stroke = transformStroke(r.stroke, scale, spacing);
+        const int a = recognizeRecording(r, options), b = recognizeRecording(t, options);
+        ++res.total;
+        res.same += a == b;
+        if (a != b) {
+            ++res.changedByGesture[r.gesture];
+            const auto name = [](int k) { return std::string(k < 0 ? "failed" : stroke::shapeName(static_cast<ShapeKind>(k))); };
+            ++res.transitions[name(a) + "->" + name(b)];
+        }
+        res.correctOriginal += a >= 0 && isCorrect(r.gesture, static_cast<ShapeKind>(a));
+        res.correctTransformed += b >= 0 && isCorrect(r.gesture, static_cast<ShapeKind>(b));
+    }
+    return res;
+}
+
+}  // namespace sculptline::stroketest

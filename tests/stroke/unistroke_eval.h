@@ -75,3 +75,25 @@ std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& reco
                                               const solvers::stroke::RecognizeOptions& options = {});
 
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+
+/// The stroke as a window of another size would pass it: points scaled by `scale` about the origin,
+/// then resampled by linear interpolation (of position and time) at `spacing` times the stroke's
+/// mean sample spacing, along its polyline, first and last samples kept. spacing = 1 keeps the
+/// samples as they are. This is what a window of another size does to a stroke: it passes plane
+/// units (mm), and the pen's samples, events a pixel or more apart, come denser or sparser in mm.
+solvers::stroke::Stroke transformStroke(const solvers::stroke::Stroke& stroke, double scale, double spacing);
+
+/// How often a transformed stroke gets the class of the original.
+struct InvarianceResult {
+    double scale = 1, spacing = 1;
+    int total = 0, same = 0;
+    int correctOriginal = 0, correctTransformed = 0;
+    std::map<std::string, int> changedByGesture;
+    std::map<std::string, int> transitions;  ///< "circle->ellipse": count
+};
+InvarianceResult measureInvariance(const std::vector<Recording>& recordings, double scale, double spacing,
+                                   const solvers::stroke::RecognizeOptions& options = {});
+
+}  // namespace sculptline::stroketest

@@ -10,13 +10,18 @@ namespace sculptline::stroketest {
 namespace {
 
 // Floors a little under the accuracies measured when the recognizer was tuned (README, "Recognition
-// on real pen strokes"): development s02-s06 95.9 % overall, every gesture >= 86.0 %; held-out
-// s07-s11 89.8 % overall. They guard against regressions; the held-out goal (95 %) is not met yet.
-constexpr double kDevOverall = 0.95;
-constexpr double kDevPerGesture = 0.85;
-constexpr double kHeldOutOverall = 0.89;
-// Held-out, learning from each person's first three repetitions: 89.9 % -> 94.0 % measured.
-constexpr double kMinAdaptationGain = 0.03;
+// on real pen strokes"): development s02-s06 97.7 % overall, every gesture >= 90.7 %; held-out
+// s07-s11 94.6 % overall. They guard against regressions; the held-out goal (95 %, every gesture
+// >= 90 %) is not met yet.
+constexpr double kDevOverall = 0.97;
+constexpr double kDevPerGesture = 0.90;
+constexpr double kHeldOutOverall = 0.94;
+// Held-out, learning from each person's first three repetitions (unistroke-report --adapt held-out,
+// the strokes after them): 89.9 % -> 94.0 % measured at first, 94.6 % -> 96.8 % now. The gain
+// shrinks as the recognizer itself gets better; what the person sees is the accuracy after
+// learning, and that learning helps at all.
+constexpr double kMinAdaptedAccuracy = 0.95;
+constexpr double kMinAdaptationGain = 0.01;
 
 TEST(UnistrokeRecognition, GivenDevelopmentSubjects_WhenRecognized_ThenOverallAndEveryGestureAboveFloor)
 {
@@ -40,6 +45,53 @@ TEST(UnistrokeRecognition, GivenHeldOutSubjects_WhenRecognized_ThenOverallAboveF
     for (const auto& [gesture, row] : c.rows) EXPECT_EQ(row[kFailed], 0) << gesture;
 }
 
+// A window of another size passes the same stroke in other plane units per pixel: scaled, and with
+// its samples (pointer events a pixel or more apart) denser or sparser in plane units. Measured on
+// the development strokes (unistroke-report --invariance dev): scaled alone, 100.0 % keep their class
+// (every threshold is relative to the stroke's extent); resampled at 0.5x / 2x the spacing, 98.6 % /
+// 97.5-97.6 %, about the 98.9 % that merely resampling at the same spacing keeps: the strokes that
+// change sit on a decision boundary (polyline or freeform, circle or ellipse) that moving the samples
+// along the stroke crosses, with no trend in the accuracy (97.5 % before, 97.2-97.7 % after).
+constexpr double kScaledSameClass = 0.999;
+constexpr double kResampledSameClass = 0.965;
+
+TEST(UnistrokeRecognition, GivenDevelopmentStrokes_WhenScaledOrResampledAsByAnotherWindowSize_ThenTheSameClass)
+{
+    // Arrange
+    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
+    struct Variant {
+        double scale, spacing, floor;
+    };
+    const Variant variants[] = {{0.1, 1.0, kScaledSameClass}, {10.0, 1.0, kScaledSameClass},
+                                {10.0, 0.5, kResampledSameClass}, {0.1, 2.0, kResampledSameClass}};
+    for (const Variant& v : variants) {
+        // Act
+        const InvarianceResult r = measureInvariance(recs, v.scale, v.spacing);
+        // Assert
+        ASSERT_EQ(r.total, 2400);
+        EXPECT_GE(double(r.same) / r.total, v.floor) << "scale " << v.scale << ", sample spacing x" << v.spacing;
+    }
+}
+
+TEST(UnistrokeRecognition, GivenAStroke_WhenTransformed_ThenScaledAndResampledAlongItWithTimes)
+{
+    // Arrange: an L of two 10-unit legs sampled every 2 units, one sample per 10 ms.
+    solvers::stroke::Stroke s;
+    for (int i = 0; i <= 5; ++i) s.points.emplace_back(2.0 * i, 0.0, 0.0);
+    for (int i = 1; i <= 5; ++i) s.points.emplace_back(10.0, 2.0 * i, 0.0);
+    for (size_t i = 0; i < s.points.size(); ++i) s.times.push_back(0.01 * double(i));
+    // Act
+    const auto denser = transformStroke(s, 3.0, 0.5);
+    // Assert: every 1 unit (3 after scaling) along the path, times interpolated, ends kept.
+    constexpr double kTol = 1e-12;
+    ASSERT_EQ(denser.points.size(), 21u);
+    EXPECT_NEAR((denser.points[5] - Eigen::Vector3d(15.0, 0.0, 0.0)).norm(), 0.0, kTol);
+    EXPECT_NEAR((denser.points[15] - Eigen::Vector3d(30.0, 15.0, 0.0)).norm(), 0.0, kTol);
+    EXPECT_NEAR(denser.times[15], 0.075, kTol);
+    EXPECT_NEAR((denser.points.back() - Eigen::Vector3d(30.0, 30.0, 0.0)).norm(), 0.0, kTol);
+    EXPECT_EQ(denser.times.back(), s.times.back());
+}
+
 TEST(UnistrokeRecognition, GivenHeldOutPeople_WhenTheModelLearnsTheirFirstCorrections_ThenTheirAccuracyRises)
 {
     // Arrange
@@ -56,6 +108,7 @@ TEST(UnistrokeRecognition, GivenHeldOutPeople_WhenTheModelLearnsTheirFirstCorrec
     }
     ASSERT_GT(tested, 0);
     EXPECT_GE(double(after - before) / tested, kMinAdaptationGain);
+    EXPECT_GE(double(after) / tested, kMinAdaptedAccuracy);
 }
 
 }  // namespace

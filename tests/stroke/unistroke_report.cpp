@@ -4,7 +4,10 @@
 //   unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value]...
 //   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
+//   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
+//   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
+//                                              (0.5x, 2x the sample spacing): how often the class holds
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
 // The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
@@ -14,9 +17,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 namespace st = sculptline::stroketest;
 
@@ -34,6 +40,76 @@ void report(const char* title, const std::vector<st::Recording>& recs)
     std::cout << "\n\n";
 }
 
+// Sets the RecognizeOptions field called `k`; false for an unknown name.
+bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::string& k, double v)
+{
+    if (k == "residualScale") o.residualScale = v;
+    else if (k == "sampleSpacing") o.sampleSpacing = v;
+    else if (k == "edgeTrim") o.edgeTrim = v;
+    else if (k == "freeformScore") o.freeformScore = v;
+    else if (k == "vertexInsertion") o.vertexInsertion = v;
+    else if (k == "collinearAngle") o.collinearAngle = v;
+    else if (k == "shortEdge") o.shortEdge = v;
+    else if (k == "minCornerTurn") o.minCornerTurn = v;
+    else if (k == "guessedVertex") o.guessedVertex = v;
+    else if (k == "habitDistance") o.habitDistance = v;
+    else if (k == "maxOvershoot") o.maxOvershoot = v;
+    else if (k == "minLoopTurn") o.minLoopTurn = v;
+    else return false;
+    return true;
+}
+
+// Leave-one-subject-out on the development subjects: for each of s02-s06, the value of option `k`
+// (among `values`) that recognizes the other four best is chosen, and the left-out subject is
+// recognized with it. The pooled accuracy estimates how well choosing that parameter on some people
+// carries over to another person (held-out subjects are not read).
+void leaveOneSubjectOut(const std::vector<st::Recording>& recs, const std::string& k, const std::vector<double>& values)
+{
+    std::map<std::string, std::map<double, std::pair<int, int>>> perSubject;  // subject -> value -> (correct, total)
+    for (double v : values) {
+        sculptline::solvers::stroke::RecognizeOptions o = gOptions;
+        setOption(o, k, v);
+        for (const auto& r : recs) {
+            const int kind = st::recognizeRecording(r, o);
+            auto& c = perSubject[r.subject][v];
+            c.first += kind >= 0 && st::isCorrect(r.gesture, static_cast<st::ShapeKind>(kind));
+            ++c.second;
+        }
+    }
+    std::cout << "| left out | " << k << " chosen on the other four | their accuracy | left-out accuracy | left-out at the default |\n|---|---:|---:|---:|---:|\n";
+    int correct = 0, total = 0, correctDefault = 0;
+    sculptline::solvers::stroke::RecognizeOptions defaults = gOptions;
+    for (const auto& [out, unused] : perSubject) {
+        double bestV = values.front(), bestAcc = -1;
+        for (double v : values) {
+            int c = 0, t = 0;
+            for (const auto& [s, byV] : perSubject) {
+                if (s == out) continue;
+                c += byV.at(v).first;
+                t += byV.at(v).second;
+            }
+            if (double(c) / t > bestAcc + 1e-12) {
+                bestAcc = double(c) / t;
+                bestV = v;
+            }
+        }
+        const auto& mine = perSubject[out][bestV];
+        int dc = 0;
+        for (const auto& r : recs) {
+            if (r.subject != out) continue;
+            const int kind = st::recognizeRecording(r, defaults);
+            dc += kind >= 0 && st::isCorrect(r.gesture, static_cast<st::ShapeKind>(kind));
+        }
+        correct += mine.first;
+        total += mine.second;
+        correctDefault += dc;
+        std::cout << "| " << out << " | " << bestV << " | " << std::fixed << std::setprecision(1) << 100.0 * bestAcc << " % | "
+                  << 100.0 * mine.first / mine.second << " % | " << 100.0 * dc / mine.second << " % |" << std::defaultfloat << '\n';
+    }
+    std::cout << "| **pooled** | | | " << std::fixed << std::setprecision(1) << 100.0 * correct / total << " % | " << 100.0 * correctDefault / total
+              << " % |" << std::defaultfloat << '\n';
+}
+
 // One line per recording of `gesture`: what the recognizer saw (for development on s02-s06 only).
 void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
 {
@@ -42,14 +118,28 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         if (r.gesture != gesture) continue;
         sk::RecognizeOptions o = gOptions;
         o.regularize = false;
-        const sk::StrokeRecognition sr = sk::recognizeStroke(r.stroke, {}, o);
+        // DUMP_SPACING=f: the stroke resampled at f times its sample spacing (--invariance).
+        const double spacing = std::getenv("DUMP_SPACING") ? std::atof(std::getenv("DUMP_SPACING")) : 1.0;
+        const sk::StrokeRecognition sr = sk::recognizeStroke(st::transformStroke(r.stroke, 1.0, spacing), {}, o);
         const sk::FitResult& fit = sr.fit;
         const sk::Recognition& rec = sr.recognition;
         std::cout << r.subject << ' ' << r.speed << ' ' << r.number << " n=" << r.stroke.points.size() << " cond=" << fit.conditioned.size()
                   << " closed=" << rec.geometry.closed << " corners=" << fit.corners.size() << " verts=" << rec.geometry.vertices.size()
                   << " ext=" << std::setprecision(3) << rec.geometry.extent << " len=" << rec.geometry.length << " ->";
         for (const auto& c : rec.candidates) std::cout << ' ' << sk::shapeName(c.kind) << ':' << std::setprecision(2) << c.score;
-        std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG") << '\n';
+        std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG");
+        if (std::getenv("DUMP_VERTICES")) {  // vertices in units of the extent, from the points' first sample
+            std::cout << "  V:";
+            for (const auto& v : rec.geometry.vertices) {
+                const auto q = (v - rec.geometry.points.front()) / rec.geometry.extent;
+                std::cout << " (" << std::setprecision(2) << q.x() << ',' << q.y() << ')';
+            }
+        }
+        if (std::getenv("DUMP_POINTS")) {  // the recognizer's (resampled) points, plane coordinates
+            std::cout << "  P:";
+            for (const auto& p : rec.geometry.points) std::cout << std::setprecision(6) << ' ' << p.x() << ',' << p.y();
+        }
+        std::cout << '\n';
     }
 }
 
@@ -159,18 +249,7 @@ int main(int argc, char** argv)
             const auto eq = kv.find('=');
             const std::string k = kv.substr(0, eq);
             const double v = std::stod(kv.substr(eq + 1));
-            auto& o = gOptions;
-            if (k == "residualScale") o.residualScale = v;
-            else if (k == "freeformScore") o.freeformScore = v;
-            else if (k == "vertexInsertion") o.vertexInsertion = v;
-            else if (k == "collinearAngle") o.collinearAngle = v;
-            else if (k == "shortEdge") o.shortEdge = v;
-            else if (k == "minCornerTurn") o.minCornerTurn = v;
-            else if (k == "guessedVertex") o.guessedVertex = v;
-            else if (k == "habitDistance") o.habitDistance = v;
-            else if (k == "maxOvershoot") o.maxOvershoot = v;
-            else if (k == "minLoopTurn") o.minLoopTurn = v;
-            else {
+            if (!setOption(gOptions, k, v)) {
                 std::cerr << "unknown option " << k << '\n';
                 return 2;
             }
@@ -191,6 +270,33 @@ int main(int argc, char** argv)
                 std::cout << "| " << n << " | **all** | " << t << " | " << 100.0 * b / t << " % | " << 100.0 * a / t << " % | " << std::showpos
                           << 100.0 * (a - b) / t << std::noshowpos << " |\n";
             }
+            return 0;
+        } else if (!std::strcmp(argv[i], "--invariance") && i + 1 < argc) {  // --invariance dev|held-out
+            const bool h = !std::strcmp(argv[++i], "held-out");
+            const auto recs = st::loadUnistrokes(dir, h ? st::heldOutSubjects() : st::devSubjects());
+            std::cout << "| scale | sample spacing | same class | accuracy original | accuracy transformed | changed (gesture: count) |\n|---:|---:|---:|---:|---:|---|\n";
+            for (double scale : {0.1, 1.0, 10.0}) {
+                for (double spacing : {0.5, 0.999, 1.0, 2.0}) {
+                    if (scale == 1.0 && spacing == 1.0) continue;
+                    const st::InvarianceResult r = st::measureInvariance(recs, scale, spacing, gOptions);
+                    std::cout << "| " << scale << " | " << spacing << " | " << std::fixed << std::setprecision(1) << 100.0 * r.same / r.total << " % | "
+                              << 100.0 * r.correctOriginal / r.total << " % | " << 100.0 * r.correctTransformed / r.total << " % | ";
+                    for (const auto& [g, c] : r.transitions) std::cout << g << ": " << c << "  ";
+                    std::cout << std::defaultfloat << "|\n";
+                }
+            }
+            return 0;
+        } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
+            const std::string k = argv[++i];
+            std::vector<double> values;
+            std::istringstream list(argv[++i]);
+            for (std::string v; std::getline(list, v, ',');) values.push_back(std::stod(v));
+            sculptline::solvers::stroke::RecognizeOptions probe;
+            if (values.empty() || !setOption(probe, k, values.front())) {
+                std::cerr << "--loso: unknown option or no values\n";
+                return 2;
+            }
+            leaveOneSubjectOut(st::loadUnistrokes(dir, st::devSubjects()), k, values);
             return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
