@@ -408,7 +408,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 lo = mid + 1;
             }
         }
-        if (best.first.unknowns() != hi) best = averaged(hi);
+        // (A fixed count is solved once: its knots may merge, leaving fewer unknowns, and solving it
+        // again would give the same.)
+        if (opt.averagedControlPoints == 0 && best.first.unknowns() != hi) best = averaged(hi);
         res.maxError = best.second;
         res.converged = res.maxError <= opt.tolerance;
         res.knots = best.first.knots;

@@ -244,9 +244,17 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // only if the search finds nothing.
     const bool search = !cs.closed && corners.empty() && options.fewerControlPoints;
     int round = 0;
+    // The search needs the error-driven fit only as its ceiling (and, should it find nothing, as
+    // its result): that fit is measured on the raw samples only then.
+    bool measured = true;
     auto refine = [&](int rounds) {
         for (;; ++round) {
             fit = fitConditioned(cs, fitPoints, corners, samples, sopt);
+            if (rounds < 0) {
+                measured = false;
+                res.converged = fit.converged;
+                break;
+            }
             const SampleDeviation dev = measureSamples(fit.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
             res.maxError = dev.maxError;
             res.converged = dev.maxError <= res.tolerance;
@@ -255,7 +263,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             sopt.tolerance = std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / dev.maxError);
         }
     };
-    refine(search ? 0 : kMaxRefinements);
+    refine(search ? -1 : kMaxRefinements);
     if (search) {
         // The fewest control points with knots averaged over the samples' parameters (The NURBS
         // Book eq. 9.69) and the parameters corrected toward their foot points (Hoschek), searched
@@ -308,6 +316,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 FitPass a = count == best ? std::move(bestPass) : trial(count);
                 found = take(a);
             }
+        }
+        if (!found && !measured) {
+            const SampleDeviation dev = measureSamples(fit.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
+            res.maxError = dev.maxError;
+            res.converged = dev.maxError <= res.tolerance;
+            measured = true;
         }
         if (!found && res.converged && sopt.removal == KnotRemoval::LastRound) {
             // Nothing below the error-driven count: its knots are tried for removal again, all of
