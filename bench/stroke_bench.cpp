@@ -10,6 +10,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <Eigen/Geometry>
+
 #include <malloc.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -17,6 +19,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -74,6 +77,43 @@ void BM_StrokeFit(benchmark::State& state)
     report(state, s, r);
 }
 BENCHMARK(BM_StrokeFit)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+// Strokes drawn in space (a tracked pen) against the planar case, 1,000 samples each. Arg:
+//   0 the planar flourish of BM_StrokeFit/1000 (z = 0: the 2D special case),
+//   1 the same samples turned out of the xy-plane (a planar stroke in space: the z terms no longer zero),
+//   2 the flourish bent into a space curve (z = 0.15 size sin(2 pi x / size), x, y unchanged),
+//   3 two turns of a helix of the flourish's extent (100 radius, 150 pitch) with 3D noise.
+// The goal: 1-3 as fast as 0 (same sample count, same tolerance relative to the extent).
+Stroke spaceStroke(int c)
+{
+    DrawOptions d;
+    d.noise = kNoise;
+    if (c == 3) return drawWithSamples(helixShape(100, 150, 2), 1000, d);
+    if (c == 2) {
+        Shape bent = flourishShape(300);
+        for (Eigen::Vector3d& p : bent.reference) p.z() = 45.0 * std::sin(2.0 * M_PI * p.x() / 300.0);
+        return drawWithSamples(bent, 1000, d);
+    }
+    Stroke s = benchStroke(1000);
+    if (c == 1) {
+        const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, 2, 0.5).normalized()).toRotationMatrix();
+        for (Eigen::Vector3d& p : s.points) p = turn * p;
+        s.dimension = 3;
+    }
+    return s;
+}
+
+void BM_StrokeFit3D(benchmark::State& state)
+{
+    const Stroke s = spaceStroke(static_cast<int>(state.range(0)));
+    FitResult r = fitStroke(s);
+    for (auto _ : state) {
+        r = fitStroke(s);
+        benchmark::DoNotOptimize(r.curve.points().data());
+    }
+    report(state, s, r);
+}
+BENCHMARK(BM_StrokeFit3D)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 
 // The same flourish from a slow hand with sensor jitter (kJitter): compare with BM_StrokeFit at the
 // same sample count.

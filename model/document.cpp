@@ -1,3 +1,4 @@
+#include "model/document_solids.h"
 #include "model/document.h"
 
 #include "solvers/io/geometry_json.h"
@@ -54,6 +55,28 @@ const json& optionalArray(const json& j, const std::string& key)
     if (it == j.end()) return kEmpty;
     if (!it->is_array()) throw io::InputError(key + ": must be an array");
     return *it;
+}
+
+/// "references": [{"path": absolute, "relative"?: from the document's folder}] (reference .iv files;
+/// their contents are read and validated by the program that shows them, not here).
+std::vector<ReferenceSpec> referencesFromJson(const json& refs)
+{
+    std::vector<ReferenceSpec> out;
+    auto text = [](const json& j, const std::string& path) {
+        if (!j.is_string() || j.get_ref<const std::string&>().empty()) throw io::InputError(path + ": must be a non-empty string");
+        const std::string& s = j.get_ref<const std::string&>();
+        if (s.find('\0') != std::string::npos) throw io::InputError(path + ": must not contain a NUL character");
+        return s;
+    };
+    for (size_t i = 0; i < refs.size(); ++i) {
+        const std::string path = "references[" + std::to_string(i) + "]";
+        if (!refs[i].is_object()) throw io::InputError(path + ": must be a JSON object");
+        ReferenceSpec r;
+        r.path = text(io::member(refs[i], "path", path), path + ".path");
+        if (const auto it = refs[i].find("relative"); it != refs[i].end()) r.relative = text(*it, path + ".relative");
+        out.push_back(std::move(r));
+    }
+    return out;
 }
 
 PlaneSpec planeFromJson(const json& j, const std::string& path)
@@ -404,6 +427,7 @@ SceneDocument documentFromJson(const json& j)
         }
         doc.meshes.push_back(std::move(spec));
     }
+    readSolids(j, doc, usedIds);
     const json& constraints = optionalArray(j, "constraints");
     // The kind of every entity the document names, for the constraints' checks.
     std::map<int, EntityKind> kinds;
@@ -510,6 +534,7 @@ SceneDocument documentFromJson(const json& j)
     }
     for (size_t i = 0; i < meshes.size(); ++i) doc.meshes[i].fixed = readState(meshes[i], "meshes[" + std::to_string(i) + "]");
     for (size_t i = 0; i < points.size(); ++i) doc.points[i].fixed = readState(points[i], "points[" + std::to_string(i) + "]");
+    doc.references = referencesFromJson(optionalArray(j, "references"));
     return doc;
 }
 

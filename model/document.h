@@ -3,8 +3,10 @@
 // from JSON (data/default_scene.json is the default). Plain data: no Coin types, so the parsing and
 // its error messages are testable on their own.
 #include "model/constraint.h"
+#include "model/solid_recipe.h"
 #include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
+#include "solvers/volume/solidify.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json_fwd.hpp>
@@ -32,6 +34,13 @@ struct PlaneSpec {
 struct GridSpec {
     double size = 200.0;  ///< edge length, model units, > 0
     double spacing = 10.0;  ///< distance between lines, model units, in (0, size]
+};
+
+/// A reference .iv file drawn to sketch over (not part of the model): saved as its path, absolute
+/// and relative to the document's folder ("relative", tried first: a folder moved with its files).
+struct ReferenceSpec {
+    std::string path;
+    std::string relative;  ///< empty when not saved with one
 };
 
 struct SceneDocument {
@@ -90,6 +99,17 @@ struct SceneDocument {
         bool fixed = false;
     };
     std::vector<PointSpec> points;
+    /// "references": [{"path", "relative"?}] (the GUI reads and validates the files).
+    std::vector<ReferenceSpec> references;
+    /// Solids (model/document_solids.h): made from surfaces by a recipe, with their last result.
+    struct SolidSpec {
+        int id = 0;
+        std::vector<int> surfaces;
+        SolidRecipe recipe;
+        std::optional<solvers::volume::Solid> result;
+        bool fixed = false;
+    };
+    std::vector<SolidSpec> solids;
 };
 
 /// The document format this program writes: "format": "sculptline", "version": kDocumentVersion.

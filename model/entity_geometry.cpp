@@ -78,6 +78,7 @@ bool hasFiniteGeometry(const Entity& e)
     case EntityKind::Surface: return !e.surface || finiteSpline(*e.surface);
     case EntityKind::Mesh: return !e.mesh || (allFinite(e.mesh->vertices) && allFinite(e.mesh->normals));
     case EntityKind::Point: return e.position.allFinite();
+    case EntityKind::Solid: return !e.solid || allFinite(e.solid->mesh.vertices);
     }
     return false;
 }

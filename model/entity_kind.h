@@ -10,14 +10,16 @@ using EntityId = std::uint32_t;  ///< 0 is "none"
 
 /// Mesh: a closed loop of curves filled by a triangle mesh (seed 004 §4, curve networks).
 /// Point: a point in space (the crossing of two curves, seed 000 Fig. 2), for point constraints.
-enum class EntityKind { Plane, Curve, Surface, Mesh, Point };
+/// Solid: the watertight solid of a set of surfaces (closed, or shells of a thickness), through
+/// level sets (solvers/volume/solidify.h; model/solid_recipe.h).
+enum class EntityKind { Plane, Curve, Surface, Mesh, Point, Solid };
 
 /// One row of the entity-kind table.
 struct EntityKindInfo {
     EntityKind kind;
     const char* name;  ///< as documents, the CLI and the ui spell it
 };
-const std::array<EntityKindInfo, 5>& entityKinds();
+const std::array<EntityKindInfo, 6>& entityKinds();
 const EntityKindInfo& describe(EntityKind kind);
 const char* kindName(EntityKind kind);
 

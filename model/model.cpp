@@ -72,7 +72,7 @@ void Model::deriveConstraints(const Entity& e)
     if (e.kind == EntityKind::Curve && e.plane() != 0) {
         c.type = ConstraintType::Placement;
         c.sources = {e.plane()};
-    } else if ((e.kind == EntityKind::Surface && e.recipe) || e.kind == EntityKind::Mesh) {
+    } else if ((e.kind == EntityKind::Surface && e.recipe) || e.kind == EntityKind::Mesh || e.kind == EntityKind::Solid) {
         c.type = ConstraintType::Construction;
         c.sources = e.inputs;
     } else {
@@ -324,6 +324,7 @@ EntityId Model::restore(const Entity& e)
     case EntityKind::Curve: id = addCurve(e.plane(), *e.local, e.id); break;
     case EntityKind::Mesh: id = addMesh(e.inputs, e.id, true); break;
     case EntityKind::Point: id = addPoint(e.position, e.id, e.rotation); break;
+    case EntityKind::Solid: id = addSolid(e.inputs, *e.solidRecipe, e.id, e.solidStale() ? std::nullopt : e.solid); break;
     case EntityKind::Surface:
         id = e.recipe ? restoreSurface(e.curveInputs(), *e.recipe, e.id, e.surface) : addSurface(*e.surface, e.id);
         entity(id).incidenceK = e.incidenceK;
@@ -530,6 +531,7 @@ Dof Model::dof(EntityId id) const
     case EntityKind::Surface: d.total = e->surface ? 3 * e->surface->countU() * e->surface->countV() : 0; break;
     case EntityKind::Point: d.total = 3; break;
     case EntityKind::Mesh: d.total = 0; break;  // its freedom is its curves'
+    case EntityKind::Solid: d.total = 0; break;  // likewise its surfaces'
     }
     for (ConstraintId cid : constraintsOn(id)) {
         const Constraint& c = constraints_.at(cid);

@@ -16,9 +16,11 @@
 #include "model/entity_kind.h"
 #include "model/plan.h"
 #include "model/plane_frame.h"
+#include "model/solid_recipe.h"
 #include "model/surface_recipe.h"
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/surfaces/network_mesh.h"
+#include "solvers/volume/solidify.h"
 
 #include <array>
 #include <cstdint>
@@ -98,6 +100,17 @@ struct Entity {
     }
     /// Surface: how many of its inputs are surfaces it is tangent to (at the end of `inputs`).
     size_t tangentSurfaceCount() const;
+
+    /// Solid: how it is made from its input surfaces (`inputs`).
+    std::optional<SolidRecipe> solidRecipe;
+    /// Solid: its last finished conversion (mesh, volume, area, voxel size); none before the first.
+    /// Conversions take seconds, so update() does not run them: it bumps sourceVersion, and a
+    /// caller (the ui's background builder, or runSolidJob headless) converts and hands the result
+    /// to setSolidResult() (model/solid_job.h).
+    std::optional<solvers::volume::Solid> solid;
+    int sourceVersion = 0;   ///< Solid: bumped whenever an input surface changed
+    int solidVersion = -1;   ///< Solid: the sourceVersion `solid` was converted from
+    bool solidStale() const { return kind == EntityKind::Solid && solidVersion != sourceVersion; }
 
     int recomputations = 0;  ///< times update() recomputed this entity (tests count them)
     /// Curve: bumped whenever `local` is replaced (an over-sketch), so views know to re-tessellate;
@@ -186,6 +199,19 @@ public:
     /// they make no loop, add it empty with buildError set (documents, undo) instead of throwing.
     /// @throws std::invalid_argument when an input is not a curve or the curves make no loop.
     EntityId addMesh(const std::vector<EntityId>& curves, EntityId id = 0, bool keepOnFailure = false);
+    /// Adds a solid made from `surfaces` by `recipe`. With `result` (an undo, a document that saved
+    /// the conversion) it is current; without, it is due for conversion (Entity::solidStale()).
+    /// @throws std::invalid_argument when an input is not a surface, there is none, or the recipe
+    ///         is invalid (validate(SolidRecipe)).
+    EntityId addSolid(const std::vector<EntityId>& surfaces, const SolidRecipe& recipe, EntityId id = 0,
+                      const std::optional<solvers::volume::Solid>& result = std::nullopt);
+    /// A conversion of `solid` finished (model/solid_job.h): stored when it was made from the inputs
+    /// as they still are (`version` == sourceVersion), observers told; returns false (nothing
+    /// changes) for a stale version or an entity that is no solid any more.
+    bool setSolidResult(EntityId solid, int version, solvers::volume::Solid result);
+    /// A conversion of `solid` at `version` failed or was cancelled: buildError says why, the last
+    /// good mesh stays. Ignored for a stale version.
+    bool setSolidError(EntityId solid, int version, const std::string& error);
     /// The mesh entity addMesh(curves) would add (built, id 0), without adding it.
     /// @throws std::invalid_argument as addMesh does.
     Entity makeMesh(const std::vector<EntityId>& curves) const;

@@ -1,6 +1,7 @@
 #include "model/model_document.h"
 
 #include "model/atomic_file.h"
+#include "model/document_solids.h"
 #include "solvers/io/geometry_json.h"
 
 #include <map>
@@ -22,7 +23,7 @@ void populateModel(const SceneDocument& doc, Model& model)
     model.clear();
     // Entities with ids are created in id order (inputs before dependents, as when they were made:
     // the reader checks a curve's id exceeds its plane's); those without follow with fresh ids.
-    enum class Kind { Plane, Curve, Surface, Constructed, Mesh, Point };
+    enum class Kind { Plane, Curve, Surface, Constructed, Mesh, Point, Solid };
     std::map<int, std::pair<Kind, size_t>> byId;
     std::vector<std::pair<Kind, size_t>> unnumbered;
     for (size_t i = 0; i < doc.planes.size(); ++i) byId[doc.planes[i].id] = {Kind::Plane, i};
@@ -41,6 +42,7 @@ void populateModel(const SceneDocument& doc, Model& model)
         else unnumbered.push_back({Kind::Mesh, i});
     }
     for (size_t i = 0; i < doc.points.size(); ++i) byId[doc.points[i].id] = {Kind::Point, i};
+    for (size_t i = 0; i < doc.solids.size(); ++i) byId[doc.solids[i].id] = {Kind::Solid, i};
     for (size_t i = 0; i < doc.constructed.size(); ++i) {
         if (doc.constructed[i].id != 0) byId[doc.constructed[i].id] = {Kind::Constructed, i};
         else unnumbered.push_back({Kind::Constructed, i});
@@ -75,6 +77,12 @@ void populateModel(const SceneDocument& doc, Model& model)
             const std::vector<EntityId> curves(doc.meshes[i].curves.begin(), doc.meshes[i].curves.end());
             made = model.addMesh(curves, id, true);
             fixed = doc.meshes[i].fixed;
+            break;
+        }
+        case Kind::Solid: {
+            const SceneDocument::SolidSpec& s = doc.solids[i];
+            made = model.addSolid(std::vector<EntityId>(s.surfaces.begin(), s.surfaces.end()), s.recipe, id, s.result);
+            fixed = s.fixed;
             break;
         }
         case Kind::Constructed: {
@@ -139,7 +147,7 @@ void sculptToJson(const Model&, const SurfaceRecipe& r, json& c)
 json modelToJson(const Model& model, const GridSpec& grid)
 {
     json planes = json::array(), curves = json::array(), surfaces = json::array(), constraints = json::array(),
-         meshes = json::array(), points = json::array();
+         meshes = json::array(), points = json::array(), solids = json::array();
     for (const auto& [id, e] : model.entities()) {
         json entry;
         switch (e.kind) {
@@ -164,6 +172,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
             break;
         }
         case EntityKind::Mesh: entry = {{"id", id}, {"curves", e.inputs}}; break;
+        case EntityKind::Solid: entry = solidToJson(e); break;
         case EntityKind::Point:
             entry = {{"id", id}, {"position", io::toJson(e.position)}};
             if (!e.rotation.isApprox(Eigen::Quaterniond::Identity(), 0.0))
@@ -214,6 +223,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
         case EntityKind::Mesh: meshes.push_back(std::move(entry)); break;
         case EntityKind::Surface: surfaces.push_back(std::move(entry)); break;
         case EntityKind::Point: points.push_back(std::move(entry)); break;
+        case EntityKind::Solid: solids.push_back(std::move(entry)); break;
         }
     }
     for (const auto& [id, c] : model.constraints()) {
@@ -232,7 +242,7 @@ json modelToJson(const Model& model, const GridSpec& grid)
         if (c.preimage) k["preimage"] = io::toJson(*c.preimage);
         constraints.push_back(std::move(k));
     }
-    return json{{"format", kDocumentFormat},
+    json doc{{"format", kDocumentFormat},
                 {"version", kDocumentVersion},
                 {"units", "mm"},
                 {"grid", {{"size", grid.size}, {"spacing", grid.spacing}}},
@@ -242,6 +252,8 @@ json modelToJson(const Model& model, const GridSpec& grid)
                 {"constraints", constraints},
                 {"meshes", meshes},
                 {"points", points}};
+    if (!solids.empty()) doc["solids"] = std::move(solids);  // documents without solids stay as they were
+    return doc;
 }
 
 void saveModel(const Model& model, const GridSpec& grid, const std::string& path)

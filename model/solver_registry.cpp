@@ -530,6 +530,18 @@ public:
     }
 };
 
+/// solid: a solid's surfaces changed; its conversion takes seconds, so the step only marks it due
+/// (a new sourceVersion) and the conversion runs outside update() (model/solid_job.h): a drag's
+/// events cost nothing here, and the ui converts once the drag has ended.
+class SolidDueSolver : public StepSolver {
+public:
+    void factor(const Model&, const PlanStep&) override {}
+    void solve(Model& model, const PlanStep& step) override
+    {
+        for (EntityId id : step.solve) ++entity(model, id).sourceVersion;
+    }
+};
+
 /// unsolved: a cluster of coupled free entities no registered solver handles (yet); its entities
 /// keep their geometry. Curves still take their placement.
 class UnsolvedCluster : public StepSolver {
@@ -588,6 +600,7 @@ SolverRegistry::SolverRegistry()
     add("least-change", [] { return std::make_unique<LeastChangeSolver>(); });
     add("surface-builder", [] { return std::make_unique<SurfaceBuilderSolver>(); });
     add("network-mesh", [] { return std::make_unique<MeshSolver>(); });
+    add("solid", [] { return std::make_unique<SolidDueSolver>(); });
     add("deformation", [] { return std::make_unique<DeformationStepSolver>(); });
     add("incidence", [] { return std::make_unique<IncidenceStepSolver>(); });
     add("unsolved", [] { return std::make_unique<UnsolvedCluster>(); });
@@ -646,6 +659,7 @@ std::string SolverRegistry::choose(const Model& model, const PlanStep& step) con
     if (e->kind == EntityKind::Surface && construction && e->recipe && e->recipe->mode == Construction::Sculpt) return "deformation";
     if (e->kind == EntityKind::Surface && construction) return "surface-builder";
     if (e->kind == EntityKind::Mesh && construction) return "network-mesh";
+    if (e->kind == EntityKind::Solid && construction) return "solid";
     if (e->kind == EntityKind::Curve && pins) return "least-change";
     if (e->kind == EntityKind::Curve && placement) return "placement";
     return "unsolved";

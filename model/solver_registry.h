@@ -15,6 +15,7 @@
 //   network-mesh    a mesh's loop of curves (solvers/surfaces/network_mesh.h)
 //   deformation     a sculpt: the base surface deformed onto target curves (thesis ch. 6,
 //                   solvers/deformation), factored once per drag of a target's plane
+//   solid           a solid's surfaces changed: marks it due for conversion (model/solid_job.h)
 //   unsolved        a cluster no registered solver handles yet (coupled constraints between
 //                   several free entities): its entities keep their geometry, and the plan says so
 #include "model/plan.h"

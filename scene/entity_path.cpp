@@ -11,9 +11,9 @@
 namespace sculptline::scene {
 namespace {
 
-constexpr std::array<model::EntityKind, 5> kKinds{model::EntityKind::Plane, model::EntityKind::Curve,
+constexpr std::array<model::EntityKind, 6> kKinds{model::EntityKind::Plane, model::EntityKind::Curve,
                                                   model::EntityKind::Surface, model::EntityKind::Mesh,
-                                                  model::EntityKind::Point};
+                                                  model::EntityKind::Point, model::EntityKind::Solid};
 
 /// The word an entity's node name starts with.
 const char* nodeWord(model::EntityKind kind)
@@ -24,6 +24,7 @@ const char* nodeWord(model::EntityKind kind)
     case model::EntityKind::Surface: return "Surface";
     case model::EntityKind::Mesh: return "Mesh";
     case model::EntityKind::Point: return "Point";
+    case model::EntityKind::Solid: return "Solid";
     }
     return "";
 }

@@ -1,3 +1,4 @@
+#include "scene/solid_node.h"
 #include "scene/iv_export.h"
 
 #include "scene/eigen_coin.h"
@@ -73,6 +74,11 @@ SoSeparator* makeExportGraph(const model::Model& model, const model::GridSpec& g
             curves->addChild(node);
             break;
         case model::EntityKind::Point: continue;  // a construction aid, not geometry
+        case model::EntityKind::Solid:
+            if (!e.solid) continue;  // not converted yet
+            node = makeSolidNode(e.solid->mesh);
+            surfaces->addChild(node);
+            break;
         case model::EntityKind::Mesh:
             node = makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles);
             surfaces->addChild(node);

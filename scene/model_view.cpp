@@ -1,3 +1,4 @@
+#include "scene/solid_node.h"
 #include "scene/model_view.h"
 
 #include "scene/eigen_coin.h"
@@ -290,6 +291,7 @@ void ModelView::entityAdded(const model::Entity& e)
         break;
     case model::EntityKind::Mesh: surfaces_->addChild(makeMeshEntityNode(e)); break;
     case model::EntityKind::Point: break;  // drawn with the constraints that make them (later issues)
+    case model::EntityKind::Solid: surfaces_->addChild(makeSolidEntityNode(e)); break;
     }
 }
 
@@ -378,7 +380,9 @@ void ModelView::entityRemoved(const model::Entity& e)
     const auto it = nodes_.find(e.id);
     if (it == nodes_.end()) return;
     SoGroup* parent = e.kind == model::EntityKind::Plane        ? planeCurves_
-                      : e.kind == model::EntityKind::Surface || e.kind == model::EntityKind::Mesh ? surfaces_
+                      : e.kind == model::EntityKind::Surface || e.kind == model::EntityKind::Mesh ||
+                                e.kind == model::EntityKind::Solid
+                          ? surfaces_
                       : e.plane() != 0                ? static_cast<SoGroup*>(planeGroup(e.plane()))
                                                       : curves_;
     parent->removeChild(it->second);
@@ -430,6 +434,10 @@ void ModelView::entityUpdated(const model::Entity& e)
     if (e.kind == model::EntityKind::Mesh && builtShape_[e.id] != e.shapeVersion) {
         SoSeparator* old = nodes_.at(e.id);
         surfaces_->replaceChild(surfaces_->findChild(old), makeMeshEntityNode(e));
+    }
+    if (e.kind == model::EntityKind::Solid && builtShape_[e.id] != e.shapeVersion) {
+        SoSeparator* old = nodes_.at(e.id);
+        surfaces_->replaceChild(surfaces_->findChild(old), makeSolidEntityNode(e));
     }
     if (e.kind == model::EntityKind::Surface && builtShape_[e.id] != e.shapeVersion && !updateSurfaceInPlace(e)) {
         // A built surface follows its curves: re-tessellated once per update that rebuilt it.
@@ -557,6 +565,17 @@ SoSeparator* ModelView::makeMeshEntityNode(const model::Entity& e)
     SoSeparator* node = drawable(e) ? makeMeshNode(e.mesh->vertices, e.mesh->normals, e.mesh->triangles) : new SoSeparator;
     ++nodeBuilds_;
     node->setName(entityNodeName(model::EntityKind::Mesh, e.id).c_str());
+    nodes_[e.id] = node;
+    builtShape_[e.id] = e.shapeVersion;
+    return node;
+}
+
+SoSeparator* ModelView::makeSolidEntityNode(const model::Entity& e)
+{
+    // Its last conversion (kept while a new one runs); nothing before the first one finished.
+    SoSeparator* node = e.solid && drawable(e) ? makeSolidNode(e.solid->mesh) : new SoSeparator;
+    ++nodeBuilds_;
+    node->setName(entityNodeName(model::EntityKind::Solid, e.id).c_str());
     nodes_[e.id] = node;
     builtShape_[e.id] = e.shapeVersion;
     return node;

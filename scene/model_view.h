@@ -98,6 +98,7 @@ private:
     SoSeparator* makeSurfaceEntityNode(const model::Entity& entity, bool reuseGrid = false);
     /// A curve network mesh's node, named and registered.
     SoSeparator* makeMeshEntityNode(const model::Entity& entity);
+    SoSeparator* makeSolidEntityNode(const model::Entity& entity);
 
     /// Rewrites the vertices and normals of surface `e`'s node on its kept grid when only its
     /// control points (or weights) changed; false (nothing done) when it cannot.

@@ -10,6 +10,8 @@ cd "$root"
 "$root/scripts/install-packages.sh" scripts/debian-packages.txt scripts/debian-packages-sanitize.txt
 
 build=build-asan
+# Objects are shared between clones through ccache (scripts/setup.sh says how).
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=true
 if [[ ! -f $build/CMakeCache.txt ]]; then
   launcher=()
   if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi

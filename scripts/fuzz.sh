@@ -14,7 +14,8 @@
 #   --fresh        start from the seed corpus alone (default: also the corpus earlier runs grew in
 #                  build-asan/fuzz-corpus/<target>/)
 #   --list         print the target names
-# Targets: document, session and one per sculptline-cli subcommand (eval, fit, surface, ...).
+# Targets: document, session, iv-import (the .iv reference importer) and one per sculptline-cli
+# subcommand (eval, fit, surface, ...).
 # Seeds: tests/fuzz/corpus/<target>/ (never written to). Logs: build-asan/fuzz-logs/<target>.log.
 # Exit status 1 if any target found something; the message says how to reproduce it.
 set -euo pipefail
@@ -35,7 +36,7 @@ while (($#)); do
     --fresh) fresh=1; shift ;;
     --no-build) build_first=0; shift ;;
     --list) ls "$seeds"; exit 0 ;;
-    -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) targets+=("$1"); shift ;;
   esac
@@ -71,11 +72,14 @@ for t in "${targets[@]}"; do
   fork=()
   ((jobs > 1)) && fork=(-fork="$jobs")
   [[ -n $seed ]] && fork+=(-seed="$seed")
+  # A target's own dictionary (fuzz/<target>.dict: the .iv importer's Inventor keywords), else the JSON one.
+  dict="$root/fuzz/$t.dict"
+  [[ -f $dict ]] || dict="$root/fuzz/sculptline.dict"
   log="$build/fuzz-logs/$t.log"
   start=$(date +%s.%N)
   status=0
   "$build/fuzz/fuzz-$t" "${limit[@]}" "${fork[@]}" -timeout="$timeout" -rss_limit_mb="$rss" \
-    -dict="$root/fuzz/sculptline.dict" -artifact_prefix="$out/" -print_final_stats=1 \
+    -dict="$dict" -artifact_prefix="$out/" -print_final_stats=1 \
     "$corpus" "$seeds/$t" >"$log" 2>&1 || status=$?
   elapsed=$(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN {print b - a}')
   ((fresh)) && rm -rf "$corpus"

@@ -31,11 +31,11 @@ compiler_sensitive='StrokeFit.GivenFig43Stroke_WhenDynamicThresholdSampling|Corn
 # inputs take 0.3-1.4 s here against 27-60 ms in Release, so a 1 s limit would report hangs that are
 # not there. The campaigns (scripts/fuzz.sh) keep the 1 s limit and report such inputs for a look.
 #
-# `solid` is left out of the short runs (its seeds still run under ASan/UBSan in ctest's fuzz_solid):
-# every input converts a volume through OpenVDB, 14 inputs a second in this build, so 20,000 runs
-# would take 25 minutes, and the first CI run with it found an input whose tessellation took over
-# 5 s (build-asan/fuzz-artifacts/solid/timeout-4f94554f..., kept as tests/fuzz/slow/solid_tessellation.json,
-# not yet fixed: README "Solids"). Campaigns on it: scripts/fuzz.sh --seconds N solid.
+# `solid` stays out of the short runs (its seeds, the old timeout input among them, run under
+# ASan/UBSan in ctest's fuzz_solid above): every input converts a volume through OpenVDB, 14 inputs a
+# second in this build, and legal inputs are slow here: a 10 x 10 patch thickened 0.1 (voxel t/4,
+# 1.47 M active voxels) takes 0.53 s in Release and over 5 s under ASan (found by this run at
+# 2,000 runs; kept as tests/fuzz/slow/solid_thin_shell.json). Campaigns: scripts/fuzz.sh --seconds N solid.
 runs=${FUZZ_RUNS:-20000}
 if ((runs > 0)); then
   mapfile -t short_targets < <(ls "$root/tests/fuzz/corpus" | grep -vx solid)

@@ -84,6 +84,11 @@ void EntityListDock::refresh(const model::Model& model, model::EntityId selectio
             add(e, text);
         }
         if (e.kind == model::EntityKind::Mesh) add(e, tr("Mesh %1 (network of %2 curves)").arg(id).arg(e.inputs.size()));
+        if (e.kind == model::EntityKind::Solid) {
+            QString text = tr("Solid %1 (%2 of %3 surfaces)").arg(id).arg(QString::fromLatin1(model::solidModeName(e.solidRecipe->mode))).arg(e.inputs.size());
+            if (e.solidStale()) text += e.failed() ? tr(" - not converted") : tr(" - converting");
+            add(e, text);
+        }
     }
     // The designer's constraints (pins and the rest; fixed points show in the inspector): an item
     // selects what the constraint holds.

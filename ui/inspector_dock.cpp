@@ -192,6 +192,23 @@ void InspectorDock::show(const model::Model& model, model::EntityId id)
         s << tr("Curve network loop: curves %1").arg(curves.join(QStringLiteral(", "))) << "\n";
         s << tr("Vertices: %1, triangles: %2").arg(e->mesh->vertices.size()).arg(e->mesh->triangles.size()) << "\n";
         if (!e->buildError.empty()) s << tr("Not rebuilt: %1").arg(QString::fromStdString(e->buildError)) << "\n";
+    } else if (e->kind == model::EntityKind::Solid) {
+        QStringList surfaces;
+        for (model::EntityId k : e->inputs) surfaces << QString::number(k);
+        const model::SolidRecipe& r = *e->solidRecipe;
+        s << tr("Solid of surfaces %1: %2").arg(surfaces.join(QStringLiteral(", "))).arg(
+                 r.mode == model::SolidMode::Shell ? tr("shells %1 mm thick").arg(r.thickness) : tr("closed"))
+          << "\n";
+        if (e->solid) {
+            s << tr("Volume %1 mm³, area %2 mm², voxel %3 mm, %4 triangles, %5")
+                     .arg(e->solid->volume, 0, 'f', 2)
+                     .arg(e->solid->area, 0, 'f', 2)
+                     .arg(e->solid->voxelSize, 0, 'g', 4)
+                     .arg(e->solid->mesh.triangles.size())
+                     .arg(e->solid->watertight ? tr("watertight") : tr("NOT watertight"))
+              << "\n";
+        }
+        if (e->solidStale()) s << (e->failed() ? tr("Not converted: %1").arg(QString::fromStdString(e->buildError)) : tr("Converting...")) << "\n";
     } else if (e->kind == model::EntityKind::Point) {
         s << tr("At %1").arg(point(e->position)) << "\n";
         const Eigen::AngleAxisd turn(e->rotation);

@@ -6,14 +6,17 @@
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
 #include "ui/autosave.h"
+#include "ui/pose_input.h"
 #include "ui/aesthetics_dock.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
 #include "ui/recognition_dock.h"
+#include "ui/stereo_menu.h"
 #include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
+#include "ui/solid_builder.h"
 #include "ui/undo_history.h"
 #include "ui/view_navigation.h"
 
@@ -83,7 +86,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
     history_ = new UndoHistory(*document_, this);
     navigation_ = std::make_unique<ViewNavigation>();
     if (withViewer) {
-        viewer_ = new SoQtExaminerViewer(central);
+        viewer_ = new StereoExaminerViewer(central);
         viewer_->setBackgroundColor(kBackground);
         // Sorted blending draws the translucent planes after, and back to front over, the opaque shapes.
         viewer_->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
@@ -94,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         viewer_->setPopupMenuEnabled(FALSE);
         viewer_->setEventCallback(&MainWindow::viewerEvent, this);
         document_->setCamera([this]() { return viewer_->getCamera(); });
+        new PoseInput(*this);  // 6-DOF devices and the 3D mouse (ui/pose_input.h)
     }
     createActions();
     createDocks();
@@ -138,6 +142,7 @@ MainWindow::~MainWindow()
     // A normal end: the recovery file goes; the history must not follow the stack being emptied.
     delete autosaver_;
     delete history_;
+    delete solids_;  // joins a running conversion while the model it reads still exists
     delete document_;
     document_ = nullptr;
     delete viewer_;
@@ -298,6 +303,7 @@ void MainWindow::createActions()
                                 });
     holdTangent->setCheckable(true);
     createAestheticsMenu();
+    createSolidMenu();
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     make(viewMenu, "view.all", tr("&Frame the scene"), QKeySequence(QStringLiteral("Home")), [this]() { frameScene(); });
     QAction* polygons = make(viewMenu, "view.controlPolygons", tr("&Control polygons"), QKeySequence(QStringLiteral("C")),
@@ -311,8 +317,11 @@ void MainWindow::createActions()
     make(viewMenu, "view.showPlanes", tr("&Show all planes"), QKeySequence(QStringLiteral("Shift+H")), [this]() { setPlanesVisible(true); });
     viewMenu->addSeparator();
     // Zebra and curvature colouring of the selected surface (all surfaces when none is selected).
+    createReferenceActions(file, edit, viewMenu);
     new SurfaceDisplayMenu(this, viewMenu, *document_,
                            viewer_ ? std::function<SoCamera*()>([this]() { return viewer_->getCamera(); }) : std::function<SoCamera*()>());
+    // View > Stereo and View > VR session… (ui/stereo_menu.h).
+    new StereoMenu(this, viewMenu, static_cast<StereoExaminerViewer*>(viewer_));
 }
 
 void MainWindow::hideSelectedPlane()
@@ -643,7 +652,7 @@ model::EntityId MainWindow::curveNear(const QPoint& position) const
 
 bool MainWindow::refuseDialog(const char* action) const
 {
-    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj\n";
+    if (automated_) std::cerr << "sculptline: " << action << " needs a file dialog, which an automated run cannot answer; use --save/--export-iv/--export-step/--export-iges/--export-stl/--export-obj/--import-reference\n";
     return automated_;
 }
 

@@ -29,6 +29,7 @@ class EntityListDock;
 class InspectorDock;
 class RecognitionDock;
 class SketchDocument;
+class SolidBuilder;
 class UndoHistory;
 class ViewNavigation;
 
@@ -74,6 +75,7 @@ public:
     /// In an automated run (a replay) nobody can answer a dialog: file dialogs are not opened (the
     /// action says so on stderr) and unsaved changes are discarded without asking.
     void setAutomated(bool automated) { automated_ = automated; }
+    bool automated() const { return automated_; }
 
     /// Tells a person in a dialog why the document they asked for is not the one open (the
     /// default scene is shown instead).
@@ -103,6 +105,7 @@ protected:
 private:
     void createActions();
     void createAestheticsMenu();  // main_window_aesthetics.cpp
+    void createSolidMenu();       // main_window_solid.cpp
     void resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();
@@ -127,6 +130,9 @@ private:
     bool saveDocument();
     bool saveDocumentAs();
     void exportDocument();
+    /// File > Import Reference, Edit > Remove References, View > References (main_window_references.cpp).
+    void createReferenceActions(QMenu* file, QMenu* edit, QMenu* view);
+    void importReference();
     /// File > Export STEP/IGES/STL/OBJ: a file dialog, then SketchDocument::exportGeometry.
     void exportGeometry(solvers::exchange::Format format);
     void addPlaneFacingViewer();
@@ -153,6 +159,7 @@ private:
     QActionGroup* modes_ = nullptr;
     Mode mode_ = Mode::Sketch;
     std::optional<model::Construction> surfaceMode_;
+    SolidBuilder* solids_ = nullptr;  ///< Solid menu's conversions (main_window_solid.cpp)
     bool automated_ = false;
     QMenu* recentMenu_ = nullptr;
     QMenu* contextMenu_ = nullptr;

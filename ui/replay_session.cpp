@@ -68,8 +68,11 @@ ReplayEvent eventFromJson(const json& j, const std::string& path)
     } else if (type == "wait") {
         e.type = ReplayEvent::Type::Wait;
         e.waitMs = static_cast<int>(bounded(io::member(j, "ms", path), path + ".ms"));
+    } else if (type == "pose") {
+        e.type = ReplayEvent::Type::Pose;
+        e.pose = poseEventFromJson(j, path);
     } else {
-        throw io::InputError(path + ".type: must be press, move, release, key, action or wait, not \"" + type + "\"");
+        throw io::InputError(path + ".type: must be press, move, release, key, action, wait or pose, not \"" + type + "\"");
     }
     return e;
 }

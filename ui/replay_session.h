@@ -12,10 +12,12 @@
 
 #include <Eigen/Core>
 
+#include "ui/pose_event.h"
+
 namespace sculptline::ui {
 
 struct ReplayEvent {
-    enum class Type { Press, Move, Release, Key, Action, Wait };
+    enum class Type { Press, Move, Release, Key, Action, Wait, Pose };
     Type type = Type::Wait;
     int x = 0, y = 0;  ///< viewport pixels, origin top-left
     /// Instead of x, y: a model point ("at": [x, y, z]) whose pixel the current camera gives when
@@ -27,6 +29,7 @@ struct ReplayEvent {
     QKeySequence key;
     QString name;  ///< action name
     int waitMs = 0;
+    PoseEvent pose;  ///< Type::Pose: a 6-DOF device sample
 };
 
 struct ReplaySession {

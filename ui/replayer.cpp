@@ -1,6 +1,7 @@
 #include "ui/replayer.h"
 
 #include "ui/main_window.h"
+#include "ui/pose_input.h"
 #include "ui/sketch_document.h"
 #include "manipulators/stroke_input.h"
 
@@ -27,6 +28,7 @@ const char* seriesName(ReplayEvent::Type type)
     case ReplayEvent::Type::Key: return "key";
     case ReplayEvent::Type::Action: return "action";
     case ReplayEvent::Type::Wait: return "wait";
+    case ReplayEvent::Type::Pose: return "pose";
     }
     return "?";
 }
@@ -96,6 +98,9 @@ void Replayer::dispatch(const ReplayEvent& e)
     case ReplayEvent::Type::Key: sendKey(e); break;
     case ReplayEvent::Type::Action: window_.action(e.name)->trigger(); break;
     case ReplayEvent::Type::Wait: break;
+    case ReplayEvent::Type::Pose:
+        if (PoseInput* poses = window_.findChild<PoseInput*>()) poses->handle(e.pose, eventTime_);
+        break;
     }
     // What the person would see next: the model solved (once) and the frame drawn.
     doc.scheduler().flush();

@@ -8,9 +8,15 @@
 #include "scene/ground_grid.h"
 #include "scene/iv_export.h"
 #include "model/model_document.h"
+#include "model/atomic_file.h"
+#include "ui/reference_set.h"
 #include "ui/undo_commands.h"
 
 #include <Inventor/nodes/SoSeparator.h>
+
+#include <QFileInfo>
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 
@@ -38,6 +44,9 @@ SketchDocument::SketchDocument(QObject* parent) : QObject(parent)
     root_->addChild(gridNode_);
     view_ = std::make_unique<scene::ModelView>(model_);
     root_->addChild(view_->root());
+    // Reference geometry right after the model: drawn greyed, never picked (ui/reference_set.h).
+    references_ = std::make_unique<ReferenceSet>();
+    root_->addChild(references_->root());
     comb_ = std::make_unique<scene::CurvatureComb>(model_);
     root_->addChild(comb_->root());
     feedback_ = std::make_unique<scene::StrokeFeedback>();
@@ -111,8 +120,8 @@ void SketchDocument::setNurbsNodes(bool nurbs)
 void SketchDocument::load(const model::SceneDocument& doc, const QString& path)
 {
     undo_.clear();
+    path_ = path;  // first: the references are found relative to the document's folder
     restoreModel(doc);
-    path_ = path;
     Q_EMIT replaced();
 }
 
@@ -125,6 +134,7 @@ void SketchDocument::restoreModel(const model::SceneDocument& doc)
     root_->replaceChild(gridNode_, grid);
     gridNode_ = grid;
     model::populateModel(doc, model_);
+    referenceProblems_ = references_->restore(doc.references, path_.isEmpty() ? QString() : QFileInfo(path_).absolutePath());
     view_->setHighlighted(0);
     comb_->setCurve(0);
     Q_EMIT entitiesChanged();
@@ -134,7 +144,7 @@ void SketchDocument::restoreModel(const model::SceneDocument& doc)
 void SketchDocument::save(const QString& path)
 {
     scheduler_->flush();
-    model::saveModel(model_, grid_, path.toStdString());
+    model::writeFileAtomically(path.toStdString(), documentJson(QFileInfo(path).absolutePath()).dump(2) + "\n", true);
     path_ = path;
     undo_.setClean();
 }

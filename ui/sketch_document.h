@@ -18,6 +18,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <QUndoStack>
 
 #include <map>
@@ -26,6 +27,7 @@
 #include <optional>
 #include <functional>
 #include <memory>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 
 class SoCamera;
@@ -46,6 +48,9 @@ struct StrokeHit;
 }  // namespace sculptline::manipulators
 
 namespace sculptline::ui {
+
+class ReferenceSet;
+struct Reference;
 
 /// What the last finished stroke became (status bar, inspector).
 struct StrokeReport {
@@ -78,6 +83,20 @@ public:
     /// stack becomes clean. @throws solvers::io::InputError (the file is then unchanged).
     void save(const QString& path);
     void exportIv(const QString& path);
+    /// The document as saved: modelToJson plus "references" (relative to `folder` when given).
+    nlohmann::json documentJson(const QString& folder) const;
+
+    /// Reference geometry (ui/reference_set.h, ui/sketch_document_references.cpp): File > Import
+    /// Reference reads and validates `path` and adds it as one undo step; returns what it draws.
+    /// @throws solvers::io::InputError "path: problem" (nothing is added).
+    QString importReference(const QString& path);
+    /// Adds an already validated reference (--import-reference checks the file before Qt starts).
+    void addReference(const Reference& reference);
+    /// Removes every reference, one undo step; false when there was none.
+    bool removeReferences();
+    ReferenceSet& references() { return *references_; }
+    /// The references the last load()/restoreModel() could not read, one line each.
+    const QStringList& referenceProblems() const { return referenceProblems_; }
     /// Writes the world geometry (curves, surfaces; network meshes to STL/OBJ only) in `format`
     /// (solvers/exchange/exchange.h). Returns the bytes written.
     /// @throws solvers::exchange::ExchangeError naming what cannot be written (nothing to export,
@@ -241,6 +260,24 @@ public:
     /// Removes the pins (position and tangent constraints) of the selected curve (undoable).
     void removeSelectionPins();
     void addStroke(const manipulators::FinishedStroke& stroke);
+
+    /// 6-DOF input (ui/sketch_document_space.cpp). A stroke drawn in space (world points, seconds
+    /// since the trigger went down): fitted into a space curve with no plane, its ends snapped onto
+    /// curves within kSpaceSnapDistance; in over-sketch mode it over-sketches the nearest curve.
+    void addSpaceStroke(const std::vector<Eigen::Vector3d>& world, const std::vector<double>& times);
+    /// A pointer stroke drawn while `plane` is carried: planar on it (the positions projected along
+    /// its normal), then the planar stroke path of addStroke.
+    void addStrokeOnPlane(model::EntityId plane, const std::vector<Eigen::Vector3d>& world, const std::vector<double>& times);
+    /// The non-dominant hand carries a plane: live moves between begin and end, one undo step.
+    void beginCarry(model::EntityId plane);
+    void carryTo(const Eigen::Vector3d& origin, const Eigen::Quaterniond& rotation);
+    void endCarry();
+    model::EntityId carriedPlane() const { return carried_; }
+    /// A space stroke's end this close to a curve (model units) starts or ends on it. A pen held in
+    /// the air has nothing to rest on: its endpoints scatter by a few millimetres around the point
+    /// meant (hand tremor, no haptic stop), ten times a tablet's; 5 mm catches that, and is 2.5 % of
+    /// the default 200 mm plane, so a stroke meant to end in the air rarely snaps by accident.
+    static constexpr double kSpaceSnapDistance = 5.0;
     /// The stroke feedback and the last stroke's report and recognition are dropped (an undo took
     /// the stroke back): nothing on screen speaks of a stroke that is no longer there.
     void forgetStroke();
@@ -316,6 +353,17 @@ private:
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
     void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    void oversketchInSpace(const std::vector<Eigen::Vector3d>& world);
+    /// Over-sketches curve `target` with `stroke` (in the curve's local frame) as one undo step;
+    /// `done` is the message's first words ("Curve %1 over-sketched").
+    void applyOversketch(model::EntityId target, const solvers::Curve3d& curve, const std::vector<Eigen::Vector3d>& stroke, const QString& done);
+    struct SpaceSnap {
+        model::EntityId curve = 0;
+        Eigen::Vector3d point;
+        double distance = 0.0;
+    };
+    /// The curve point nearest to `world` within kSpaceSnapDistance, if any.
+    std::optional<SpaceSnap> snapToCurve(const Eigen::Vector3d& world) const;
     /// Re-sketch tool (ui/sketch_document_resketch.cpp): a marking or a line's new shape.
     void resketchStroke(const manipulators::FinishedStroke& stroke);
     std::optional<model::PlaneFrame> resketchPlane(const manipulators::StrokeHit& start);
@@ -367,6 +415,8 @@ private:
     /// Puts the aesthetic handle where its operator acts on the selection now (after edits, undo).
     void placeAestheticHandle();
     void aestheticDragFinished(model::EntityId curve, const solvers::Curve3d& before, double amount, const std::string& message);
+    std::unique_ptr<ReferenceSet> references_;
+    QStringList referenceProblems_;
     SoSeparator* root_ = nullptr;  ///< ref()ed
     SoSeparator* gridNode_ = nullptr;
     QUndoStack undo_;
@@ -416,6 +466,8 @@ private:
     /// stack), the grabbed point and the drag plane.
     model::EntityId extrudeProfile_ = 0, extrusion_ = 0;
     model::PlaneFrame extrudeFrame_;
+    model::EntityId carried_ = 0;  ///< the plane a pose carries (0: none)
+    model::PlaneFrame carriedFrom_;
 };
 
 }  // namespace sculptline::ui

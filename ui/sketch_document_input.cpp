@@ -414,19 +414,7 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
         Q_EMIT strokeFinished();
         return;
     }
-    try {
-        double maxError = 0.0;
-        solvers::Curve3d changed = solvers::editing::oversketch<3>(*curve->local, stroke.points, {}, nullptr, &maxError);
-        model::requireCurveExtent(changed);
-        lastStroke_.fitted = true;
-        lastStroke_.controlPoints = changed.pointCount();
-        lastStroke_.maxError = maxError;
-        lastStroke_.message = tr("Curve %1 over-sketched: %2 control points, max error %3 mm").arg(target).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
-        undo_.push(new ReplaceCurveCommand(*this, target, *curve->local, std::move(changed)));
-    } catch (const std::exception& e) {
-        lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
-    }
-    Q_EMIT strokeFinished();
+    applyOversketch(target, *curve->local, stroke.points, tr("Curve %1 over-sketched"));
 }
 
 void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
@@ -511,6 +499,23 @@ void SketchDocument::pullFinished(model::EntityId id, const solvers::Curve3d& be
         Q_EMIT strokeFinished();
     }
     Q_EMIT entitiesChanged();
+}
+
+void SketchDocument::applyOversketch(model::EntityId target, const solvers::Curve3d& curve, const std::vector<Eigen::Vector3d>& stroke, const QString& done)
+{
+    try {
+        double maxError = 0.0;
+        solvers::Curve3d changed = solvers::editing::oversketch<3>(curve, stroke, {}, nullptr, &maxError);
+        model::requireCurveExtent(changed);
+        lastStroke_.fitted = true;
+        lastStroke_.controlPoints = changed.pointCount();
+        lastStroke_.maxError = maxError;
+        lastStroke_.message = tr("%1: %2 control points, max error %3 mm").arg(done.arg(target)).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
+        undo_.push(new ReplaceCurveCommand(*this, target, curve, std::move(changed)));
+    } catch (const std::exception& e) {
+        lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));
+    }
+    Q_EMIT strokeFinished();
 }
 
 }  // namespace sculptline::ui

@@ -31,7 +31,7 @@ void UndoHistory::record(int index)
     // the current index, and dropping those past the end of the stack, keeps them all.
     doc_.scheduler().flush();
     states_.resize(static_cast<size_t>(doc_.undoStack()->count()) + 1);
-    states_[static_cast<size_t>(index)] = std::make_shared<const std::string>(model::modelToJson(doc_.model(), doc_.grid()).dump());
+    states_[static_cast<size_t>(index)] = std::make_shared<const std::string>(doc_.documentJson(QString()).dump());
 }
 
 HistorySnapshot UndoHistory::snapshot() const

@@ -42,6 +42,8 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--replay", options.replay, "Play a recorded session (JSON) through the viewer");
     cli.add_option("--save", options.save, "Save the document (JSON) after the replay");
     cli.add_option("--export-iv", options.exportIv, "Export the scene as Open Inventor (.iv) after the replay");
+    cli.add_option("--import-reference", options.importReference,
+                   "Import an Open Inventor (.iv) file as reference geometry (one undo step) before the replay");
     cli.add_option("--export-step", options.exportStep, "Export the curves and surfaces as STEP AP214 (exact B-splines) after the replay");
     cli.add_option("--export-iges", options.exportIges, "Export the curves and surfaces as IGES (exact B-splines) after the replay");
     cli.add_option("--export-stl", options.exportStl, "Export the surfaces (tessellated) and meshes as binary STL after the replay");
@@ -55,6 +57,12 @@ ParseResult parseGuiOptions(int argc, const char* const* argv)
     cli.add_option("--user-model", options.userModel,
                    "Recognition habits file (JSON) to read and update; default $SCULPTLINE_USER_MODEL, else "
                    "recognition_habits.json in the user's config folder (scripted runs: none, habits in memory only)");
+    cli.add_option("--stereo", options.stereo,
+                   "Stereo view: anaglyph (red/cyan glasses), quad-buffer (stereo OpenGL), interleaved-rows (passive 3D "
+                   "display) or off; where the display cannot, a message and the view stays mono")
+        ->check(CLI::IsMember({"anaglyph", "quad-buffer", "interleaved-rows", "off"}));
+    cli.add_flag("--vr", options.vr,
+                 "Start a VR session through OpenXR (View > VR session…); without an OpenXR runtime, a message and the desktop goes on");
     cli.add_flag("--list-actions", options.listActions, "Print the name of every action and leave");
     cli.add_flag("--nurbs-nodes", options.nurbsNodes,
                  "Draw curves and surfaces with SoNurbsCurve/SoNurbsSurface instead of the kernel's tessellation "

@@ -15,6 +15,7 @@ struct GuiOptions {
     std::string replay;  ///< session JSON to play through the viewer's Qt event path
     std::string save;  ///< document JSON written after the replay
     std::string exportIv;  ///< Open Inventor file written after the replay
+    std::string importReference;  ///< .iv file imported as reference geometry, before the replay
     std::string exportStep;  ///< STEP AP214 of the world curves and surfaces, after the replay
     std::string exportIges;  ///< IGES of the same
     std::string exportStl;  ///< binary STL of the surfaces (tessellated) and network meshes
@@ -26,6 +27,8 @@ struct GuiOptions {
     int autosaveInterval = 120;  ///< seconds between autosaves to the recovery file; 0 = off
     bool autosaveIntervalGiven = false;  ///< on the command line (else File > Autosave Interval's setting)
     bool recover = false;  ///< reopen the unsaved work of a session that died, without asking
+    std::string stereo;  ///< "anaglyph", "quad-buffer", "interleaved-rows" or "off"; empty: not given (mono)
+    bool vr = false;  ///< start an OpenXR session at once (View > VR session…)
     /// The recognition habits file (--user-model); empty: $SCULPTLINE_USER_MODEL, else the user's
     /// config folder for a person, nothing (habits in memory only) for a script (userModelPath()).
     std::string userModel;

@@ -8,9 +8,11 @@
 #include "model/document.h"
 #include "ui/main_window.h"
 #include "ui/recovery_file.h"
+#include "ui/reference_set.h"
 #include "ui/replay_session.h"
 #include "ui/replayer.h"
 #include "ui/sketch_document.h"
+#include "ui/stereo_menu.h"
 
 #include <Inventor/Qt/SoQt.h>
 
@@ -102,6 +104,20 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
     return status;
 }
 
+/// --stereo and --vr act as their View menu entries do; what the display cannot give is said on
+/// stderr (the status bar says it too) and the run goes on, mono and on the desktop.
+void applyImmersiveFlags(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions& options)
+{
+    using sculptline::ui::StereoMenu;
+    auto* menu = window.findChild<StereoMenu*>();
+    if (!menu) return;
+    if (const auto mode = sculptline::ui::stereoModeFromName(options.stereo)) {
+        const QString message = menu->select(*mode);
+        if (!message.isEmpty()) std::cerr << "sculptline: --stereo " << options.stereo << ": " << message.toStdString() << "\n";
+    }
+    if (options.vr) std::cerr << "sculptline: --vr: " << menu->startVr().toStdString() << "\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -118,6 +134,13 @@ int main(int argc, char** argv)
     const app::StartDocument start = app::openStartDocument(options, haveDisplay() && !options.scripted() && !options.listActions);
     if (start.exitStatus != 0) return start.exitStatus;
     std::optional<ui::ReplaySession> session;
+    std::optional<ui::Reference> reference;
+    try {
+        if (!options.importReference.empty()) reference = ui::ReferenceSet::load(QString::fromStdString(options.importReference));
+    } catch (const std::exception& e) {
+        std::cerr << "sculptline: --import-reference: " << e.what() << "\n";
+        return 2;
+    }
     try {
         if (!options.replay.empty()) session = ui::loadReplaySession(options.replay);
     } catch (const std::exception& e) {
@@ -175,6 +198,8 @@ int main(int argc, char** argv)
         }
     }
     window.show();
+    // After show(): the quad-buffer and interleaved modes recreate the GL widget with another format.
+    applyImmersiveFlags(window, options);
     // Before the replay, so that a script may continue recovered work.
     if (options.recover) {
         window.offerRecovery(recovery, false);
@@ -185,6 +210,11 @@ int main(int argc, char** argv)
     } else {
         if (!start.error.empty()) window.reportOpenFailure(QString::fromStdString(start.error));
         window.offerRecovery(recovery, true);
+    }
+    // After the document (and recovered work), before the replay: a replay's Ctrl+Z takes it back.
+    if (reference) {
+        window.document().addReference(*reference);
+        std::cerr << "sculptline: reference " << options.importReference << ": " << reference->summary.toStdString() << "\n";
     }
     const int width = options.width > 0 ? options.width : session ? session->width : 0;
     const int height = options.width > 0 ? options.height : session ? session->height : 0;

@@ -667,7 +667,35 @@ StrokeRecognition recognizeStroke(const Stroke& stroke, const FitOptions& fitOpt
         };
         const int last = static_cast<int>(stroke.points.size()) - 1;
         const double trimmed = path(0, cs.source.front()) + path(cs.source.back(), last);
-        if (trimmed > options.maxOvershoot * cs.length()) {
+        // How far the trimmed ink at either end reaches from the loop that was kept.
+        auto reach = [&](int from, int to) {
+            double far = 0.0;
+            for (int i = from; i <= to; ++i) {
+                double near = std::numeric_limits<double>::infinity();
+                for (int k = 0; k < cs.size(); ++k) {
+                    const Eigen::Vector3d& a = cs.points[k];
+                    const Eigen::Vector3d& b = cs.points[(k + 1) % cs.size()];
+                    const Eigen::Vector3d ab = b - a;
+                    const double t = ab.squaredNorm() > 0 ? std::clamp((stroke.points[i] - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+                    near = std::min(near, (a + t * ab - stroke.points[i]).norm());
+                }
+                far = std::max(far, near);
+            }
+            return far;
+        };
+        // The stroke's direction leaving the seam at its head and arriving at it at its tail (over a
+        // twentieth of the extent): a loop overshot along itself arrives the way it left; a stroke
+        // crossing itself meets its own path at an angle.
+        auto direction = [&](int at, int step) {
+            int j = at;
+            while (j + step >= 0 && j + step <= last && (stroke.points[j] - stroke.points[at]).norm() < 0.05 * cs.extent) j += step;
+            return Eigen::Vector3d(step * (stroke.points[j] - stroke.points[at]));
+        };
+        const Eigen::Vector3d leaves = direction(cs.source.front(), 1), arrives = direction(cs.source.back(), -1);
+        const double meetAngle = std::atan2(leaves.cross(arrives).norm(), leaves.dot(arrives));
+        const bool crossing = options.crossingTail > 0.0 && cs.source.front() > 0 && cs.source.back() < last && meetAngle > kPi / 4 &&
+                              std::min(reach(0, cs.source.front() - 1), reach(cs.source.back() + 1, last)) > options.crossingTail * cs.extent;
+        if (trimmed > options.maxOvershoot * cs.length() || crossing) {
             FitOptions open = fitOptions;
             open.conditioning.closure = Closure::Open;
             out.fit = fitStroke(stroke, open);

@@ -119,6 +119,12 @@ Shape hairpinShape(double size, int legs, double turnRadius)
     return s;
 }
 
+Shape helixShape(double radius, double pitch, double turns)
+{
+    return fromFunction([&](double t) { return Eigen::Vector3d(radius * std::cos(t), radius * std::sin(t), pitch * t / (2 * kPi)); }, 0.0,
+                        2 * kPi * turns, false);
+}
+
 Stroke drawWithSamples(const Shape& shape, int samples, DrawOptions o)
 {
     const Stroke probe = draw(shape, o);
@@ -176,13 +182,20 @@ Stroke draw(const Shape& shape, const DrawOptions& o)
         return Eigen::Vector3d(ref[seg] + f * (ref[(seg + 1) % n] - ref[seg]));
     };
     Stroke s;
-    s.dimension = 2;
+    const bool planar = std::all_of(ref.begin(), ref.end(), [](const Eigen::Vector3d& p) { return p.z() == 0.0; });
+    s.dimension = planar ? 2 : 3;
     const double dt = 1.0 / o.rate;
     double pos = 0.0, t = 0.0;
     while (true) {
         int seg = 0;
         Eigen::Vector3d p = at(pos, &seg);
-        if (o.noise > 0) p += o.noise * Eigen::Vector3d(gauss(rng), gauss(rng), 0.0);
+        // Planar strokes keep the expression (and random stream) they always had; a space shape
+        // draws three numbers in a fixed order.
+        if (o.noise > 0 && planar) p += o.noise * Eigen::Vector3d(gauss(rng), gauss(rng), 0.0);
+        if (o.noise > 0 && !planar) {
+            const double nx = gauss(rng), ny = gauss(rng), nz = gauss(rng);
+            p += o.noise * Eigen::Vector3d(nx, ny, nz);
+        }
         s.points.push_back(p);
         if (o.withTimes) s.times.push_back(t);
         if (pos >= end) break;

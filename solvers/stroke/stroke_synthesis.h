@@ -12,7 +12,7 @@
 namespace sculptline::solvers::stroke {
 
 
-/// A planar test shape: a dense polyline of the exact curve (the reference), and which vertices are
+/// A test shape (planar unless made by helixShape or from 3D vertices): a dense polyline of the exact curve (the reference), and which vertices are
 /// intended corners.
 struct Shape {
     std::vector<Eigen::Vector3d> reference;  ///< dense, exact
@@ -40,6 +40,10 @@ Shape flourishShape(double size);
 /// everywhere (C2 is kept in the figure): the turns are slow bends, not corners.
 Shape hairpinShape(double size, int legs, double turnRadius);
 
+/// A space curve: `turns` turns of a helix of `radius` about the z axis, rising `pitch` per turn,
+/// starting at (radius, 0, 0). Non-planar for turns > 0 and pitch != 0.
+Shape helixShape(double radius, double pitch, double turns);
+
 struct DrawOptions {
     double rate = 120.0;        ///< digitizer samples per second
     double peakSpeed = 400.0;   ///< model units per second on straight parts
@@ -52,7 +56,9 @@ struct DrawOptions {
     double closureOffset = 0.0;
 };
 
-/// Draws the shape as a hand would: arc-length speed profile, fixed-rate samples, Gaussian noise.
+/// Draws the shape as a hand would: arc-length speed profile, fixed-rate samples, Gaussian noise
+/// (in x and y for a shape in the plane z = 0, which gives a 2D stroke; in x, y and z for any
+/// other shape, which gives a 3D stroke).
 Stroke draw(const Shape& shape, const DrawOptions& options = {});
 
 /// Draws `shape` with about `samples` samples (the digitizer rate is scaled to reach the count).

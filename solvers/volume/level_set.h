@@ -1,6 +1,7 @@
 #pragma once
 // Closed triangle meshes -> narrow-band level sets -> their union -> a polygon mesh, volume and
 // area. The interface is plain C++ and Eigen; OpenVDB is used only inside level_set.cpp.
+#include "solvers/volume/progress.h"
 #include "solvers/volume/surface_mesh.h"
 
 namespace sculptline::solvers::volume {
@@ -33,7 +34,11 @@ struct LevelSetSolid {
 ///                     overflow. Pass the centre of the model's bounds.
 /// @note The cost is about proportional to the narrow band's voxel count (estimateMemory() in
 ///       solidify.h); callers check it first.
+/// @param progress told the fraction done (level sets up to 0.8, the mesh 0.9, the measures 1),
+///                 also from inside MeshToVolume through its interrupter; answering false stops
+///                 the work: @throws Cancelled.
 LevelSetSolid solidFromMeshes(const std::vector<TriangleMesh>& closedMeshes, double voxelSize,
-                              const Eigen::Vector3d& origin, double adaptivity = kAdaptivity);
+                              const Eigen::Vector3d& origin, double adaptivity = kAdaptivity,
+                              const Progress& progress = {});
 
 }  // namespace sculptline::solvers::volume

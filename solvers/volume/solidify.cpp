@@ -168,7 +168,11 @@ Solid solidify(const std::vector<Surface3d>& input, const SolidOptions& options)
                               s.weights());
     }
     const double weldTolerance = kWeldRelative * controlDiagonal;
-    const int budget = std::max(kMinVerticesPerSurface, kMaxTessellationVertices / static_cast<int>(surfaces.size()));
+    const int surfaceCount = static_cast<int>(std::min<size_t>(surfaces.size(), static_cast<size_t>(kMaxTessellationVertices)));
+    const int coarseBudget = std::max(kMinVerticesPerSurface, kCoarseVertexBudget / surfaceCount);
+    const int fineShare = std::max(kMinVerticesPerSurface, kMaxTessellationVertices / surfaceCount);
+    // Shares of the progress: the tessellations and checks, then the level sets (level_set.h).
+    constexpr double kCoarseDone = 0.05, kFineDone = 0.15;
 
     // Coarse meshes: the solid's bounds, its boundary area and which surfaces close on themselves.
     const double t = options.thickness;
@@ -177,11 +181,14 @@ Solid solidify(const std::vector<Surface3d>& input, const SolidOptions& options)
     std::vector<Eigen::Vector3d> corners;
     std::vector<Eigen::Vector3d> openCorners;  // of the surfaces that must close up together
     std::vector<double> extents(surfaces.size(), std::numeric_limits<double>::infinity());
+    std::vector<double> areas(surfaces.size(), 0.0);
     for (size_t k = 0; k < surfaces.size(); ++k) {
-        const TriangleMesh coarse = surfaceMesh(surfaces[k], kCoarseChordRelative * controlDiagonal, weldTolerance, budget);
+        reportProgress(options.progress, kCoarseDone * static_cast<double>(k) / static_cast<double>(surfaces.size()));
+        const TriangleMesh coarse = surfaceMesh(surfaces[k], kCoarseChordRelative * controlDiagonal, weldTolerance, coarseBudget);
+        areas[k] = area(coarse);
         closed[k] = boundaryEdges(coarse).empty();
         const bool shell = !closed[k] && t > 0.0;
-        boundaryArea += shell ? 2.0 * area(coarse) + t * boundaryLength(coarse) : area(coarse);
+        boundaryArea += shell ? 2.0 * areas[k] + t * boundaryLength(coarse) : areas[k];
         const auto [a, b] = bounds(shell ? thicken(coarse, t).vertices : coarse.vertices);
         corners.push_back(a);
         corners.push_back(b);
@@ -238,6 +245,10 @@ Solid solidify(const std::vector<Surface3d>& input, const SolidOptions& options)
     std::vector<TriangleMesh> open;
     std::vector<int> openIds;
     for (size_t k = 0; k < surfaces.size(); ++k) {
+        reportProgress(options.progress, kCoarseDone + (kFineDone - kCoarseDone) * static_cast<double>(k) / static_cast<double>(surfaces.size()));
+        const double surfaceVoxels = areas[k] / (voxel * voxel);
+        const int budget = static_cast<int>(std::clamp(kFineVerticesPerSurfaceVoxel * surfaceVoxels,
+                                                       static_cast<double>(kMinVerticesPerSurface), static_cast<double>(fineShare)));
         TriangleMesh mesh = surfaceMesh(surfaces[k], chord, weldTolerance, budget);
         if (boundaryEdges(mesh).empty()) {
             solids.push_back(std::move(mesh));
@@ -265,7 +276,11 @@ Solid solidify(const std::vector<Surface3d>& input, const SolidOptions& options)
         solids.push_back(std::move(together));
     }
 
-    const LevelSetSolid levelSet = solidFromMeshes(solids, voxel, 0.5 * (modelLo + modelHi));
+    reportProgress(options.progress, kFineDone);
+    Progress levelSetProgress;
+    if (options.progress)
+        levelSetProgress = [&](double f) { return options.progress(kFineDone + (1.0 - kFineDone) * f); };
+    const LevelSetSolid levelSet = solidFromMeshes(solids, voxel, 0.5 * (modelLo + modelHi), kAdaptivity, levelSetProgress);
     if (levelSet.mesh.triangles.empty() || !(levelSet.volume > 0.0))
         throw GeometryError("surfaces: the solid is thinner than the voxel size " + number(voxel) +
                             ", nothing of it is left; use a smaller voxel_size");

@@ -3,6 +3,7 @@
 // become shells of a given thickness with square edges (CAD's thicken), and everything is united.
 // The work goes through narrow-band level sets (OpenVDB, level_set.h): they make the union exact to
 // the voxel and give a watertight mesh of the result, whatever the input surfaces' overlaps.
+#include "solvers/volume/progress.h"
 #include "solvers/volume/surface_mesh.h"
 
 #include <cstddef>
@@ -35,6 +36,20 @@ constexpr double kWeldRelative = 1e-9;
 /// buffers. Measured: 36 bytes per voxel of peak memory above the program's baseline (a sphere at
 /// 3.0 and 6.2 million voxels); 48 keeps a third in reserve.
 constexpr double kBytesPerBandVoxel = 48.0;
+/// Vertices of all the coarse tessellations of a call together (each surface gets at least
+/// kMinVerticesPerSurface, in solidify.cpp). The coarse pass only sizes the model and estimates its
+/// boundary area for the memory check (which keeps a third in reserve): a smooth surface needs a
+/// few thousand vertices at the display's chord tolerance (the revolved sphere: 2,145), and a
+/// 90 x 90 grid measures a smooth patch's area far inside that reserve. The refinement's cost grows
+/// faster than its vertex count (every round probes every grid line): the fuzzer's degenerate net
+/// (tests/fuzz/slow/solid_tessellation.json) took 24,210 vertices and 137 ms of CPU in Release
+/// (over 5 s under ASan) with the kernel's million-vertex budget, 7,919 and 15 ms with this one.
+constexpr int kCoarseVertexBudget = 8192;
+/// Vertices of a fine tessellation per voxel of its surface (area / voxel²): a mesh finer than the
+/// voxel grid adds nothing the level set can resolve, and two per voxel still meet the sub-voxel
+/// chord tolerance on curvature radii above a few voxels (the sphere at the default voxel uses
+/// well under one per surface voxel). Bounds the fine pass's time by the level set's own size.
+constexpr double kFineVerticesPerSurfaceVoxel = 2.0;
 /// Most voxels along any axis of the model: index coordinates are single-precision floats in
 /// MeshToVolume, whose 24-bit mantissa keeps 1/16 voxel resolution up to 2^20 voxels from the origin.
 constexpr double kMaxVoxelsAcross = 1 << 20;
@@ -47,6 +62,9 @@ struct SolidOptions {
     double voxelSize = 0.0;
     /// bytes, >= 0; 0: defaultMemoryLimit().
     double memoryLimit = 0.0;
+    /// Told the fraction done between stages and during the level sets; answering false cancels
+    /// (solidify throws Cancelled). Empty: not asked.
+    Progress progress;
 };
 
 struct Solid {
@@ -81,7 +99,11 @@ double estimateMemory(double boundaryArea, double voxelSize);
 ///         surface without thickness that encloses nothing, a solid thinner than a voxel),
 ///         "thickness: ..." (negative, not finite, thinner than kMinVoxelsAcrossThickness voxels),
 ///         "voxel_size: ..." (negative, not finite, or
-///         needing more than options.memoryLimit, with the smallest voxel size that fits).
+///         needing more than options.memoryLimit, with the smallest voxel size that fits);
+///         Cancelled when options.progress answered false.
+/// @note The tessellations' vertex budgets (kCoarseVertexBudget, kFineVerticesPerSurfaceVoxel)
+///       bound the work before the checks: every input is converted or refused in well under a
+///       second before the level sets start (README "Solids").
 Solid solidify(const std::vector<Surface3d>& surfaces, const SolidOptions& options = {});
 
 }  // namespace sculptline::solvers::volume

@@ -25,7 +25,10 @@ struct CellHash {
     size_t operator()(const CellKey& k) const
     {
         // Teschner et al. 2003, "Optimized Spatial Hashing for Collision Detection of Deformable Objects".
-        return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+        // In unsigned arithmetic: cell indices reach ~1e12, whose products overflow int64 (UB);
+        // unsigned products wrap, which is all a hash needs.
+        const auto u = [](std::int64_t v) { return static_cast<std::uint64_t>(v); };
+        return static_cast<size_t>(u(k.x) * 73856093ULL ^ u(k.y) * 19349663ULL ^ u(k.z) * 83492791ULL);
     }
 };
 

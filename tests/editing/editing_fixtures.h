@@ -1,6 +1,7 @@
 #pragma once
 // Curves and strokes shared by the editing tests and benchmarks (bench/editing_bench.cpp), so that
 // the benchmarked cases are the tested ones.
+#include "solvers/bspline/basis.h"
 #include "solvers/bspline/bspline_curve.h"
 #include "solvers/editing/curve_manipulation.h"
 
@@ -8,6 +9,30 @@
 #include <vector>
 
 namespace sculptline::editing_fixtures {
+
+// Largest jump of the k-th derivative across any interior knot, relative to its size: the two
+// one-sided limits are evaluated exactly from the polynomial pieces on either side (The NURBS Book
+// A2.3 on the left span and on the right span), not by finite differences.
+template <int Dim>
+double maxJump(const solvers::BSplineCurve<Dim>& c, int k)
+{
+    using Pt = Eigen::Matrix<double, Dim, 1>;
+    const auto& U = c.knots();
+    const int p = c.degree();
+    double worst = 0.0;
+    auto piece = [&](int span, double t) {
+        const Eigen::MatrixXd d = solvers::basisDerivatives(span, t, p, k, U);
+        Pt v = Pt::Zero();
+        for (int j = 0; j <= p; ++j) v += d(k, j) * c.points()[(span - p + j) % c.pointCount()];
+        return v;
+    };
+    for (int i = p + 1; i < c.pointCount(); ++i) {
+        if (U[i] == U[i - 1] || U[i] == U[i + 1]) continue;  // multiple knots are reported by the caller's checks
+        const Pt l = piece(i - 1, U[i]), r = piece(i, U[i]);
+        worst = std::max(worst, (l - r).norm() / std::max(1.0, l.norm()));
+    }
+    return worst;
+}
 
 /// An open cubic through n samples of a sine wave, x = 0..n-1.
 inline solvers::Curve2d wave(int n)

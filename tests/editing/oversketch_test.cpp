@@ -21,36 +21,13 @@ constexpr double kUnchanged = 1e-12;
 
 using sculptline::editing_fixtures::bump;
 using sculptline::editing_fixtures::wave;
+using sculptline::editing_fixtures::maxJump;
 
 double maxDistanceToCurve(const Curve2d& c, const std::vector<Eigen::Vector2d>& pts)
 {
     const CurveProjector<2> pr(c);
     double worst = 0.0;
     for (const auto& p : pts) worst = std::max(worst, pr.project(p).distance);
-    return worst;
-}
-
-// Largest jump of the k-th derivative across any interior knot, relative to its size: the two
-// one-sided limits are evaluated exactly from the polynomial pieces on either side (The NURBS Book
-// A2.3 on the left span and on the right span), not by finite differences.
-template <int Dim>
-double maxJump(const BSplineCurve<Dim>& c, int k)
-{
-    using Pt = Eigen::Matrix<double, Dim, 1>;
-    const auto& U = c.knots();
-    const int p = c.degree();
-    double worst = 0.0;
-    auto piece = [&](int span, double t) {
-        const Eigen::MatrixXd d = basisDerivatives(span, t, p, k, U);
-        Pt v = Pt::Zero();
-        for (int j = 0; j <= p; ++j) v += d(k, j) * c.points()[(span - p + j) % c.pointCount()];
-        return v;
-    };
-    for (int i = p + 1; i < c.pointCount(); ++i) {
-        if (U[i] == U[i - 1] || U[i] == U[i + 1]) continue;  // multiple knots are reported by the caller's checks
-        const Pt l = piece(i - 1, U[i]), r = piece(i, U[i]);
-        worst = std::max(worst, (l - r).norm() / std::max(1.0, l.norm()));
-    }
     return worst;
 }
 

@@ -99,7 +99,8 @@ TEST(EntityNodeName, NamesAreTheKindFollowedByTheId)
 
 TEST(EntityNodeName, ParsingInvertsNaming)
 {
-    for (const EntityKind kind : {EntityKind::Plane, EntityKind::Curve, EntityKind::Surface, EntityKind::Mesh, EntityKind::Point}) {
+    for (const EntityKind kind : {EntityKind::Plane, EntityKind::Curve, EntityKind::Surface, EntityKind::Mesh, EntityKind::Point,
+                                  EntityKind::Solid}) {
         const model::EntityId id = std::numeric_limits<model::EntityId>::max();
         const auto ref = entityOfName(entityNodeName(kind, id));
         ASSERT_TRUE(ref.has_value()) << entityNodeName(kind, id);

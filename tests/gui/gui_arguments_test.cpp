@@ -43,7 +43,7 @@ TEST(GuiArguments, HelpListsTheFlags)
     const ProgramRun run = runSculptline("--help");
     EXPECT_EQ(run.status, 0);
     for (const char* flag : {"--size", "--screenshot", "--quit", "DOCUMENT", "--replay", "--save", "--export-iv", "--export-step", "--export-iges", "--export-stl", "--export-obj", "--stats", "--list-actions",
-                             "--autosave-interval", "--recover"}) {
+                             "--autosave-interval", "--recover", "--import-reference"}) {
         EXPECT_NE(run.output.find(flag), std::string::npos) << flag;
     }
 }
@@ -56,7 +56,8 @@ TEST(GuiArguments, ActionsAreListedWithoutADisplay)
     EXPECT_EQ(run.status, 0) << run.output;
     for (const char* line : {"mode.sketch\tS\t", "mode.revolve\tR\t", "mode.railRotation\tG\t", "edit.undo\tCtrl+Z\t",
                              "file.exportIv\t", "file.exportStep\t", "file.exportIges\t", "file.exportStl\t",
-                             "file.exportObj\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t"}) {
+                             "file.exportObj\t", "file.recover\t", "file.autosaveInterval\t", "surface.build\tReturn\t",
+                             "file.importReference\t", "edit.removeReferences\t", "view.references\tCtrl+Shift+R\t"}) {
         EXPECT_NE(run.output.find(line), std::string::npos) << line << "\n" << run.output;
     }
 }
@@ -77,11 +78,12 @@ TEST(GuiArguments, BadSessionsAreRefusedBeforeAnyWindow)
     expectError("--replay /nonexistent/session.json", "/nonexistent/session.json: cannot open file");
     const std::string dir = testing::TempDir();
     const std::pair<const char*, const char*> cases[] = {
-        {R"({"events": [{"type": "jump"}]})", "events[0].type: must be press, move, release, key, action or wait"},
+        {R"({"events": [{"type": "jump"}]})", "events[0].type: must be press, move, release, key, action, wait or pose"},
         {R"({"events": [{"type": "press", "x": 10}]})", "events[0]"},
         {R"({"events": [{"type": "press", "x": 1, "y": 2, "button": "thumb"}]})", "events[0].button"},
         {R"({"events": [{"type": "key", "key": "Ctrl+Nonsense"}]})", "events[0].key"},
         {R"({"events": [{"type": "wait", "ms": -5}]})", "events[0].ms"},
+        {R"({"events": [{"type": "pose", "device": "pointer", "position": [0, 0, 0], "orientation": [0, 0, 0, 3]}]})", "events[0].orientation"},
         {R"({"size": [1, 2], "events": []})", "size[0]"},
         {R"({"events": )", "malformed JSON"},
         {R"([1, 2])", "session: must be a JSON object"},
@@ -152,3 +154,17 @@ TEST(GuiArguments, NoDisplayIsAMessageNotAnAbort)
 }
 
 }  // namespace
+
+TEST(GuiArguments, StereoAndVrFlags)
+{
+    // Given the help, the stereo and VR flags are there
+    const ProgramRun help = runSculptline("--help");
+    for (const char* flag : {"--stereo", "--vr", "anaglyph", "quad-buffer", "interleaved-rows"})
+        EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+    // And an unknown stereo mode is refused before anything starts, naming the flag
+    expectError("--stereo sideways --quit", "--stereo");
+    // And every stereo mode and the VR session have an action
+    const ProgramRun actions = runSculptline("--list-actions");
+    for (const char* name : {"view.stereo.off\t", "view.stereo.anaglyph\t", "view.stereo.quadBuffer\t", "view.stereo.interleavedRows\t", "view.vr\t"})
+        EXPECT_NE(actions.output.find(name), std::string::npos) << name << "\n" << actions.output;
+}

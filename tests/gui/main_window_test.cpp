@@ -61,7 +61,8 @@ TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
     EXPECT_GE(actions.size(), 15);
     for (const char* expected : {"mode.sketch", "mode.select", "mode.oversketch", "plane.add", "edit.undo", "edit.redo",
                                  "edit.delete", "file.save", "file.exportIv", "file.exportStep", "file.exportIges",
-                                 "file.exportStl", "file.exportObj", "view.controlPolygons"}) {
+                                 "file.exportStl", "file.exportObj", "view.controlPolygons", "solid.closed", "solid.shell",
+                                 "solid.cancel", "solid.thickness", "solid.voxelSize"}) {
         EXPECT_NE(window.action(QString::fromLatin1(expected)), nullptr) << expected;
     }
 

@@ -1,9 +1,11 @@
 #pragma once
 // Independent measurements of a fitted curve for the stroke tests.
 #include "solvers/bspline/bspline_curve.h"
+#include "solvers/geometry/plane_fit.h"
 #include "solvers/stroke/stroke_synthesis.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sculptline::stroketest {
 
@@ -24,6 +26,15 @@ inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& p
     double m = 0;
     for (const auto& p : pts) m = std::max(m, distanceToPolyline(p, dense, false));
     return m;
+}
+
+/// Largest distance of the points from their best-fit plane: how far from planar a space curve is.
+inline double distanceFromBestPlane(const std::vector<Vec3>& pts)
+{
+    const solvers::PlaneFit plane = solvers::bestFitPlane(pts);
+    double d = 0.0;
+    for (const Vec3& p : pts) d = std::max(d, std::abs((p - plane.centroid).dot(plane.normal)));
+    return d;
 }
 
 }  // namespace sculptline::stroketest

@@ -224,3 +224,57 @@ TEST(ShapeRecognition, GivenDeclinedRegularization_ThenFittedCurveReturned)
 
 }  // namespace
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+namespace {
+
+// A pen path along the polyline `corners`, a sample every `step`, 10 ms apart.
+solvers::stroke::Stroke penAlong(const std::vector<Vec3>& corners, double step)
+{
+    solvers::stroke::Stroke s;
+    for (size_t i = 0; i + 1 < corners.size(); ++i) {
+        const Vec3 d = corners[i + 1] - corners[i];
+        const int n = std::max(1, static_cast<int>(std::ceil(d.norm() / step)));
+        for (int k = 0; k < n; ++k) s.points.push_back(corners[i] + d * (double(k) / n));
+    }
+    s.points.push_back(corners.back());
+    for (size_t i = 0; i < s.points.size(); ++i) s.times.push_back(0.01 * double(i));
+    return s;
+}
+
+// The $1 delete mark with short tails: down-right, up, down-left across the first leg. Its ends lie
+// 0.28 from the crossing, so the conditioning closes the loop there and trims 19 % of the length,
+// under RecognizeOptions::maxOvershoot (25 %): only the crossing rule (crossingTail) reopens it.
+const std::vector<Vec3> kShortDeleteMark = {{30, 70, 0}, {100, 0, 0}, {100, 100, 0}, {30, 30, 0}};
+constexpr double kPenStep = 1.0;  // plane units between samples; the mark is 100 units wide
+
+TEST(ShapeRecognition, GivenAStrokeCrossingItselfWithBothEndsOut_WhenRecognized_ThenAnOpenPolylineNotATriangle)
+{
+    const solvers::stroke::Stroke mark = penAlong(kShortDeleteMark, kPenStep);
+
+    const auto withRule = solvers::stroke::recognizeStroke(mark);
+    solvers::stroke::RecognizeOptions off;
+    off.crossingTail = 0.0;
+    const auto withoutRule = solvers::stroke::recognizeStroke(mark, {}, off);
+
+    EXPECT_FALSE(withRule.recognition.geometry.closed);
+    EXPECT_EQ(withRule.recognition.kind, ShapeKind::Polyline);
+    // The stroke does exercise the rule: without it the loop at the crossing is a triangle.
+    EXPECT_TRUE(withoutRule.recognition.geometry.closed);
+    EXPECT_EQ(withoutRule.recognition.kind, ShapeKind::Triangle);
+}
+
+TEST(ShapeRecognition, GivenASquareOvershotAlongItsFirstSide_WhenRecognized_ThenStillAClosedSquare)
+{
+    // Started a little before the first corner (the start sticks out) and drawn on past it along the
+    // first side (the end runs on the loop): a closed square.
+    const solvers::stroke::Stroke square = penAlong({{-10, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}, {0, 0, 0}, {0, 0, 0}, {15, 0, 0}}, kPenStep);
+
+    const auto r = solvers::stroke::recognizeStroke(square);
+
+    EXPECT_TRUE(r.recognition.geometry.closed);
+    EXPECT_EQ(r.recognition.kind, ShapeKind::Square);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest

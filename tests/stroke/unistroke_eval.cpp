@@ -271,3 +271,63 @@ InvarianceResult measureInvariance(const std::vector<Recording>& recordings, dou
 }
 
 }  // namespace sculptline::stroketest
+
+#include <cmath>
+
+namespace sculptline::stroketest {
+
+stroke::Stroke perturbStroke(const stroke::Stroke& s, const Perturbation& p)
+{
+    stroke::Stroke out = s;
+    const size_t n = s.points.size();
+    if (n < 2) return out;
+    const bool timed = s.times.size() == n;
+    std::vector<double> arc(n, 0.0);
+    for (size_t i = 1; i < n; ++i) arc[i] = arc[i - 1] + (s.points[i] - s.points[i - 1]).norm();
+    if (p.cutShare > 0.0) {  // leave off the end: keep the samples up to (1 - cut) of the length
+        const double keep = (1.0 - p.cutShare) * arc.back();
+        size_t m = 1;
+        while (m < n && arc[m] <= keep) ++m;
+        out.points.assign(s.points.begin(), s.points.begin() + static_cast<long>(std::max<size_t>(m, 2)));
+        if (timed) out.times.assign(s.times.begin(), s.times.begin() + static_cast<long>(out.points.size()));
+    }
+    if (p.overshootShare > 0.0) {  // back to the start, then on along the stroke's own first part
+        const double until = p.overshootShare * arc.back();
+        const double t0 = timed ? out.times.back() : 0.0;
+        const double speed = timed && s.times.back() > s.times.front() ? arc.back() / (s.times.back() - s.times.front()) : 1.0;
+        const double back = (s.points.front() - out.points.back()).norm() / speed;
+        for (size_t i = 0; i < n && arc[i] <= until; ++i) {
+            out.points.push_back(s.points[i]);
+            if (timed) out.times.push_back(t0 + back + s.times[i] - s.times[0]);
+        }
+    }
+    if (p.extendShare > 0.0) {  // straight on past the end, in the direction of the last 5 % of the stroke
+        const size_t m = out.points.size();
+        size_t k = m - 1;
+        double walked = 0.0;
+        while (k > 0 && walked < 0.05 * arc.back()) {
+            walked += (out.points[k] - out.points[k - 1]).norm();
+            --k;
+        }
+        const Eigen::Vector3d dir = (out.points[m - 1] - out.points[k]).normalized();
+        const double step = arc.back() / double(n - 1), dt = timed ? (s.times.back() - s.times.front()) / double(n - 1) : 0.0;
+        const Eigen::Vector3d end = out.points.back();
+        const double tEnd = timed ? out.times.back() : 0.0;
+        for (int j = 1; j * step <= p.extendShare * arc.back(); ++j) {
+            out.points.push_back(end + j * step * dir);
+            if (timed) out.times.push_back(tEnd + j * dt);
+        }
+    }
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (const auto& q : out.points) c += q;
+    c /= double(out.points.size());
+    const double a = p.rotateDeg * 3.14159265358979323846 / 180.0, ca = std::cos(a), sa = std::sin(a);
+    for (auto& q : out.points) {  // stretched, then rotated: a rectangle stays a rectangle
+        const Eigen::Vector3d d(p.aspect * (q.x() - c.x()), q.y() - c.y(), q.z() - c.z());
+        q = c + Eigen::Vector3d(ca * d.x() - sa * d.y(), sa * d.x() + ca * d.y(), d.z());
+    }
+    for (auto& t : out.times) t *= p.timeScale;
+    return out;
+}
+
+}  // namespace sculptline::stroketest

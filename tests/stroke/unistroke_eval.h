@@ -97,3 +97,19 @@ InvarianceResult measureInvariance(const std::vector<Recording>& recordings, dou
                                    const solvers::stroke::RecognizeOptions& options = {});
 
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+
+/// A development stress test of how a person might draw the same gesture otherwise (a perturbation
+/// of a real stroke, not a synthetic one): rotated about its centroid by `rotateDeg`, stretched along
+/// the plane's x axis by `aspect` (before the rotation: a rectangle stays a rectangle), its last `cutShare` of arc length left off
+/// (a loop the hand did not close), its start reached again and its first `overshootShare` of arc
+/// length drawn again (a loop overshot along its first side; the repeated samples are spaced and
+/// timed as the originals), or drawn on straight past its end by `extendShare` of its length (the
+/// closing corner overshot), and its times scaled by `timeScale` (a slower or faster hand).
+struct Perturbation {
+    double rotateDeg = 0, aspect = 1, cutShare = 0, overshootShare = 0, timeScale = 1, extendShare = 0;
+};
+solvers::stroke::Stroke perturbStroke(const solvers::stroke::Stroke& stroke, const Perturbation& p);
+
+}  // namespace sculptline::stroketest

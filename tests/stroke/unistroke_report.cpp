@@ -5,12 +5,17 @@
 //   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
 //   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
+//   unistroke-report --augment --loso ...      the same on s02-s06 and their perturbed copies
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
+//   unistroke-report --perturb-dev             the development strokes rotated, stretched, left open,
+//                                              overshot and sped up (Perturbation): accuracy per gesture
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
-// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance).
-// The dump and feature modes read the development subjects only: the held-out ones are not for tuning.
+// collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
+// crossingTail).
+// The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
+// held-out ones are not for tuning.
 #include "unistroke_eval.h"
 
 #include "solvers/stroke/stroke_fitter.h"
@@ -18,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
 #include <iomanip>
 #include <iostream>
@@ -29,6 +35,25 @@ namespace st = sculptline::stroketest;
 namespace {
 
 sculptline::solvers::stroke::RecognizeOptions gOptions;
+bool gAugment = false;
+
+// The development recordings and, for each, the same stroke drawn otherwise as a person might
+// (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
+// of closing, drawn on 3 % past its end. Each copy keeps its subject, so that leave-one-subject-out
+// on them still leaves whole people out (--augment --loso).
+std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
+{
+    const std::vector<st::Perturbation> ways = {
+        {30, 1, 0, 0, 1, 0}, {0, 0.7, 0, 0, 1, 0}, {0, 1.5, 0, 0, 1, 0}, {0, 1, 0.03, 0, 1, 0}, {0, 1, 0.06, 0, 1, 0}, {0, 1, 0, 0, 1, 0.03},
+    };
+    std::vector<st::Recording> out = recs;
+    for (const auto& p : ways)
+        for (const auto& r : recs) {
+            out.push_back(r);
+            out.back().stroke = st::perturbStroke(r.stroke, p);
+        }
+    return out;
+}
 
 void report(const char* title, const std::vector<st::Recording>& recs)
 {
@@ -55,6 +80,7 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "habitDistance") o.habitDistance = v;
     else if (k == "maxOvershoot") o.maxOvershoot = v;
     else if (k == "minLoopTurn") o.minLoopTurn = v;
+    else if (k == "crossingTail") o.crossingTail = v;
     else return false;
     return true;
 }
@@ -110,6 +136,20 @@ void leaveOneSubjectOut(const std::vector<st::Recording>& recs, const std::strin
               << " % |" << std::defaultfloat << '\n';
 }
 
+double turnDeg(const std::vector<sculptline::solvers::stroke::Point2>& pts, const sculptline::solvers::stroke::Point2& c)
+{
+    double total = 0, prev = std::atan2(pts.front().y() - c.y(), pts.front().x() - c.x());
+    for (const auto& p : pts) {
+        const double a = std::atan2(p.y() - c.y(), p.x() - c.x());
+        double d = a - prev;
+        if (d > M_PI) d -= 2 * M_PI;
+        if (d < -M_PI) d += 2 * M_PI;
+        total += d;
+        prev = a;
+    }
+    return std::abs(total) * 180 / M_PI;
+}
+
 // One line per recording of `gesture`: what the recognizer saw (for development on s02-s06 only).
 void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
 {
@@ -120,7 +160,13 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         o.regularize = false;
         // DUMP_SPACING=f: the stroke resampled at f times its sample spacing (--invariance).
         const double spacing = std::getenv("DUMP_SPACING") ? std::atof(std::getenv("DUMP_SPACING")) : 1.0;
-        const sk::StrokeRecognition sr = sk::recognizeStroke(st::transformStroke(r.stroke, 1.0, spacing), {}, o);
+        // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare (--perturb-dev).
+        st::Perturbation pert;
+        if (const char* e = std::getenv("DUMP_PERTURB")) {
+            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
+                        &pert.extendShare);
+        }
+        const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
         const sk::FitResult& fit = sr.fit;
         const sk::Recognition& rec = sr.recognition;
         std::cout << r.subject << ' ' << r.speed << ' ' << r.number << " n=" << r.stroke.points.size() << " cond=" << fit.conditioned.size()
@@ -128,6 +174,10 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
                   << " ext=" << std::setprecision(3) << rec.geometry.extent << " len=" << rec.geometry.length << " ->";
         for (const auto& c : rec.candidates) std::cout << ' ' << sk::shapeName(c.kind) << ':' << std::setprecision(2) << c.score;
         std::cout << (st::isCorrect(r.gesture, rec.kind) ? "" : "  WRONG");
+        if (std::getenv("DUMP_LOOP") && rec.circle.valid) {  // turn about the fitted circle's centre, end gap / extent
+            const auto& q = rec.geometry.points;
+            std::cout << "  turn=" << std::setprecision(3) << turnDeg(q, rec.circle.center) << " gap=" << (q.back() - q.front()).norm() / rec.geometry.extent;
+        }
         if (std::getenv("DUMP_VERTICES")) {  // vertices in units of the extent, from the points' first sample
             std::cout << "  V:";
             for (const auto& v : rec.geometry.vertices) {
@@ -141,20 +191,6 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         }
         std::cout << '\n';
     }
-}
-
-double turnDeg(const std::vector<sculptline::solvers::stroke::Point2>& pts, const sculptline::solvers::stroke::Point2& c)
-{
-    double total = 0, prev = std::atan2(pts.front().y() - c.y(), pts.front().x() - c.x());
-    for (const auto& p : pts) {
-        const double a = std::atan2(p.y() - c.y(), p.x() - c.x());
-        double d = a - prev;
-        if (d > M_PI) d -= 2 * M_PI;
-        if (d < -M_PI) d += 2 * M_PI;
-        total += d;
-        prev = a;
-    }
-    return std::abs(total) * 180 / M_PI;
 }
 
 // Features of every development recording as TSV, for analysis while tuning.
@@ -234,6 +270,62 @@ void features(const std::vector<st::Recording>& recs)
     }
 }
 
+// The development strokes drawn otherwise (perturbStroke): which gestures stop being recognized when
+// a person rotates, stretches, leaves open or overshoots them, or draws faster. A stress test on the
+// development subjects only; each perturbation's accuracy is that of every gesture so perturbed.
+void perturbDev(const std::vector<st::Recording>& recs)
+{
+    struct Row {
+        const char* name;
+        st::Perturbation p;
+    };
+    const std::vector<Row> rows = {
+        {"as drawn", {}},
+        {"rotated 15 deg", {15, 1, 0, 0, 1}},
+        {"rotated 30 deg", {30, 1, 0, 0, 1}},
+        {"rotated 45 deg", {45, 1, 0, 0, 1}},
+        {"rotated 60 deg", {60, 1, 0, 0, 1}},
+        {"rotated 90 deg", {90, 1, 0, 0, 1}},
+        {"x stretched 0.5", {0, 0.5, 0, 0, 1}},
+        {"x stretched 0.7", {0, 0.7, 0, 0, 1}},
+        {"x stretched 1.5", {0, 1.5, 0, 0, 1}},
+        {"x stretched 2", {0, 2, 0, 0, 1}},
+        {"x 1.5, rotated 30", {30, 1.5, 0, 0, 1}},
+        {"x 1.5, rotated 45", {45, 1.5, 0, 0, 1}},
+        {"end cut 3 %", {0, 1, 0.03, 0, 1}},
+        {"end cut 6 %", {0, 1, 0.06, 0, 1}},
+        {"end cut 10 %", {0, 1, 0.10, 0, 1}},
+        {"overshoot 5 %", {0, 1, 0, 0.05, 1}},
+        {"overshoot 10 %", {0, 1, 0, 0.10, 1}},
+        {"overshoot 15 %", {0, 1, 0, 0.15, 1}},
+        {"end extended 3 %", {0, 1, 0, 0, 1, 0.03}},
+        {"end extended 6 %", {0, 1, 0, 0, 1, 0.06}},
+        {"times x0.5", {0, 1, 0, 0, 0.5}},
+        {"times x2", {0, 1, 0, 0, 2}},
+    };
+    const std::vector<std::string> shown = {"rectangle", "delete_mark", "triangle", "circle", "x", "check", "arrow"};
+    std::cout << "| perturbation | all |";
+    for (const auto& g : shown) std::cout << ' ' << g << " |";
+    std::cout << " lowest other gesture |\n|---|---:|";
+    for (size_t i = 0; i < shown.size(); ++i) std::cout << "---:|";
+    std::cout << "---|\n";
+    for (const Row& row : rows) {
+        std::vector<st::Recording> moved = recs;
+        for (auto& r : moved) r.stroke = st::perturbStroke(r.stroke, row.p);
+        const st::Confusion c = st::evaluate(moved, gOptions);
+        std::cout << "| " << row.name << " | " << std::fixed << std::setprecision(1) << 100.0 * c.accuracy() << " % |";
+        for (const auto& g : shown) std::cout << ' ' << 100.0 * c.accuracy(g) << " |";
+        std::string low;
+        double lowAcc = 2;
+        for (const auto& [g, unused] : c.rows)
+            if (std::find(shown.begin(), shown.end(), g) == shown.end() && c.accuracy(g) < lowAcc) {
+                lowAcc = c.accuracy(g);
+                low = g;
+            }
+        std::cout << ' ' << low << ' ' << 100.0 * lowAcc << " |" << std::defaultfloat << std::endl;
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -286,6 +378,8 @@ int main(int argc, char** argv)
                 }
             }
             return 0;
+        } else if (!std::strcmp(argv[i], "--augment")) {  // --loso also on the perturbed copies (perturbDev)
+            gAugment = true;
         } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
             const std::string k = argv[++i];
             std::vector<double> values;
@@ -296,7 +390,12 @@ int main(int argc, char** argv)
                 std::cerr << "--loso: unknown option or no values\n";
                 return 2;
             }
-            leaveOneSubjectOut(st::loadUnistrokes(dir, st::devSubjects()), k, values);
+            std::vector<st::Recording> recs = st::loadUnistrokes(dir, st::devSubjects());
+            if (gAugment) recs = augmented(recs);
+            leaveOneSubjectOut(recs, k, values);
+            return 0;
+        } else if (!std::strcmp(argv[i], "--perturb-dev")) {
+            perturbDev(st::loadUnistrokes(dir, st::devSubjects()));
             return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
@@ -306,7 +405,7 @@ int main(int argc, char** argv)
             return 0;
         }
         else {
-            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev\n";
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] --loso OPTION V1,V2,..\n";
             return 2;
         }
     }
