@@ -11,7 +11,11 @@ if(SCULPTLINE_SANITIZE)
     -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
     # The ASan documentation recommends -O1 for "reasonable performance"; at -O0 Eigen's expression
     # templates are not inlined and the numeric tests run tens of times slower.
-    $<$<CONFIG:Debug>:-O1>)
+    $<$<CONFIG:Debug>:-O1>
+    # Line tables are all a sanitizer report or a debugger backtrace needs (file:line per frame); full
+    # -g made every fuzz program, a whole CLI linked statically, 282 MB, and the build 11 GB, enough to
+    # fill the disk of a CI machine (stop 25's CI run). With clang the last -g option wins.
+    $<$<AND:$<CONFIG:Debug>,$<CXX_COMPILER_ID:Clang>>:-gline-tables-only>)
   target_compile_definitions(sculptline_warnings INTERFACE _GLIBCXX_ASSERTIONS)
   target_link_options(sculptline_warnings INTERFACE -fsanitize=address,undefined)
 endif()

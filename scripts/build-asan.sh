@@ -18,6 +18,13 @@ if [[ ! -f $build/CMakeCache.txt ]]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_COMPILER=clang++ "${launcher[@]}" \
     -DSCULPTLINE_SANITIZE=ON -DSCULPTLINE_FUZZ=ON -DSCULPTLINE_BUILD_GUI=OFF -DSCULPTLINE_BUILD_BENCH=OFF
 fi
+# The whole build takes about NEED_GB of disk (line tables only, cmake/SculptlineSanitize.cmake). Say
+# so up front: a full disk otherwise shows up as a compiler crash in the middle of the build.
+need_gb=4
+free_gb=$(df -Pk "$root" | awk 'NR==2 {print int($4 / 1048576)}')
+if ((free_gb < need_gb)); then
+  echo "build-asan.sh: only ${free_gb} GB free on the disk of $root; the sanitizer build needs about ${need_gb} GB" >&2
+fi
 targets=()
 for t in "$@"; do targets+=(--target "$t"); done
 cmake --build "$build" --parallel "$(nproc 2>/dev/null || echo 2)" "${targets[@]}"

@@ -7,6 +7,7 @@
 #include "ui/sketch_document.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMenu>
@@ -58,12 +59,25 @@ void MainWindow::importReference()
     if (refuseDialog("file.importReference")) return;
     const QString path = QFileDialog::getOpenFileName(this, tr("Import Reference"), QString(), tr("Open Inventor (*.iv)"));
     if (path.isEmpty()) return;
+    // Validation and Coin's reader run here, on the GUI thread (Coin's reader and node constructors
+    // share global name tables with the scene on screen): a 1 M-triangle file takes about 8 s. Say
+    // so before the window stops answering, and show the wait cursor until it answers again.
+    statusBar()->showMessage(tr("Importing %1 (%2 MB)...").arg(QFileInfo(path).fileName()).arg(QFileInfo(path).size() / 1.0e6, 0, 'f', 1));
+    statusBar()->repaint();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    QString summary, error;
     try {
-        const QString summary = document_->importReference(path);
-        statusBar()->showMessage(tr("Reference %1: %2. Ctrl+Z removes it; View > References hides it.").arg(QFileInfo(path).fileName(), summary));
+        summary = document_->importReference(path);
     } catch (const std::exception& e) {
-        QMessageBox::warning(this, tr("Cannot import reference"), QString::fromStdString(e.what()));
+        error = QString::fromStdString(e.what());
     }
+    QApplication::restoreOverrideCursor();
+    if (!error.isEmpty()) {
+        statusBar()->clearMessage();
+        QMessageBox::warning(this, tr("Cannot import reference"), error);
+        return;
+    }
+    statusBar()->showMessage(tr("Reference %1: %2. Ctrl+Z removes it; View > References hides it.").arg(QFileInfo(path).fileName(), summary));
 }
 
 }  // namespace sculptline::ui
