@@ -23,6 +23,11 @@ constexpr int kMaxIterations = 80;
 // Newton runs where it is generous.
 constexpr double kCellBulge = 2.0;
 
+// Surface Newton stops once a step moves (u, v) by less than this share of the domain's width in
+// each direction: converged to round-off (the point moves by |S_u| times that), where the line
+// search would otherwise keep halving steps of 1e-13 for up to 40 evaluations each.
+constexpr double kStepResolution = 1e-12;
+
 std::vector<double> sampleParameters(int degree, const KnotVector& knots, int count, int perSpan)
 {
     std::vector<double> out;
@@ -203,6 +208,7 @@ SurfaceProjection SurfaceProjector::newton(const Eigen::Vector3d& x, double u, d
                                            double v1) const
 {
     double dist2 = (surface_.evaluate(u, v) - x).squaredNorm();
+    const double uWidth = us_.back() - us_.front(), vWidth = vs_.back() - vs_.front();
     for (int iter = 0; iter < kMaxIterations; ++iter) {
         const auto d = surface_.derivatives(u, v, 2);
         const Eigen::Vector3d r = d[0][0] - x;
@@ -228,7 +234,7 @@ SurfaceProjection SurfaceProjector::newton(const Eigen::Vector3d& x, double u, d
             const double nu = std::clamp(u + t * step[0], u0, u1), nv = std::clamp(v + t * step[1], v0, v1);
             const double nd = (surface_.evaluate(nu, nv) - x).squaredNorm();
             if (nd < dist2) {
-                moved = (std::abs(nu - u) > 1e-16 * (1 + std::abs(u))) || (std::abs(nv - v) > 1e-16 * (1 + std::abs(v)));
+                moved = std::abs(nu - u) > kStepResolution * uWidth || std::abs(nv - v) > kStepResolution * vWidth;
                 u = nu;
                 v = nv;
                 dist2 = nd;
