@@ -186,7 +186,13 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // An absolute tolerance caps the merge distance at 0.4 * tolerance (minSpacing relative to the
     // stroke's extent, which conditioning computes anyway).
     ConditionedStroke cs = detail::conditionStrokeWithTolerance(stroke, copt, options.tolerance > 0.0 ? options.tolerance : 0.0);
-    res.tolerance = options.tolerance > 0.0 ? options.tolerance : options.relativeTolerance * cs.extent;
+    if (!(options.resolution >= 0.0) || !std::isfinite(options.resolution))
+        throw GeometryError("resolution: must be zero or positive and finite");
+    // The default tolerance respects the input's resolution (FitOptions::resolution,
+    // kResolutionTolerance): below it the tolerance would hold the quantization's staircase.
+    res.tolerance = options.tolerance > 0.0
+                        ? options.tolerance
+                        : std::max(options.relativeTolerance * cs.extent, kResolutionTolerance * options.resolution);
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
     std::vector<int> corners, samples;

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <map>
 
 namespace sculptline::stroketest {
@@ -194,6 +196,79 @@ TEST(FitTolerance, GivenCleanSCurve_WhenTheToleranceIsLoosened_ThenFewerControlP
     EXPECT_LE(counts[1], counts[0]);
     EXPECT_LE(counts[2], counts[1]);
     EXPECT_LT(counts[2], counts[0]) << "1.0 against 0.25";
+}
+
+// An arc like the sail's target B (a 30-unit chord bulging 10 units), drawn with the pointer moving
+// about a pixel per event, its samples rounded to a grid of pitch q (whole pixels).
+Stroke quantizedArc(double q, bool quantize)
+{
+    Stroke s;
+    s.dimension = 2;
+    constexpr int kSamples = 150;
+    for (int i = 0; i <= kSamples; ++i) {
+        const double t = static_cast<double>(i) / kSamples;
+        Vec3 p(10.0 * std::sin(M_PI * t), 30.0 * t, 0.0);
+        if (quantize) p = Vec3(q * std::round(p.x() / q), q * std::round(p.y() / q), 0.0);
+        s.points.push_back(p);
+        s.times.push_back(0.01 * i);
+    }
+    return s;
+}
+
+// FitOptions::resolution: samples quantized to a grid of pitch q are only known to +-q/2 per axis.
+// With resolution q the default tolerance is q (kResolutionTolerance), the fit ignores the
+// staircase and needs about as few control points as the unquantized arc; every sample stays
+// within the reported tolerance. Without it (0, unknown) the relative tolerance (0.5 % of the
+// extent, ~0.16 here, below the half-pitch rounding) makes the curve follow the steps.
+TEST(FitTolerance, GivenPixelQuantizedArc_WhenFittedWithItsResolution_ThenFewControlPointsAndEverySampleWithin)
+{
+    constexpr double kPitch = 0.45;  // the sail window's pixel on plane B, model units
+    // Arrange
+    const Stroke smooth = quantizedArc(kPitch, false);
+    const Stroke stairs = quantizedArc(kPitch, true);
+    FitOptions withResolution;
+    withResolution.resolution = kPitch;
+    // Act
+    const FitResult reference = fitStroke(smooth);
+    const FitResult unknown = fitStroke(stairs);
+    const FitResult known = fitStroke(stairs, withResolution);
+    // Assert
+    std::printf("quantized arc (pitch %.2f): smooth %d control points (tolerance %.3f); quantized, resolution 0: %d "
+                "(tolerance %.3f, max error %.3f); resolution %.2f: %d (tolerance %.3f, max error %.3f)\n",
+                kPitch, reference.curve.pointCount(), reference.tolerance, unknown.curve.pointCount(), unknown.tolerance,
+                unknown.maxError, kPitch, known.curve.pointCount(), known.tolerance, known.maxError);
+    EXPECT_DOUBLE_EQ(unknown.tolerance, kDefaultRelativeTolerance * unknown.conditioned.extent);
+    EXPECT_DOUBLE_EQ(known.tolerance, kResolutionTolerance * kPitch);
+    EXPECT_TRUE(known.converged);
+    EXPECT_LE(known.maxError, known.tolerance);
+    EXPECT_LE(maxDeviation(known.curve, keptSamples(stairs, known)), known.tolerance + kMeasureAgreement);
+    EXPECT_LE(known.curve.pointCount(), reference.curve.pointCount() + 2);
+    EXPECT_LT(known.curve.pointCount(), unknown.curve.pointCount());
+    // The curve is the arc, not the staircase: within half a pitch of the true arc throughout.
+    EXPECT_LT(hausdorff(known.curve, reference.curve), 0.5 * kPitch);
+}
+
+// A resolution below what the relative tolerance already allows changes nothing: the same curve.
+TEST(FitTolerance, GivenFineResolution_WhenFitted_ThenTheSameFitAsWithoutOne)
+{
+    DrawOptions d;
+    d.noise = 0.1;
+    const Stroke s = draw(sCurveShape(200), d);
+    const FitResult plain = fitStroke(s);
+    FitOptions o;
+    o.resolution = 0.1 * plain.tolerance;
+    const FitResult fine = fitStroke(s, o);
+    EXPECT_EQ(fine.tolerance, plain.tolerance);
+    EXPECT_EQ(fine.curve.points(), plain.curve.points());
+    EXPECT_EQ(fine.curve.knots(), plain.curve.knots());
+    FitOptions bad;
+    bad.resolution = -1.0;
+    EXPECT_THROW(fitStroke(s, bad), solvers::GeometryError);
+    // An explicit tolerance wins over the resolution.
+    FitOptions both;
+    both.tolerance = 0.3;
+    both.resolution = 5.0;
+    EXPECT_EQ(fitStroke(s, both).tolerance, 0.3);
 }
 
 // measureSamples against the independent dense-polyline measure of fit_checks.h: no sample's
