@@ -94,6 +94,12 @@ bool StrokeInput::ray(SoEventCallback* node, Eigen::Vector3d& from, Eigen::Vecto
 
 bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction)
 {
+    return pointerRay(node, camera, from, direction, 0, 0);
+}
+
+bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction, int dx,
+                int dy)
+{
     if (!camera) return false;
     // The volume the camera renders with: the viewer keeps the camera's aspectRatio field at 1
     // and adapts at render time (ADJUST_CAMERA), widening a tall view's volume by 1/aspect, as
@@ -103,7 +109,14 @@ bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, 
     SbViewVolume volume = camera->getViewVolume(aspect);
     if (aspect < 1.0f) volume.scale(1.0f / aspect);
     SbLine line;
-    volume.projectPointToLine(node->getEvent()->getNormalizedPosition(viewport), line);
+    SbVec2f at = node->getEvent()->getNormalizedPosition(viewport);
+    if (dx != 0 || dy != 0) {
+        // Normalized coordinates as SoEvent::getNormalizedPosition computes them: pixel / size.
+        const SbVec2s size = viewport.getViewportSizePixels();
+        if (size[0] > 0) at[0] += static_cast<float>(dx) / static_cast<float>(size[0]);
+        if (size[1] > 0) at[1] += static_cast<float>(dy) / static_cast<float>(size[1]);
+    }
+    volume.projectPointToLine(at, line);
     from = scene::toEigen(line.getPosition());
     direction = scene::toEigen(line.getDirection()).normalized();
     return true;
@@ -192,6 +205,27 @@ void reproject(FinishedStroke& stroke, const model::PlaneFrame& frame)
     stroke.times = std::move(times);
 }
 
+double pixelFootprint(const FinishedStroke& stroke)
+{
+    std::vector<double> steps;
+    const size_t n = std::min(stroke.rayOrigins.size(), stroke.pixelRays.size());
+    steps.reserve(n);
+    for (size_t i = 0; i < n; ++i) {
+        const auto p = intersectPlane(stroke.frame, stroke.rayOrigins[i], stroke.rayDirections[i]);
+        if (!p) continue;
+        const FinishedStroke::PixelRays& r = stroke.pixelRays[i];
+        const auto px = intersectPlane(stroke.frame, r.originX, r.directionX);
+        const auto py = intersectPlane(stroke.frame, r.originY, r.directionY);
+        if (!px || !py) continue;
+        const double step = std::max((*px - *p).norm(), (*py - *p).norm());
+        if (std::isfinite(step)) steps.push_back(step);
+    }
+    if (steps.empty()) return 0.0;
+    auto middle = steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2);
+    std::nth_element(steps.begin(), middle, steps.end());
+    return *middle;
+}
+
 void StrokeInput::onEvent(SoEventCallback* node)
 {
     if (!enabled_) return;
@@ -261,6 +295,12 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     stroke_.rayOrigins.push_back(from);
     stroke_.rayDirections.push_back(direction);
     stroke_.rayTimes.push_back(time);
+    FinishedStroke::PixelRays pixel;
+    if (!pointerRay(node, camera_ ? camera_() : nullptr, pixel.originX, pixel.directionX, 1, 0) ||
+        !pointerRay(node, camera_ ? camera_() : nullptr, pixel.originY, pixel.directionY, 0, 1)) {
+        pixel = {from, direction, from, direction};  // (not reached: ray() succeeded with the same camera)
+    }
+    stroke_.pixelRays.push_back(pixel);
     // The preview shows the points on the plane chosen at the press; a ray that misses it adds none
     // (and no time: points and times stay pairs, or the fitter refuses the stroke).
     if (const auto local = intersectPlane(stroke_.frame, from, direction)) {

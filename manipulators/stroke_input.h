@@ -55,12 +55,28 @@ struct FinishedStroke {
     /// Seconds since the pen went down, one per ray (a ray that misses the plane has no point, and
     /// so no entry in `times`).
     std::vector<double> rayTimes;
+    /// Per ray, the rays through the pixel one to the right (x) and one up (y) of it, world: the
+    /// pointer's pixel on whatever plane the stroke ends up on (pixelFootprint).
+    struct PixelRays {
+        Eigen::Vector3d originX, directionX, originY, directionY;
+    };
+    std::vector<PixelRays> pixelRays;
     StrokeHit start, end;
 };
+
+/// The footprint of one pointer pixel on the stroke's plane (`frame`), model units: per ray that
+/// meets the plane, the larger distance from its point to the points of its x and y neighbour rays;
+/// the median over the stroke (robust to a few rays nearly parallel to the plane). The stroke's
+/// samples are whole pixels, so this is the pitch they are quantized to (the fitter's
+/// FitOptions::resolution). 0 when unknown (no pixel rays, or none meets the plane).
+double pixelFootprint(const FinishedStroke& stroke);
 
 /// The pointer's world ray for the event `node` handles, seen through `camera` (the viewer's
 /// aspect-adjusted volume); false without a camera.
 bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction);
+/// pointerRay for the pointer moved by (dx, dy) pixels.
+bool pointerRay(SoEventCallback* node, SoCamera* camera, Eigen::Vector3d& from, Eigen::Vector3d& direction, int dx,
+                int dy);
 /// The nearest curve (scene::entityAt on the pick path) under the pointer, within a few pixels, looking
 /// through other shapes.
 StrokeHit pickCurve(SoEventCallback* node, const Eigen::Vector3d& view);

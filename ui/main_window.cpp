@@ -118,6 +118,7 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         if (automated_) {
             const StrokeReport& r = document_->lastStroke();
             std::cerr << "sculptline: " << r.message.toStdString()
+                      << (r.pixel > 0.0 ? "; pixel " + std::to_string(r.pixel) + " mm" : std::string())
                       << (r.recognized.isEmpty() ? std::string() : "; recognized: " + r.recognized.toStdString())
                       << (r.habit.isEmpty() ? std::string() : "; " + r.habit.toStdString()) << "\n";
         }

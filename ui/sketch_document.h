@@ -57,6 +57,10 @@ struct StrokeReport {
     int samples = 0;
     int controlPoints = 0;
     double maxError = 0.0;  ///< model units
+    double tolerance = 0.0;  ///< the fit's tolerance (FitResult::tolerance), model units
+    /// One pointer pixel's footprint on the stroke's plane (manipulators::pixelFootprint), model
+    /// units: the fit's resolution; 0 = unknown.
+    double pixel = 0.0;
     bool fitted = false;  ///< false: the stroke was rejected (too short, degenerate)
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run

@@ -208,7 +208,11 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         // least squares, in the plane's local frame and model units.
         // The fit the recognizer reads (a self-crossing stroke refitted open, a nearly closed
         // loop refitted closed: solvers/stroke recognizeStroke, tuned on real pen data).
-        const solvers::stroke::FitResult fit = solvers::stroke::recognizeStroke(input).fit;
+        // The pointer's samples are whole pixels: the tolerance is never below one pixel's
+        // footprint on the plane (FitOptions::resolution), or the curve would follow the staircase.
+        solvers::stroke::FitOptions fitOptions;
+        fitOptions.resolution = manipulators::pixelFootprint(stroke);
+        const solvers::stroke::FitResult fit = solvers::stroke::recognizeStroke(input, fitOptions).fit;
         model::requireCurveExtent(fit.curve);
         model::Entity curve;
         curve.kind = model::EntityKind::Curve;
@@ -218,11 +222,15 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = fit.curve.pointCount();
         lastStroke_.maxError = fit.maxError;
-        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm%5")
+        lastStroke_.tolerance = fit.tolerance;
+        lastStroke_.pixel = fitOptions.resolution;
+        lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm "
+                                 "(tolerance %5 mm)%6")
                                   .arg(lastStroke_.samples)
                                   .arg(fit.curve.degree())
                                   .arg(lastStroke_.controlPoints)
                                   .arg(fit.maxError, 0, 'f', 3)
+                                  .arg(fit.tolerance, 0, 'f', 3)
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
         recognize(fit);
         if (!lastStroke_.habit.isEmpty() && regularizedFit_) {

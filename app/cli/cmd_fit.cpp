@@ -1,11 +1,12 @@
 // sculptline-cli fit: a pen stroke to a cubic B-spline (issue 3; thesis ch. 4 §4.1).
 //
-//   {"stroke": K, "tolerance": e, "closed": "auto"|"open"|"closed", "sampling": "dynamic"|"all",
-//    "minimize_control_points": b}
+//   {"stroke": K, "tolerance": e, "resolution": q, "closed": "auto"|"open"|"closed",
+//    "sampling": "dynamic"|"all", "minimize_control_points": b}
 //   -> {"curve": C, "corners": [i..], "samples": [i..], "max_error": e, "tolerance": e, "closed": b,
 //       "converged": b, "warnings": [..], "elapsed_ms": t}
 //
-// tolerance is optional (default 0.5 % of the stroke's extent); corners and samples are indices
+// tolerance is optional (default 0.5 % of the stroke's extent, but at least resolution: the pitch
+// the samples are quantized to, e.g. one pixel's footprint; 0 or absent = unknown); corners and samples are indices
 // into the input stroke's points. minimize_control_points (default false) tries to remove every
 // knot after the fit, not only the last round's: fewer control points, ~2x the time.
 #include "app/cli/cli_support.h"
@@ -23,6 +24,10 @@ stroke::FitOptions fitOptions(const json& input)
     if (input.contains("tolerance")) {
         o.tolerance = solvers::io::numberFromJson(input["tolerance"], "tolerance");
         if (!(o.tolerance > 0.0)) throw InputError("tolerance: must be positive");
+    }
+    if (input.contains("resolution")) {
+        o.resolution = solvers::io::numberFromJson(input["resolution"], "resolution");
+        if (!(o.resolution >= 0.0)) throw InputError("resolution: must be zero or positive");
     }
     if (input.contains("closed")) {
         const json& c = input["closed"];
@@ -65,7 +70,7 @@ json run(const json& input, const Options&)
 }
 
 const SubcommandRegistrar registrar{
-    {"fit", "stroke to cubic B-spline: {stroke, tolerance?} -> {curve, corners, samples, max_error}", &run}};
+    {"fit", "stroke to cubic B-spline: {stroke, tolerance?, resolution?} -> {curve, corners, samples, max_error}", &run}};
 
 }  // namespace
 }  // namespace sculptline::cli

@@ -68,18 +68,26 @@ CurveProjection<Dim> projectToCurve(const BSplineCurve<Dim>& curve, const Eigen:
 /// Projects points onto a 3D surface: a coarse grid per knot-span pair, every grid local minimum
 /// refined by Newton's method on the normal equations (The NURBS Book eqs. 6.6-6.7) with a
 /// backtracking line search and clamping to the domain, and the four boundary curves projected
-/// with CurveProjector so that minima on the boundary are found exactly.
+/// with CurveProjector so that minima on the boundary are found exactly. Then every grid cell
+/// that could still hold a closer point (its bounding box, see kCellBulge in projection.cpp,
+/// nearer than the best found) is searched by Newton confined to the cell, nearest cell first:
+/// where the surface folds or wiggles within a cell (a lofted section's jittered end), the grid's
+/// local minima can all lie in other valleys of the distance.
 class SurfaceProjector {
 public:
     explicit SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan = 8);
     SurfaceProjection project(const Eigen::Vector3d& x) const;
 
 private:
-    SurfaceProjection newton(const Eigen::Vector3d& x, double u, double v) const;
+    // Newton from (u, v) kept inside the box [ua, ub] x [va, vb].
+    SurfaceProjection newton(const Eigen::Vector3d& x, double u, double v, double ua, double ub, double va, double vb) const;
 
     BSplineSurface<3> surface_;
     std::vector<double> us_, vs_;
     std::vector<Eigen::Vector3d> grid_;  // grid_[i * vs_.size() + j]
+    // Per cell (i, j) between grid lines i, i+1 and j, j+1 (index i * (vs_.size() - 1) + j): a
+    // box that holds the cell's patch (its nine sample points' box, padded by their bulge).
+    std::vector<Eigen::Vector3d> cellLow_, cellHigh_;
     std::vector<CurveProjector<3>> boundaries_;
     std::vector<std::pair<int, double>> boundaryParams_;  // (fixed direction 0:u fixed / 1:v fixed, value)
 };

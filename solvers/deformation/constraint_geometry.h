@@ -35,5 +35,7 @@ double angleBetweenLines(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 
 /// m parameters evenly spaced over [t0, t1] (the middle for m = 1).
 std::vector<double> uniformParameters(double t0, double t1, int m);
+/// m parameters of c evenly spaced along its length (ends at the domain's ends; m == 1: the middle).
+std::vector<double> arcLengthParameters(const BSplineCurve<3>& c, int m);
 
 }  // namespace sculptline::solvers::deformation::detail

@@ -137,8 +137,8 @@ Surface3d deformSurface(const Surface3d& surface, const std::vector<SurfaceConst
                         const DeformationOptions& options = {}, DeformationReport* report = nullptr);
 
 /// Key points of a Curve constraint: their (u, v) on the surface and parameters t on the target H
-/// (count by eq. 6-24 unless keyPoints > 0; uniform in G's parameter, or in H's with the feet on the
-/// surface by global projection when no domain G is given).
+/// (count by eq. 6-24 unless keyPoints > 0; uniform in G's parameter, or, when no domain G is given,
+/// evenly spaced along H's length with the feet on the surface by global projection).
 struct KeyPoints {
     std::vector<Eigen::Vector2d> uv;
     std::vector<double> t;

@@ -341,6 +341,8 @@ ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, con
         tolerance > 0.0 ? std::min(options.minSpacing, 0.4 * tolerance / cs.extent) : options.minSpacing;
     double minDist = std::max(minSpacing * cs.extent, rawLength / std::max(16, options.maxSamples));
     const auto [first, last] = withoutHooks(stroke, options, stride == 1 ? rawLength : -1.0);
+    for (int i = 0; i < first; ++i) cs.dropped.push_back(i);
+    for (int i = last + 1; i < static_cast<int>(count); ++i) cs.dropped.push_back(i);
     if (first > 0) cs.warnings.push_back("stroke: light-pressure hook trimmed at the start (samples 0.." + std::to_string(first - 1) + ")");
     if (last + 1 < static_cast<int>(count)) {
         cs.warnings.push_back("stroke: light-pressure hook trimmed at the end (samples " + std::to_string(last + 1) + ".." +
@@ -410,6 +412,10 @@ ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, con
             if (cut.head > 0 || cut.tail < cs.size() - 1) {
                 cs.warnings.push_back("stroke: loop overshoot trimmed to samples " + std::to_string(cs.source[cut.head]) +
                                       ".." + std::to_string(cs.source[cut.tail]));
+                // The raw samples before the head's and after the tail's are the overshoot.
+                for (int i = first; i < cs.source[cut.head]; ++i) cs.dropped.push_back(i);
+                for (int i = cs.source[cut.tail] + 1; i <= last; ++i) cs.dropped.push_back(i);
+                std::sort(cs.dropped.begin(), cs.dropped.end());
                 keepRange(cs.points, cut.head, cut.tail);
                 keepRange(cs.source, cut.head, cut.tail);
                 keepRange(cs.time, cut.head, cut.tail);
@@ -426,6 +432,37 @@ ConditionedStroke detail::conditionStrokeWithTolerance(const Stroke& stroke, con
         cs.closed = true;
     }
     return cs;
+}
+
+double estimateNoise(const std::vector<Eigen::Vector3d>& p, int dimension)
+{
+    const int n = static_cast<int>(p.size());
+    if (n < 5) return 0.0;
+    std::vector<double> len(static_cast<size_t>(n - 4));
+    for (int i = 2; i + 2 < n; ++i) len[i - 2] = (p[i - 2] - 4.0 * p[i - 1] + 6.0 * p[i] - 4.0 * p[i + 1] + p[i + 2]).norm();
+    const size_t mid = len.size() / 2;
+    std::nth_element(len.begin(), len.begin() + static_cast<long>(mid), len.end());
+    // Median of the length of a Gaussian vector with unit per-coordinate deviation: sqrt(2 ln 2)
+    // in 2D (Rayleigh), 1.5382 in 3D (Maxwell); the fourth difference scales it by sqrt(70).
+    const double chiMedian = dimension == 3 ? 1.5382 : 1.1774;
+    return len[mid] / (chiMedian * std::sqrt(70.0));
+}
+
+std::vector<Eigen::Vector3d> limitSmoothing(const std::vector<Eigen::Vector3d>& drawn,
+                                            const std::vector<Eigen::Vector3d>& smoothed, double budget, double* shift)
+{
+    std::vector<Vec3> out = drawn;
+    double moved = 0.0;
+    if (budget > 0.0) {
+        for (size_t i = 0; i < out.size(); ++i) {
+            const Vec3 d = smoothed[i] - drawn[i];
+            const double len = d.norm();
+            out[i] = len > budget ? (drawn[i] + d * (budget / len)).eval() : smoothed[i];
+            moved = std::max(moved, std::min(len, budget));
+        }
+    }
+    if (shift) *shift = moved;
+    return out;
 }
 
 void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixed, int passes)

@@ -21,6 +21,21 @@ ConditionedStroke conditionStroke(const Stroke& stroke, const ConditioningOption
 /// Recomputes the cumulative chord lengths.
 void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixed, int passes);
 
+/// The noise level of the points, model units: the standard deviation sigma of white noise that
+/// would explain the fourth differences p_{i-2} - 4 p_{i-1} + 6 p_i - 4 p_{i+1} + p_{i+2} (their
+/// per-coordinate variance is 70 sigma^2; a smooth curve sampled at spacing h contributes only
+/// h^4 |C^(4)|, so curvature is not mistaken for noise, unlike second differences). The median of
+/// their lengths is used (robust to corners and a few outliers): for a 2D Gaussian vector of
+/// per-coordinate deviation s it is s sqrt(2 ln 2). 0 for fewer than five points.
+double estimateNoise(const std::vector<Eigen::Vector3d>& points, int dimension = 2);
+
+/// The smoothed points moved back onto the ball of radius `budget` (model units) around the drawn
+/// ones: smoothing bounded so that it removes at most `budget` of shape or noise. *shift (if given)
+/// receives the largest distance of a result from its drawn point. budget <= 0: the drawn points.
+std::vector<Eigen::Vector3d> limitSmoothing(const std::vector<Eigen::Vector3d>& drawn,
+                                            const std::vector<Eigen::Vector3d>& smoothed, double budget,
+                                            double* shift = nullptr);
+
 /// Recomputes cs.arc from cs.points.
 void updateArcLength(ConditionedStroke& cs);
 

@@ -355,21 +355,48 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         // follow the density of the sample parameters; the smallest n within tolerance is found by
         // bisection (the error falls, not strictly, as n grows).
         auto averaged = [&](int nCtrl) {
+            std::vector<double> uc = u;  // this trial's parameters (corrected below)
             Spline t;
             t.breaks = {0.0};
             const int nS = static_cast<int>(u.size());
             const double d = double(nS) / (nCtrl - kDegree);
-            for (int j = 1; j < nCtrl - kDegree; ++j) {
+            if (nCtrl >= nS) {
+                // Interpolation: The NURBS Book eq. 9.8 (each knot the mean of p parameters), which
+                // keeps every sample inside the support of its own basis function (Schoenberg-
+                // Whitney); eq. 9.69 at n = m can leave a span empty and its neighbour two.
+                for (int j = 1; j < nS - kDegree; ++j) {
+                    double knot = 0.0;
+                    for (int i = j; i < j + kDegree; ++i) knot += u[i];
+                    knot /= kDegree;
+                    if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
+                }
+            }
+            for (int j = 1; nCtrl < nS && j < nCtrl - kDegree; ++j) {
                 const int i = static_cast<int>(j * d);
                 const double a = j * d - i;
                 const double knot = (1 - a) * u[std::max(0, i - 1)] + a * u[std::min(nS - 1, i)];
                 if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
             }
             t.breaks.push_back(1.0);
-            solve(t, X, S, u, opt.fairing);
-            return std::make_pair(t, measureAll(t, in, S, u, opt.tolerance));
+            solve(t, X, S, uc, opt.fairing);
+            // SplineFitOptions::averagedCorrections: Hoschek's intrinsic parametrization, each
+            // sample's parameter moved by a Newton step toward its foot point (kept between its
+            // neighbours'), the knots kept.
+            for (int c = 0; c < opt.averagedCorrections; ++c) {
+                for (size_t k = 1; k + 1 < uc.size(); ++k) uc[k] = newtonStep(t, X[S[k]], uc[k], uc[k - 1], uc[k + 1]);
+                solve(t, X, S, uc, opt.fairing);
+            }
+            if (opt.averagedControlPoints > 0) {
+                // The caller measures the result itself: only the samples, at their parameters,
+                // as a quick bound for rejecting it.
+                double e = 0.0;
+                for (size_t k = 0; k < uc.size(); ++k) e = std::max(e, distanceAt(t, X[S[k]], uc[k]));
+                return std::make_pair(t, e);
+            }
+            return std::make_pair(t, measureAll(t, in, S, uc, opt.tolerance));
         };
         int lo = 4, hi = std::max(4, static_cast<int>(S.size()));
+        if (opt.averagedControlPoints > 0) lo = hi = std::clamp(opt.averagedControlPoints, 4, hi);
         auto best = averaged(hi);
         while (lo < hi) {
             const int mid = (lo + hi) / 2;
@@ -381,7 +408,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 lo = mid + 1;
             }
         }
-        if (best.first.unknowns() != hi) best = averaged(hi);
+        // (A fixed count is solved once: its knots may merge, leaving fewer unknowns, and solving it
+        // again would give the same.)
+        if (opt.averagedControlPoints == 0 && best.first.unknowns() != hi) best = averaged(hi);
         res.maxError = best.second;
         res.converged = res.maxError <= opt.tolerance;
         res.knots = best.first.knots;

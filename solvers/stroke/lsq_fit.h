@@ -58,6 +58,12 @@ struct SplineFitOptions {
     /// Measure a sample's deviation at its Newton-improved foot point (closer to the true distance)
     /// rather than at its chord parameter; the parameter itself is kept.
     bool measureAtFootPoint = true;
+    /// KnotPlacement::Averaged only: Hoschek parameter corrections per trial count (each one
+    /// Newton step per sample toward its foot point, then the same knots solved again).
+    int averagedCorrections = 0;
+    /// KnotPlacement::Averaged only: this many control points (> 0; no search), else the fewest
+    /// within tolerance found by bisection.
+    int averagedControlPoints = 0;
 };
 
 /// Data for one piece: ordered points with chord-length parameters normalized to [0, 1]

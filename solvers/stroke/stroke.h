@@ -34,7 +34,19 @@ struct ConditioningOptions {
     double minLoopArea = 0.01;
     Closure closure = Closure::Auto;
     /// Passes of the 3-point mean filter (seed 003 §3.1 "3x3 mean filter"); corners are held fixed.
+    /// The smoothed points give the parameterization, the dynamic threshold and recognition; the
+    /// least squares fits them pulled back toward the drawn points (smoothingShare, noiseMultiple),
+    /// so smoothing never eats shape that the tolerance must keep.
     int smoothingPasses = 2;
+    /// The filter moves no sample farther than this share of the fitting tolerance from where it
+    /// was drawn. The fit then has the rest of the tolerance for the smoothed points (the smoothing
+    /// shift is subtracted), so a quarter leaves three quarters: the control-point count of a cubic
+    /// fit grows as tolerance^(-1/4), about 7 % more points for the guarantee on raw samples.
+    double smoothingShare = 0.25;
+    /// ...and no farther than this multiple of the estimated noise (estimateNoise): smoothing is
+    /// for the noise that is there; a clean stroke is left almost as drawn. 3 sigma covers the
+    /// excursions of Gaussian noise over a few hundred samples.
+    double noiseMultiple = 3.0;
     /// Upper bound on the conditioned sample count; denser input is thinned first so that a
     /// million-sample stroke is handled in bounded time.
     int maxSamples = 20000;
@@ -58,6 +70,13 @@ struct ConditionedStroke {
     bool timed = false;                   ///< `time` holds real timestamps
     double extent = 0.0;                  ///< strokeExtent of the raw stroke (the scale of relative sizes)
     std::vector<std::string> warnings;    ///< repairs applied (ignored timestamps, trimmed overshoot)
+    /// Raw-sample indices left out of the curve: light-pressure hooks and a loop's overshoot past its
+    /// start (increasing). Merged near-duplicates are not dropped: the fit is measured against them.
+    std::vector<int> dropped;
+    double noise = 0.0;          ///< estimated noise sigma of the samples, model units (estimateNoise)
+    /// Largest distance from a drawn point to the point the least squares fits (the smoothed point
+    /// pulled back within ConditioningOptions::smoothingShare of the tolerance), model units.
+    double smoothingShift = 0.0;
 
     int size() const { return static_cast<int>(points.size()); }
     /// Total length, including the closing gap of a closed stroke.

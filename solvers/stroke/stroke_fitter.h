@@ -12,13 +12,29 @@ namespace sculptline::solvers::stroke {
 /// Default fitting tolerance as a fraction of the stroke's extent (strokeExtent): 0.5 % is about
 /// one pixel on a 200-pixel sketch, below what a designer perceives as a change of shape.
 constexpr double kDefaultRelativeTolerance = 0.005;
+/// The default tolerance is never below this many input resolutions (FitOptions::resolution). A
+/// sample quantized to a grid of pitch q (whole pixels) is only known to within +-q/2 per axis, so
+/// up to q/sqrt(2) (~0.71 q) from where the pen was; a tolerance below that asks the curve to
+/// follow the quantization's staircase, not the drawing. One pitch (one pixel, the intent of
+/// kDefaultRelativeTolerance) leaves the smooth curve through the true positions inside it with a
+/// margin the least squares needs (it does not find the minimax curve).
+constexpr double kResolutionTolerance = 1.0;
 
 struct FitOptions {
     double tolerance = 0.0;  ///< max deviation in model units; <= 0 means relativeTolerance * extent
     double relativeTolerance = kDefaultRelativeTolerance;
+    /// The input's resolution, model units: the pitch its samples are quantized to (the window's
+    /// pointer: one pixel's footprint on the sketch plane, manipulators::pixelFootprint). With
+    /// tolerance <= 0 the tolerance used is max(relativeTolerance * extent, kResolutionTolerance *
+    /// resolution). 0 = unknown (the relative tolerance alone). Ignored when tolerance > 0.
+    double resolution = 0.0;
     /// false: every conditioned sample enters the least squares ("speed-only" sampling of thesis
     /// Fig. 4-3 a, whose density follows the hand's slowness); true: eqs. 4-2/4-3.
     bool dynamicSampling = true;
+    /// After the error-driven fit of an open stroke without corners, look for fewer control points
+    /// with averaged knots and corrected parameters (stroke_fitter.cpp); kept only when every kept
+    /// raw sample stays within the tolerance. Loops and strokes with corners keep the error-driven fit.
+    bool fewerControlPoints = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;
@@ -32,10 +48,14 @@ struct FitResult {
     Curve3d curve{1, {0.0, 0.0, 1.0, 1.0}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()}};
     std::vector<int> corners;            ///< raw-sample indices of the corners (G0 joints of the curve)
     std::vector<int> samples;            ///< raw-sample indices used by the least squares
-    double maxError = 0.0;               ///< max distance of a conditioned sample to the curve (an upper
-                                         ///< bound: distance to a curve point near the foot point)
+    /// Raw-sample indices left out of the fit and of maxError (ConditionedStroke::dropped: hooks,
+    /// a loop's overshoot), increasing.
+    std::vector<int> dropped;
+    double maxError = 0.0;               ///< max distance of a raw sample not dropped to the curve
+                                         ///< (projected: measureSamples), model units
+    int refinements = 0;                 ///< refits needed to bring every kept sample within tolerance
     double tolerance = 0.0;              ///< the tolerance used, model units
-    bool converged = false;              ///< maxError <= tolerance
+    bool converged = false;              ///< maxError <= tolerance (every kept raw sample within it)
     std::vector<std::string> warnings;   ///< repairs made to the input
     ConditionedStroke conditioned;       ///< the smoothed input (for tests and recognition)
 };

@@ -180,7 +180,7 @@ json fitResultToJson(const FitResult& r, int dimension)
     const json curve = curveJson(r.curve, dimension);
     return {{"curve", curve},         {"corners", r.corners},     {"samples", r.samples},
             {"max_error", r.maxError}, {"tolerance", r.tolerance}, {"closed", r.curve.isClosed()},
-            {"converged", r.converged}, {"warnings", r.warnings}};
+            {"converged", r.converged}, {"warnings", r.warnings}, {"dropped_samples", r.dropped}};
 }
 
 }  // namespace sculptline::solvers::stroke

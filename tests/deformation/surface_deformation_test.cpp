@@ -274,6 +274,30 @@ TEST(SurfaceDeformation, GivenATargetCurveWithoutDomain_WhenDeformed_ThenKeyPoin
     EXPECT_LT(report.maxResidual, kConstraintTolerance);
 }
 
+// The key points of a target without a domain are evenly spaced along its length, so the same
+// shape parametrized at another speed (a stroke fitted with other control points) gives the same
+// key points and the same sculpt.
+TEST(SurfaceDeformation, GivenOneTargetAtTwoSpeeds_WhenKeyPointsPlaced_ThenTheSameKeyPointsEvenlyAlongIt)
+{
+    const Surface3d s = wavySurface(12, 8);
+    const Eigen::Vector3d a(2.0, 3.5, 1.2), b(9.0, 3.5, 1.2);
+    SurfaceConstraint even, uneven;
+    even.type = uneven.type = SurfaceConstraintType::Curve;
+    even.target = line3(a, b);
+    // The same segment, its control points bunched at the start: its speed varies ~10x
+    uneven.target = BSplineCurve<3>(3, {0, 0, 0, 0, 1, 1, 1, 1}, {a, a + 0.02 * (b - a), a + 0.1 * (b - a), b});
+    const KeyPoints ke = curveKeyPoints(s, even), ku = curveKeyPoints(s, uneven);
+    ASSERT_EQ(ke.t.size(), ku.t.size());
+    ASSERT_GE(ke.t.size(), 3u);
+    const double step = (b - a).norm() / static_cast<double>(ke.t.size() - 1);
+    for (size_t k = 0; k < ke.t.size(); ++k) {
+        const Eigen::Vector3d pe = even.target->evaluate(ke.t[k]), pu = uneven.target->evaluate(ku.t[k]);
+        EXPECT_NEAR((pe - a).norm(), step * static_cast<double>(k), 1e-3) << k;
+        EXPECT_NEAR((pu - pe).norm(), 0.0, 1e-3) << k;
+        EXPECT_NEAR((ke.uv[k] - ku.uv[k]).norm(), 0.0, 1e-3) << k;
+    }
+}
+
 TEST(SurfaceDeformation, GivenACurveTangentConstraint_WhenDeformed_ThenTheCrossTangentPointsAlongValue)
 {
     const Surface3d s = wavySurface(10, 10);

@@ -15,6 +15,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
 namespace sculptline::manipulators {
@@ -183,6 +184,27 @@ TEST_F(StrokeInputTest, AStrokeThatLeavesThePlaneKeepsOneTimePerPoint)
     EXPECT_LT(s.points.size(), s.rayOrigins.size());
     EXPECT_EQ(s.times.size(), s.points.size());
     EXPECT_EQ(s.rayTimes.size(), s.rayOrigins.size());
+}
+
+TEST_F(StrokeInputTest, APixelsFootprintOnThePlaneIsTheStrokesResolution)
+{
+    // Given the orthographic view of 100 units over 600 pixels (1/6 unit per pixel, square pixels)
+    const SbViewportRegion viewport(800, 600);
+    // When a stroke is drawn on the plane facing the camera
+    drawLine(viewport, SbVec2s(200, 300), SbVec2s(600, 400), 40);
+    // Then one pixel is 1/6 unit on it
+    ASSERT_EQ(strokes_.size(), 1u);
+    FinishedStroke s = strokes_[0];
+    EXPECT_EQ(s.pixelRays.size(), s.rayOrigins.size());
+    EXPECT_NEAR(pixelFootprint(s), kViewHeight / 600.0, kTolerance);
+    // And on a plane tilted by 60 degrees about x the pixel's y step is stretched by 1/cos 60 = 2
+    const double c = std::cos(M_PI / 3.0), sn = std::sin(M_PI / 3.0);
+    reproject(s, model::PlaneFrame::fromNormal(Eigen::Vector3d::Zero(), Eigen::Vector3d(0, -sn, c), 100.0,
+                                               Eigen::Vector3d::UnitX()));
+    EXPECT_NEAR(pixelFootprint(s), 2.0 * kViewHeight / 600.0, kTolerance);
+    // A stroke without pixel rays (not from the pointer) has no known resolution
+    s.pixelRays.clear();
+    EXPECT_EQ(pixelFootprint(s), 0.0);
 }
 
 TEST_F(StrokeInputTest, DisabledInputDrawsNothing)

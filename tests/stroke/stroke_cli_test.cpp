@@ -52,12 +52,32 @@ TEST(StrokeCli, GivenStroke_WhenFit_ThenCurveCornersSamplesAndErrorWithinToleran
     EXPECT_GE(o["samples"].size(), 4u);
     EXPECT_EQ(o["tolerance"], 0.8);
     EXPECT_LE(o["max_error"].get<double>(), 0.8);
+    ASSERT_TRUE(o["dropped_samples"].is_array());  // no hook, no loop: nothing dropped
+    EXPECT_TRUE(o["dropped_samples"].empty());
     EXPECT_TRUE(o.contains("elapsed_ms"));
     EXPECT_EQ(o["curve"]["points"][0].size(), 2u);  // a 2D stroke gives 2D points
 }
 
+// "resolution": the pitch the samples are quantized to; the default tolerance is at least that.
+TEST(StrokeCli, GivenResolution_WhenFit_ThenTheToleranceIsAtLeastTheResolution)
+{
+    const std::string stroke = strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 80, 0}}, false));
+    const CliRun r = cli("fit", "{\"stroke\": " + stroke + ", \"resolution\": 2.5}");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json o = json::parse(r.out);
+    EXPECT_EQ(o["tolerance"], 2.5);  // above 0.5 % of the ~128-unit extent
+    EXPECT_LE(o["max_error"].get<double>(), 2.5);
+    const CliRun fine = cli("fit", "{\"stroke\": " + stroke + ", \"resolution\": 0.01}");
+    ASSERT_EQ(fine.status, 0) << fine.err;
+    const CliRun none = cli("fit", "{\"stroke\": " + stroke + "}");
+    ASSERT_EQ(none.status, 0) << none.err;
+    EXPECT_EQ(json::parse(fine.out)["tolerance"], json::parse(none.out)["tolerance"]);
+    EXPECT_EQ(json::parse(fine.out)["curve"], json::parse(none.out)["curve"]);
+}
+
 TEST(StrokeCli, GivenInvalidStrokes_ThenExit2NamingTheField)
 {
+    expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"resolution\": -1}", "resolution");
     expectInvalid("fit", "{\"stroke\": {\"points\": []}}", "stroke.points");
     expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1e999, 1]]}}", "stroke.points[1][0]");
     expectInvalid("fit", "{\"stroke\": {\"points\": [[2, 2], [2, 2], [2, 2]]}}", "stroke.points");

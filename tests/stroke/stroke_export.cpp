@@ -17,6 +17,11 @@ int main()
         {"flourish-200", drawWithSamples(flourishShape(300), 200, d)},
         {"flourish-1000", drawWithSamples(flourishShape(300), 1000, d)},
         {"s-curve", draw(sCurveShape(200), d)},
+        {"s-curve-clean", [&] {  // a steady hand on a precise tablet: 0.02 units of noise
+             DrawOptions clean = d;
+             clean.noise = 0.02;
+             return draw(sCurveShape(200), clean);
+         }()},
         {"spiral", draw(spiralShape(100, 2.5), d)},
         {"arc", draw(arcShape({0, 0, 0}, 100, 0.2, 2.5), d)},
         {"circle", draw(circleShape({0, 0, 0}, 80), d)},

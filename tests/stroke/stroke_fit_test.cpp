@@ -128,7 +128,14 @@ TEST(StrokeFit, GivenExplicitTolerance_WhenFitted_ThenItIsUsedAndTighterMeansMor
 
     EXPECT_EQ(a.tolerance, 2.0);
     EXPECT_EQ(b.tolerance, 0.2);
-    EXPECT_LE(maxDeviation(b.curve, b.conditioned.points), 0.2 * (1 + 1e-9));
+    // The tolerance bounds the drawn samples (no sample of this spiral is dropped), not the smoothed
+    // points: those lie up to the smoothing shift from the drawn ones, on either side of the curve.
+    // fit_checks.h's dense polyline over-reports a distance by up to ~4e-3 here (its sagitta);
+    // maxError is the exact projection.
+    constexpr double kDensePolylineSlack = 1e-2;
+    EXPECT_TRUE(b.dropped.empty());
+    EXPECT_LE(b.maxError, 0.2);
+    EXPECT_LE(maxDeviation(b.curve, s.points), 0.2 + kDensePolylineSlack);
     EXPECT_GT(b.curve.pointCount(), a.curve.pointCount());
 }
 

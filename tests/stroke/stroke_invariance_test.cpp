@@ -69,17 +69,27 @@ TEST(StrokeInvariance, GivenSimilarityTransforms_WhenFitted_ThenSameCornersCount
 
 TEST(StrokeInvariance, GivenReversedDrawing_WhenFitted_ThenSameCornersAndCurveWithinTolerance)
 {
+    // The fit holds every drawn sample within the tolerance. At the default tolerance (0.5 % of
+    // the extent: 0.71 on the square, 2.8 sigma) the count is then set by the few noise excursions
+    // beyond ~2.5 sigma, which the error-driven insertion meets in a different order when the
+    // drawing is reversed (measured: square 16 forward, 23 reversed). The symmetry of the fit itself
+    // is compared at a tolerance above the excursions: 4 sigma, which 250 Gaussian draws exceed
+    // with probability ~1.5 % per coordinate.
+    constexpr double kNoise = 0.25;
+    constexpr double kAboveNoise = 4.0 * kNoise;
     for (const Shape& shape : shapes()) {
         DrawOptions d;
-        d.noise = 0.25;
+        d.noise = kNoise;
         const Stroke s = draw(shape, d);
         Stroke rev = s;
         std::reverse(rev.points.begin(), rev.points.end());
         const double end = s.times.back();
         for (size_t i = 0; i < s.times.size(); ++i) rev.times[i] = end - s.times[s.times.size() - 1 - i];
 
-        const FitResult a = fitStroke(s);
-        const FitResult b = fitStroke(rev);
+        FitOptions o;
+        o.tolerance = kAboveNoise;
+        const FitResult a = fitStroke(s, o);
+        const FitResult b = fitStroke(rev, o);
 
         ASSERT_EQ(a.corners.size(), b.corners.size());
         for (size_t k = 0; k < a.corners.size(); ++k) {

@@ -164,7 +164,11 @@ TEST(StrokeRobustness, Given3DStroke_ThenFitIn3D)
     }
     const FitResult r = fitStroke(s);
     EXPECT_TRUE(r.converged);
-    EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+    // The tolerance bounds the drawn samples (none dropped here), not the smoothed points; the
+    // dense polyline of fit_checks.h over-reports by its sagitta (< 1e-2 on this 630-unit helix).
+    constexpr double kDensePolylineSlack = 1e-2;
+    EXPECT_TRUE(r.dropped.empty());
+    EXPECT_LE(maxDeviation(r.curve, s.points), r.tolerance + kDensePolylineSlack);
     EXPECT_NEAR(r.curve.evaluate(r.curve.domainEnd()).z(), s.points.back().z(), 1e-9);
 }
 
