@@ -25,7 +25,7 @@ Reference ReferenceSet::load(const QString& path)
 {
     const QString absolute = QFileInfo(path).absoluteFilePath();
     const scene::ImportedIv imported = scene::importIvFile(absolute.toStdString());
-    return {absolute, imported.root, QString::fromStdString(scene::describe(imported)), QString()};
+    return {absolute, imported.root, QString::fromStdString(scene::describe(imported)), QString(), QString()};
 }
 
 QStringList ReferenceSet::restore(const std::vector<model::ReferenceSpec>& specs, const QString& documentFolder)
