@@ -1,5 +1,6 @@
 #include "solvers/deformation/constraint_geometry.h"
 
+#include "solvers/bspline/arc_length.h"
 #include "solvers/bspline/geometry_error.h"
 #include "solvers/math_constants.h"
 
@@ -143,28 +144,14 @@ std::vector<double> uniformParameters(double t0, double t1, int m)
 // domain and made the collocation swing the net: the fish's nose 4.8 -> 9.8 mm).
 std::vector<double> arcLengthParameters(const BSplineCurve<3>& c, int m)
 {
-    constexpr int kTable = 512;  // chords of a cubic with a few spans: length to ~1e-5 relative
-    const double t0 = c.domainStart(), t1 = c.domainEnd();
-    std::vector<double> t(kTable + 1), s(kTable + 1, 0.0);
-    Eigen::Vector3d prev = c.evaluate(t0);
-    t[0] = t0;
-    for (int i = 1; i <= kTable; ++i) {
-        t[static_cast<size_t>(i)] = i == kTable ? t1 : t0 + (t1 - t0) * i / kTable;
-        const Eigen::Vector3d p = c.evaluate(t[static_cast<size_t>(i)]);
-        s[static_cast<size_t>(i)] = s[static_cast<size_t>(i - 1)] + (p - prev).norm();
-        prev = p;
-    }
-    const double length = s.back();
-    if (!(length > 0.0) || !std::isfinite(length)) return uniformParameters(t0, t1, m);
+    const ArcLengthParameterization<3> arc(c);
+    const double length = arc.totalLength();
+    if (!(length > 0.0) || !std::isfinite(length)) return uniformParameters(c.domainStart(), c.domainEnd(), m);
     std::vector<double> out(static_cast<size_t>(m));
     for (int k = 0; k < m; ++k) {
-        const double want = m == 1 ? 0.5 * length : length * k / (m - 1);
-        if (m > 1 && k == 0) { out[0] = t0; continue; }
-        if (m > 1 && k == m - 1) { out[static_cast<size_t>(k)] = t1; continue; }
-        const size_t j = static_cast<size_t>(std::lower_bound(s.begin() + 1, s.end(), want) - s.begin());
-        const double ds = s[j] - s[j - 1];
-        const double a = ds > 0.0 ? (want - s[j - 1]) / ds : 0.0;
-        out[static_cast<size_t>(k)] = t[j - 1] + a * (t[j] - t[j - 1]);
+        if (m > 1 && k == 0) out[0] = c.domainStart();
+        else if (m > 1 && k == m - 1) out[static_cast<size_t>(k)] = c.domainEnd();
+        else out[static_cast<size_t>(k)] = arc.parameterAt(m == 1 ? 0.5 * length : length * k / (m - 1));
     }
     return out;
 }
