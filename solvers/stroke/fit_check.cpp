@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace sculptline::solvers::stroke {
 namespace {
@@ -160,11 +161,19 @@ double projectGlobal(const PowerCurve& c, const Polyline& pl, const Vec3& x, dou
         const double dl = j > 0 ? d[j - 1] : (pl.closed ? d[n - 1] : std::numeric_limits<double>::infinity());
         const double dr = j + 1 < n ? d[j + 1] : (pl.closed ? d[0] : std::numeric_limits<double>::infinity());
         if (d[j] > dl || d[j] > dr) continue;
-        double fu = pl.u[j];
-        const double e = refineLocal(c, x, pl.before(j, T), pl.after(j, T), pl.u[j], &fu);
-        if (e < best) {
-            best = e;
-            if (foot) *foot = c.wrap(fu);
+        // Each side of the point on its own: the point may be a C0 corner (every span starts a
+        // polyline point), where the distance has a minimum on either side and the derivative
+        // taken at the corner belongs to one side only (a sample on the side before a corner was
+        // measured 0.47 against 0.004 when both sides shared one bracket). Each side is one span's
+        // polyline segment, started from its middle.
+        for (const auto& [lo, hi] : {std::pair{pl.before(j, T), pl.u[j]}, std::pair{pl.u[j], pl.after(j, T)}}) {
+            if (!(hi > lo)) continue;
+            double fu = pl.u[j];
+            const double e = refineLocal(c, x, lo, hi, 0.5 * (lo + hi), &fu);
+            if (e < best) {
+                best = e;
+                if (foot) *foot = c.wrap(fu);
+            }
         }
     }
     return best;

@@ -535,7 +535,13 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         if (!added) break;
         err.resize(S.size());
     }
-    if (res.iterations > opt.maxIterations) res.maxError = measureAll(s, in, S, u, opt.tolerance);
+    if (res.iterations > opt.maxIterations) {
+        // The rounds ran out after a round changed the breaks (insertKnots) or the samples: the
+        // spline last solved (and its power form) belongs to the previous ones. Solve it for the
+        // current breaks and samples before measuring, so that curve, knots and samples agree.
+        solve(s, X, S, u, opt.fairing);
+        res.maxError = measureAll(s, in, S, u, opt.tolerance);
+    }
     // The last round of insertions may have overshot (a knot fixes its neighbours' spans too), and
     // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal),
     // keeping a removal when the refit stays within tolerance at every point and chord. Open

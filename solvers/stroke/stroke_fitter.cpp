@@ -381,14 +381,24 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     }
     // Dropped samples the curve passes within the tolerance of (most of a loop's overshoot runs
     // along the loop's start) are not dropped after all.
+    // measureSamples is exact only for the worst of the samples it measures; the others get upper
+    // bounds. So the worst of the still-dropped is measured exactly, and dropped if beyond the
+    // tolerance, until the worst left is within it: those left are then within it too, and their
+    // exact maximum joins max_error. One measure per sample that stays dropped.
     if (!cs.dropped.empty()) {
-        std::vector<char> droppedOnly(stroke.points.size(), 0);
-        for (int i : cs.dropped) droppedOnly[static_cast<size_t>(i)] = 1;
-        const SampleDeviation dev = measureSamples(fit.curve, stroke.points, droppedOnly, kCheckSpacingShare * res.tolerance);
-        for (int i : cs.dropped) {
-            if (dev.bound[static_cast<size_t>(i)] > res.tolerance) res.dropped.push_back(i);
-            else res.maxError = std::max(res.maxError, dev.bound[static_cast<size_t>(i)]);
+        std::vector<char> candidates(stroke.points.size(), 0);
+        for (int i : cs.dropped) candidates[static_cast<size_t>(i)] = 1;
+        for (size_t left = cs.dropped.size(); left > 0; --left) {
+            const SampleDeviation dev = measureSamples(fit.curve, stroke.points, candidates, kCheckSpacingShare * res.tolerance);
+            if (dev.worst < 0) break;
+            if (dev.maxError <= res.tolerance) {
+                res.maxError = std::max(res.maxError, dev.maxError);
+                break;
+            }
+            res.dropped.push_back(dev.worst);
+            candidates[static_cast<size_t>(dev.worst)] = 0;
         }
+        std::sort(res.dropped.begin(), res.dropped.end());
     }
     res.curve = std::move(fit.curve);
     res.samples = std::move(fit.samples);

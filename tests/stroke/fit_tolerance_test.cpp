@@ -295,6 +295,20 @@ TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolyl
     }
 }
 
+// A sample just before a C0 corner whose nearest polyline point is the corner itself: the curve's
+// derivative at the corner is the next leg's, so one Newton bracket around the corner searched only
+// that leg and reported the distance to the corner (a closed square's seam: 0.47 against 0.004).
+TEST(FitTolerance, GivenSampleBesideACorner_WhenMeasured_ThenTheNearerLegFound)
+{
+    // An L: three units along x, a corner (triple knot) at (3, 0), three units up.
+    const solvers::Curve3d c(3, {0, 0, 0, 0, 1, 1, 1, 2, 2, 2, 2},
+                             {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0), Vec3(3, 2, 0), Vec3(3, 3, 0)});
+    for (const Vec3& x : {Vec3(2.7, 0.001, 0), Vec3(2.7, -0.001, 0), Vec3(2.999, 0.3, 0), Vec3(3.001, 0.3, 0)}) {
+        const SampleDeviation d = measureSamples(c, {x}, {}, 1.0);  // polyline points 1 apart: the corner is nearest
+        EXPECT_NEAR(d.maxError, 0.001, 1e-12) << x.transpose();
+    }
+}
+
 TEST(FitTolerance, GivenBadCheckInput_WhenMeasured_ThenClearError)
 {
     const solvers::Curve3d c(3, {0, 0, 0, 0, 1, 1, 1, 1}, {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(3, 0, 0)});
