@@ -70,6 +70,62 @@ typename BSplineSurface<Dim>::Point BSplineSurface<Dim>::evaluate(double u, doub
 }
 
 template <int Dim>
+std::vector<typename BSplineSurface<Dim>::Point> BSplineSurface<Dim>::evaluateGrid(const std::vector<double>& us,
+                                                                                 const std::vector<double>& vs) const
+{
+    struct Basis {
+        int span = 0;
+        double N[kMaxDegree + 1] = {};
+    };
+    auto bases = [this](const std::vector<double>& ts, int d) {
+        std::vector<Basis> out(ts.size());
+        const Direction dir = d == 0 ? Direction::U : Direction::V;
+        for (size_t k = 0; k < ts.size(); ++k) {
+            if (!std::isfinite(ts[k])) throw GeometryError("params: not a finite number");
+            const double t = std::clamp(ts[k], domainStart(dir), domainEnd(dir));
+            out[k].span = findSpan(degree_[d], knots_[d], t);
+            basisFunctions(out[k].span, t, degree_[d], knots_[d], out[k].N);
+        }
+        return out;
+    };
+    const std::vector<Basis> bu = bases(us, 0), bv = bases(vs, 1);
+    const int p = degree_[0], q = degree_[1];
+    const size_t nV = vs.size();
+    // The tensor product in two passes (The NURBS Book §3.4 in homogeneous coordinates): each
+    // control row contracted with the v basis at every v parameter, then (p + 1) of those rows with
+    // the u basis at each u parameter: (q + 1) products per row and v, and (p + 1) per point,
+    // instead of (p + 1)(q + 1) per point.
+    using Homogeneous = Eigen::Matrix<double, Dim + 1, 1>;
+    std::vector<Homogeneous> rows(static_cast<size_t>(count_[0]) * nV, Homogeneous::Zero());
+    const bool rational = isRational();
+    for (int i = 0; i < count_[0]; ++i) {
+        const Point* P = points_.data() + static_cast<size_t>(i) * count_[1];
+        const double* W = rational ? weights_.data() + static_cast<size_t>(i) * count_[1] : nullptr;
+        Homogeneous* R = rows.data() + static_cast<size_t>(i) * nV;
+        for (size_t b = 0; b < nV; ++b) {
+            Homogeneous h = Homogeneous::Zero();
+            for (int c = 0; c <= q; ++c) {
+                const int j = bv[b].span - q + c;
+                const double f = bv[b].N[c] * (W ? W[j] : 1.0);
+                h.template head<Dim>() += f * P[j];
+                h[Dim] += f;
+            }
+            R[b] = h;
+        }
+    }
+    std::vector<Point> out;
+    out.reserve(us.size() * nV);
+    for (const Basis& a : bu) {
+        for (size_t b = 0; b < nV; ++b) {
+            Homogeneous h = Homogeneous::Zero();
+            for (int r = 0; r <= p; ++r) h += a.N[r] * rows[static_cast<size_t>(a.span - p + r) * nV + b];
+            out.push_back(h.template head<Dim>() / h[Dim]);
+        }
+    }
+    return out;
+}
+
+template <int Dim>
 std::vector<std::vector<typename BSplineSurface<Dim>::Point>> BSplineSurface<Dim>::derivatives(double u, double v,
                                                                                               int order) const
 {

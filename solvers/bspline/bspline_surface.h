@@ -41,6 +41,10 @@ public:
     double domainEnd(Direction d) const { return knots(d)[count(d)]; }
 
     Point evaluate(double u, double v) const;
+    /// evaluate(us[a], vs[b]) for every pair, at index a * vs.size() + b (to round-off): each
+    /// parameter's span and basis functions are found once, and the control rows are contracted in
+    /// v once per v parameter, so a point costs p + 1 products instead of (p + 1)(q + 1).
+    std::vector<Point> evaluateGrid(const std::vector<double>& us, const std::vector<double>& vs) const;
     /// result[k][l] = d^(k+l) S / du^k dv^l for k + l <= order (entries with k + l > order are zero).
     /// The NURBS Book A3.6 on homogeneous points, then A4.4 for rational surfaces.
     std::vector<std::vector<Point>> derivatives(double u, double v, int order) const;

@@ -88,6 +88,10 @@ private:
     // Per cell (i, j) between grid lines i, i+1 and j, j+1 (index i * (vs_.size() - 1) + j): a
     // box that holds the cell's patch (its nine sample points' box, padded by their bulge).
     std::vector<Eigen::Vector3d> cellLow_, cellHigh_;
+    // Blocks of kBlockCells x kBlockCells cells (index bi * blockCountV_ + bj) with the box of their
+    // cells' boxes: a point's search tests the blocks and only the cells of blocks that can be nearer.
+    int blockCountV_ = 0;
+    std::vector<Eigen::Vector3d> blockLow_, blockHigh_;
     std::vector<CurveProjector<3>> boundaries_;
     std::vector<std::pair<int, double>> boundaryParams_;  // (fixed direction 0:u fixed / 1:v fixed, value)
 };

@@ -84,6 +84,24 @@ TEST(Surface, DerivativesMatchFiniteDifferences)
         }
 }
 
+TEST(Surface, GridEvaluationIsPointwiseEvaluation)
+{
+    // A rational net with uneven knots, parameters on knots, inside spans, beyond the domain
+    // (clamped) and repeated.
+    const Surface3d rational = wavy();
+    const Surface3d plain(3, 2, rational.knotsU(), rational.knotsV(), rational.countU(), rational.countV(), rational.points());
+    const std::vector<double> us = {-0.5, 0.0, 0.3, 0.8, 0.8, 1.2, 2.0, 2.5};
+    const std::vector<double> vs = {-1.0, -0.2, 0.5, 0.75, 1.0, 2.9, 3.0};
+    for (const Surface3d* s : {&rational, &plain}) {
+        const std::vector<Eigen::Vector3d> grid = s->evaluateGrid(us, vs);
+        ASSERT_EQ(grid.size(), us.size() * vs.size());
+        for (size_t a = 0; a < us.size(); ++a)
+            for (size_t b = 0; b < vs.size(); ++b)
+                EXPECT_LE((grid[a * vs.size() + b] - s->evaluate(us[a], vs[b])).norm(), kExact) << us[a] << ", " << vs[b];
+    }
+    EXPECT_THROW(rational.evaluateGrid({0.5, std::nan("")}, {0.5}), GeometryError);
+}
+
 TEST(Surface, EvaluationAtCornersIsTheCornerControlPoints)
 {
     const Surface3d s = wavy();
