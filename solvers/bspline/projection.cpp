@@ -28,6 +28,13 @@ constexpr double kCellBulge = 2.0;
 // ~2,000 block boxes and the cells of the few near blocks instead of every cell box.
 constexpr size_t kBlockCells = 8;
 
+// The cell search's budget per point: the nearest-bound cells searched at most. A fitted or
+// sculpted surface leaves a handful of cells whose box is nearer than the grid's best (the boat's
+// folded last section: a few); a net with a wild control point (a fuzzer's 6.7e32 among unit
+// spacings) makes every cell's box huge and every cell a candidate, 576 cells x 5 Newton runs per
+// point, 6 s for one incidence input under ASan. Beyond the budget the best point found is kept.
+constexpr size_t kMaxCellSearches = 64;
+
 // Surface Newton stops once a step moves (u, v) by less than this share of the domain's width in
 // each direction: converged to round-off (the point moves by |S_u| times that), where the line
 // search would otherwise keep halving steps of 1e-13 for up to 40 evaluations each.
@@ -345,6 +352,8 @@ SurfaceProjection SurfaceProjector::project(const Eigen::Vector3d& x) const
         }
     }
     std::sort(cells.begin(), cells.end());
+    // At most kMaxCellSearches cells, nearest bound first (see there).
+    if (cells.size() > kMaxCellSearches) cells.resize(kMaxCellSearches);
     for (const auto& [lower, k] : cells) {
         if (!(lower < best.distance)) break;
         const int i = k / (nv - 1), j = k % (nv - 1);
