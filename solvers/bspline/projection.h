@@ -80,7 +80,9 @@ public:
 
 private:
     // Newton from (u, v) kept inside the box [ua, ub] x [va, vb].
-    SurfaceProjection newton(const Eigen::Vector3d& x, double u, double v, double ua, double ub, double va, double vb) const;
+    // *budget (when given) counts down the surface evaluations; Newton stops when it runs out.
+    SurfaceProjection newton(const Eigen::Vector3d& x, double u, double v, double ua, double ub, double va, double vb,
+                             long* budget = nullptr) const;
 
     BSplineSurface<3> surface_;
     std::vector<double> us_, vs_;
