@@ -11,7 +11,15 @@ namespace sculptline::solvers::stroke {
 /// A symmetric band matrix stored by its lower band: entry (i, i - d), d = 0..bandwidth.
 class BandMatrix {
 public:
-    BandMatrix(int size, int bandwidth) : n_(size), w_(bandwidth), a_(static_cast<size_t>(size) * (bandwidth + 1), 0.0) {}
+    BandMatrix() = default;
+    BandMatrix(int size, int bandwidth) { reset(size, bandwidth); }
+    /// Zero matrix of this size and bandwidth, reusing the storage.
+    void reset(int size, int bandwidth)
+    {
+        n_ = size;
+        w_ = bandwidth;
+        a_.assign(static_cast<size_t>(size) * (bandwidth + 1), 0.0);
+    }
     int size() const { return n_; }
     int bandwidth() const { return w_; }
     /// Entry (i, j) of the lower triangle, |i - j| <= bandwidth, j <= i.
@@ -29,8 +37,8 @@ public:
     void solveInPlace(std::vector<Eigen::Vector3d>& b) const;
 
 private:
-    int n_;
-    int w_;
+    int n_ = 0;
+    int w_ = 0;
     std::vector<double> a_;
 };
 

@@ -142,8 +142,11 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
     const int nFree = nCtrl - 2;
     const Vec3 first = X[S.front()], last = X[S.back()];
     const auto fixedPoint = [&](int c) -> const Vec3* { return c == 0 ? &first : (c == nCtrl - 1 ? &last : nullptr); };
-    BandMatrix a(nFree, kDegree);
-    std::vector<Vec3> b(static_cast<size_t>(nFree), Vec3::Zero());
+    // Storage kept between solves, as solve()'s sums.
+    thread_local BandMatrix a;
+    thread_local std::vector<Vec3> b;
+    a.reset(nFree, kDegree);
+    b.assign(static_cast<size_t>(nFree), Vec3::Zero());
     for (int i = 0; i < s.spanCount(); ++i) {
         const SpanSums& t = sums[i];
         for (int q = 0; q <= kDegree; ++q) {
@@ -230,7 +233,9 @@ void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, con
         s.buildPowerForm();
         return;
     }
-    std::vector<SpanSums> sums;
+    // The sums' storage is kept between solves (a fit solves a few dozen times; spanSums zeroes
+    // the spans it sums, and solveOpenFromSums reads the first spanCount() only).
+    thread_local std::vector<SpanSums> sums;
     spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
     solveOpenFromSums(s, X, S, sums, fairing);
 }

@@ -52,14 +52,16 @@ struct Spline {
         // a closed curve's end is its start.
         const int spans = spanCount();
         coef.resize(spans);
-        std::vector<std::array<Vec3, 3>> at(spans + 1);
+        thread_local std::vector<std::array<Vec3, 3>> at;  // storage kept between calls
+        at.resize(spans + 1);
         for (int j = 0; j <= spans; ++j) {
             if (j == spans && closed) {
                 at[j] = at[0];
                 break;
             }
             const double a = j < spans ? breaks[j] : 1.0;
-            const int span = j < spans ? findSpan(kDegree, knots, a) : static_cast<int>(knots.size()) - kDegree - 2;
+            // The open knot vector is 0,0,0,b_0,..,b_s,1,1,1 with distinct breaks: b_j starts span j + p.
+            const int span = j == spans ? static_cast<int>(knots.size()) - kDegree - 2 : closed ? findSpan(kDegree, knots, a) : j + kDegree;
             const BasisDerivatives<kDegree, 2> b = evaluateBasis<kDegree, 2>(knots, span, a);
             for (int k = 0; k < 3; ++k) at[j][k].setZero();
             for (int q = 0; q <= kDegree; ++q) {
