@@ -14,6 +14,7 @@
 
 #include <malloc.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -135,11 +136,16 @@ BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 // set: before main, the child synthesizes the stroke (untimed), hands the heap pages the synthesis
 // freed back to the system (malloc_trim: a process that read the stroke from a file or a tablet
 // has not touched them either), times one fitStroke, prints the microseconds and exits
-// (coldFitChild below). Process start-up is outside the time.
-double spawnColdFit(int c)
+// (coldFitChild below) with the page faults the fit took (getrusage's minor faults: fresh heap
+// pages, most of a cold fit's extra time on a virtual machine). Process start-up is outside the time.
+struct ColdFit {
+    double us = -1.0;  // negative: the child failed
+    long faults = 0;
+};
+ColdFit spawnColdFit(int c)
 {
     int fd[2];
-    if (pipe(fd) != 0) return -1.0;
+    if (pipe(fd) != 0) return {};
     posix_spawn_file_actions_t fa;
     posix_spawn_file_actions_init(&fa);
     posix_spawn_file_actions_adddup2(&fa, fd[1], STDOUT_FILENO);
@@ -160,10 +166,12 @@ double spawnColdFit(int c)
     char buf[64];
     for (ssize_t n; (n = read(fd[0], buf, sizeof buf)) > 0;) out.append(buf, static_cast<size_t>(n));
     close(fd[0]);
-    if (rc != 0) return -1.0;
+    if (rc != 0) return {};
     int status = 0;
     waitpid(pid, &status, 0);
-    return WIFEXITED(status) && WEXITSTATUS(status) == 0 && !out.empty() ? std::atof(out.c_str()) : -1.0;
+    ColdFit f;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || std::sscanf(out.c_str(), "%lf %ld", &f.us, &f.faults) != 2) return {};
+    return f;
 }
 
 [[maybe_unused]] const bool coldFitChild = [] {
@@ -173,11 +181,14 @@ double spawnColdFit(int c)
 #ifdef __GLIBC__
     malloc_trim(0);
 #endif
+    rusage u0{}, u1{};
+    getrusage(RUSAGE_SELF, &u0);
     const auto t0 = std::chrono::steady_clock::now();
     const FitResult r = fitStroke(s);
     const auto t1 = std::chrono::steady_clock::now();
+    getrusage(RUSAGE_SELF, &u1);
     benchmark::DoNotOptimize(r.curve.points().data());
-    std::printf("%.3f\n", std::chrono::duration<double, std::micro>(t1 - t0).count());
+    std::printf("%.3f %ld\n", std::chrono::duration<double, std::micro>(t1 - t0).count(), u1.ru_minflt - u0.ru_minflt);
     std::fflush(stdout);
     std::_Exit(0);
 }();
@@ -187,20 +198,23 @@ double spawnColdFit(int c)
 void BM_StrokeFitCold(benchmark::State& state)
 {
     const int c = static_cast<int>(state.range(0));
-    std::vector<double> times;
+    std::vector<double> times, faults;
     for (auto _ : state) {
-        const double us = spawnColdFit(c);
-        if (us < 0.0) {
+        const ColdFit f = spawnColdFit(c);
+        if (f.us < 0.0) {
             state.SkipWithError("cold-fit child failed");
             break;
         }
-        times.push_back(us);
-        state.SetIterationTime(us * 1e-6);
+        times.push_back(f.us);
+        faults.push_back(static_cast<double>(f.faults));
+        state.SetIterationTime(f.us * 1e-6);
     }
     if (times.empty()) return;
     std::sort(times.begin(), times.end());
+    std::sort(faults.begin(), faults.end());
     state.counters["median_us"] = times[times.size() / 2];
     state.counters["min_us"] = times.front();
+    state.counters["page_faults"] = faults[faults.size() / 2];  // median
     state.SetLabel(c == 0 ? "clean, 1000 samples" : "slow hand with jitter, 1000 samples");
 }
 BENCHMARK(BM_StrokeFitCold)->Arg(0)->Arg(1)->UseManualTime()->Iterations(41)->Unit(benchmark::kMicrosecond);
