@@ -248,6 +248,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // 21 control points; at 0.75 one round of 5 rows reaches them (BM_StrokeFit/200 194 -> 147 us).
     constexpr double kRowShare = 0.75;
     constexpr int kRowRounds = 4;
+    // Rows per control point of a search on evenly spread rows (see `search` below): with fewer, a
+    // count near the dynamic threshold's row count interpolates its rows and swings between them
+    // (a sparse real pigtail: 10 rows for 47 samples, 9 control points fit the rows within 0.11
+    // and miss a raw sample by 16.7). Two, the least that leaves each control point over-determined;
+    // three gave no more on scripts/compare_splprep.py (minimize mode 25 of 28 strokes against 27).
+    constexpr int kDenseRowsPerPoint = 2;
     SplineFitOptions sopt = options.spline;
     sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
     FitPass fit;
@@ -280,9 +286,19 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         alt.knotPlacement = KnotPlacement::Averaged;
         alt.averagedCorrections = kAveragedCorrections;
         alt.tolerance = res.tolerance;
+        int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
+        std::vector<int> dense;
         auto trial = [&](int count, const std::vector<int>& rows) {
             alt.averagedControlPoints = count;
-            return fitConditioned(cs, fitPoints, corners, rows, alt);
+            const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
+            if (rows.size() >= want || want < 2) return fitConditioned(cs, fitPoints, corners, rows, alt);
+            // The rows given and `want` conditioned points spread evenly over the stroke's indices.
+            dense = rows;
+            for (size_t k = 0; k < want; ++k)
+                dense.push_back(static_cast<int>(std::lround(static_cast<double>(k) * (cs.size() - 1) / static_cast<double>(want - 1))));
+            std::sort(dense.begin(), dense.end());
+            dense.erase(std::unique(dense.begin(), dense.end()), dense.end());
+            return fitConditioned(cs, fitPoints, corners, dense, alt);
         };
         auto fits = [&](const FitPass& a) { return a.maxError <= res.tolerance; };
         // A count whose samples fit is taken when every kept raw sample is within the tolerance too.
@@ -302,7 +318,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             if (!fits(a)) return false;
             SampleDeviation dev;
             if (accept(a, dev)) return true;
-            const int count = alt.averagedControlPoints;
+            const int count = a.curve.pointCount();  // (alt.averagedControlPoints is the last count tried)
             std::vector<int> rows = samples;
             for (int round = 0; round < kRowRounds; ++round) {
                 const size_t before = rows.size();
@@ -329,6 +345,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // default's search (the error does not fall strictly with the count).
             refine(kMaxRefinements);
             const int ceiling = fit.curve.pointCount() - (res.converged ? 1 : 0);
+            rowsPer = kDenseRowsPerPoint;
             for (int count = 4; count <= ceiling && !found; ++count) {
                 FitPass a = trial(count, samples);
                 found = take(a);
@@ -345,29 +362,38 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // (more than kMaxClimbSteps predictions fall short: flourish-200 needs 3, the Fig. 4-3
             // hairpin climbs past the error-driven count, 22 against 16) averaged knots do not
             // suit the stroke and the error-driven fit is taken instead.
+            // When the search on the dynamic threshold's rows finds nothing, it runs once more on
+            // evenly spread rows, kDenseRowsPerPoint per control point (a sparse real pigtail 26 ->
+            // 18 control points; the Fig. 4-3 hairpin still finds nothing and keeps its 14), before
+            // the error-driven fit. Not first: on flourish-200 those rows cost a control point (24
+            // against 21 with the climbs as they are, 22 with 5 climbs, which moved the hairpin to 20).
             constexpr int kFirstCount = 8;
             constexpr int kMaxClimbSteps = 3;
-            const int cap = std::max(4, static_cast<int>(samples.size()));  // interpolation beyond
-            int count = std::min(kFirstCount, cap), failed = 3;  // the largest count seen to miss
-            FitPass a = trial(count, samples);
-            for (int climb = 0; !fits(a) && count < cap && climb < kMaxClimbSteps; ++climb) {
-                failed = count;
-                const double spans = (count - 3) * std::pow(a.maxError / res.tolerance, 0.25);
-                count = std::min(cap, std::max(count + 1, 3 + static_cast<int>(std::ceil(spans))));
-                a = trial(count, samples);
-            }
-            while (fits(a) && count - 1 > failed) {
-                FitPass b = trial(count - 1, samples);
-                if (!fits(b)) break;
-                a = std::move(b);
-                --count;
-            }
-            for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
-                if (step > 0) {
-                    if (count > cap) break;
+            for (int pass = 0; pass < 2 && !found; ++pass) {
+                rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
+                // interpolation beyond
+                const int cap = std::max(4, rowsPer > 0 ? cs.size() / rowsPer : static_cast<int>(samples.size()));
+                int count = std::min(kFirstCount, cap), failed = 3;  // the largest count seen to miss
+                FitPass a = trial(count, samples);
+                for (int climb = 0; !fits(a) && count < cap && climb < kMaxClimbSteps; ++climb) {
+                    failed = count;
+                    const double spans = (count - 3) * std::pow(a.maxError / res.tolerance, 0.25);
+                    count = std::min(cap, std::max(count + 1, 3 + static_cast<int>(std::ceil(spans))));
                     a = trial(count, samples);
                 }
-                found = take(a);
+                while (fits(a) && count - 1 > failed) {
+                    FitPass b = trial(count - 1, samples);
+                    if (!fits(b)) break;
+                    a = std::move(b);
+                    --count;
+                }
+                for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
+                    if (step > 0) {
+                        if (count > cap) break;
+                        a = trial(count, samples);
+                    }
+                    found = take(a);
+                }
             }
         }
     }
