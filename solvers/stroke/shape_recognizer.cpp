@@ -259,6 +259,37 @@ QuadShape classifyQuad(const std::vector<Point2>& v, const RecognizeOptions& o)
     return q;
 }
 
+// RecognizeOptions::looseQuad: a quadrilateral that is convex, with every interior angle at least
+// `minAngle` (radians), at least three of whose vertices (sample indices `at`) lie within
+// `sameCorner` samples of a corner the detector found (`detected`) on a loop of `n` samples.
+bool looseQuadShape(const std::vector<Point2>& v, const std::vector<int>& at, const std::vector<int>& detected, int n,
+                    int sameCorner, double minAngle)
+{
+    if (v.size() != 4 || at.size() != 4) return false;
+    int sign = 0;
+    for (size_t i = 0; i < 4; ++i) {
+        const Point2 a = v[(i + 3) % 4] - v[i], b = v[(i + 1) % 4] - v[i];
+        const Point2 e0 = v[i] - v[(i + 3) % 4];
+        const double cross = e0.x() * b.y() - e0.y() * b.x();
+        const int s = cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+        if (s == 0 || (sign != 0 && s != sign)) return false;
+        sign = s;
+        if (a.norm() <= 0 || b.norm() <= 0) return false;
+        const double interior = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
+        if (interior < minAngle) return false;
+    }
+    int found = 0;
+    for (int k : at) {
+        bool near = false;
+        for (int d : detected) {
+            const int gap = std::abs(k - d);
+            near = near || std::min(gap, n - gap) <= sameCorner;
+        }
+        found += near;
+    }
+    return found >= 3;
+}
+
 // The rectangle (or square) a quad stands for: the quad's orientation, centred on its vertices'
 // centroid, half-sides the vertices' mean distances from the centre along each axis.
 struct RectangleFrame {
@@ -571,9 +602,10 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     // it by far more than minCornerTurn, and the two sides fit it where no arc does.
     // The residual of a loop's polygon (infinite without one), for the round shapes' corner test.
     double loopPolygonResidual = std::numeric_limits<double>::infinity();
-    const int inserted =
-        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle, o.shortEdge * g.extent,
-                       o.sampleSpacing > 0.0 ? 2 : 0);
+    const std::vector<int> detectedCorners = g.closed ? g.vertexIndex : std::vector<int>{};
+    const int sameCorner = o.sampleSpacing > 0.0 ? 2 : 0;
+    const int inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle,
+                                        o.shortEdge * g.extent, sameCorner);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon
         // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked
@@ -659,7 +691,12 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             // The orientation rule of ShapeKind: square on its sides, diamond on a corner; a shape
             // with equal sides is reported as a square rather than a rectangle.
             add(ShapeKind::Square, rectangular(true) * (q.axisAligned || !q.right ? 1.0 : 0.5));
-            add(ShapeKind::Rectangle, rectangular(false) * (q.equal ? 0.7 : 1.0));
+            // A skewed, sheared or tapered rectangle (looseQuad): the quad itself, scaled down.
+            const bool loose = o.looseQuad > 0.0 && !q.equal &&
+                               looseQuadShape(g.vertices, g.vertexIndex, detectedCorners,
+                                              static_cast<int>(g.points.size()), sameCorner, kPi / 3);
+            const double looseScore = loose ? score(residual, sigma) * o.looseQuad : 0.0;
+            add(ShapeKind::Rectangle, std::max(rectangular(false) * (q.equal ? 0.7 : 1.0), looseScore));
             // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
             // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
             add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));

@@ -278,3 +278,53 @@ TEST(ShapeRecognition, GivenASquareOvershotAlongItsFirstSide_WhenRecognized_Then
 
 }  // namespace
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+namespace {
+
+// RecognizeOptions::looseQuad: a rectangle drawn askew (sheared into a parallelogram, or tapered as
+// in perspective) strays from right angles by more than rightAngle, and the regular rectangle
+// misses it by a large share of the residual scale; it is still read as a rectangle by its own
+// quad, and without the rule it is a polyline.
+TEST(ShapeRecognition, GivenASkewedOrTaperedRectangle_WhenRecognizedWithLooseQuad_ThenARectangleAndWithoutItNot)
+{
+    const std::vector<std::pair<const char*, std::vector<Vec3>>> drawn = {
+        // sheared by 0.5: angles 63 and 117 degrees, sides 160 and 101
+        {"sheared", {{0, 0, 0}, {160, 0, 0}, {205, 90, 0}, {45, 90, 0}}},
+        // tapered: the top edge 80, the bottom 160, angles 66 and 114 degrees
+        {"tapered", {{0, 0, 0}, {160, 0, 0}, {120, 90, 0}, {40, 90, 0}}},
+    };
+    RecognizeOptions off;
+    off.looseQuad = 0.0;
+    for (const auto& [name, corners] : drawn) {
+        for (double a : {0.0, 0.7}) {
+            std::vector<Vec3> v = corners;
+            for (auto& p : v) p = rot(p, a);
+            DrawOptions d;
+            d.noise = 0.25;
+            const FitResult fit = fitStroke(draw(polygonShape(v, true), d));
+            const Recognition with = recognizeShape(fit);
+            const Recognition without = recognizeShape(fit, off);
+            auto describe = [](const Recognition& r) {
+                std::string s;
+                for (const auto& c : r.candidates)
+                    s += std::string(shapeName(c.kind)) + ":" + std::to_string(c.score) + " ";
+                return s;
+            };
+            EXPECT_EQ(with.kind, ShapeKind::Rectangle) << name << " rotated " << a << ": " << describe(with);
+            EXPECT_NE(without.kind, ShapeKind::Rectangle) << name << " rotated " << a << ": " << describe(without);
+            // Regularized as the regular rectangle: right angles.
+            if (with.kind == ShapeKind::Rectangle) {
+                ASSERT_EQ(with.polygon.size(), 4u);
+                for (int i = 0; i < 4; ++i) {
+                    const Point2 e0 = with.polygon[(i + 1) % 4] - with.polygon[i],
+                                 e1 = with.polygon[(i + 2) % 4] - with.polygon[(i + 1) % 4];
+                    EXPECT_NEAR(e0.dot(e1), 0.0, 1e-9 * e0.norm() * e1.norm()) << name;
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest

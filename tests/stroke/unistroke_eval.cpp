@@ -375,8 +375,16 @@ stroke::Stroke perturbStroke(const stroke::Stroke& s, const Perturbation& p)
     for (const auto& q : out.points) c += q;
     c /= double(out.points.size());
     const double a = p.rotateDeg * 3.14159265358979323846 / 180.0, ca = std::cos(a), sa = std::sin(a);
-    for (auto& q : out.points) {  // stretched, then rotated: a rectangle stays a rectangle
-        const Eigen::Vector3d d(p.aspect * (q.x() - c.x()), q.y() - c.y(), q.z() - c.z());
+    double ylo = c.y(), yhi = c.y();
+    for (const auto& q : out.points) {
+        ylo = std::min(ylo, q.y());
+        yhi = std::max(yhi, q.y());
+    }
+    const double height = yhi > ylo ? yhi - ylo : 1.0;
+    for (auto& q : out.points) {  // stretched (sheared, tapered), then rotated: a rectangle stays a rectangle
+        const double y = q.y() - c.y();
+        const double x = (q.x() - c.x()) * (1.0 - p.taper * y / height) + p.shear * y;
+        const Eigen::Vector3d d(p.aspect * x, y, q.z() - c.z());
         q = c + Eigen::Vector3d(ca * d.x() - sa * d.y(), sa * d.x() + ca * d.y(), d.z());
     }
     for (auto& t : out.times) t *= p.timeScale;

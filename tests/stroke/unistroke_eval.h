@@ -117,6 +117,13 @@ struct Perturbation {
     /// Drawn from a little before its start: a straight lead-in of this share of its length, on the
     /// line of its first 5 % (with extendShare: a loop begun and ended past the same corner).
     double leadInShare = 0;
+    /// Drawn sheared: x moved by this times the height above the centroid (a parallelogram; 0.3 leans
+    /// the sides by 17 degrees).
+    double shear = 0;
+    /// Drawn in perspective, tapered: x scaled about the centroid by 1 - taper * (y - centroid) / height,
+    /// so a rectangle's top edge is about 1 - taper/2 and its bottom edge 1 + taper/2 of its width (a
+    /// trapezoid).
+    double taper = 0;
 };
 solvers::stroke::Stroke perturbStroke(const solvers::stroke::Stroke& stroke, const Perturbation& p);
 

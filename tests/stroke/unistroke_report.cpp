@@ -7,6 +7,8 @@
 //   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
 //   unistroke-report --augment --loso ...      the same on s02-s06 and their perturbed copies
 //   unistroke-report --augment-rounded --loso ...  ... and copies with corners rounded (8 %, 12 %)
+//   unistroke-report --augment-drawn --loso ...  ... and copies drawn sheared (0.3, 0.5) and tapered
+//                                              (0.4, 0.7), as a hand draws a rectangle askew
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -14,7 +16,8 @@
 //                                              overshot and sped up (Perturbation): accuracy per gesture
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
-// crossingTail, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing).
+// crossingTail, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
+// looseQuad).
 // Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
 // held-out ones are not for tuning.
@@ -39,6 +42,7 @@ namespace {
 sculptline::solvers::stroke::RecognizeOptions gOptions;
 bool gAugment = false;
 bool gAugmentRounded = false;
+bool gAugmentDrawn = false;
 
 // The development recordings and, for each, the same stroke drawn otherwise as a person might
 // (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
@@ -54,6 +58,18 @@ std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
     if (gAugmentRounded) {  // --augment-rounded: also with corners rounded over 8 % and 12 % of the length
         all.push_back({0, 1, 0, 0, 1, 0, 0.08});
         all.push_back({0, 1, 0, 0, 1, 0, 0.12});
+    }
+    if (gAugmentDrawn) {  // --augment-drawn: also sheared 0.3 and 0.5, tapered 0.4 and 0.7 (Perturbation)
+        for (double shear : {0.3, 0.5}) {
+            st::Perturbation p;
+            p.shear = shear;
+            all.push_back(p);
+        }
+        for (double taper : {0.4, 0.7}) {
+            st::Perturbation p;
+            p.taper = taper;
+            all.push_back(p);
+        }
     }
     for (const auto& p : all)
         for (const auto& r : recs) {
@@ -93,6 +109,7 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "cornerRounding") o.cornerRounding = v;
     else if (k == "nearLoopHeading") o.nearLoopHeading = v;
     else if (k == "nearLoopGap") o.nearLoopGap = v;
+    else if (k == "looseQuad") o.looseQuad = v;
     else return false;
     return true;
 }
@@ -172,11 +189,13 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         o.regularize = false;
         // DUMP_SPACING=f: the stroke resampled at f times its sample spacing (--invariance).
         const double spacing = std::getenv("DUMP_SPACING") ? std::atof(std::getenv("DUMP_SPACING")) : 1.0;
-        // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare (--perturb-dev).
+        // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare,roundShare,keepEvery,
+        // leadInShare,shear,taper (--perturb-dev).
         st::Perturbation pert;
         if (const char* e = std::getenv("DUMP_PERTURB")) {
-            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare, &pert.overshootShare, &pert.timeScale,
-                        &pert.extendShare, &pert.roundShare, &pert.keepEvery, &pert.leadInShare);
+            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare,
+                        &pert.overshootShare, &pert.timeScale, &pert.extendShare, &pert.roundShare, &pert.keepEvery,
+                        &pert.leadInShare, &pert.shear, &pert.taper);
         }
         const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
         const sk::FitResult& fit = sr.fit;
@@ -332,6 +351,10 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"corners rounded 4 %", {0, 1, 0, 0, 1, 0, 0.04}},
         {"corners rounded 8 %", {0, 1, 0, 0, 1, 0, 0.08}},
         {"corners rounded 12 %", {0, 1, 0, 0, 1, 0, 0.12}},
+        {"sheared 0.3", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0.3}},
+        {"sheared 0.5", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0.5}},
+        {"tapered 0.4", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0.4}},
+        {"tapered 0.7", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0.7}},
         {"every 2nd sample", {0, 1, 0, 0, 1, 0, 0, 2}},
         {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
@@ -416,6 +439,8 @@ int main(int argc, char** argv)
             gAugment = true;
         } else if (!std::strcmp(argv[i], "--augment-rounded")) {  // ... and on copies with rounded corners
             gAugment = gAugmentRounded = true;
+        } else if (!std::strcmp(argv[i], "--augment-drawn")) {  // ... and on sheared and tapered copies
+            gAugment = gAugmentDrawn = true;
         } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
             const std::string k = argv[++i];
             std::vector<double> values;
@@ -439,9 +464,10 @@ int main(int argc, char** argv)
         } else if (!std::strcmp(argv[i], "--dump-dev") && i + 1 < argc) {
             dump(st::loadUnistrokes(dir, st::devSubjects()), argv[++i]);
             return 0;
-        }
-        else {
-            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] --loso OPTION V1,V2,..\n";
+        } else {
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt "
+                         "dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] "
+                         "[--augment-rounded] [--augment-drawn] --loso OPTION V1,V2,..\n";
             return 2;
         }
     }
