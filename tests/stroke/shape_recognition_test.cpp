@@ -276,12 +276,6 @@ TEST(ShapeRecognition, GivenASquareOvershotAlongItsFirstSide_WhenRecognized_Then
     EXPECT_EQ(r.recognition.kind, ShapeKind::Square);
 }
 
-}  // namespace
-}  // namespace sculptline::stroketest
-
-namespace sculptline::stroketest {
-namespace {
-
 // RecognizeOptions::looseQuad: a rectangle drawn askew (sheared into a parallelogram, or tapered as
 // in perspective) strays from right angles by more than rightAngle, and the regular rectangle
 // misses it by a large share of the residual scale; it is still read as a rectangle by its own
