@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/periodic.h"
 #include "solvers/stroke/features.h"
+#include "solvers/stroke/quad_shapes.h"
 #include "solvers/geometry/plane_fit.h"
 #include "solvers/math_constants.h"
 
@@ -15,7 +16,17 @@
 namespace sculptline::solvers::stroke {
 namespace {
 
+using detail::angleOf;
+using detail::classifyQuad;
+using detail::detectedVertices;
+using detail::QuadShape;
+using detail::regularDiamond;
+using detail::regularRectangle;
+using detail::roundedRectangleResidual;
+
 constexpr double kQuarterTurn = kPi / 2;
+// RecognizeOptions::looseQuad: the smallest interior angle of a quad read as a skewed rectangle.
+constexpr double kLooseQuadAngle = kPi / 3;
 
 Eigen::Vector3d lift(const StrokeGeometry& g, const Point2& p) { return g.origin + p.x() * g.axisU + p.y() * g.axisV; }
 
@@ -56,8 +67,6 @@ Curve3d polylineCurve(const StrokeGeometry& g, std::vector<Point2> v, bool close
     const Curve3d open(1, knots, pts);
     return closed ? closeLoop(open) : open;
 }
-
-double angleOf(const Point2& v) { return std::atan2(v.y(), v.x()); }
 
 // Unwrapped polar angles of the points around c: the total signed sweep.
 double sweep(const std::vector<Point2>& pts, const Point2& c)
@@ -219,146 +228,6 @@ std::vector<Point2> edgeLineVertices(const StrokeGeometry& g, double trim, doubl
 }
 
 double score(double residual, double scale) { return std::exp(-(residual / scale) * (residual / scale)); }
-
-// Orientation of a quadrilateral's edges modulo 90 degrees (average of 4 * edge angle, so that
-// opposite and adjacent edges reinforce).
-double quadOrientation(const std::vector<Point2>& v)
-{
-    Point2 acc = Point2::Zero();
-    for (size_t i = 0; i < v.size(); ++i) {
-        const Point2 e = v[(i + 1) % v.size()] - v[i];
-        const double a = 4.0 * angleOf(e);
-        acc += e.norm() * Point2(std::cos(a), std::sin(a));
-    }
-    return angleOf(acc) / 4.0;
-}
-
-struct QuadShape {
-    bool right = false, equal = false, axisAligned = false;
-};
-
-QuadShape classifyQuad(const std::vector<Point2>& v, const RecognizeOptions& o)
-{
-    QuadShape q;
-    double smin = 1e300, smax = 0, ssum = 0, worstAngle = 0;
-    for (size_t i = 0; i < 4; ++i) {
-        const Point2 a = v[(i + 3) % 4] - v[i], b = v[(i + 1) % 4] - v[i];
-        const double s = b.norm();
-        smin = std::min(smin, s);
-        smax = std::max(smax, s);
-        ssum += s;
-        const double ang = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
-        worstAngle = std::max(worstAngle, std::abs(ang - kQuarterTurn));
-    }
-    q.right = worstAngle <= o.rightAngle;
-    q.equal = (smax - smin) / (ssum / 4) <= o.equalSides;
-    // The one orientation-dependent test of the recognizer (ShapeKind): square vs diamond is decided
-    // by the sides' angle to the plane's axes, modulo 90 degrees. 0 = axis-aligned, pi/4 = on a corner.
-    const double orient = std::abs(quadOrientation(v));
-    q.axisAligned = orient < kPi / 8;
-    return q;
-}
-
-// RecognizeOptions::looseQuad: a quadrilateral that is convex, with every interior angle at least
-// `minAngle` (radians), at least three of whose vertices (sample indices `at`) lie within
-// `sameCorner` samples of a corner the detector found (`detected`) on a loop of `n` samples.
-bool looseQuadShape(const std::vector<Point2>& v, const std::vector<int>& at, const std::vector<int>& detected, int n,
-                    int sameCorner, double minAngle)
-{
-    if (v.size() != 4 || at.size() != 4) return false;
-    int sign = 0;
-    for (size_t i = 0; i < 4; ++i) {
-        const Point2 a = v[(i + 3) % 4] - v[i], b = v[(i + 1) % 4] - v[i];
-        const Point2 e0 = v[i] - v[(i + 3) % 4];
-        const double cross = e0.x() * b.y() - e0.y() * b.x();
-        const int s = cross > 0 ? 1 : (cross < 0 ? -1 : 0);
-        if (s == 0 || (sign != 0 && s != sign)) return false;
-        sign = s;
-        if (a.norm() <= 0 || b.norm() <= 0) return false;
-        const double interior = std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0));
-        if (interior < minAngle) return false;
-    }
-    int found = 0;
-    for (int k : at) {
-        bool near = false;
-        for (int d : detected) {
-            const int gap = std::abs(k - d);
-            near = near || std::min(gap, n - gap) <= sameCorner;
-        }
-        found += near;
-    }
-    return found >= 3;
-}
-
-// The rectangle (or square) a quad stands for: the quad's orientation, centred on its vertices'
-// centroid, half-sides the vertices' mean distances from the centre along each axis.
-struct RectangleFrame {
-    Point2 c, ux, uy;
-    double hx = 0.0, hy = 0.0;
-};
-
-RectangleFrame rectangleFrame(const std::vector<Point2>& v, bool square)
-{
-    const double th = quadOrientation(v);
-    RectangleFrame f;
-    f.ux = Point2(std::cos(th), std::sin(th));
-    f.uy = Point2(-f.ux.y(), f.ux.x());
-    f.c = Point2::Zero();
-    for (const auto& p : v) f.c += p / 4.0;
-    for (const auto& p : v) {
-        f.hx += std::abs((p - f.c).dot(f.ux)) / 4.0;
-        f.hy += std::abs((p - f.c).dot(f.uy)) / 4.0;
-    }
-    if (square) f.hx = f.hy = 0.5 * (f.hx + f.hy);
-    return f;
-}
-
-// Rectangle (or square) of rectangleFrame, one corner per vertex.
-std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square)
-{
-    const auto [c, ux, uy, hx, hy] = rectangleFrame(v, square);
-    std::vector<Point2> out;
-    for (const auto& p : v) {  // each vertex snaps to the corner in its quadrant: drawing order kept
-        const double sx = (p - c).dot(ux) >= 0 ? 1 : -1, sy = (p - c).dot(uy) >= 0 ? 1 : -1;
-        out.push_back(c + sx * hx * ux + sy * hy * uy);
-    }
-    return out;
-}
-
-// The largest distance of the points from the rectangle (square) of regularRectangle with its corners
-// rounded by the radius, among f * its shorter half-side for f = 0, 0.05, .. maxShare, that fits
-// closest (RecognizeOptions::cornerRounding). The rounded rectangle is the Minkowski sum of the
-// rectangle shrunk by the radius and a disc of that radius; distances are those to its outline.
-double roundedRectangleResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, bool square, double maxShare)
-{
-    const auto [c, ux, uy, hx, hy] = rectangleFrame(v, square);
-    double best = std::numeric_limits<double>::infinity();
-    const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));
-    for (int i = 0; i <= steps; ++i) {
-        const double r = 0.05 * i * std::min(hx, hy);
-        double worst = 0.0;
-        for (const auto& p : pts) {
-            const double qx = std::abs((p - c).dot(ux)) - (hx - r), qy = std::abs((p - c).dot(uy)) - (hy - r);
-            const double outside = std::hypot(std::max(qx, 0.0), std::max(qy, 0.0)) + std::min(std::max(qx, qy), 0.0);
-            worst = std::max(worst, std::abs(outside - r));
-            if (worst >= best) break;
-        }
-        best = std::min(best, worst);
-    }
-    return best;
-}
-
-// Rhombus: diagonals through the centroid, perpendicular, with the measured half-lengths.
-std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
-{
-    Point2 c = Point2::Zero();
-    for (const auto& p : v) c += p / 4.0;
-    const Point2 d1 = (v[0] - v[2]).normalized(), d2(-d1.y(), d1.x());
-    const double p = 0.5 * (v[0] - v[2]).norm(), q = 0.5 * std::abs((v[1] - v[3]).dot(d2));
-    const double s = (v[1] - c).dot(d2) >= 0 ? 1 : -1;
-    return {c + p * d1, c + s * q * d2, c - p * d1, c - s * q * d2};
-}
-
 
 // strokeExtent of the stroke as a curve rather than as samples: twice the largest distance of a
 // point from the centroid of the polyline (each segment weighted by its length; a loop's closing gap
@@ -692,9 +561,8 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             // with equal sides is reported as a square rather than a rectangle.
             add(ShapeKind::Square, rectangular(true) * (q.axisAligned || !q.right ? 1.0 : 0.5));
             // A skewed, sheared or tapered rectangle (looseQuad): the quad itself, scaled down.
-            const bool loose = o.looseQuad > 0.0 && !q.equal &&
-                               looseQuadShape(g.vertices, g.vertexIndex, detectedCorners,
-                                              static_cast<int>(g.points.size()), sameCorner, kPi / 3);
+            const bool loose = o.looseQuad > 0.0 && !q.equal && q.convex && q.smallestAngle >= kLooseQuadAngle &&
+                               detectedVertices(g.vertexIndex, detectedCorners, static_cast<int>(g.points.size()), sameCorner) >= 3;
             const double looseScore = loose ? score(residual, sigma) * o.looseQuad : 0.0;
             add(ShapeKind::Rectangle, std::max(rectangular(false) * (q.equal ? 0.7 : 1.0), looseScore));
             // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
