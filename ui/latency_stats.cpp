@@ -26,7 +26,8 @@ nlohmann::json LatencyStats::toJson() const
         out[series] = {{"count", sorted.size()},
                        {"p50_ms", nearestRank(sorted, 50)},
                        {"p99_ms", nearestRank(sorted, 99)},
-                       {"max_ms", sorted.back()}};
+                       {"max_ms", sorted.back()},
+                       {"first_ms", values.front()}};
     }
     return out;
 }

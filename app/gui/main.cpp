@@ -94,7 +94,8 @@ int finish(sculptline::ui::MainWindow& window, const sculptline::app::GuiOptions
                            "has run and the viewport has been rendered (event_update: until the model is solved, event_render: the "
                            "frame); drag_move / stroke_move: pointer moves during a plane drag / a stroke; stroke_release: the "
                            "release that ends a stroke, until its fitted, recognized curve is drawn; model_update: ms per "
-                           "coalesced model update"},
+                           "coalesced model update; first_ms: a series' first sample (the session's first pen-up, say, "
+                           "with the fitter's code and heap still cold)"},
             {"model_updates", doc.scheduler().updates()}};
         if (!stats.write(options.stats, extra)) {
             std::cerr << "sculptline: cannot write statistics " << options.stats << "\n";

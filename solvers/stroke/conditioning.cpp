@@ -147,37 +147,25 @@ template <typename TimeAt, typename SourceAt>
 void clusterSamples(const Vec3* pts, int count, TimeAt timeAt, SourceAt sourceAt, double minDist, int maxSamples,
                     ConditionedStroke& cs)
 {
-    // Written in place without the growth checks of push_back, into room for every sample of an
-    // ordinary stroke (a very dense one is thinned to ~maxSamples), then cut to size. No staging
-    // buffers: a process's first fit would fault their pages in only to copy them out again
-    // (zeroing the room costs about 0.7 us on 1,000 samples; the staging pages cost ~20 us cold).
-    size_t cap = static_cast<size_t>(std::max(2, std::min(count + 1, 2 * std::max(16, std::min(maxSamples, 1 << 24)))));
-    auto resizeAll = [&](size_t n) {
-        cs.points.resize(n);  // Eigen vectors: not initialized
-        cs.time.resize(n);
-        cs.arc.resize(n);
-        cs.source.resize(n);
-    };
-    resizeAll(cap);
-    Vec3* out = cs.points.data();
-    double* time = cs.time.data();
-    double* arc = cs.arc.data();
-    int* source = cs.source.data();
-    size_t k = 0;
+    // Appended to room reserved for every sample of an ordinary stroke (a very dense one is
+    // thinned to ~maxSamples). Reserved, not resized: only the entries written touch memory, so a
+    // process's first fit faults in the pages of the clusters it keeps, not of every raw sample
+    // (resize zero-filled the times and lengths for all of them: 4 fresh pages of 8 on a
+    // 1,000-sample stroke that keeps 664). No staging buffers either.
+    const size_t cap = static_cast<size_t>(std::max(2, std::min(count + 1, 2 * std::max(16, std::min(maxSamples, 1 << 24)))));
+    cs.points.clear();
+    cs.time.clear();
+    cs.arc.clear();
+    cs.source.clear();
+    cs.points.reserve(cap);
+    cs.time.reserve(cap);
+    cs.arc.reserve(cap);
+    cs.source.reserve(cap);
     auto emit = [&](const Vec3& p, int src, double t) {
-        if (k == cap) {
-            cap *= 2;
-            resizeAll(cap);
-            out = cs.points.data();
-            time = cs.time.data();
-            arc = cs.arc.data();
-            source = cs.source.data();
-        }
-        out[k] = p;
-        source[k] = src;
-        time[k] = t;
-        arc[k] = k == 0 ? 0.0 : arc[k - 1] + (out[k] - out[k - 1]).norm();
-        ++k;
+        cs.arc.push_back(cs.points.empty() ? 0.0 : cs.arc.back() + (p - cs.points.back()).norm());
+        cs.points.push_back(p);
+        cs.source.push_back(src);
+        cs.time.push_back(t);
     };
     const double minDist2 = minDist * minDist;
     const int last = count - 1;
@@ -205,10 +193,9 @@ void clusterSamples(const Vec3* pts, int count, TimeAt timeAt, SourceAt sourceAt
         i = j;
     }
     // The start cluster held every sample: keep the last one too when it is a distinct point.
-    if (last > 0 && source[k - 1] != sourceAt(last) && (pts[last] - pts[0]).squaredNorm() > 0.0) {
+    if (last > 0 && cs.source.back() != sourceAt(last) && (pts[last] - pts[0]).squaredNorm() > 0.0) {
         emit(pts[last], sourceAt(last), timeAt(last));
     }
-    resizeAll(k);
 }
 
 // [first, last] without the light-pressure hooks at the ends (ConditioningOptions::hookPressure).
@@ -448,21 +435,22 @@ double estimateNoise(const std::vector<Eigen::Vector3d>& p, int dimension)
     return len[mid] / (chiMedian * std::sqrt(70.0));
 }
 
-std::vector<Eigen::Vector3d> limitSmoothing(const std::vector<Eigen::Vector3d>& drawn,
-                                            const std::vector<Eigen::Vector3d>& smoothed, double budget, double* shift)
+std::vector<Eigen::Vector3d> limitSmoothing(std::vector<Eigen::Vector3d> drawn, const std::vector<Eigen::Vector3d>& smoothed,
+                                            double budget, double* shift)
 {
-    std::vector<Vec3> out = drawn;
+    // In place: the drawn points become the result (a caller that moves them in saves a copy of
+    // the stroke, and the fresh heap pages it would take on a process's first fit).
     double moved = 0.0;
     if (budget > 0.0) {
-        for (size_t i = 0; i < out.size(); ++i) {
+        for (size_t i = 0; i < drawn.size(); ++i) {
             const Vec3 d = smoothed[i] - drawn[i];
             const double len = d.norm();
-            out[i] = len > budget ? (drawn[i] + d * (budget / len)).eval() : smoothed[i];
+            drawn[i] = len > budget ? (drawn[i] + d * (budget / len)).eval() : smoothed[i];
             moved = std::max(moved, std::min(len, budget));
         }
     }
     if (shift) *shift = moved;
-    return out;
+    return drawn;
 }
 
 void smoothPreservingCorners(ConditionedStroke& cs, const std::vector<int>& fixed, int passes)

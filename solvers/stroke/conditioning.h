@@ -32,7 +32,8 @@ double estimateNoise(const std::vector<Eigen::Vector3d>& points, int dimension =
 /// The smoothed points moved back onto the ball of radius `budget` (model units) around the drawn
 /// ones: smoothing bounded so that it removes at most `budget` of shape or noise. *shift (if given)
 /// receives the largest distance of a result from its drawn point. budget <= 0: the drawn points.
-std::vector<Eigen::Vector3d> limitSmoothing(const std::vector<Eigen::Vector3d>& drawn,
+/// `drawn` is taken by value and becomes the result: move it in when it is not needed after.
+std::vector<Eigen::Vector3d> limitSmoothing(std::vector<Eigen::Vector3d> drawn,
                                             const std::vector<Eigen::Vector3d>& smoothed, double budget,
                                             double* shift = nullptr);
 

@@ -198,7 +198,6 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     SampleDeviation out;
     const int m = static_cast<int>(samples.size());
     out.bound.assign(static_cast<size_t>(m), 0.0);
-    out.foot.assign(static_cast<size_t>(m), c.start());
     const int n = pl.size();
     // The samples run along the curve: each starts from the previous one's polyline point and
     // walks downhill along the polyline (a few points per sample), and is searched in full when it
@@ -240,7 +239,6 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
         at = b.first;
         near[i] = b.first;
         out.bound[i] = std::sqrt(b.second);
-        out.foot[i] = pl.u[b.first];
     }
     // Exact projection of the samples whose bound could be the maximum, largest bound first: once
     // the exact maximum reaches the next bound, no other sample can exceed it.
@@ -257,18 +255,20 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
         std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
         for (int i : order) {
             if (round == 1 && out.bound[i] <= out.maxError) break;
-            double foot = out.foot[i];
+            // Each search starts from the sample's polyline point (round 1 meets no sample whose
+            // bound an earlier projection already made exact: that bound is the maximum).
+            double foot = pl.u[near[i]];
             if (round == 1) {
                 // The polyline bound overestimates by up to half its spacing, so many samples
                 // come here: refining beside their own polyline point first (a curve point
                 // again, so still a bound) settles most of them without the global search.
                 const int j = near[i];
                 const double e = refineLocal(c, samples[i], pl.before(j, c.end() - c.start()), pl.after(j, c.end() - c.start()), pl.u[j], &foot);
-                if (e < out.bound[i]) out.bound[i] = e, out.foot[i] = c.wrap(foot);
+                if (e < out.bound[i]) out.bound[i] = e;
                 if (out.bound[i] <= out.maxError) continue;
             }
             const double e = projectGlobal(c, pl, samples[i], &foot);
-            if (e < out.bound[i]) out.bound[i] = e, out.foot[i] = foot;
+            if (e < out.bound[i]) out.bound[i] = e;
             if (out.bound[i] > out.maxError || round == 0) {
                 out.maxError = out.bound[i];
                 out.worst = i;

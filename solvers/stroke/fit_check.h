@@ -14,8 +14,6 @@ struct SampleDeviation {
     /// Per sample an upper bound on its distance to the curve (the distance to an actual curve
     /// point), exact for `worst` and for every sample whose bound reached maxError; 0 for a dropped one.
     std::vector<double> bound;
-    /// Per sample the curve parameter of that curve point.
-    std::vector<double> foot;
 };
 
 /// Distances from the samples to a cubic curve (open or periodic). A polyline of the curve with

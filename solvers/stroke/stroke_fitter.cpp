@@ -196,7 +196,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
     std::vector<int> corners, samples;
-    std::vector<Vec3> drawn, fitPoints;
+    std::vector<Vec3> fitPoints;
     {
         // The features are freed before the least squares, which can then reuse their memory.
         const StrokeFeatures f = computeFeatures(cs, options.features);
@@ -208,9 +208,9 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // the drawn points.
         cs.noise = estimateNoise(cs.points, stroke.dimension);
         const double budget = std::min(copt.smoothingShare * res.tolerance, copt.noiseMultiple * cs.noise);
-        drawn = cs.points;
+        std::vector<Vec3> drawn = cs.points;
         smoothPreservingCorners(cs, corners, copt.smoothingPasses);
-        fitPoints = limitSmoothing(drawn, cs.points, budget, &cs.smoothingShift);
+        fitPoints = limitSmoothing(std::move(drawn), cs.points, budget, &cs.smoothingShift);
         if (options.dynamicSampling) {
             samples = dynamicThresholdSamples(cs, f, corners, static_cast<int>(stroke.points.size()), options.sampling);
         } else {
