@@ -1,6 +1,7 @@
 // Kernel benchmarks: evaluation and projection (sculptline-bench --benchmark_filter=BSpline).
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/bspline/projection.h"
+#include "solvers/bspline/surface_jet.h"
 
 #include <benchmark/benchmark.h>
 
@@ -92,6 +93,47 @@ void BSplineSurfaceProject(benchmark::State& state)
     }
 }
 BENCHMARK(BSplineSurfaceProject)->Arg(10)->Arg(20);
+
+// The projector's set-up on a net of n x n points: at n = 135 (132 spans a side) the grid is capped
+// at kMaxGridSamples a side (2 samples per span instead of 8).
+void BSplineSurfaceProjectorBuild(benchmark::State& state)
+{
+    const Surface3d s = wavySurface(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        const SurfaceProjector proj(s);
+        benchmark::DoNotOptimize(&proj);
+    }
+}
+BENCHMARK(BSplineSurfaceProjectorBuild)->Arg(20)->Arg(135)->Unit(benchmark::kMillisecond);
+
+// S and its derivatives to second order, as the projector's Newton needs them: the allocating
+// BSplineSurface::derivatives against SurfaceJet.
+void BSplineSurfaceDerivatives2(benchmark::State& state)
+{
+    const Surface3d s = wavySurface(20);
+    const double end = s.domainEnd(Direction::U);
+    double u = 0.0, v = 0.0;
+    for (auto _ : state) {
+        u = std::fmod(u + 0.618034 * end, end);
+        v = std::fmod(v + 0.414214 * end, end);
+        benchmark::DoNotOptimize(s.derivatives(u, v, 2));
+    }
+}
+BENCHMARK(BSplineSurfaceDerivatives2);
+
+void BSplineSurfaceJet(benchmark::State& state)
+{
+    const Surface3d s = wavySurface(20);
+    const SurfaceJet jet(s);
+    const double end = s.domainEnd(Direction::U);
+    double u = 0.0, v = 0.0;
+    for (auto _ : state) {
+        u = std::fmod(u + 0.618034 * end, end);
+        v = std::fmod(v + 0.414214 * end, end);
+        benchmark::DoNotOptimize(jet.evaluate(u, v));
+    }
+}
+BENCHMARK(BSplineSurfaceJet);
 
 void BSplineCurveInsertKnot(benchmark::State& state)
 {

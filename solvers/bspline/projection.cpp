@@ -24,8 +24,8 @@ constexpr int kMaxIterations = 80;
 constexpr double kCellBulge = 2.0;
 
 // Cells per block side in the search's first level (a block of 8 x 8 cells is a knot-span pair at
-// the default 8 samples per span): on the 18 x 135 sculpt sheet's 1,000 x 120 cells, a point tests
-// ~2,000 block boxes and the cells of the few near blocks instead of every cell box.
+// the default 8 samples per span): on the 18 x 135 sculpt sheet's 120 x 264 cells (kMaxGridSamples),
+// a point tests ~500 block boxes and the cells of the few near blocks instead of every cell box.
 constexpr size_t kBlockCells = 8;
 
 // The cell search's budget per point: the nearest-bound cells searched at most. A fitted or
@@ -44,6 +44,29 @@ constexpr long kCellSearchEvaluations = 3000;
 // each direction: converged to round-off (the point moves by |S_u| times that), where the line
 // search would otherwise keep halving steps of 1e-13 for up to 40 evaluations each.
 constexpr double kStepResolution = 1e-12;
+
+// The coarse grid's samples per direction at most: a direction with more knot spans than this
+// allows at samplesPerSpan gets fewer samples per span (never fewer than 2). The grid is the
+// search's start, not its accuracy: the padded cell boxes keep every patch inside them at any
+// density, and Newton finishes the foot. Without a cap the 18 x 135 sculpt sheet's grid held
+// 121 x 1,057 samples and its refinement 509,000 surface evaluations: 10 s under ASan for one
+// sculpt, most of it building a projector for a dozen key points. 256 keeps the default density on
+// every surface up to 32 spans per direction.
+constexpr int kMaxGridSamples = 256;
+
+// Samples per span in a direction of `spans` non-empty knot spans: `wanted`, or fewer to stay
+// within kMaxGridSamples, and at least 2.
+int samplesPerSpanWithin(int wanted, int spans)
+{
+    return std::clamp(kMaxGridSamples / std::max(1, spans), 2, std::max(2, wanted));
+}
+
+int nonEmptySpans(int degree, const KnotVector& knots, int count)
+{
+    int spans = 0;
+    for (int i = degree; i < count; ++i) spans += knots[i] != knots[i + 1] ? 1 : 0;
+    return spans;
+}
 
 std::vector<double> sampleParameters(int degree, const KnotVector& knots, int count, int perSpan)
 {
@@ -176,11 +199,13 @@ CurveProjection<Dim> projectToCurve(const BSplineCurve<Dim>& curve, const Eigen:
     return CurveProjector<Dim>(curve).project(x);
 }
 
-SurfaceProjector::SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan) : surface_(std::move(surface))
+SurfaceProjector::SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan)
+    : surface_(std::move(surface)), jet_(surface_)
 {
-    const int per = std::max(2, samplesPerSpan);
-    us_ = sampleParameters(surface_.degreeU(), surface_.knotsU(), surface_.countU(), per);
-    vs_ = sampleParameters(surface_.degreeV(), surface_.knotsV(), surface_.countV(), per);
+    const int perU = samplesPerSpanWithin(samplesPerSpan, nonEmptySpans(surface_.degreeU(), surface_.knotsU(), surface_.countU()));
+    const int perV = samplesPerSpanWithin(samplesPerSpan, nonEmptySpans(surface_.degreeV(), surface_.knotsV(), surface_.countV()));
+    us_ = sampleParameters(surface_.degreeU(), surface_.knotsU(), surface_.countU(), perU);
+    vs_ = sampleParameters(surface_.degreeV(), surface_.knotsV(), surface_.countV(), perV);
     // The grid and, per cell, its edge midpoints and middle: one evaluation of the surface on the
     // grid refined by the midpoints (each point shared by the cells around it).
     const size_t nu = us_.size(), nv = vs_.size();
@@ -260,21 +285,21 @@ SurfaceProjection SurfaceProjector::newton(const Eigen::Vector3d& x, double u, d
     const double uWidth = us_.back() - us_.front(), vWidth = vs_.back() - vs_.front();
     for (int iter = 0; iter < kMaxIterations && !(budget && *budget <= 0); ++iter) {
         if (budget) --*budget;
-        const auto d = surface_.derivatives(u, v, 2);
-        const Eigen::Vector3d r = d[0][0] - x;
+        const SurfaceJet::Values d = jet_.evaluate(u, v);
+        const Eigen::Vector3d r = d.s - x;
         // Gradient and Hessian of |S - x|^2 / 2 (The NURBS Book eqs. 6.6-6.7).
-        const Eigen::Vector2d g(r.dot(d[1][0]), r.dot(d[0][1]));
+        const Eigen::Vector2d g(r.dot(d.su), r.dot(d.sv));
         Eigen::Matrix2d H;
-        H(0, 0) = d[1][0].squaredNorm() + r.dot(d[2][0]);
-        H(0, 1) = H(1, 0) = d[1][0].dot(d[0][1]) + r.dot(d[1][1]);
-        H(1, 1) = d[0][1].squaredNorm() + r.dot(d[0][2]);
+        H(0, 0) = d.su.squaredNorm() + r.dot(d.suu);
+        H(0, 1) = H(1, 0) = d.su.dot(d.sv) + r.dot(d.suv);
+        H(1, 1) = d.sv.squaredNorm() + r.dot(d.svv);
         Eigen::Vector2d step;
         const Eigen::LDLT<Eigen::Matrix2d> ldlt(H);
         if (ldlt.info() == Eigen::Success && ldlt.isPositive() && H.determinant() > 0) {
             step = -ldlt.solve(g);
         } else {
             // Not locally convex: a gradient step scaled by the first-order metric.
-            const double a = std::max(H(0, 0), d[1][0].squaredNorm()), b = std::max(H(1, 1), d[0][1].squaredNorm());
+            const double a = std::max(H(0, 0), d.su.squaredNorm()), b = std::max(H(1, 1), d.sv.squaredNorm());
             step = Eigen::Vector2d(-g[0] / std::max(a, 1e-300), -g[1] / std::max(b, 1e-300));
         }
         // Backtracking line search on the clamped step: the distance never increases.

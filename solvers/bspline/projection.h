@@ -2,6 +2,7 @@
 // Closest-point projection onto curves and surfaces, global (not just the nearest local minimum).
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/bspline/curve_jet.h"
+#include "solvers/bspline/surface_jet.h"
 
 #include <algorithm>
 
@@ -75,6 +76,8 @@ CurveProjection<Dim> projectToCurve(const BSplineCurve<Dim>& curve, const Eigen:
 /// local minima can all lie in other valleys of the distance.
 class SurfaceProjector {
 public:
+    /// @param samplesPerSpan coarse grid samples per non-empty knot span (>= 2); fewer in a
+    /// direction with so many spans that the grid would exceed kMaxGridSamples (projection.cpp).
     explicit SurfaceProjector(BSplineSurface<3> surface, int samplesPerSpan = 8);
     SurfaceProjection project(const Eigen::Vector3d& x) const;
 
@@ -85,6 +88,7 @@ private:
                              long* budget = nullptr) const;
 
     BSplineSurface<3> surface_;
+    SurfaceJet jet_;  // S and its derivatives for Newton without allocating
     std::vector<double> us_, vs_;
     std::vector<Eigen::Vector3d> grid_;  // grid_[i * vs_.size() + j]
     // Per cell (i, j) between grid lines i, i+1 and j, j+1 (index i * (vs_.size() - 1) + j): a

@@ -1,6 +1,7 @@
 // Surfaces: rational cylinder (exact), derivatives vs finite differences, knot operations keep shape.
 #include "solvers/bspline/bspline_surface.h"
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/surface_jet.h"
 #include "test_curves.h"
 
 #include <gtest/gtest.h>
@@ -100,6 +101,38 @@ TEST(Surface, GridEvaluationIsPointwiseEvaluation)
                 EXPECT_LE((grid[a * vs.size() + b] - s->evaluate(us[a], vs[b])).norm(), kExact) << us[a] << ", " << vs[b];
     }
     EXPECT_THROW(rational.evaluateGrid({0.5, std::nan("")}, {0.5}), GeometryError);
+}
+
+TEST(SurfaceJet, GivenRationalAndPolynomialNets_WhenEvaluated_ThenMatchesDerivatives)
+{
+    // The jet against BSplineSurface::derivatives(u, v, 2): degrees 3 x 2 and 2 x 1 (where the
+    // second v derivative is zero), rational and not, on knots, inside spans and beyond the domain.
+    const Surface3d rational = wavy();
+    const Surface3d plain(3, 2, rational.knotsU(), rational.knotsV(), rational.countU(), rational.countV(), rational.points());
+    const Surface3d tube = cylinder();
+    for (const Surface3d* s : {&rational, &plain, &tube}) {
+        const SurfaceJet jet(*s);
+        for (double u : linspace(s->domainStart(Direction::U) - 0.1, s->domainEnd(Direction::U) + 0.1, 23)) {
+            for (double v : linspace(s->domainStart(Direction::V) - 0.1, s->domainEnd(Direction::V) + 0.1, 19)) {
+                const auto ref = s->derivatives(u, v, 2);
+                const SurfaceJet::Values d = jet.evaluate(u, v);
+                const double scale = 1.0 + ref[0][0].norm() + ref[1][0].norm() + ref[0][1].norm() + ref[2][0].norm() +
+                                     ref[1][1].norm() + ref[0][2].norm();
+                EXPECT_LT((d.s - ref[0][0]).norm(), kExact * scale) << u << ", " << v;
+                EXPECT_LT((d.su - ref[1][0]).norm(), kExact * scale) << u << ", " << v;
+                EXPECT_LT((d.sv - ref[0][1]).norm(), kExact * scale) << u << ", " << v;
+                EXPECT_LT((d.suu - ref[2][0]).norm(), kExact * scale) << u << ", " << v;
+                EXPECT_LT((d.suv - ref[1][1]).norm(), kExact * scale) << u << ", " << v;
+                EXPECT_LT((d.svv - ref[0][2]).norm(), kExact * scale) << u << ", " << v;
+            }
+        }
+        for (double u : s->knotsU()) {
+            const auto ref = s->derivatives(u, s->domainStart(Direction::V), 2);
+            const SurfaceJet::Values d = jet.evaluate(u, s->domainStart(Direction::V));
+            EXPECT_LT((d.suu - ref[2][0]).norm(), kExact * (1.0 + ref[2][0].norm())) << "knot " << u;
+        }
+    }
+    EXPECT_THROW(SurfaceJet(rational).evaluate(std::nan(""), 0.5), GeometryError);
 }
 
 TEST(Surface, EvaluationAtCornersIsTheCornerControlPoints)
