@@ -56,16 +56,24 @@ void BSplineCurveDerivatives2(benchmark::State& state)
 }
 BENCHMARK(BSplineCurveDerivatives2);
 
-void BSplineSurfaceEvaluate(benchmark::State& state)
+// Evaluates `at(u, v)` per iteration at parameters stepped by irrational fractions of the domain
+// (the square nets of wavySurface: U and V share it), so that no span is favoured.
+template <class At>
+void sweepSurface(benchmark::State& state, const Surface3d& s, At at)
 {
-    const Surface3d s = wavySurface(static_cast<int>(state.range(0)));
     const double end = s.domainEnd(Direction::U);
     double u = 0.0, v = 0.0;
     for (auto _ : state) {
         u = std::fmod(u + 0.618034 * end, end);
         v = std::fmod(v + 0.414214 * end, end);
-        benchmark::DoNotOptimize(s.evaluate(u, v));
+        benchmark::DoNotOptimize(at(u, v));
     }
+}
+
+void BSplineSurfaceEvaluate(benchmark::State& state)
+{
+    const Surface3d s = wavySurface(static_cast<int>(state.range(0)));
+    sweepSurface(state, s, [&](double u, double v) { return s.evaluate(u, v); });
 }
 BENCHMARK(BSplineSurfaceEvaluate)->Arg(10)->Arg(40);
 
@@ -111,13 +119,7 @@ BENCHMARK(BSplineSurfaceProjectorBuild)->Arg(20)->Arg(135)->Unit(benchmark::kMil
 void BSplineSurfaceDerivatives2(benchmark::State& state)
 {
     const Surface3d s = wavySurface(20);
-    const double end = s.domainEnd(Direction::U);
-    double u = 0.0, v = 0.0;
-    for (auto _ : state) {
-        u = std::fmod(u + 0.618034 * end, end);
-        v = std::fmod(v + 0.414214 * end, end);
-        benchmark::DoNotOptimize(s.derivatives(u, v, 2));
-    }
+    sweepSurface(state, s, [&](double u, double v) { return s.derivatives(u, v, 2); });
 }
 BENCHMARK(BSplineSurfaceDerivatives2);
 
@@ -125,13 +127,7 @@ void BSplineSurfaceJet(benchmark::State& state)
 {
     const Surface3d s = wavySurface(20);
     const SurfaceJet jet(s);
-    const double end = s.domainEnd(Direction::U);
-    double u = 0.0, v = 0.0;
-    for (auto _ : state) {
-        u = std::fmod(u + 0.618034 * end, end);
-        v = std::fmod(v + 0.414214 * end, end);
-        benchmark::DoNotOptimize(jet.evaluate(u, v));
-    }
+    sweepSurface(state, s, [&](double u, double v) { return jet.evaluate(u, v); });
 }
 BENCHMARK(BSplineSurfaceJet);
 
