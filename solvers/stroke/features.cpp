@@ -282,6 +282,56 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     return f;
 }
 
+double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& o)
+{
+    const int n = cs.size();
+    if (n < 3 || !(noise > 0.0) || !(cs.extent > 0.0)) return 0.0;
+    const double spacing = cs.length() / double(n - 1);
+    if (!(spacing > 0.0)) return 0.0;
+    const double m = 1.0 + 2.0 * o.denoise * cs.extent / spacing;
+    const double arm = std::max(o.neighbourhood * cs.extent, double(std::max(o.k, 1)) * spacing);
+    return std::sqrt(6.0 / m) * noise / arm;
+}
+
+FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& options,
+                             double maxTurningNoise, double maxWidening)
+{
+    FeatureOptions o = options;
+    if (!(maxTurningNoise > 0.0) || turningNoise(cs, noise, o) <= maxTurningNoise) return o;
+    constexpr double kMinArmSamples = 3.0;
+    const double spacing = cs.length() / double(std::max(cs.size() - 1, 1));
+    if (!(options.neighbourhood * cs.extent >= kMinArmSamples * spacing)) return o;
+    // turningNoise falls monotonically with the widening (both the arm and m grow): ten 10 % steps
+    // at most reach 2.6x, enough for jitter of twice the clean noise; the step is finer than the
+    // estimate's accuracy.
+    constexpr double kStep = 1.1;
+    for (double g = kStep; g <= maxWidening * (1.0 + 1e-12); g *= kStep) {
+        o.neighbourhood = options.neighbourhood * g;
+        o.denoise = options.denoise * g;
+        if (turningNoise(cs, noise, o) <= maxTurningNoise) break;
+    }
+    return o;
+}
+
+std::vector<int> localizeCorners(const ConditionedStroke& cs, const StrokeFeatures& f, const StrokeFeatures& wide,
+                                 const std::vector<int>& corners)
+{
+    const int n = cs.size();
+    std::vector<int> out;
+    out.reserve(corners.size());
+    for (int c : corners) {
+        int best = c;
+        for (int j = wide.lo[c];; j = cs.closed ? (j + 1) % n : j + 1) {
+            if (f.turning[j] > f.turning[best]) best = j;
+            if (j == wide.hi[c] || j >= n - 1) break;
+        }
+        out.push_back(best);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
 std::vector<int> detectCorners(const ConditionedStroke& cs, const StrokeFeatures& f, const CornerOptions& o)
 {
     const int n = cs.size();

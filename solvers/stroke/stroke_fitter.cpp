@@ -199,14 +199,23 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     std::vector<Vec3> fitPoints;
     {
         // The features are freed before the least squares, which can then reuse their memory.
+        // The features' arms are widened for the noise that is there (widenForNoise), so that jitter
+        // turns the measured angles no more than on a clean stroke.
+        cs.noise = estimateNoise(cs.points, stroke.dimension);
         const StrokeFeatures f = computeFeatures(cs, options.features);
-        corners = detectCorners(cs, f, options.corners);
+        const FeatureOptions wide =
+            widenForNoise(cs, cs.noise, options.features, options.features.maxTurningNoise, options.features.maxWidening);
+        if (wide.neighbourhood == options.features.neighbourhood) {
+            corners = detectCorners(cs, f, options.corners);
+        } else {
+            const StrokeFeatures wf = computeFeatures(cs, wide);
+            corners = localizeCorners(cs, f, wf, detectCorners(cs, wf, options.corners));
+        }
         // Smoothing by the noise that is there, within a share of the tolerance (ConditioningOptions::
         // smoothingShare, noiseMultiple): it removes jitter but never the shape the tolerance keeps.
         // The smoothed points serve the parameterization, the dynamic threshold and recognition
         // (cs.points, as before); the least squares gets them pulled back to within the budget of
         // the drawn points.
-        cs.noise = estimateNoise(cs.points, stroke.dimension);
         const double budget = std::min(copt.smoothingShare * res.tolerance, copt.noiseMultiple * cs.noise);
         std::vector<Vec3> drawn = cs.points;
         smoothPreservingCorners(cs, corners, copt.smoothingPasses);
