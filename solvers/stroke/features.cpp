@@ -293,14 +293,21 @@ double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOpti
     return std::sqrt(6.0 / m) * noise / arm;
 }
 
-FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& options,
+FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options,
                              double maxTurningNoise, double maxWidening)
 {
     FeatureOptions o = options;
     if (!(maxTurningNoise > 0.0) || turningNoise(cs, noise, o) <= maxTurningNoise) return o;
-    constexpr double kMinArmSamples = 3.0;
-    const double spacing = cs.length() / double(std::max(cs.size() - 1, 1));
-    if (!(options.neighbourhood * cs.extent >= kMinArmSamples * spacing)) return o;
+    // Dense enough: the median arm of f (options' own windows) holds kMinArmSamples samples. Counted
+    // in samples, not as length over the mean spacing: jitter lengthens the path, and a jittery
+    // zigzag's mean spacing (0.9 units, three times its chord spacing) called it sparse.
+    constexpr int kMinArmSamples = 3;
+    const int n = cs.size();
+    if (n < 2 * kMinArmSamples + 1 || static_cast<int>(f.hi.size()) != n) return o;
+    std::vector<int> arm(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) arm[static_cast<size_t>(i)] = cs.closed ? (f.hi[i] - i + n) % n : f.hi[i] - i;
+    std::nth_element(arm.begin(), arm.begin() + n / 2, arm.end());
+    if (arm[static_cast<size_t>(n / 2)] < kMinArmSamples) return o;
     // turningNoise falls monotonically with the widening (both the arm and m grow): ten 10 % steps
     // at most reach 2.6x, enough for jitter of twice the clean noise; the step is finer than the
     // estimate's accuracy.

@@ -52,10 +52,10 @@ double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOpti
 /// (noise 0.5 on a 300-unit flourish: 9 degrees) lift a smooth bend past the 55-degree corner
 /// threshold on 6 strokes in 8 (bench's jittery flourish). A corner keeps its turning on longer
 /// arms (its sides are straight), a smooth bend's grows and its sharpness ratio stays that of an arc.
-/// Only a dense stroke is widened (each arm at least kMinArmSamples mean spacings long): on a sparse
-/// one estimateNoise's fourth differences take the curve's own bending (h^4 C^(4)) for noise, and
-/// the longer arms made a flourish's tight bend a corner at 200 samples.
-FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& options,
+/// Only a dense stroke is widened (the median arm of `f`, the features on `options`, at least 3
+/// samples): on a sparse one estimateNoise's fourth differences take the curve's own bending
+/// (h^4 C^(4)) for noise, and the longer arms made a flourish's tight bend a corner at 200 samples.
+FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options,
                              double maxTurningNoise, double maxWidening);
 
 /// Corner detection combining the three cues of thesis §4.1.1 (curvature, direction change,

@@ -204,7 +204,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         cs.noise = estimateNoise(cs.points, stroke.dimension);
         const StrokeFeatures f = computeFeatures(cs, options.features);
         const FeatureOptions wide =
-            widenForNoise(cs, cs.noise, options.features, options.features.maxTurningNoise, options.features.maxWidening);
+            widenForNoise(cs, cs.noise, f, options.features, options.features.maxTurningNoise, options.features.maxWidening);
         if (wide.neighbourhood == options.features.neighbourhood) {
             corners = detectCorners(cs, f, options.corners);
         } else {
