@@ -116,18 +116,24 @@ TEST(CornerDetection, GivenFlourishAtAnySamplingDensity_WhenFitted_ThenNoCorners
     }
 }
 
+// Square, triangle, open zigzag, pentagon: the polygons of the density and jitter tests.
+std::vector<Shape> densityPolygons()
+{
+    return {
+        polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true),
+        polygonShape({{0, 0, 0}, {160, 10, 0}, {70, 120, 0}}, true),
+        polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false),
+        polygonShape({{0, 0, 0}, {80, 0, 0}, {105, 75, 0}, {40, 120, 0}, {-25, 75, 0}}, true),
+    };
+}
+
 // Polygons from the test above, drawn at several sampling densities: corner recall and precision
 // must not depend on the sampling rate either (the denoising radius must not round real vertices
 // off), nor may closing the loops (the start vertex of a closed polygon is a corner only if the
 // stroke is recognized as closed; up to 10,000 samples the path length grows with the jitter).
 TEST(CornerDetection, GivenPolygonsAtAnySamplingDensity_WhenFitted_ThenPrecisionAndRecallAreHigh)
 {
-    const std::vector<Shape> shapes = {
-        polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true),
-        polygonShape({{0, 0, 0}, {160, 10, 0}, {70, 120, 0}}, true),
-        polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false),
-        polygonShape({{0, 0, 0}, {80, 0, 0}, {105, 75, 0}, {40, 120, 0}, {-25, 75, 0}}, true),
-    };
+    const std::vector<Shape> shapes = densityPolygons();
     for (int samples : {200, 1000, 2000, 5000, 10000}) {
         Counts c;
         scoreShapes(shapes, 3, samples, c);
@@ -170,12 +176,7 @@ TEST(CornerDetection, GivenSlowJitteryFlourish_WhenFitted_ThenNoCorners)
 // jitter inflates, 202 / 313 / 510); now 42 / 42 / 42.
 TEST(CornerDetection, GivenJitteryPolygons_WhenFitted_ThenEveryVertexFoundWhereItIs)
 {
-    const std::vector<Shape> shapes = {
-        polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true),
-        polygonShape({{0, 0, 0}, {160, 10, 0}, {70, 120, 0}}, true),
-        polygonShape({{0, 0, 0}, {60, 80, 0}, {120, 0, 0}, {180, 80, 0}}, false),
-        polygonShape({{0, 0, 0}, {80, 0, 0}, {105, 75, 0}, {40, 120, 0}, {-25, 75, 0}}, true),
-    };
+    const std::vector<Shape> shapes = densityPolygons();
     // Each corner within 8 jitter sigmas (4 units, 1.3 % of the zigzag's path) of its vertex: where
     // the pen nearly stops, the vertex's samples scatter by several sigmas. 41 / 42 of 42 vertices
     // within 4 units at 1,000 / 2,000 samples, the same before the widening (within 2 units 37 / 39,
