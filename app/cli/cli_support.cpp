@@ -32,6 +32,16 @@ const json& field(const json& input, const std::string& key)
     return *it;
 }
 
+double optionalLength(const json& input, const std::string& key, double absent, bool zeroAllowed)
+{
+    const auto it = input.find(key);
+    if (it == input.end()) return absent;
+    const double v = solvers::io::numberFromJson(*it, key);
+    if (zeroAllowed ? !(v >= 0.0) : !(v > 0.0))
+        throw InputError(key + (zeroAllowed ? ": must be zero or positive" : ": must be positive"));
+    return v;
+}
+
 GeometryKind curveOrSurface(const json& input)
 {
     const bool curve = input.contains("curve"), surface = input.contains("surface");

@@ -31,6 +31,11 @@ private:
 /// The top-level member `key`, or InputError "key: missing".
 const json& field(const json& input, const std::string& key);
 
+/// The optional top-level number `key` (a tolerance, a resolution: model units), or `absent` when it
+/// is not given. It must be finite and positive, or with `zeroAllowed` zero or positive; otherwise
+/// InputError "key: must be positive" / "key: must be zero or positive".
+double optionalLength(const json& input, const std::string& key, double absent, bool zeroAllowed);
+
 /// Which geometry an input carries: exactly one of "curve" and "surface".
 enum class GeometryKind { Curve, Surface };
 GeometryKind curveOrSurface(const json& input);

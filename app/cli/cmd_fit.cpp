@@ -21,14 +21,8 @@ namespace stroke = solvers::stroke;
 stroke::FitOptions fitOptions(const json& input)
 {
     stroke::FitOptions o;
-    if (input.contains("tolerance")) {
-        o.tolerance = solvers::io::numberFromJson(input["tolerance"], "tolerance");
-        if (!(o.tolerance > 0.0)) throw InputError("tolerance: must be positive");
-    }
-    if (input.contains("resolution")) {
-        o.resolution = solvers::io::numberFromJson(input["resolution"], "resolution");
-        if (!(o.resolution >= 0.0)) throw InputError("resolution: must be zero or positive");
-    }
+    o.tolerance = optionalLength(input, "tolerance", 0.0, false);
+    o.resolution = optionalLength(input, "resolution", 0.0, true);
     if (input.contains("closed")) {
         const json& c = input["closed"];
         if (c == "auto") o.conditioning.closure = stroke::Closure::Auto;

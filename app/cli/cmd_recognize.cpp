@@ -8,7 +8,9 @@
 //        pre_node (the previous stroke's node, or its composite's for a three-stroke object such
 //        as Fig. 3-4 d's polygon_volume), learned, offered], "composite": the last stroke's object,
 //        "user_model": the updated model.
-//   Optional: "tolerance" (fitting, model units), "regularize": false to keep the fitted curves.
+//   Optional: "tolerance" (fitting, model units), "resolution" (the pitch the samples are quantized
+//   to, as for fit: the default tolerance is at least kResolutionTolerance times it; the window
+//   passes one pixel's footprint on the sketch plane), "regularize": false to keep the fitted curves.
 // A "user_model" path is read if it exists (else the predefined Table 3-2 is used) and written back
 // with what was learned: one file per user.
 #include "app/cli/cli_support.h"
@@ -23,10 +25,11 @@ namespace {
 
 namespace stroke = solvers::stroke;
 
-stroke::FitResult fitOne(const stroke::Stroke& k, double tolerance)
+stroke::FitResult fitOne(const stroke::Stroke& k, double tolerance, double resolution)
 {
     stroke::FitOptions o;
     o.tolerance = tolerance;
+    o.resolution = resolution;
     try {
         // The fit recognition reads: a self-crossing stroke refitted open, a nearly closed loop
         // refitted closed (recognizeStroke; issue 15 §1, real pen data).
@@ -64,11 +67,9 @@ json run(const json& input, const Options&)
         if (a.empty()) throw InputError("strokes: empty, at least one stroke is needed");
         for (size_t i = 0; i < a.size(); ++i) strokes.push_back(stroke::strokeFromJson(a[i], "strokes[" + std::to_string(i) + "]"));
     }
-    double tolerance = 0.0;
-    if (input.contains("tolerance")) {
-        tolerance = solvers::io::numberFromJson(input["tolerance"], "tolerance");
-        if (!(tolerance > 0.0)) throw InputError("tolerance: must be positive");
-    }
+    const double tolerance = optionalLength(input, "tolerance", 0.0, false);
+    // The pitch the samples are quantized to (as for fit): the window passes one pixel's footprint.
+    const double resolution = optionalLength(input, "resolution", 0.0, true);
     stroke::RecognizeOptions ro;
     if (input.contains("regularize")) {
         if (!input["regularize"].is_boolean()) throw InputError("regularize: must be true or false");
@@ -81,7 +82,7 @@ json run(const json& input, const Options&)
     std::vector<stroke::FitResult> fits;
     for (size_t i = 0; i < strokes.size(); ++i) {
         try {
-            fits.push_back(fitOne(strokes[i], tolerance));
+            fits.push_back(fitOne(strokes[i], tolerance, resolution));
         } catch (const InputError& e) {  // name the stroke in a sequence: "strokes[2].points: ..."
             const std::string msg = e.what();
             throw InputError(one ? msg : "strokes[" + std::to_string(i) + "]" + msg.substr(std::string("stroke").size()));

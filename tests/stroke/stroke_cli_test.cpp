@@ -75,6 +75,26 @@ TEST(StrokeCli, GivenResolution_WhenFit_ThenTheToleranceIsAtLeastTheResolution)
     EXPECT_EQ(json::parse(fine.out)["curve"], json::parse(none.out)["curve"]);
 }
 
+// recognize takes "resolution" as fit does: its fit's default tolerance is at least the resolution,
+// so a coarse pitch fits the stroke with fewer control points, a fine one changes nothing.
+TEST(StrokeCli, GivenResolution_WhenRecognized_ThenItsFitUsesIt)
+{
+    const std::string stroke = strokeJson(spiralShape(100, 2.0));
+    auto recognize = [&](const std::string& extra) {
+        const CliRun r = cli("recognize", "{\"stroke\": " + stroke + ", \"regularize\": false" + extra + "}");
+        EXPECT_EQ(r.status, 0) << r.err;
+        return r.status == 0 ? json::parse(r.out) : json();
+    };
+    const json none = recognize(""), fine = recognize(", \"resolution\": 0.01"), coarse = recognize(", \"resolution\": 5");
+    ASSERT_TRUE(none["regularized"].contains("points"));
+    EXPECT_EQ(fine["regularized"], none["regularized"]);
+    EXPECT_LT(coarse["regularized"]["points"].size(), none["regularized"]["points"].size());
+    // The same fit as fit's with that resolution (the spiral is neither refitted open nor closed).
+    const CliRun f = cli("fit", "{\"stroke\": " + stroke + ", \"resolution\": 5}");
+    ASSERT_EQ(f.status, 0) << f.err;
+    EXPECT_EQ(coarse["regularized"]["points"], json::parse(f.out)["curve"]["points"]);
+}
+
 TEST(StrokeCli, GivenInvalidStrokes_ThenExit2NamingTheField)
 {
     expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"resolution\": -1}", "resolution");
@@ -86,6 +106,8 @@ TEST(StrokeCli, GivenInvalidStrokes_ThenExit2NamingTheField)
     expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1, 2]]}}", "stroke.points[1]");
     expectInvalid("fit", "{\"points\": [[0, 0], [1, 1]]}", "stroke");
     expectInvalid("recognize", "{\"strokes\": []}", "strokes");
+    expectInvalid("recognize", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"resolution\": -1}", "resolution");
+    expectInvalid("recognize", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"resolution\": \"fine\"}", "resolution");
     expectInvalid("recognize", "{\"strokes\": [{\"points\": [[0, 0], [1, 0]]}, {\"points\": [[0, 0]]}]}", "strokes[1].points");
     expectInvalid("recognize", "{\"stroke\": {\"points\": [[0, 0], [5, 1]]}, \"user_model\": {\"nodes\": [{\"index\": 1}]}}",
                   "user_model.nodes[0]");
