@@ -293,10 +293,10 @@ double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOpti
     return std::sqrt(6.0 / m) * noise / arm;
 }
 
-FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options,
-                             double maxTurningNoise, double maxWidening)
+FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options)
 {
     FeatureOptions o = options;
+    const double maxTurningNoise = options.maxTurningNoise;
     if (!(maxTurningNoise > 0.0) || turningNoise(cs, noise, o) <= maxTurningNoise) return o;
     // Dense enough: the median arm of f (options' own windows) holds kMinArmSamples samples. Counted
     // in samples, not as length over the mean spacing: jitter lengthens the path, and a jittery
@@ -308,11 +308,11 @@ FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const St
     for (int i = 0; i < n; ++i) arm[static_cast<size_t>(i)] = cs.closed ? (f.hi[i] - i + n) % n : f.hi[i] - i;
     std::nth_element(arm.begin(), arm.begin() + n / 2, arm.end());
     if (arm[static_cast<size_t>(n / 2)] < kMinArmSamples) return o;
-    // turningNoise falls monotonically with the widening (both the arm and m grow): ten 10 % steps
-    // at most reach 2.6x, enough for jitter of twice the clean noise; the step is finer than the
-    // estimate's accuracy.
+    // turningNoise falls monotonically with the widening (both the arm and m grow): steps of 10 %
+    // (finer than the estimate's accuracy), at most 11 under maxWidening 3 (2.85x); if even that
+    // leaves the noise above the target, the widest is used.
     constexpr double kStep = 1.1;
-    for (double g = kStep; g <= maxWidening * (1.0 + 1e-12); g *= kStep) {
+    for (double g = kStep; g <= options.maxWidening * (1.0 + 1e-12); g *= kStep) {
         o.neighbourhood = options.neighbourhood * g;
         o.denoise = options.denoise * g;
         if (turningNoise(cs, noise, o) <= maxTurningNoise) break;

@@ -46,7 +46,7 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
 double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& options);
 
 /// The options with the neighbourhood and the denoising radius widened together, by the smallest
-/// factor (up to `maxWidening`) that brings turningNoise down to `maxTurningNoise`; unchanged when it
+/// factor (up to options.maxWidening) that brings turningNoise down to options.maxTurningNoise; unchanged when it
 /// is already there. Sensor jitter then turns the measured angle no more than the pen's own
 /// drawing does on a clean stroke: the fixed arms of 1.5 % of the extent let a slow hand's jitter
 /// (noise 0.5 on a 300-unit flourish: 9 degrees) lift a smooth bend past the 55-degree corner
@@ -55,8 +55,7 @@ double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOpti
 /// Only a dense stroke is widened (the median arm of `f`, the features on `options`, at least 3
 /// samples): on a sparse one estimateNoise's fourth differences take the curve's own bending
 /// (h^4 C^(4)) for noise, and the longer arms made a flourish's tight bend a corner at 200 samples.
-FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options,
-                             double maxTurningNoise, double maxWidening);
+FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options);
 
 /// Corner detection combining the three cues of thesis §4.1.1 (curvature, direction change,
 /// slowing down; cf. Sezgin et al. 2001 "Sketch based interfaces"):

@@ -203,8 +203,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // turns the measured angles no more than on a clean stroke.
         cs.noise = estimateNoise(cs.points, stroke.dimension);
         const StrokeFeatures f = computeFeatures(cs, options.features);
-        const FeatureOptions wide =
-            widenForNoise(cs, cs.noise, f, options.features, options.features.maxTurningNoise, options.features.maxWidening);
+        const FeatureOptions wide = widenForNoise(cs, cs.noise, f, options.features);
         if (wide.neighbourhood == options.features.neighbourhood) {
             corners = detectCorners(cs, f, options.corners);
         } else {

@@ -161,7 +161,7 @@ TEST(CornerDetection, GivenSlowJitteryFlourish_WhenFitted_ThenNoCorners)
         const Stroke s = drawWithSamples(flourishShape(300), 1000, d);
         const ConditionedStroke cs = conditionStroke(s);
         const FeatureOptions o;
-        widened += widenForNoise(cs, estimateNoise(cs.points, 2), computeFeatures(cs, o), o, o.maxTurningNoise, o.maxWidening).neighbourhood > o.neighbourhood;
+        widened += widenForNoise(cs, estimateNoise(cs.points, 2), computeFeatures(cs, o), o).neighbourhood > o.neighbourhood;
         const FitResult r = fitStroke(s);
         EXPECT_TRUE(r.corners.empty()) << "seed " << seed << ": " << r.corners.size() << " corner(s), the first at sample "
                                        << r.corners.front();
