@@ -130,6 +130,44 @@ void BM_StrokeFitJitter(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
+// The flourish of BM_StrokeFit/1000 (arg 0) and of BM_StrokeFitJitter (arg 1) drawn with 16 noise
+// seeds, all fitted in each iteration: one seed is one draw of the noise, and the search for fewer
+// control points costs very different amounts on different draws (the benchmarks above use seed 1,
+// on which the jittery stroke's search succeeds; on most jittery seeds it fails after trying
+// several counts and the error-driven fit is taken). Time: per iteration (16 fits); counters: the
+// mean time per stroke and the control points' mean, least and most.
+void BM_StrokeFitSeeds(benchmark::State& state)
+{
+    constexpr unsigned kSeeds = 16;
+    std::vector<Stroke> strokes;
+    for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+        DrawOptions d;
+        d.noise = state.range(0) == 0 ? kNoise : kJitter;
+        d.seed = seed;
+        strokes.push_back(drawWithSamples(flourishShape(300), 1000, d));
+    }
+    std::vector<FitResult> r(kSeeds);
+    for (auto _ : state) {
+        for (unsigned k = 0; k < kSeeds; ++k) {
+            r[k] = fitStroke(strokes[k]);
+            benchmark::DoNotOptimize(r[k].curve.points().data());
+        }
+    }
+    double sum = 0.0, least = 1e9, most = 0.0;
+    for (const FitResult& f : r) {
+        const double n = f.curve.pointCount();
+        sum += n;
+        least = std::min(least, n);
+        most = std::max(most, n);
+    }
+    state.counters["ctrl_mean"] = sum / kSeeds;
+    state.counters["ctrl_min"] = least;
+    state.counters["ctrl_max"] = most;
+    state.counters["per_stroke"] = benchmark::Counter(kSeeds, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.SetLabel(state.range(0) == 0 ? "clean, 16 seeds" : "slow hand with jitter, 16 seeds");
+}
+BENCHMARK(BM_StrokeFitSeeds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
 // The first fit of a process (cold: nothing of the fitter run yet, its code and heap untouched, as
 // when the pen lifts on the first stroke) against the warm loop. Google Benchmark repeats a call in
 // one process, so each iteration starts this binary again with SCULPTLINE_BENCH_COLD_FIT set: before

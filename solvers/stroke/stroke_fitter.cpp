@@ -296,7 +296,9 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         alt.tolerance = res.tolerance;
         int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
         std::vector<int> dense;
+        int highest = 0;  // the largest count tried in this pass
         auto trial = [&](int count, const std::vector<int>& rows) {
+            highest = std::max(highest, count);
             alt.averagedControlPoints = count;
             const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
             if (rows.size() >= want || want < 2) return fitConditioned(cs, fitPoints, corners, rows, alt);
@@ -377,10 +379,21 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // against 21 with the climbs as they are, 22 with 5 climbs, which moved the hairpin to 20).
             constexpr int kFirstCount = 8;
             constexpr int kMaxClimbSteps = 3;
+            // The second pass replays the first trial for trial (the same counts on the same rows,
+            // so the same answers) while kDenseRowsPerPoint rows per control point are no more than
+            // the dynamic threshold's rows and neither pass's cap binds: then it is skipped. (Jittery
+            // flourishes of 1,000 samples have ~205 rows and try at most 29 control points: the
+            // replay was half their search time.) One count of margin covers the verify loop's
+            // test of the count after the last.
+            const auto capOf = [&](int per) { return std::max(4, per > 0 ? cs.size() / per : static_cast<int>(samples.size())); };
             for (int pass = 0; pass < 2 && !found; ++pass) {
                 rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
+                if (pass == 1 && static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
+                    highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
+                    break;
+                highest = 0;
                 // interpolation beyond
-                const int cap = std::max(4, rowsPer > 0 ? cs.size() / rowsPer : static_cast<int>(samples.size()));
+                const int cap = capOf(rowsPer);
                 int count = std::min(kFirstCount, cap), failed = 3;  // the largest count seen to miss
                 FitPass a = trial(count, samples);
                 for (int climb = 0; !fits(a) && count < cap && climb < kMaxClimbSteps; ++climb) {
