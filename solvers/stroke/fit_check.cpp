@@ -182,7 +182,7 @@ double projectGlobal(const PowerCurve& c, const Polyline& pl, const Vec3& x, dou
 }  // namespace
 
 SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
-                               const std::vector<char>& keep, double resolution)
+                               const std::vector<char>& keep, double resolution, double exactAbove)
 {
     if (!(resolution > 0.0) || !std::isfinite(resolution)) throw GeometryError("fit check: resolution must be positive");
     if (!keep.empty() && keep.size() != samples.size()) throw GeometryError("fit check: one keep flag per sample");
@@ -247,14 +247,18 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     for (int i = 0; i < m; ++i)
         if ((keep.empty() || keep[i]) && out.bound[i] > top) top = out.bound[i], out.worst = i;
     if (out.worst < 0) return out;
+    const int first = out.worst;  // projected in round 0
     for (int round = 0; round < 2; ++round) {
-        // Round 0 projects the largest bound only; round 1 every bound above the exact value found.
+        // Round 0 projects the largest bound only; round 1 every bound above the exact value found
+        // or above exactAbove.
         order.clear();
+        // (Recomputed per sample: the exact maximum grows as round 1 goes.)
+        const auto open = [&](int i) { return out.bound[i] > std::min(out.maxError, exactAbove); };
         for (int i = 0; i < m; ++i)
-            if ((keep.empty() || keep[i]) && (round == 0 ? i == out.worst : out.bound[i] > out.maxError)) order.push_back(i);
+            if ((keep.empty() || keep[i]) && (round == 0 ? i == first : i != first && open(i))) order.push_back(i);
         std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
         for (int i : order) {
-            if (round == 1 && out.bound[i] <= out.maxError) break;
+            if (round == 1 && !open(i)) break;
             // Each search starts from the sample's polyline point (round 1 meets no sample whose
             // bound an earlier projection already made exact: that bound is the maximum).
             double foot = pl.u[near[i]];
@@ -265,7 +269,7 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
                 const int j = near[i];
                 const double e = refineLocal(c, samples[i], pl.before(j, c.end() - c.start()), pl.after(j, c.end() - c.start()), pl.u[j], &foot);
                 if (e < out.bound[i]) out.bound[i] = e;
-                if (out.bound[i] <= out.maxError) continue;
+                if (!open(i)) continue;
             }
             const double e = projectGlobal(c, pl, samples[i], &foot);
             if (e < out.bound[i]) out.bound[i] = e;

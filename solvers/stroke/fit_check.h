@@ -4,6 +4,7 @@
 #include "solvers/bspline/bspline_curve.h"
 
 #include <Eigen/Core>
+#include <limits>
 #include <vector>
 
 namespace sculptline::solvers::stroke {
@@ -12,7 +13,8 @@ struct SampleDeviation {
     double maxError = 0.0;  ///< max over the kept samples of the distance to the curve, model units
     int worst = -1;         ///< index of the sample attaining it (-1: no kept sample)
     /// Per sample an upper bound on its distance to the curve (the distance to an actual curve
-    /// point), exact for `worst` and for every sample whose bound reached maxError; 0 for a dropped one.
+    /// point), exact for `worst`, for every sample whose bound reached maxError and for every one
+    /// beyond measureSamples' exactAbove; 0 for a dropped one.
     std::vector<double> bound;
 };
 
@@ -25,7 +27,11 @@ struct SampleDeviation {
 /// @param keep       per sample 1 = measured, 0 = dropped (empty: all kept)
 /// @param resolution polyline spacing, model units (> 0); the tolerance / 2 keeps the candidates
 ///                   for exact projection to the few samples within ~tolerance / 30 of the maximum.
+/// @param exactAbove every kept sample whose bound would exceed this is projected exactly too, so
+///                   that `bound` > exactAbove holds exactly for the samples beyond it and no other
+///                   (those at or below it are proven within it). Default: only the maximum's.
 SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
-                               const std::vector<char>& keep, double resolution);
+                               const std::vector<char>& keep, double resolution,
+                               double exactAbove = std::numeric_limits<double>::infinity());
 
 }  // namespace sculptline::solvers::stroke

@@ -316,6 +316,34 @@ TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolyl
     }
 }
 
+// exactAbove: every sample whose bound is beyond it has its exact distance (the dense measure), and
+// every other lies within it. The fitter decides with it which of a loop's overshoot samples stay
+// dropped. Noise 0.5 against a threshold of 1.0: dozens of samples beyond it on each shape.
+TEST(FitTolerance, GivenExactAbove_WhenSamplesMeasured_ThenEveryBoundBeyondItIsTheDistance)
+{
+    constexpr double kExactAbove = 1.0;
+    for (const auto& [name, shape] : shapes()) {
+        DrawOptions d;
+        d.noise = 0.5;
+        const Stroke s = draw(shape, d);
+        FitOptions o;
+        o.tolerance = 3.0;
+        const FitResult r = fitStroke(s, o);
+        const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0, kExactAbove);
+        int beyond = 0;
+        for (size_t i = 0; i < s.points.size(); ++i) {
+            const double dense = maxDeviation(r.curve, {s.points[i]});
+            if (dev.bound[i] > kExactAbove) {
+                ++beyond;
+                EXPECT_NEAR(dev.bound[i], dense, kMeasureAgreement) << name << " sample " << i;
+            } else {
+                EXPECT_LE(dense, kExactAbove + kMeasureAgreement) << name << " sample " << i;
+            }
+        }
+        EXPECT_GT(beyond, 10) << name << ": the threshold should leave samples beyond it";
+    }
+}
+
 // A sample just before a C0 corner whose nearest polyline point is the corner itself: the curve's
 // derivative at the corner is the next leg's, so one Newton bracket around the corner searched only
 // that leg and reported the distance to the corner (a closed square's seam: 0.47 against 0.004).
