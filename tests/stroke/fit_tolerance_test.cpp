@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <tuple>
 
 namespace sculptline::stroketest {
 namespace {
@@ -318,10 +319,11 @@ TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolyl
 
 // exactAbove: every sample whose bound is beyond it has its exact distance (the dense measure), and
 // every other lies within it. The fitter decides with it which of a loop's overshoot samples stay
-// dropped. Noise 0.5 against a threshold of 1.0: dozens of samples beyond it on each shape.
+// dropped. Noise 0.5 against a threshold of 0.75: dozens of samples beyond it on each shape (at 1.0
+// the sanitizer build's fits left 6 on the s-curve: its floating point differs).
 TEST(FitTolerance, GivenExactAbove_WhenSamplesMeasured_ThenEveryBoundBeyondItIsTheDistance)
 {
-    constexpr double kExactAbove = 1.0;
+    constexpr double kExactAbove = 0.75;
     for (const auto& [name, shape] : shapes()) {
         DrawOptions d;
         d.noise = 0.5;
@@ -341,6 +343,7 @@ TEST(FitTolerance, GivenExactAbove_WhenSamplesMeasured_ThenEveryBoundBeyondItIsT
             }
         }
         EXPECT_GT(beyond, 10) << name << ": the threshold should leave samples beyond it";
+        std::printf("%s: %d samples beyond %.2f\n", name.c_str(), beyond, kExactAbove);
     }
 }
 
