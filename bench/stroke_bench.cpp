@@ -130,6 +130,24 @@ void BM_StrokeFitJitter(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
+// Loops, 300 samples each, noise kNoise: arg 0 a circle, 1 an ellipse, 2 a teardrop (one corner).
+// The fewer-control-points search covers them too (periodic averaged knots for the smooth loops,
+// one clamped piece round the corner for the teardrop).
+void BM_StrokeFitLoop(benchmark::State& state)
+{
+    const Shape shapes[] = {circleShape({0, 0, 0}, 80), ellipseShape({0, 0, 0}, 120, 60, 0.4), teardropShape(80)};
+    DrawOptions d;
+    d.noise = kNoise;
+    const Stroke s = drawWithSamples(shapes[state.range(0)], 300, d);
+    FitResult r = fitStroke(s);
+    for (auto _ : state) {
+        r = fitStroke(s);
+        benchmark::DoNotOptimize(r.curve.points().data());
+    }
+    report(state, s, r);
+}
+BENCHMARK(BM_StrokeFitLoop)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+
 // The flourish of BM_StrokeFit/1000 (arg 0) and of BM_StrokeFitJitter (arg 1) drawn with 16 noise
 // seeds, all fitted in each iteration: one seed is one draw of the noise, and the search for fewer
 // control points costs very different amounts on different draws (the benchmarks above use seed 1,

@@ -361,17 +361,33 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     const int maxUnknowns = std::max(in.closed ? 5 : 4, static_cast<int>(m) + 2);
 
     SplineFitResult res;
-    if (opt.knotPlacement == KnotPlacement::Averaged && !in.closed) {
+    if (opt.knotPlacement == KnotPlacement::Averaged) {
         // The NURBS Book eqs. 9.68-9.69 (de Boor's averaging): n+1 control points get knots that
         // follow the density of the sample parameters; the smallest n within tolerance is found by
         // bisection (the error falls, not strictly, as n grows).
+        // A closed curve (periodic, period 1) of N control points has N spans, one break each:
+        // b_0 = 0 and b_j at the parameter j N_s / N samples along (interpolated between two),
+        // so that every span holds N_s / N samples, the periodic form of the same averaging.
         auto averaged = [&](int nCtrl) {
             std::vector<double> uc = u;  // this trial's parameters (corrected below)
             Spline t;
+            t.closed = in.closed;
             t.breaks = {0.0};
             const int nS = static_cast<int>(u.size());
+            if (in.closed) {
+                const double d = double(nS) / nCtrl;
+                for (int j = 1; j < nCtrl; ++j) {
+                    const int i = static_cast<int>(j * d);
+                    const double a = j * d - i;
+                    const double next = i + 1 < nS ? u[i + 1] : 1.0;
+                    const double knot = (1 - a) * u[std::min(i, nS - 1)] + a * next;
+                    if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
+                }
+                // The smallest periodic start (five spans); merged breaks can leave fewer.
+                if (t.breaks.size() < 5) return std::make_pair(t, std::numeric_limits<double>::infinity());
+            }
             const double d = double(nS) / (nCtrl - kDegree);
-            if (nCtrl >= nS) {
+            if (!in.closed && nCtrl >= nS) {
                 // Interpolation: The NURBS Book eq. 9.8 (each knot the mean of p parameters), which
                 // keeps every sample inside the support of its own basis function (Schoenberg-
                 // Whitney); eq. 9.69 at n = m can leave a span empty and its neighbour two.
@@ -382,14 +398,17 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                     if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
                 }
             }
-            for (int j = 1; nCtrl < nS && j < nCtrl - kDegree; ++j) {
+            for (int j = 1; !in.closed && nCtrl < nS && j < nCtrl - kDegree; ++j) {
                 const int i = static_cast<int>(j * d);
                 const double a = j * d - i;
                 const double knot = (1 - a) * u[std::max(0, i - 1)] + a * u[std::min(nS - 1, i)];
                 if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
             }
-            t.breaks.push_back(1.0);
+            if (!in.closed) t.breaks.push_back(1.0);
             solve(t, X, S, uc, opt.fairing);
+            // An open curve's end samples are its end points P_0 and P_n; a closed curve has none,
+            // and each of its samples is kept between its neighbours across the seam.
+            const size_t firstK = in.closed ? 0 : 1, endK = in.closed ? uc.size() : uc.size() - 1;
             // SplineFitOptions::averagedCorrections: Hoschek's intrinsic parametrization, each
             // sample's parameter moved by a Newton step toward its foot point (kept between its
             // neighbours'), the knots kept. The Newton step's evaluation also gives the sample's
@@ -397,11 +416,13 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             double before = std::numeric_limits<double>::infinity();
             for (int c = 0; c < opt.averagedCorrections; ++c) {
                 double e = 0.0;  // the samples' largest distance at their parameters (the ends are P_0, P_n)
-                for (size_t k = 1; k + 1 < uc.size(); ++k) {
+                for (size_t k = firstK; k < endK; ++k) {
                     Vec3 d[3];
                     t.eval(uc[k], d);
                     e = std::max(e, (d[0] - X[S[k]]).norm());
-                    footPointNewtonStep(d[0], d[1], d[2], X[S[k]], uc[k - 1], uc[k + 1], uc[k]);
+                    const double lo = k > 0 ? uc[k - 1] : uc.back() - 1.0;
+                    const double hi = k + 1 < uc.size() ? uc[k + 1] : uc.front() + 1.0;
+                    footPointNewtonStep(d[0], d[1], d[2], X[S[k]], lo, hi, uc[k]);
                 }
                 if (opt.averagedControlPoints > 0 && e > opt.tolerance) {
                     // A count that cannot fit is given up early (kCorrectionRejection). It reports
@@ -425,8 +446,10 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             }
             return std::make_pair(t, measureAll(t, in, S, uc, opt.tolerance));
         };
-        int lo = 4, hi = std::max(4, static_cast<int>(S.size()));
-        if (opt.averagedControlPoints > 0) lo = hi = std::clamp(opt.averagedControlPoints, 4, hi);
+        // (Closed: at least the five spans of the smallest periodic start, fewer unknowns than samples.)
+        const int least = in.closed ? 5 : 4;
+        int lo = least, hi = std::max(least, static_cast<int>(S.size()) - (in.closed ? 1 : 0));
+        if (opt.averagedControlPoints > 0) lo = hi = std::clamp(opt.averagedControlPoints, least, hi);
         auto best = averaged(hi);
         while (lo < hi) {
             const int mid = (lo + hi) / 2;

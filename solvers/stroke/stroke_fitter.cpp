@@ -270,7 +270,10 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // step: a quarter to a third of the time went into a fit that served only as the search's
     // ceiling); the error-driven fit runs only when the search finds nothing. The fewest-points mode
     // (KnotRemoval::AllKnots) counts up below the error-driven count instead.
-    const bool search = !cs.closed && corners.empty() && options.fewerControlPoints;
+    // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
+    // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
+    const bool periodic = cs.closed && corners.empty();
+    const bool search = (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
     const bool scan = options.spline.removal == KnotRemoval::AllKnots;
     int round = 0;
     auto refine = [&](int rounds) {
@@ -324,11 +327,10 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // is solved again with their conditioned points among the rows (kRowRounds, kRowShare), so
         // that the least squares answers for them: flourish-200 22 -> 21 control points, the
         // s-curve in the fewest-points mode 7 -> 6 (scripts/compare_splprep.py).
-        auto take = [&](FitPass& a) {
+        auto take = [&](FitPass& a, int count) {
             if (!fits(a)) return false;
             SampleDeviation dev;
             if (accept(a, dev)) return true;
-            const int count = a.curve.pointCount();  // (alt.averagedControlPoints is the last count tried)
             std::vector<int> rows = samples;
             for (int round = 0; round < kRowRounds; ++round) {
                 const size_t before = rows.size();
@@ -354,11 +356,14 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // Counting up from the smallest, below the error-driven count: never more than the
             // default's search (the error does not fall strictly with the count).
             refine(kMaxRefinements);
-            const int ceiling = fit.curve.pointCount() - (res.converged ? 1 : 0);
+            // (The count a trial is asked for: a closed curve repeats 3 points, and a loop's one
+            // clamped piece has its seam point twice.)
+            const int errorDriven = fit.curve.pointCount() - (!cs.closed ? 0 : periodic ? 3 : 2);
+            const int ceiling = errorDriven - (res.converged ? 1 : 0);
             rowsPer = kDenseRowsPerPoint;
-            for (int count = 4; count <= ceiling && !found; ++count) {
+            for (int count = cs.closed ? 5 : 4; count <= ceiling && !found; ++count) {
                 FitPass a = trial(count, samples);
-                found = take(a);
+                found = take(a, count);
             }
         } else {
             // Predicted counts instead of a bisection: a cubic's least-squares error falls about
@@ -394,12 +399,16 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 highest = 0;
                 // interpolation beyond
                 const int cap = capOf(rowsPer);
-                int count = std::min(kFirstCount, cap), failed = 3;  // the largest count seen to miss
+                // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
+                // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
+                int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
                 FitPass a = trial(count, samples);
                 for (int climb = 0; !fits(a) && count < cap && climb < kMaxClimbSteps; ++climb) {
                     failed = count;
-                    const double spans = (count - 3) * std::pow(a.maxError / res.tolerance, 0.25);
-                    count = std::min(cap, std::max(count + 1, 3 + static_cast<int>(std::ceil(spans))));
+                    // (An open cubic has count - 3 spans, a closed one count.)
+                    const int extra = periodic ? 0 : 3;
+                    const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
+                    count = std::min(cap, std::max(count + 1, extra + static_cast<int>(std::ceil(spans))));
                     a = trial(count, samples);
                 }
                 while (fits(a) && count - 1 > failed) {
@@ -413,13 +422,13 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                         if (count > cap) break;
                         a = trial(count, samples);
                     }
-                    found = take(a);
+                    found = take(a, count);
                 }
             }
         }
     }
     if (!found && !(search && scan)) refine(kMaxRefinements);
-    if (search && !found && res.converged && sopt.removal == KnotRemoval::LastRound) {
+    if (search && !found && res.converged && sopt.removal == KnotRemoval::LastRound && !cs.closed) {
         // Nothing found by the search: the error-driven fit's knots are tried for removal again,
         // all of them (KnotRemoval::AllKnots; spiral 19 -> 18), which costs a second error-driven
         // fit only on such strokes.

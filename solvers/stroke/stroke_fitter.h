@@ -33,7 +33,8 @@ struct FitOptions {
     bool dynamicSampling = true;
     /// After the error-driven fit of an open stroke without corners, look for fewer control points
     /// with averaged knots and corrected parameters (stroke_fitter.cpp); kept only when every kept
-    /// raw sample stays within the tolerance. Loops and strokes with corners keep the error-driven fit.
+    /// raw sample stays within the tolerance. Smooth loops search with periodic averaged knots;
+    /// strokes with corners keep the error-driven fit.
     bool fewerControlPoints = true;
     ConditioningOptions conditioning;
     FeatureOptions features;

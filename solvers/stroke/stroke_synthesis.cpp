@@ -39,6 +39,14 @@ Shape circleShape(const Eigen::Vector3d& c, double r, double start)
                         start + 2 * kPi, true);
 }
 
+Shape teardropShape(double r)
+{
+    Shape s = fromFunction([&](double t) { return Eigen::Vector3d(r * std::cos(t), r * std::sin(t) * std::sin(0.5 * t), 0.0); }, 0.0,
+                           2 * kPi, true);
+    s.corners = {0};
+    return s;
+}
+
 Shape ellipseShape(const Eigen::Vector3d& c, double a, double b, double rot)
 {
     const double cr = std::cos(rot), sr = std::sin(rot);

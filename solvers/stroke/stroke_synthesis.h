@@ -27,6 +27,9 @@ Shape lineShape(const Eigen::Vector3d& a, const Eigen::Vector3d& b);
 Shape arcShape(const Eigen::Vector3d& center, double radius, double a0, double a1);
 Shape circleShape(const Eigen::Vector3d& center, double radius, double startAngle = 0.3);
 Shape ellipseShape(const Eigen::Vector3d& center, double a, double b, double rotation);
+/// A loop with one corner: (r cos t, r sin t sin(t/2)), t in [0, 2 pi), its tip at (r, 0) turning
+/// by 90 degrees (both sides leave it at 45 degrees to the axis), the corner at reference index 0.
+Shape teardropShape(double r);
 Shape polygonShape(const std::vector<Eigen::Vector3d>& vertices, bool closed);
 Shape sCurveShape(double size);
 Shape spiralShape(double size, double turns);

@@ -220,6 +220,38 @@ TEST(FitTolerance, GivenCleanSCurve_WhenTheToleranceIsLoosened_ThenFewerControlP
     EXPECT_LT(counts[2], counts[0]) << "1.0 against 0.25";
 }
 
+// Loops search for fewer control points too: a smooth loop with periodic averaged knots (its N
+// control points have N spans, the breaks at every N_s / N-th sample's parameter), a loop with one
+// corner as one clamped piece round from the corner. Before, both kept the error-driven fit. Every
+// kept raw sample stays within the tolerance (measured independently), the curve stays closed.
+TEST(FitTolerance, GivenLoops_WhenFitted_ThenFewerControlPointsThanTheErrorDrivenFitAndEverySampleWithin)
+{
+    const std::vector<std::tuple<std::string, Shape, size_t>> loops = {
+        {"circle", circleShape({10, 20, 0}, 80), 0},
+        {"ellipse", ellipseShape({0, 0, 0}, 120, 60, 0.4), 0},
+        {"teardrop", teardropShape(80), 1},
+    };
+    for (const auto& [name, shape, corners] : loops) {
+        // Arrange
+        DrawOptions d;
+        d.noise = 0.25;
+        const Stroke s = draw(shape, d);
+        FitOptions errorDriven;
+        errorDriven.fewerControlPoints = false;
+        // Act
+        const FitResult r = fitStroke(s);
+        const FitResult e = fitStroke(s, errorDriven);
+        // Assert
+        ASSERT_TRUE(r.curve.isClosed()) << name;
+        ASSERT_EQ(r.corners.size(), corners) << name << ": the loop this test is about";
+        EXPECT_TRUE(r.converged) << name;
+        EXPECT_LE(maxDeviation(r.curve, keptSamples(s, r)), r.tolerance + kMeasureAgreement) << name;
+        EXPECT_NEAR(r.maxError, maxDeviation(r.curve, keptSamples(s, r)), kMeasureAgreement) << name;
+        EXPECT_LT(r.curve.pointCount(), e.curve.pointCount()) << name;
+        std::printf("%s: %d control points, error-driven %d\n", name.c_str(), r.curve.pointCount() - 3, e.curve.pointCount() - 3);
+    }
+}
+
 // An arc like the sail's target B (a 30-unit chord bulging 10 units), drawn with the pointer moving
 // about a pixel per event, its samples rounded to a grid of pitch q (whole pixels).
 Stroke quantizedArc(double q, bool quantize)
