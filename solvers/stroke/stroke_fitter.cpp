@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sculptline::solvers::stroke {
 namespace {
@@ -300,7 +301,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
         std::vector<int> dense;
         int highest = 0;  // the largest count tried in this pass
-        auto trial = [&](int count, const std::vector<int>& rows) {
+        auto solveTrial = [&](int count, const std::vector<int>& rows) {
             highest = std::max(highest, count);
             alt.averagedControlPoints = count;
             const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
@@ -312,6 +313,19 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             std::sort(dense.begin(), dense.end());
             dense.erase(std::unique(dense.begin(), dense.end()), dense.end());
             return fitConditioned(cs, fitPoints, corners, dense, alt);
+        };
+        // A trial that cannot make a curve is a count that does not fit, not a failed stroke: a
+        // sparse loop's clamped piece whose averaged knots merge can leave fewer than the 4
+        // distinct points a closed cubic needs (teardrops of 16-24 samples), and the error-driven
+        // fit after the search still fits such a stroke.
+        auto trial = [&](int count, const std::vector<int>& rows) {
+            try {
+                return solveTrial(count, rows);
+            } catch (const GeometryError&) {
+                FitPass none;
+                none.maxError = std::numeric_limits<double>::infinity();
+                return none;
+            }
         };
         auto fits = [&](const FitPass& a) { return a.maxError <= res.tolerance; };
         // A count whose samples fit is taken when every kept raw sample is within the tolerance too.
@@ -390,7 +404,8 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // flourishes of 1,000 samples have ~205 rows and try at most 29 control points: the
             // replay was half their search time.) One count of margin covers the verify loop's
             // test of the count after the last.
-            const auto capOf = [&](int per) { return std::max(4, per > 0 ? cs.size() / per : static_cast<int>(samples.size())); };
+            const int least = cs.closed ? 5 : 4;
+            const auto capOf = [&](int per) { return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size())); };
             for (int pass = 0; pass < 2 && !found; ++pass) {
                 rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
                 if (pass == 1 && static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
@@ -407,8 +422,10 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                     failed = count;
                     // (An open cubic has count - 3 spans, a closed one count.)
                     const int extra = periodic ? 0 : 3;
+                    // (A trial that made no curve misses by an infinite error: the next count.)
                     const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
-                    count = std::min(cap, std::max(count + 1, extra + static_cast<int>(std::ceil(spans))));
+                    const int predicted = std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
+                    count = std::min(cap, std::max(count + 1, predicted));
                     a = trial(count, samples);
                 }
                 while (fits(a) && count - 1 > failed) {
