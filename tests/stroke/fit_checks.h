@@ -1,6 +1,7 @@
 #pragma once
 // Independent measurements of a fitted curve for the stroke tests.
 #include "solvers/bspline/bspline_curve.h"
+#include "solvers/bspline/tessellation.h"
 #include "solvers/geometry/plane_fit.h"
 #include "solvers/stroke/stroke_synthesis.h"
 
@@ -36,12 +37,7 @@ inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& p
         for (int i = b + 1; i <= std::min(b + kBlock, kSegments); ++i) box.extend(dense[i]);
         boxes.push_back(box);
     }
-    auto segment = [&](const Vec3& p, int i) {
-        const Vec3 d = dense[i + 1] - dense[i];
-        const double len2 = d.squaredNorm();
-        const double t = len2 > 0.0 ? std::clamp((p - dense[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return (p - (dense[i] + t * d)).norm();
-    };
+    auto segment = [&](const Vec3& p, int i) { return solvers::distanceToSegment(p, dense[i], dense[i + 1]); };
     auto block = [&](const Vec3& p, int b, double best) {
         for (int i = b * kBlock; i < std::min((b + 1) * kBlock, kSegments); ++i) best = std::min(best, segment(p, i));
         return best;
