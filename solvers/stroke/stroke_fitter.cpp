@@ -444,21 +444,17 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             }
         }
     }
-    if (!found && !(search && scan)) refine(kMaxRefinements);
-    if (search && !found && res.converged && sopt.removal == KnotRemoval::LastRound && !cs.closed) {
-        // Nothing found by the search: the error-driven fit's knots are tried for removal again,
-        // all of them (KnotRemoval::AllKnots; spiral 19 -> 18), which costs a second error-driven
-        // fit only on such strokes.
-        SplineFitOptions all = sopt;
-        all.removal = KnotRemoval::AllKnots;
-        FitPass a = fitConditioned(cs, fitPoints, corners, samples, all);
-        if (a.curve.pointCount() < fit.curve.pointCount()) {
-            const SampleDeviation dev = measureSamples(a.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
-            if (dev.maxError <= res.tolerance) {
-                fit = std::move(a);
-                res.maxError = dev.maxError;
-            }
-        }
+    if (!found && !(search && scan)) {
+        // Nothing found by the search on an open stroke: the error-driven fit tries every knot for
+        // removal (KnotRemoval::AllKnots; spiral 19 -> 18), not only its last round's. (It was a
+        // second error-driven fit with AllKnots after the first: the same control points on every
+        // stroke measured, scripts/compare_splprep.py, the benchmarks' strokes and 16 jittery
+        // flourishes, whose fits it made 6 % faster.) Loops keep the last round's knots (lsq_fit
+        // tries those only on closed curves).
+        const KnotRemoval removal = sopt.removal;
+        if (search && !cs.closed && sopt.removal == KnotRemoval::LastRound) sopt.removal = KnotRemoval::AllKnots;
+        refine(kMaxRefinements);
+        sopt.removal = removal;
     }
     if (!res.converged) {
         // Below the noise (a tolerance of a twentieth of a pixel on integer pixel samples) the
