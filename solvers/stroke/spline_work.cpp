@@ -199,44 +199,13 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
 // rarely have more; the averaged-knot search solves a loop nine times per trial count.
 constexpr int kDenseCyclic = 96;
 
-void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-                 double fairing)
+// The periodic normal equations, entry by entry: addA(i, j, v) adds v to A(i, j) (both triangles),
+// addB(i, x) adds x to row i of the right-hand side.
+template <class AddA, class AddB>
+void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                    double lambda, AddA&& addA, AddB&& addB)
 {
     const int n = s.unknowns();
-    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
-    if (n <= kDenseCyclic) {
-        // Storage kept between solves (the lower triangle is all LLT reads).
-        thread_local Eigen::MatrixXd a, b;
-        thread_local Eigen::LLT<Eigen::MatrixXd> llt;
-        a.setZero(n, n);
-        b.setZero(n, 3);
-        for (size_t k = 0; k < S.size(); ++k) {
-            const double uk = s.wrap(u[k]);
-            const int span = findSpan(kDegree, s.knots, uk);
-            const BasisDerivatives<kDegree, 0> nk = evaluateBasis<kDegree, 0>(s.knots, span, uk);
-            const auto& basis = nk.d[0];
-            for (int q = 0; q <= kDegree; ++q) {
-                const int i = (span - kDegree + q) % n;
-                b.row(i) += basis[q] * X[S[k]].transpose();
-                for (int r = 0; r <= kDegree; ++r) a((span - kDegree + r) % n, i) += basis[q] * basis[r];
-            }
-        }
-        for (int c = 0; c < n; ++c) {
-            const int idx[3] = {(c + n - 1) % n, c, (c + 1) % n};
-            const double w[3] = {1.0, -2.0, 1.0};
-            for (int t = 0; t < 3; ++t)
-                for (int r = 0; r < 3; ++r) a(idx[t], idx[r]) += lambda * w[t] * w[r];
-        }
-        llt.compute(a);
-        if (llt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
-        llt.solveInPlace(b);
-        s.ctrl.resize(n + kDegree);
-        for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = b.row(i % n).transpose();
-        return;
-    }
-    std::vector<Eigen::Triplet<double>> trip;
-    trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
-    Eigen::MatrixXd b = Eigen::MatrixXd::Zero(n, 3);
     for (size_t k = 0; k < S.size(); ++k) {
         const double uk = s.wrap(u[k]);
         const int span = findSpan(kDegree, s.knots, uk);
@@ -244,23 +213,47 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
         const auto& basis = nk.d[0];
         for (int q = 0; q <= kDegree; ++q) {
             const int i = (span - kDegree + q) % n;
-            b.row(i) += basis[q] * X[S[k]].transpose();
-            for (int r = 0; r <= kDegree; ++r) trip.emplace_back(i, (span - kDegree + r) % n, basis[q] * basis[r]);
+            addB(i, basis[q] * X[S[k]]);
+            for (int r = 0; r <= kDegree; ++r) addA(i, (span - kDegree + r) % n, basis[q] * basis[r]);
         }
     }
     for (int c = 0; c < n; ++c) {
         const int idx[3] = {(c + n - 1) % n, c, (c + 1) % n};
         const double w[3] = {1.0, -2.0, 1.0};
         for (int t = 0; t < 3; ++t)
-            for (int r = 0; r < 3; ++r) trip.emplace_back(idx[t], idx[r], lambda * w[t] * w[r]);
+            for (int r = 0; r < 3; ++r) addA(idx[t], idx[r], lambda * w[t] * w[r]);
     }
-    Eigen::SparseMatrix<double> a(n, n);
-    a.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
-    if (ldlt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
-    const Eigen::MatrixXd x = ldlt.solve(b);
+}
+
+void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+                 double fairing)
+{
+    const int n = s.unknowns();
+    const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
+    // Storage kept between solves.
+    thread_local Eigen::MatrixXd b;
+    b.setZero(n, 3);
+    const auto addB = [&](int i, const Vec3& x) { b.row(i) += x.transpose(); };
+    if (n <= kDenseCyclic) {
+        thread_local Eigen::MatrixXd a;
+        thread_local Eigen::LLT<Eigen::MatrixXd> llt;
+        a.setZero(n, n);
+        assembleClosed(s, X, S, u, lambda, [&](int i, int j, double v) { a(i, j) += v; }, addB);
+        llt.compute(a);
+        if (llt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
+        llt.solveInPlace(b);
+    } else {
+        std::vector<Eigen::Triplet<double>> trip;
+        trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
+        assembleClosed(s, X, S, u, lambda, [&](int i, int j, double v) { trip.emplace_back(i, j, v); }, addB);
+        Eigen::SparseMatrix<double> a(n, n);
+        a.setFromTriplets(trip.begin(), trip.end());
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
+        if (ldlt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
+        b = ldlt.solve(b).eval();
+    }
     s.ctrl.resize(n + kDegree);
-    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = x.row(i % n).transpose();
+    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = b.row(i % n).transpose();
 }
 
 void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
