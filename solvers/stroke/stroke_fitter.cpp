@@ -266,11 +266,11 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     SplineFitOptions sopt = options.spline;
     sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
     FitPass fit;
-    // The averaged-knot search (FitOptions::fewerControlPoints) applies to open strokes without
-    // corners. By default it runs without the error-driven fit (which it replaced as the first
-    // step: a quarter to a third of the time went into a fit that served only as the search's
-    // ceiling); the error-driven fit runs only when the search finds nothing. The fewest-points mode
-    // (KnotRemoval::AllKnots) counts up below the error-driven count instead.
+    // The averaged-knot search (FitOptions::fewerControlPoints) applies to strokes without corners
+    // and to loops with one. By default it runs without the error-driven fit (which it replaced as
+    // the first step: a quarter to a third of the time went into a fit that served only as the
+    // search's ceiling); the error-driven fit runs only when the search finds nothing. The
+    // fewest-points mode (KnotRemoval::AllKnots) counts up below the error-driven count instead.
     // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
     // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
     const bool periodic = cs.closed && corners.empty();
@@ -402,7 +402,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             // so the same answers) while kDenseRowsPerPoint rows per control point are no more than
             // the dynamic threshold's rows and neither pass's cap binds: then it is skipped. (Jittery
             // flourishes of 1,000 samples have ~205 rows and try at most 29 control points: the
-            // replay was half their search time.) One count of margin covers the verify loop's
+            // replay was 30 % of their fit time.) One count of margin covers the verify loop's
             // test of the count after the last.
             const int least = cs.closed ? 5 : 4;
             const auto capOf = [&](int per) { return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size())); };
@@ -445,8 +445,8 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         }
     }
     if (!found && !(search && scan)) {
-        // Nothing found by the search on an open stroke: the error-driven fit tries every knot for
-        // removal (KnotRemoval::AllKnots; spiral 19 -> 18), not only its last round's. (It was a
+        // Where the search ran on an open stroke and found nothing, the error-driven fit tries
+        // every knot for removal (KnotRemoval::AllKnots; spiral 19 -> 18), not only its last round's. (It was a
         // second error-driven fit with AllKnots after the first: the same control points on every
         // stroke measured, scripts/compare_splprep.py, the benchmarks' strokes and 16 jittery
         // flourishes, whose fits it made 6 % faster.) Loops keep the last round's knots (lsq_fit
