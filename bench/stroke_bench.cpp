@@ -67,15 +67,22 @@ void report(benchmark::State& state, const Stroke& s, const FitResult& r)
     state.counters["tolerance"] = r.tolerance;
 }
 
-void BM_StrokeFit(benchmark::State& state)
+// The warm loop every fitting benchmark times: `s` fitted with `o` once per iteration, then its
+// result reported beside the time.
+void fitLoop(benchmark::State& state, const Stroke& s, const FitOptions& o = {})
 {
-    const Stroke s = benchStroke(static_cast<int>(state.range(0)));
-    FitResult r = fitStroke(s);
+    FitResult r = fitStroke(s, o);
     for (auto _ : state) {
-        r = fitStroke(s);
+        r = fitStroke(s, o);
         benchmark::DoNotOptimize(r.curve.points().data());  // not the double itself: benchmark 1.7.1 with GCC corrupts a non-const double passed to DoNotOptimize ("+m,r")
     }
     report(state, s, r);
+}
+
+void BM_StrokeFit(benchmark::State& state)
+{
+    const Stroke s = benchStroke(static_cast<int>(state.range(0)));
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFit)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
@@ -107,12 +114,7 @@ Stroke spaceStroke(int c)
 void BM_StrokeFit3D(benchmark::State& state)
 {
     const Stroke s = spaceStroke(static_cast<int>(state.range(0)));
-    FitResult r = fitStroke(s);
-    for (auto _ : state) {
-        r = fitStroke(s);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
-    report(state, s, r);
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFit3D)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 
@@ -121,12 +123,7 @@ BENCHMARK(BM_StrokeFit3D)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);
 void BM_StrokeFitJitter(benchmark::State& state)
 {
     const Stroke s = jitteryStroke(static_cast<int>(state.range(0)));
-    FitResult r = fitStroke(s);
-    for (auto _ : state) {
-        r = fitStroke(s);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
-    report(state, s, r);
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
@@ -139,12 +136,7 @@ void BM_StrokeFitLoop(benchmark::State& state)
     DrawOptions d;
     d.noise = kNoise;
     const Stroke s = drawWithSamples(shapes[state.range(0)], 300, d);
-    FitResult r = fitStroke(s);
-    for (auto _ : state) {
-        r = fitStroke(s);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
-    report(state, s, r);
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFitLoop)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 
@@ -306,12 +298,7 @@ BENCHMARK(BM_StrokeFitCold)->Arg(0)->Arg(1)->UseManualTime()->Iterations(41)->Un
 void BM_StrokeFitWarm(benchmark::State& state)
 {
     const Stroke s = coldCaseStroke(static_cast<int>(state.range(0)));
-    FitResult r = fitStroke(s);
-    for (auto _ : state) {
-        r = fitStroke(s);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
-    report(state, s, r);
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFitWarm)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
@@ -321,12 +308,7 @@ void BM_StrokeFitFewest(benchmark::State& state)
     const Stroke s = benchStroke(static_cast<int>(state.range(0)));
     FitOptions o;
     o.spline.removal = KnotRemoval::AllKnots;
-    FitResult r = fitStroke(s, o);
-    for (auto _ : state) {
-        r = fitStroke(s, o);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
-    report(state, s, r);
+    fitLoop(state, s, o);
 }
 BENCHMARK(BM_StrokeFitFewest)->Arg(200)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 
@@ -337,12 +319,7 @@ void BM_StrokeFitPolygon(benchmark::State& state)
     d.noise = kNoise;
     const Stroke s = drawWithSamples(
         polygonShape({{0, 0, 0}, {150, 0, 0}, {190, 110, 0}, {60, 160, 0}, {-30, 80, 0}}, true), static_cast<int>(state.range(0)), d);
-    FitResult r = fitStroke(s);
-    for (auto _ : state) {
-        r = fitStroke(s);
-        benchmark::DoNotOptimize(r.curve.points().data());  // not the double itself: benchmark 1.7.1 with GCC corrupts a non-const double passed to DoNotOptimize ("+m,r")
-    }
-    report(state, s, r);
+    fitLoop(state, s);
 }
 BENCHMARK(BM_StrokeFitPolygon)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
@@ -362,13 +339,8 @@ void BM_StrokeFig43(benchmark::State& state)
     FitOptions o;
     o.dynamicSampling = dynamic;
     o.spline.knotPlacement = errorDriven ? KnotPlacement::ErrorDriven : KnotPlacement::Averaged;
-    FitResult r = fitStroke(s, o);
-    for (auto _ : state) {
-        r = fitStroke(s, o);
-        benchmark::DoNotOptimize(r.curve.points().data());
-    }
+    fitLoop(state, s, o);
     state.SetLabel(std::string(dynamic ? "dynamic threshold" : "speed-only") + (errorDriven ? ", error-driven knots" : ", averaged knots"));
-    report(state, s, r);
 }
 BENCHMARK(BM_StrokeFig43)->Args({0, 1})->Args({1, 1})->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMicrosecond);
 

@@ -192,7 +192,8 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
 // Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal
 // matrix is cyclic-banded. Up to kDenseCyclic unknowns it is assembled dense and factored by a dense
 // Cholesky (LLT); beyond, as triplets factored by a sparse LDL^T (fill-in stays O(N) for a cyclic
-// band). Measured (this assembly's pattern, 6 samples per unknown, 2 cores): sparse with its
+// band). Measured (a microbenchmark of this pattern, 6 samples per unknown, on the 2-core machine
+// while a build ran beside it, so the ratios count, not the times): sparse with its
 // assembly 15 / 30 / 73 / 111 / 142 / 238 / 194 us at N = 8 / 16 / 32 / 48 / 64 / 96 / 128, dense 0.5
 // / 1.3 / 21 / 35 / 71 / 141 / 239 us: the sparse path's set-up (triplets, ordering, symbolic
 // analysis), paid on every solve, outweighs the dense O(N^3) until about a hundred unknowns. Loops
