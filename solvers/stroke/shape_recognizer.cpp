@@ -100,8 +100,28 @@ double turnAt(const Point2& a, const Point2& k, const Point2& b)
     return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
 }
 
+// Angle by which the stroke turns at sample k of the edge from vertex `from` to vertex `to`, seen
+// from the samples one `leg` of path length before and after it, or the edge's ends where they are
+// nearer (round the seam of a loop): the turn of the edge itself there, not of its neighbours.
+double localTurn(const std::vector<Point2>& pts, int k, int from, int to, double leg, bool closed)
+{
+    const int n = static_cast<int>(pts.size());
+    const auto walk = [&](int step, int end) {
+        double travelled = 0.0;
+        int i = k;
+        while (i != end && travelled < leg) {
+            const int j = closed ? (i + step + n) % n : i + step;
+            travelled += (pts[j] - pts[i]).norm();
+            i = j;
+        }
+        return i;
+    };
+    return turnAt(pts[walk(-1, from)], pts[k], pts[walk(1, to)]);
+}
+
 // Returns how many of the final vertices were inserted here (the corner detector did not find them).
-int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double collinear, double shortEdgeLength, int sameCorner)
+int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double cornerLeg, double collinear,
+                   double shortEdgeLength, int sameCorner)
 {
     auto& idx = g.vertexIndex;
     const std::vector<int> detected = idx;
@@ -132,8 +152,12 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
         if (at < 0) break;
         // A missed corner turns the pen sharply; the farthest point of a smoothly bent edge (a
         // brace's bulge, a circle's arc between two vertices) does not, and inserting it would
-        // only approximate a curve by short chords.
-        if (turnAt(g.points[from], g.points[at], g.points[to]) < minCornerTurn) {
+        // only approximate a curve by short chords. The turn is read from the edge's ends and,
+        // where they lie beyond a nearer bend (a vertex the detector put on a curl, an edge
+        // spanning two sides), from one cornerLeg either side of the point.
+        const double fromEnds = turnAt(g.points[from], g.points[at], g.points[to]);
+        const double fromLegs = cornerLeg > 0.0 ? localTurn(g.points, at, from, to, cornerLeg, g.closed) : 0.0;
+        if (std::max(fromEnds, fromLegs) < minCornerTurn) {
             curved.emplace_back(from, to);
             continue;
         }
@@ -473,8 +497,8 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     double loopPolygonResidual = std::numeric_limits<double>::infinity();
     const std::vector<int> detectedCorners = g.closed ? g.vertexIndex : std::vector<int>{};
     const int sameCorner = o.sampleSpacing > 0.0 ? 2 : 0;
-    const int inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.collinearAngle,
-                                        o.shortEdge * g.extent, sameCorner);
+    const int inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
+                                        o.collinearAngle, o.shortEdge * g.extent, sameCorner);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon
         // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked
@@ -567,7 +591,7 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
             add(ShapeKind::Rectangle, std::max(rectangular(false) * (q.equal ? 0.7 : 1.0), looseScore));
             // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
             // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
-            add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.right && q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));
+            add(ShapeKind::Diamond, ideal(regularDiamond(g.vertices)) * (q.axisAligned ? 0.5 : 1.0) * (q.equal ? 1.0 : 0.4));
             add(ShapeKind::Polyline, fitScore * 0.5);
         } else {
             add(ShapeKind::Polyline, fitScore);

@@ -70,6 +70,9 @@ struct RecognizeOptions {
     /// corner. The farthest point of a smoothly curved piece turns less (a circle seen from the
     /// vertices of its inscribed square: 45 degrees), so curves are not chopped into chords.
     double minCornerTurn = 1.05;
+    /// ... read from the edge's ends and, where that turns less, from the samples this share of the
+    /// extent along the stroke either side of the point (0: from the edge's ends only).
+    double cornerLeg = 0.2;
     /// Polygon scores are multiplied by this for each vertex inserted beyond those expected (the
     /// detected corners, and on a loop the seam and one more): a polygon that needs many guessed
     /// vertices is a curve approximated by chords.

@@ -16,7 +16,7 @@
 //                                              overshot and sped up (Perturbation): accuracy per gesture
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
-// crossingTail, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
+// crossingTail, cornerLeg, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
 // looseQuad).
 // Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
@@ -100,6 +100,7 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "collinearAngle") o.collinearAngle = v;
     else if (k == "shortEdge") o.shortEdge = v;
     else if (k == "minCornerTurn") o.minCornerTurn = v;
+    else if (k == "cornerLeg") o.cornerLeg = v;
     else if (k == "guessedVertex") o.guessedVertex = v;
     else if (k == "habitDistance") o.habitDistance = v;
     else if (k == "maxOvershoot") o.maxOvershoot = v;
