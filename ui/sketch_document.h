@@ -241,8 +241,9 @@ public:
 
     /// The designer's recognition habits (thesis §3.1.3, Table 3-2: the user model adapts to its
     /// user). Choosing another candidate for the last stroke, or its freeform fit instead of the
-    /// shape, teaches the model (UserModel::learnShape); every recognition applies it, and a shape a
-    /// habit decided is used for the new curve at once (one undo step with the stroke).
+    /// shape, teaches the model a correction, and using the offered shape a confirmation
+    /// (UserModel::learnShape); every recognition applies it, and a shape a habit decided is used
+    /// for the new curve at once (one undo step with the stroke).
     /// Reads the model kept at `path` (empty: kept in memory only, nothing read or written); a file
     /// that does not exist is an empty model. Returns an empty string, or the message saying why
     /// the file could not be read (the model is then empty and the unreadable file is left as it is

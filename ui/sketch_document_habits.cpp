@@ -93,14 +93,15 @@ void SketchDocument::learnCorrection(solvers::stroke::ShapeKind intended)
 {
     if (!recognition_) return;
     // One stroke teaches one habit: trying candidates one after another (the N key) keeps only the
-    // last choice, and going back to the shape the window offered takes the lesson back.
+    // last choice, and going back to the shape the window offered makes the lesson a confirmation
+    // (UserModel::learnShape: confirmations keep a correction off the similar strokes read right).
     const bool hadLesson = habitFromLastStroke_;
     if (habitFromLastStroke_) {
         userModel_ = withoutLastHabits(userModel_, 1);
         habitFromLastStroke_ = false;
     }
     const size_t before = userModel_.habits().size();
-    if (recognition_->kind != intended) userModel_.learnShape(*recognition_, intended);
+    userModel_.learnShape(*recognition_, intended);
     habitFromLastStroke_ = userModel_.habits().size() > before;
     if (!habitFromLastStroke_ && !hadLesson) return;
     const QString error = saveUserModel();

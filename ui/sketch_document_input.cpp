@@ -355,7 +355,7 @@ void SketchDocument::chooseRecognized(bool regularized)
     const bool wasShape = candidateInUse_ >= 0;
     candidateInUse_ = regularized ? 0 : -1;
     if (!replaceRecognizedCurve(regularized ? *regularizedFit_ : *freeformFit_)) return;
-    // The offered shape confirms (and takes back a lesson of this stroke); the freeform fit instead
+    // The offered shape confirms (replacing a correction of this stroke); the freeform fit instead
     // of a shape in use is a correction.
     if (regularized) learnCorrection(recognition_->kind);
     else if (wasShape) learnCorrection(solvers::stroke::ShapeKind::Freeform);

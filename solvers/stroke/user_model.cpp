@@ -131,7 +131,7 @@ double meanDistance(const std::vector<Point2>& a, const std::vector<Point2>& b)
 
 void UserModel::learnShape(const Recognition& recognition, ShapeKind intended)
 {
-    if (recognition.kind == intended || recognition.geometry.points.size() < 2) return;
+    if (recognition.geometry.points.size() < 2) return;
     const auto& c = recognition.candidates;
     if (std::none_of(c.begin(), c.end(), [intended](const ShapeCandidate& x) { return x.kind == intended; })) return;
     habits_.push_back({normalizedShape(recognition.geometry), intended});

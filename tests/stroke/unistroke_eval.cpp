@@ -195,7 +195,10 @@ std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& reco
                 try {
                     stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
                     model.applyHabits(sr.recognition, sr.fit, o);
-                    model.learnShape(sr.recognition, acceptedKinds(r->gesture).front());
+                    // The designer confirms a stroke read as one of its gesture's classes and
+                    // corrects any other to the gesture's first class.
+                    const ShapeKind kind = sr.recognition.kind;
+                    model.learnShape(sr.recognition, isCorrect(r->gesture, kind) ? kind : acceptedKinds(r->gesture).front());
                 } catch (const std::exception&) {
                 }
                 ++a.trained;

@@ -64,8 +64,9 @@ Confusion evaluate(const std::vector<Recording>& recordings, const solvers::stro
 namespace sculptline::stroketest {
 
 /// Adapting to a person (UserModel::learnShape): per subject, the strokes numbered <= `firstN` at
-/// each gesture and speed teach the model (the designer confirms or corrects each, intending the
-/// gesture's reported class); the rest are recognized with and without the learned habits.
+/// each gesture and speed teach the model (the designer confirms each stroke read as one of its
+/// gesture's classes and corrects any other to the gesture's first class); the rest are recognized
+/// with and without the learned habits.
 struct AdaptationResult {
     std::string subject;
     int trained = 0, tested = 0;

@@ -25,6 +25,28 @@ constexpr double kHeldOutOverall = 0.94;
 // learning, and that learning helps at all.
 constexpr double kMinAdaptedAccuracy = 0.95;
 constexpr double kMinAdaptationGain = 0.01;
+// A learned stroke takes the strokes nearest to it, so a person can lose a stroke or two that the
+// recognizer alone read right: on the development subjects, learning their first one to three
+// repetitions (confirmed or corrected), at most 0.5 % of a person's remaining strokes
+// (unistroke-report --adapt dev: s03 after one, 2 of 432). A person losing more than 1 % would be
+// habits doing harm.
+constexpr double kMaxPersonalLoss = 0.01;
+
+void expectAdaptationHelps(const std::vector<AdaptationResult>& results)
+{
+    int tested = 0, before = 0, after = 0;
+    for (const auto& r : results) {
+        ASSERT_GT(r.tested, 0) << r.subject;
+        EXPECT_GE(double(r.correctAfter - r.correctBefore) / r.tested, -kMaxPersonalLoss)
+            << r.subject << ": adapting lost " << r.correctBefore - r.correctAfter << " of " << r.tested << " strokes";
+        tested += r.tested;
+        before += r.correctBefore;
+        after += r.correctAfter;
+    }
+    ASSERT_GT(tested, 0);
+    EXPECT_GE(double(after - before) / tested, kMinAdaptationGain);
+    EXPECT_GE(double(after) / tested, kMinAdaptedAccuracy);
+}
 
 TEST(UnistrokeRecognition, GivenDevelopmentSubjects_WhenRecognized_ThenOverallAndEveryGestureAboveFloor)
 {
@@ -107,23 +129,19 @@ TEST(UnistrokeRecognition, GivenAStroke_WhenTransformed_ThenScaledAndResampledAl
     EXPECT_EQ(denser.times.back(), s.times.back());
 }
 
+TEST(UnistrokeRecognition, GivenDevelopmentPeople_WhenTheModelLearnsTheirFirstStrokes_ThenTheirAccuracyRises)
+{
+    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
+    for (int firstN : {1, 3}) {
+        SCOPED_TRACE("first " + std::to_string(firstN) + " learned");
+        expectAdaptationHelps(adaptPerSubject(recs, firstN));
+    }
+}
+
 TEST(UnistrokeRecognition, GivenHeldOutPeople_WhenTheModelLearnsTheirFirstCorrections_ThenTheirAccuracyRises)
 {
-    // Arrange
     const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, heldOutSubjects());
-    // Act
-    const auto results = adaptPerSubject(recs, 3);
-    // Assert
-    int tested = 0, before = 0, after = 0;
-    for (const auto& r : results) {
-        EXPECT_GE(r.correctAfter, r.correctBefore) << r.subject << ": adapting made this person's recognition worse";
-        tested += r.tested;
-        before += r.correctBefore;
-        after += r.correctAfter;
-    }
-    ASSERT_GT(tested, 0);
-    EXPECT_GE(double(after - before) / tested, kMinAdaptationGain);
-    EXPECT_GE(double(after) / tested, kMinAdaptedAccuracy);
+    expectAdaptationHelps(adaptPerSubject(recs, 3));
 }
 
 }  // namespace
