@@ -449,7 +449,7 @@ private:
     solvers::stroke::UserModel userModel_ = solvers::stroke::UserModel::predefined();
     QString userModelPath_;
     /// The designer chose `intended` for the last stroke: remember it, and save the model.
-    void learnCorrection(solvers::stroke::ShapeKind intended);
+    void learnChoice(solvers::stroke::ShapeKind intended);
     /// Writes the model to userModelPath_ (atomically); the message on failure, else empty.
     QString saveUserModel() const;
     StrokeMode strokeMode_ = StrokeMode::Sketch;

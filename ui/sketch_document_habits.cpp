@@ -89,7 +89,7 @@ QString SketchDocument::saveUserModel() const
     return {};
 }
 
-void SketchDocument::learnCorrection(solvers::stroke::ShapeKind intended)
+void SketchDocument::learnChoice(solvers::stroke::ShapeKind intended)
 {
     if (!recognition_) return;
     // One stroke teaches one habit: trying candidates one after another (the N key) keeps only the
@@ -110,7 +110,8 @@ void SketchDocument::learnCorrection(solvers::stroke::ShapeKind intended)
         return;
     }
     const QString shape = QString::fromLatin1(solvers::stroke::shapeName(intended));
-    Q_EMIT habitsChanged(error.isEmpty() ? tr("Learned: strokes like this one are a %1 (%2 habits)").arg(shape).arg(userModel_.habits().size())
+    const QString asOffered = intended == recognition_->kind ? tr(", as offered") : QString();
+    Q_EMIT habitsChanged(error.isEmpty() ? tr("Learned: strokes like this one are a %1%2 (%3 habits)").arg(shape, asOffered).arg(userModel_.habits().size())
                                          : tr("Learned: strokes like this one are a %1, but the habits were not saved: %2").arg(shape, error));
 }
 

@@ -357,8 +357,8 @@ void SketchDocument::chooseRecognized(bool regularized)
     if (!replaceRecognizedCurve(regularized ? *regularizedFit_ : *freeformFit_)) return;
     // The offered shape confirms (replacing a correction of this stroke); the freeform fit instead
     // of a shape in use is a correction.
-    if (regularized) learnCorrection(recognition_->kind);
-    else if (wasShape) learnCorrection(solvers::stroke::ShapeKind::Freeform);
+    if (regularized) learnChoice(recognition_->kind);
+    else if (wasShape) learnChoice(solvers::stroke::ShapeKind::Freeform);
 }
 
 bool SketchDocument::replaceRecognizedCurve(const solvers::Curve3d& target)
@@ -388,7 +388,7 @@ void SketchDocument::chooseCandidate(int index)
         solvers::stroke::regularizeAs(*recognition_, *lastFit_, recognition_->candidates[static_cast<size_t>(index)].kind);
     candidateInUse_ = index;
     lastStroke_.message = tr("Curve %1 is now the %2").arg(recognizedCurve_).arg(lastStroke_.candidates[static_cast<size_t>(index)].first);
-    if (replaceRecognizedCurve(target)) learnCorrection(recognition_->candidates[static_cast<size_t>(index)].kind);
+    if (replaceRecognizedCurve(target)) learnChoice(recognition_->candidates[static_cast<size_t>(index)].kind);
 }
 
 void SketchDocument::chooseNextCandidate()

@@ -204,6 +204,8 @@ TEST(HabitsWindow, TryingCandidatesOneAfterAnotherKeepsOnlyTheLastChoice)
     s.window.action(QStringLiteral("stroke.useRecognized"))->trigger();
     ASSERT_EQ(s.doc().userModel().habits().size(), 1u);
     EXPECT_EQ(s.doc().userModel().habits().front().kind, solvers::stroke::ShapeKind::Ellipse);
+    EXPECT_TRUE(s.window.statusBar()->currentMessage().contains(QStringLiteral("ellipse, as offered")))
+        << s.window.statusBar()->currentMessage().toStdString();
 }
 
 TEST(HabitsFile, RoundTripsExactly)
