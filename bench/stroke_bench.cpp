@@ -127,6 +127,19 @@ void BM_StrokeFitJitter(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
+// A slow spiral sampled a million times (StrokeRobustness.GivenMillionSamples_...): conditioning
+// thins it before the fit, so the time follows the thinned stroke.
+void BM_StrokeFitMillion(benchmark::State& state)
+{
+    DrawOptions d;
+    d.rate = 1e6 / 3.0;
+    d.peakSpeed = 300;
+    d.noise = 0.1;
+    const Stroke s = draw(spiralShape(100, 3.0), d);
+    fitLoop(state, s);
+}
+BENCHMARK(BM_StrokeFitMillion)->Unit(benchmark::kMillisecond);
+
 // Loops, 300 samples each, noise kNoise: arg 0 a circle, 1 an ellipse, 2 a teardrop (one corner).
 // The fewer-control-points search covers them too (periodic averaged knots for the smooth loops,
 // one clamped piece round the corner for the teardrop).

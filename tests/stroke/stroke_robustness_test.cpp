@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -82,7 +81,12 @@ TEST(StrokeRobustness, GivenTwoPoints_ThenAStraightCubic)
     EXPECT_NEAR(mid.y(), 2.5, 1e-6);
 }
 
-TEST(StrokeRobustness, GivenMillionSamples_ThenFittedInBoundedTime)
+// A million samples are thinned before any fitting work (conditioning's merge of samples closer
+// than the pen can mean), so the fit's work is bounded by the thinned stroke, not by the input.
+// The time is a benchmark's (BM_StrokeFitMillion: 81 ms warm in Release); a wall-clock bound here
+// failed under the sanitizers on a loaded CI machine (5.2 s against 5) with the work unchanged
+// (the same 6 search trials), and ctest's timeout still catches a hang.
+TEST(StrokeRobustness, GivenMillionSamples_ThenThinnedBeforeFittingAndFittedWithinTolerance)
 {
     DrawOptions d;
     d.rate = 1e6 / 3.0;  // ~1e6 samples over the ~3 s a slow spiral takes
@@ -92,12 +96,9 @@ TEST(StrokeRobustness, GivenMillionSamples_ThenFittedInBoundedTime)
     const Stroke s = draw(spiral, d);
     ASSERT_GT(s.points.size(), 500000u);
 
-    const auto t0 = std::chrono::steady_clock::now();
     const FitResult r = fitStroke(s);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     EXPECT_TRUE(r.converged);
-    EXPECT_LT(seconds, 5.0) << "bounded time (a generous bound for a loaded machine; benchmarks hold the real numbers)";
     EXPECT_LT(r.conditioned.size(), 25000);
     // Thinning must not lose the shape: the curve stays within tolerance (plus what is left of the
     // averaged-out noise) of the true spiral.
