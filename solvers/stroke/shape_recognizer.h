@@ -75,7 +75,7 @@ struct RecognizeOptions {
     /// the edge's ends only): a rounded, obtuse corner at a loop's seam. Chosen by
     /// leave-one-subject-out on the development subjects' perturbed copies (unistroke-report
     /// --augment --loso cornerLeg 0,0.1,0.16,0.2,0.25,0.3: 0.2 on all five folds, pooled 97.6 %
-    /// against 97.3 %; --augment-drawn likewise, 96.0 against 95.7 %).
+    /// against 97.0 % off; --augment-drawn likewise, 96.0 against 95.5 %).
     double cornerLeg = 0.2;
     /// Polygon scores are multiplied by this for each vertex inserted beyond those expected (the
     /// detected corners, and on a loop the seam and one more): a polygon that needs many guessed
