@@ -152,9 +152,10 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
         if (at < 0) break;
         // A missed corner turns the pen sharply; the farthest point of a smoothly bent edge (a
         // brace's bulge, a circle's arc between two vertices) does not, and inserting it would
-        // only approximate a curve by short chords. The turn is read from the edge's ends and,
-        // where they lie beyond a nearer bend (a vertex the detector put on a curl, an edge
-        // spanning two sides), from one cornerLeg either side of the point.
+        // only approximate a curve by short chords. The turn is read from the edge's ends and
+        // from one cornerLeg either side of the point (within the edge): seen from far edge ends
+        // a rounded corner turns less than over its own legs (a square bracket's rounded corner,
+        // RecognizeOptions::cornerLeg).
         const double fromEnds = turnAt(g.points[from], g.points[at], g.points[to]);
         const double fromLegs = cornerLeg > 0.0 ? localTurn(g.points, at, from, to, cornerLeg, g.closed) : 0.0;
         if (std::max(fromEnds, fromLegs) < minCornerTurn) {
