@@ -148,16 +148,20 @@ struct Polyline {
 
 // The exact distance: every local minimum of the polyline's distances that could hold a curve point
 // closer than the best found (within one polyline spacing of the smallest) is refined.
-double projectGlobal(const PowerCurve& c, const Polyline& pl, const Vec3& x, double* foot)
+// `d` is scratch space (one caller's buffer for all its projections, not one allocated and zeroed
+// per projection), and holds squared distances: the same comparisons without a square root per
+// polyline point. Together 131.7 -> 129.5 M instructions over BM_StrokeFitSeeds/1 (callgrind).
+double projectGlobal(const PowerCurve& c, const Polyline& pl, const Vec3& x, double* foot, std::vector<double>& d)
 {
     const int n = pl.size();
     const double T = c.end() - c.start();
-    std::vector<double> d(static_cast<size_t>(n));
+    d.resize(static_cast<size_t>(n));
     double smallest = std::numeric_limits<double>::infinity();
-    for (int j = 0; j < n; ++j) smallest = std::min(smallest, d[j] = (pl.p[j] - x).norm());
+    for (int j = 0; j < n; ++j) smallest = std::min(smallest, d[j] = (pl.p[j] - x).squaredNorm());
+    const double reach = (std::sqrt(smallest) + pl.spacing) * (std::sqrt(smallest) + pl.spacing);
     double best = std::numeric_limits<double>::infinity();
     for (int j = 0; j < n; ++j) {
-        if (d[j] > smallest + pl.spacing) continue;
+        if (d[j] > reach) continue;
         const double dl = j > 0 ? d[j - 1] : (pl.closed ? d[n - 1] : std::numeric_limits<double>::infinity());
         const double dr = j + 1 < n ? d[j + 1] : (pl.closed ? d[0] : std::numeric_limits<double>::infinity());
         if (d[j] > dl || d[j] > dr) continue;
@@ -243,6 +247,8 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     // Exact projection of the samples whose bound could be the maximum, largest bound first: once
     // the exact maximum reaches the next bound, no other sample can exceed it.
     std::vector<int> order;
+    std::vector<char> exact(static_cast<size_t>(m), 0);  // bound[i] is sample i's distance
+    std::vector<double> scratch;                         // projectGlobal's
     double top = -1.0;
     for (int i = 0; i < m; ++i)
         if ((keep.empty() || keep[i]) && out.bound[i] > top) top = out.bound[i], out.worst = i;
@@ -271,12 +277,51 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
                 if (e < out.bound[i]) out.bound[i] = e;
                 if (!open(i)) continue;
             }
-            const double e = projectGlobal(c, pl, samples[i], &foot);
+            const double e = projectGlobal(c, pl, samples[i], &foot, scratch);
             if (e < out.bound[i]) out.bound[i] = e;
+            exact[static_cast<size_t>(i)] = 1;
             if (out.bound[i] > out.maxError || round == 0) {
                 out.maxError = out.bound[i];
                 out.worst = i;
             }
+        }
+    }
+    out.maxWithin = out.maxError;
+    if (!(out.maxError > exactAbove)) return out;
+    // The maximum within exactAbove, as the maximum above: the largest bound projected first, then
+    // every bound above the exact value found, largest first, until the exact maximum reaches the
+    // next bound.
+    int largest = -1;
+    for (int i = 0; i < m; ++i)
+        if ((keep.empty() || keep[i]) && out.bound[i] <= exactAbove &&
+            (largest < 0 || out.bound[i] > out.bound[largest]))
+            largest = i;
+    out.maxWithin = 0.0;
+    if (largest < 0) return out;
+    order.assign(1, largest);
+    for (int round = 0; round < 2; ++round) {
+        if (round == 1) {
+            order.clear();
+            for (int i = 0; i < m; ++i)
+                if ((keep.empty() || keep[i]) && i != largest && out.bound[i] <= exactAbove &&
+                    out.bound[i] > out.maxWithin)
+                    order.push_back(i);
+            std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
+        }
+        for (int i : order) {
+            if (!(out.bound[i] > out.maxWithin)) break;
+            if (!exact[static_cast<size_t>(i)]) {
+                const int j = near[i];
+                double foot = pl.u[j];
+                const double e = refineLocal(c, samples[i], pl.before(j, c.end() - c.start()),
+                                             pl.after(j, c.end() - c.start()), pl.u[j], &foot);
+                if (e < out.bound[i]) out.bound[i] = e;
+                if (out.bound[i] > out.maxWithin) {
+                    const double g = projectGlobal(c, pl, samples[i], &foot, scratch);
+                    if (g < out.bound[i]) out.bound[i] = g;
+                }
+            }
+            out.maxWithin = std::max(out.maxWithin, out.bound[i]);
         }
     }
     return out;

@@ -16,6 +16,9 @@ struct SampleDeviation {
     /// point), exact for `worst`, for every sample whose bound reached maxError and for every one
     /// beyond measureSamples' exactAbove; 0 for a dropped one.
     std::vector<double> bound;
+    /// With a finite exactAbove: the max distance over the kept samples within it (those beyond it
+    /// left out), exact; else maxError.
+    double maxWithin = 0.0;
 };
 
 /// Distances from the samples to a cubic curve (open or periodic). A polyline of the curve with

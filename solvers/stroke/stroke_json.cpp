@@ -178,9 +178,16 @@ UserModel userModelFromJson(const json& j, const std::string& path)
 json fitResultToJson(const FitResult& r, int dimension)
 {
     const json curve = curveJson(r.curve, dimension);
-    return {{"curve", curve},         {"corners", r.corners},     {"samples", r.samples},
-            {"max_error", r.maxError}, {"tolerance", r.tolerance}, {"closed", r.curve.isClosed()},
-            {"converged", r.converged}, {"warnings", r.warnings}, {"dropped_samples", r.dropped}};
+    return {{"curve", curve},
+            {"corners", r.corners},
+            {"samples", r.samples},
+            {"max_error", r.maxError},
+            {"tolerance", r.tolerance},
+            {"closed", r.curve.isClosed()},
+            {"converged", r.converged},
+            {"warnings", r.warnings},
+            {"dropped_samples", r.dropped},
+            {"outlier_samples", r.outliers}};
 }
 
 }  // namespace sculptline::solvers::stroke

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -54,11 +55,30 @@ TEST(StrokeCli, GivenStroke_WhenFit_ThenCurveCornersSamplesAndErrorWithinToleran
     EXPECT_LE(o["max_error"].get<double>(), 0.8);
     ASSERT_TRUE(o["dropped_samples"].is_array());  // no hook, no loop: nothing dropped
     EXPECT_TRUE(o["dropped_samples"].empty());
+    ASSERT_TRUE(o["outlier_samples"].is_array());  // noise far below the tolerance: no outlier
+    EXPECT_TRUE(o["outlier_samples"].empty());
     EXPECT_TRUE(o.contains("elapsed_ms"));
     EXPECT_EQ(o["curve"]["points"][0].size(), 2u);  // a 2D stroke gives 2D points
 }
 
 // "resolution": the pitch the samples are quantized to; the default tolerance is at least that.
+// A slow hand's jitter at a third of the tolerance: the samples it puts beyond the tolerance are
+// reported as outliers, among the dropped samples, and max_error is that of the rest.
+TEST(StrokeCli, GivenJitteryStroke_WhenFit_ThenNoiseOutliersReportedAmongTheDropped)
+{
+    DrawOptions d;
+    d.noise = 0.5;
+    const CliRun r = cli("fit", "{\"stroke\": " + toJson(drawWithSamples(flourishShape(300), 1000, d)).dump() + "}");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const json o = json::parse(r.out);
+    const auto outliers = o["outlier_samples"].get<std::vector<int>>();
+    const auto dropped = o["dropped_samples"].get<std::vector<int>>();
+    EXPECT_FALSE(outliers.empty());
+    for (int i : outliers) EXPECT_TRUE(std::binary_search(dropped.begin(), dropped.end(), i)) << i;
+    EXPECT_TRUE(o["converged"].get<bool>());
+    EXPECT_LE(o["max_error"].get<double>(), o["tolerance"].get<double>());
+}
+
 TEST(StrokeCli, GivenResolution_WhenFit_ThenTheToleranceIsAtLeastTheResolution)
 {
     const std::string stroke = strokeJson(polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 80, 0}}, false));
