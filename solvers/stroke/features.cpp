@@ -282,6 +282,20 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     return f;
 }
 
+void measureSpeed(const ConditionedStroke& cs, StrokeFeatures& f)
+{
+    const int n = cs.size();
+    if (n == 0 || static_cast<int>(f.lo.size()) != n || static_cast<int>(f.hi.size()) != n) return;
+    const double duration = cs.time.back() - cs.time.front();
+    f.averageSpeed = duration > 0.0 ? cs.arc.back() / duration : 0.0;
+    f.speed.resize(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const int a = f.lo[i], b = f.hi[i];
+        const double dt = a < b ? cs.time[b] - cs.time[a] : 0.0;
+        f.speed[i] = dt > 0.0 ? (cs.arc[b] - cs.arc[a]) / dt : f.averageSpeed;
+    }
+}
+
 double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOptions& o)
 {
     const int n = cs.size();

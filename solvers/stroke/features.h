@@ -37,6 +37,11 @@ struct StrokeFeatures {
 
 StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions& options = {});
 
+/// f.speed and f.averageSpeed measured again on cs's path as it is now (cs.arc: after smoothing),
+/// over f's windows (f.lo, f.hi); a window across a loop's seam gets the average speed, as in
+/// computeFeatures.
+void measureSpeed(const ConditionedStroke& cs, StrokeFeatures& f);
+
 /// The turning angle's standard deviation (radians) that white noise of `noise` (per coordinate,
 /// model units; estimateNoise) puts on computeFeatures' turning with these options:
 ///   sqrt(6) sigma_m / L,
