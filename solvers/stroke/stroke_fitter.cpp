@@ -489,21 +489,11 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
                 int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
                 FitPass a = trial(count, samples);
-                // A climb whose count misses by more than the count before it (the error rose with
-                // the count: the averaged knots fell worse, not the law) earns one more climb. Two
-                // of the 16 jittery flourishes of BM_StrokeFitSeeds/1 climbed 20 -> 22 with the
-                // error rising 2.08 -> 3.68 and 2.06 -> 2.96, stopped there, and fell back to the
-                // error-driven fit (30 and 32 control points); they now find 25 and 23 (the 16:
-                // 90 -> 83 M instructions, control points' mean 21.4 -> 20.6). The clean flourishes,
-                // the Fig. 4-3 hairpin and scripts/compare_splprep.py keep their counts.
-                bool rose = false;
                 const auto climbing = [&](int climb) {
-                    return climb < kMaxClimbSteps + (rose ? 1 : 0) ||
-                           (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
+                    return climb < kMaxClimbSteps || (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
                 };
                 for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
                     failed = count;
-                    const double before = a.maxError;
                     // (An open cubic has count - 3 spans, a closed one count.)
                     const int extra = periodic ? 0 : 3;
                     // (A trial that made no curve misses by an infinite error: the next count.)
@@ -511,7 +501,6 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                     const int predicted = std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
                     count = std::min(cap, std::max(count + 1, predicted));
                     a = trial(count, samples);
-                    rose = rose || a.maxError > before;
                 }
                 // Down by bisection between the largest count seen to miss and the count that fits:
                 // a climb overshoots by up to 7 counts (the law's fourth root of a large miss), and
