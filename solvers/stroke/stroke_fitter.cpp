@@ -503,12 +503,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                     a = trial(count, samples);
                 }
                 // Down by bisection between the largest count seen to miss and the count that fits:
-                // a climb overshoots by up to 7 counts (the law's fourth root of a large miss), and
-                // stepping down one count at a time took up to 6 trials on the 32 flourishes of
-                // BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes at most 3. (The error does not fall
-                // strictly with the count, so the two can end at different counts: 16 clean
-                // flourishes 20.5 -> 19.9 control points on average, 16 jittery 23.2 -> 23.6;
-                // scripts/compare_splprep.py unchanged, 518 and 496.)
+                // a climb can land several counts above the least that fits (the law's prediction
+                // from a large miss), and stepping down one count at a time took up to 6 trials on
+                // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
+                // at most 3. (The error does not fall strictly with the count, so the two can end
+                // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
+                // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
                 for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
                     const int mid = failed + (fitsAt - failed) / 2;
                     FitPass b = trial(mid, samples);
