@@ -158,9 +158,9 @@ BENCHMARK(BM_StrokeFitLoop)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 // seeds, all fitted in each iteration: one seed is one draw of the noise, and the search for fewer
 // control points costs very different amounts on different draws (the benchmarks above use seed 1;
 // before the noise outliers, FitResult::outliers, the jittery stroke's search failed on 13 of the
-// 16 seeds after trying several counts and the error-driven fit was taken; now on 2). Time: per iteration (16 fits);
-// counters: the mean time per stroke, the control points' mean, least and most, and the noise outliers
-// (FitResult::outliers) of all 16.
+// 16 seeds after trying several counts and the error-driven fit was taken; now on 2). Time: per
+// iteration (16 fits); counters: the mean time per stroke, the control points' mean, least and
+// most, and the noise outliers (FitResult::outliers) of all 16.
 void BM_StrokeFitSeeds(benchmark::State& state)
 {
     constexpr unsigned kSeeds = 16;

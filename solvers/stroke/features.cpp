@@ -168,13 +168,10 @@ void openFeatures(const ConditionedStroke& cs, const FeatureOptions& options, do
     f.hi.resize(n);
     OpenWindow<Planar> narrow(options.k, minLen, n), wide(2 * options.k, 2.0 * minLen, n);
     const double* arc = cs.arc.data();
-    const double* time = cs.time.data();
-    const double averageSpeed = f.averageSpeed;
     double* direction = f.direction.data();
     double* turningOut = f.turning.data();
     double* wideTurning = f.wideTurning.data();
     double* curvature = f.curvature.data();
-    double* speed = f.speed.data();
     int* lo = f.lo.data();
     int* hi = f.hi.data();
     for (int i = 0; i < n; ++i) {
@@ -187,8 +184,6 @@ void openFeatures(const ConditionedStroke& cs, const FeatureOptions& options, do
         const double path = arc[b] - arc[a];
         curvature[i] = path > 0.0 ? turning / path : 0.0;
         wideTurning[i] = angle(i, wide.a, wide.b, i);
-        const double dt = time[b] - time[a];
-        speed[i] = dt > 0.0 ? path / dt : averageSpeed;
         lo[i] = a;
         hi[i] = b;
     }
@@ -204,10 +199,7 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     f.turning.resize(n);
     f.wideTurning.resize(n);
     f.curvature.resize(n);
-    f.speed.resize(n);
     const double minLen = options.neighbourhood * cs.extent;
-    const double duration = cs.time.back() - cs.time.front();
-    f.averageSpeed = duration > 0.0 ? cs.arc.back() / duration : 0.0;
     const double total = cs.length();
     // Unwrapped path position of index j (a closed stroke's seam gap counts as path). Window ends lie
     // within half a loop of their centre, so j is in (-n, 2n): one comparison instead of an integer
@@ -222,6 +214,7 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
         const bool planar = std::all_of(cs.points.begin(), cs.points.end(), [](const Eigen::Vector3d& p) { return p.z() == 0.0; });
         if (planar) openFeatures<true>(cs, options, minLen, f);
         else openFeatures<false>(cs, options, minLen, f);
+        measureSpeed(cs, f);
         return f;
     }
     // The angles are measured between local means, not single samples: q_i is the mean of the
@@ -272,16 +265,15 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
         const double path = arcAt(b) - arcAt(a);
         f.curvature[i] = path > 0.0 ? turning / path : 0.0;
         f.wideTurning[i] = angleBetween(qd[i], qd[wrap(wideLo[i])], qd[wrap(wideHi[i])], qd[i]);
-        // Elapsed time over the neighbourhood; a window across a loop's seam, where time restarts,
-        // gets the average speed.
-        const double dt = (a >= 0 && b < n) ? cs.time[b] - cs.time[a] : 0.0;
-        f.speed[i] = dt > 0.0 ? path / dt : f.averageSpeed;
         f.lo[i] = wrap(a);
         f.hi[i] = wrap(b);
     }
+    measureSpeed(cs, f);
     return f;
 }
 
+// Elapsed time over each window; a window across a loop's seam (its wrapped ends out of order),
+// where time restarts, gets the average speed.
 void measureSpeed(const ConditionedStroke& cs, StrokeFeatures& f)
 {
     const int n = cs.size();
