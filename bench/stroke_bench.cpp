@@ -128,6 +128,30 @@ void BM_StrokeFitJitter(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFitJitter)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
+// The feature pass of fitStroke on the flourish of BM_StrokeFit/1000 (arg 0) and of
+// BM_StrokeFitJitter (arg 1), conditioned as fitStroke conditions it: the clean stroke takes one
+// full pass on the default arms; the jittery one (no corners) their windows (FeatureSet::Windows)
+// and a full pass on the arms widenForNoise widens.
+void BM_StrokeFeatures(benchmark::State& state)
+{
+    const bool jittery = state.range(0) == 1;
+    ConditionedStroke cs = conditionStroke(jittery ? jitteryStroke(1000) : benchStroke(1000));
+    cs.noise = estimateNoise(cs.points, 2);
+    const FeatureOptions o;
+    const FeatureOptions wide = widenForNoise(cs, cs.noise, computeFeatures(cs, o), o);
+    for (auto _ : state) {
+        if (wide.neighbourhood == o.neighbourhood) {
+            benchmark::DoNotOptimize(computeFeatures(cs, o).turning.data());
+        } else {
+            benchmark::DoNotOptimize(computeFeatures(cs, o, FeatureSet::Windows).hi.data());
+            benchmark::DoNotOptimize(computeFeatures(cs, wide).turning.data());
+        }
+    }
+    state.counters["samples"] = cs.size();
+    state.counters["widening"] = wide.neighbourhood / o.neighbourhood;
+}
+BENCHMARK(BM_StrokeFeatures)->DenseRange(0, 1)->Unit(benchmark::kMicrosecond);
+
 // A slow spiral sampled a million times (StrokeRobustness.GivenMillionSamples_...): conditioning
 // thins it before the fit, so the time follows the thinned stroke.
 void BM_StrokeFitMillion(benchmark::State& state)

@@ -191,10 +191,18 @@ void openFeatures(const ConditionedStroke& cs, const FeatureOptions& options, do
 
 }  // namespace
 
-StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions& options)
+StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions& options, FeatureSet set)
 {
     const int n = cs.size();
     StrokeFeatures f;
+    if (set == FeatureSet::Windows) {  // the ends the full pass gives (OpenWindow says why for an open stroke)
+        windows(cs, options.k, options.neighbourhood * cs.extent, f.lo, f.hi);
+        for (int i = 0; i < n; ++i) {
+            f.lo[i] = f.lo[i] < 0 ? f.lo[i] + n : (f.lo[i] >= n ? f.lo[i] - n : f.lo[i]);
+            f.hi[i] = f.hi[i] < 0 ? f.hi[i] + n : (f.hi[i] >= n ? f.hi[i] - n : f.hi[i]);
+        }
+        return f;
+    }
     f.direction.resize(n);
     f.turning.resize(n);
     f.wideTurning.resize(n);

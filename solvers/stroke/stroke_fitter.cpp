@@ -233,14 +233,24 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // The features are freed before the least squares, which can then reuse their memory.
         // The features' arms are widened for the noise that is there (widenForNoise), so that jitter
         // turns the measured angles no more than on a clean stroke.
+        // Where the noise calls for wider arms (widenForNoise's first test), the features on the
+        // unwidened ones serve the arm count and the speed (their windows, FeatureSet::Windows),
+        // and only where corners are found, localizeCorners (all of them).
         cs.noise = estimateNoise(cs.points, stroke.dimension);
-        StrokeFeatures f = computeFeatures(cs, options.features);
+        const bool noisy = options.features.maxTurningNoise > 0.0 &&
+                           turningNoise(cs, cs.noise, options.features) > options.features.maxTurningNoise;
+        StrokeFeatures f = computeFeatures(cs, options.features, noisy ? FeatureSet::Windows : FeatureSet::All);
         const FeatureOptions wide = widenForNoise(cs, cs.noise, f, options.features);
         if (wide.neighbourhood == options.features.neighbourhood) {
+            if (noisy) f = computeFeatures(cs, options.features);  // a sparse stroke, not widened
             corners = detectCorners(cs, f, options.corners);
         } else {
             const StrokeFeatures wf = computeFeatures(cs, wide);
-            corners = localizeCorners(cs, f, wf, detectCorners(cs, wf, options.corners));
+            corners = detectCorners(cs, wf, options.corners);
+            if (!corners.empty()) {
+                f = computeFeatures(cs, options.features);
+                corners = localizeCorners(cs, f, wf, corners);
+            }
         }
         // Smoothing by the noise that is there, within a share of the tolerance (ConditioningOptions::
         // smoothingShare, noiseMultiple): it removes jitter but never the shape the tolerance keeps.
