@@ -219,6 +219,54 @@ void BM_StrokeFitSeeds(benchmark::State& state)
 }
 BENCHMARK(BM_StrokeFitSeeds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// Issue 15 §3's ratio, a slow hand with jitter over a clean hand, warm, measured so that the
+// machine's drift cancels: the 16 seeds' clean and jittery flourishes of BM_StrokeFitSeeds are
+// fitted in turn (clean k, jittery k, clean k + 1, ...), each fit timed on its own, and each stroke
+// keeps the least of its times over the iterations (the fit with the least interference from the
+// rest of the machine). Counters: the sums of those least times over the 16 strokes (`clean_us`,
+// `jitter_us`) and their `ratio`; and the same from each stroke's median time (`median_ratio`).
+// BM_StrokeFitSeeds/0 and /1 run a minute apart, and this machine's speed moved by 10-50 % between
+// runs minutes apart (2026-12-05): their ratio measured 1.43-1.58 within one hour.
+void BM_StrokeFitJitterRatio(benchmark::State& state)
+{
+    constexpr unsigned kSeeds = 16;
+    std::vector<Stroke> strokes[2];
+    for (int jittery = 0; jittery < 2; ++jittery) {
+        for (unsigned seed = 1; seed <= kSeeds; ++seed) {
+            DrawOptions d;
+            d.noise = jittery ? kJitter : kNoise;
+            d.seed = seed;
+            strokes[jittery].push_back(drawWithSamples(flourishShape(300), 1000, d));
+        }
+    }
+    std::vector<double> times[2][kSeeds];
+    for (auto _ : state) {
+        for (unsigned k = 0; k < kSeeds; ++k) {
+            for (int jittery = 0; jittery < 2; ++jittery) {
+                const auto t0 = std::chrono::steady_clock::now();
+                FitResult r = fitStroke(strokes[jittery][k]);
+                benchmark::DoNotOptimize(r.curve.points().data());
+                times[jittery][k].push_back(
+                    std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count());
+            }
+        }
+    }
+    double least[2] = {0.0, 0.0}, median[2] = {0.0, 0.0};
+    for (int jittery = 0; jittery < 2; ++jittery) {
+        for (std::vector<double>& t : times[jittery]) {
+            if (t.empty()) continue;
+            std::sort(t.begin(), t.end());
+            least[jittery] += t.front();
+            median[jittery] += t[t.size() / 2];
+        }
+    }
+    state.counters["clean_us"] = least[0];
+    state.counters["jitter_us"] = least[1];
+    state.counters["ratio"] = least[0] > 0.0 ? least[1] / least[0] : 0.0;
+    state.counters["median_ratio"] = median[0] > 0.0 ? median[1] / median[0] : 0.0;
+}
+BENCHMARK(BM_StrokeFitJitterRatio)->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
 // The first fit of a process (cold: nothing of the fitter run yet, its code and heap untouched, as
 // when the pen lifts on the first stroke) against the warm loop. Google Benchmark repeats a call in
 // one process, so each iteration starts this binary again with SCULPTLINE_BENCH_COLD_FIT set: before

@@ -195,11 +195,23 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
 {
     const int n = cs.size();
     StrokeFeatures f;
-    if (set == FeatureSet::Windows) {  // the ends the full pass gives (OpenWindow says why for an open stroke)
-        windows(cs, options.k, options.neighbourhood * cs.extent, f.lo, f.hi);
-        for (int i = 0; i < n; ++i) {
-            f.lo[i] = f.lo[i] < 0 ? f.lo[i] + n : (f.lo[i] >= n ? f.lo[i] - n : f.lo[i]);
-            f.hi[i] = f.hi[i] < 0 ? f.hi[i] + n : (f.hi[i] >= n ? f.hi[i] - n : f.hi[i]);
+    if (set == FeatureSet::Windows) {  // the ends the full pass gives, as it finds them
+        const double minLength = options.neighbourhood * cs.extent;
+        if (cs.closed) {
+            windows(cs, options.k, minLength, f.lo, f.hi);
+            for (int i = 0; i < n; ++i) {
+                f.lo[i] = f.lo[i] < 0 ? f.lo[i] + n : (f.lo[i] >= n ? f.lo[i] - n : f.lo[i]);
+                f.hi[i] = f.hi[i] < 0 ? f.hi[i] + n : (f.hi[i] >= n ? f.hi[i] - n : f.hi[i]);
+            }
+        } else {
+            f.lo.resize(n);
+            f.hi.resize(n);
+            OpenWindow<false> w(options.k, minLength, n);
+            for (int i = 0; i < n; ++i) {
+                w.advance(cs.points.data(), i);
+                f.lo[i] = w.a;
+                f.hi[i] = w.b;
+            }
         }
         return f;
     }
