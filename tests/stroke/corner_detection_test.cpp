@@ -169,6 +169,36 @@ TEST(CornerDetection, GivenSlowJitteryFlourish_WhenFitted_ThenNoCorners)
     EXPECT_EQ(widened, 8) << "the jitter must be the case widenForNoise acts on";
 }
 
+// fitStroke measures only the windows of the unwidened arms where the noise widens them
+// (FeatureSet::Windows): the arm count and the speed read them, so they must be the ends the full
+// pass finds. Open and closed, planar and in space, clean and jittery, dense and sparse.
+TEST(CornerDetection, GivenAnyStroke_WhenOnlyWindowsMeasured_ThenTheyAreTheFullPassWindows)
+{
+    const std::vector<Shape> shapes = {flourishShape(300), circleShape({0, 0, 0}, 80), teardropShape(80),
+                                       helixShape(100, 150, 2)};
+    int strokes = 0;
+    for (const Shape& shape : shapes) {
+        for (int samples : {40, 300, 1000}) {
+            for (double noise : {kNoiseSigma, kJitterSigma}) {
+                DrawOptions d;
+                d.noise = noise;
+                const ConditionedStroke cs = conditionStroke(drawWithSamples(shape, samples, d));
+                for (const FeatureOptions& o :
+                     {FeatureOptions{}, widenForNoise(cs, 10 * noise, computeFeatures(cs), FeatureOptions{})}) {
+                    const StrokeFeatures all = computeFeatures(cs, o);
+                    const StrokeFeatures w = computeFeatures(cs, o, FeatureSet::Windows);
+                    ASSERT_EQ(all.lo.size(), static_cast<size_t>(cs.size()));
+                    EXPECT_EQ(w.lo, all.lo) << "closed " << cs.closed << ", " << samples << " samples";
+                    EXPECT_EQ(w.hi, all.hi) << "closed " << cs.closed << ", " << samples << " samples";
+                    EXPECT_TRUE(w.turning.empty() && w.speed.empty()) << "the lean set leaves the rest out";
+                    ++strokes;
+                }
+            }
+        }
+    }
+    EXPECT_EQ(strokes, 48);
+}
+
 // The same jitter on the polygons, densely sampled (where widenForNoise acts): every vertex is found,
 // where it is (localizeCorners), and nothing else. Before the widening, where this synthesized hand
 // nearly stops at a vertex the dense jitter made corners beside it: 202 / 324 / 536 corners for 42
