@@ -62,6 +62,10 @@ struct StrokeReport {
     /// units: the fit's resolution; 0 = unknown.
     double pixel = 0.0;
     bool fitted = false;  ///< false: the stroke was rejected (too short, degenerate)
+    /// Samples left out of the fit and of maxError (FitResult::dropped: a loop's overshoot, hooks,
+    /// and `outliers`, the samples the digitizer's noise put beyond the tolerance).
+    int dropped = 0;
+    int outliers = 0;
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
@@ -385,6 +389,9 @@ private:
     ResketchState& resketchState();
     /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
     void recognize(const solvers::stroke::FitResult& fit);
+    /// Notes in lastStroke_ the samples `fit` left out (StrokeReport::dropped, outliers) and
+    /// returns the message's clause that says so (empty when none was).
+    QString noteLeftOut(const solvers::stroke::FitResult& fit);
     void liftStroke(const manipulators::FinishedStroke& stroke);
     /// The last sketched curve replaced by `target` (undoable), when it differs.
     /// False (with the reason in lastStroke_) when the target is refused.

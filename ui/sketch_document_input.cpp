@@ -87,6 +87,20 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
     strokeIndex_ = undo_.index() > before ? undo_.index() : -1;
 }
 
+QString SketchDocument::noteLeftOut(const solvers::stroke::FitResult& fit)
+{
+    lastStroke_.dropped = static_cast<int>(fit.dropped.size());
+    lastStroke_.outliers = static_cast<int>(fit.outliers.size());
+    const int others = lastStroke_.dropped - lastStroke_.outliers;
+    if (lastStroke_.dropped == 0) return {};
+    if (others == 0) return tr("; %n sample(s) left out as noise beyond the tolerance", nullptr, lastStroke_.outliers);
+    if (lastStroke_.outliers == 0) return tr("; %n sample(s) left out as a hook or overshoot", nullptr, others);
+    return tr("; %1 samples left out (%2 as a hook or overshoot, %3 as noise beyond the tolerance)")
+        .arg(lastStroke_.dropped)
+        .arg(others)
+        .arg(lastStroke_.outliers);
+}
+
 QString SketchDocument::farFromSight(const manipulators::FinishedStroke& stroke) const
 {
     // Only strokes on an existing plane: an auxiliary plane is made to face the stroke.
@@ -225,12 +239,13 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         lastStroke_.tolerance = fit.tolerance;
         lastStroke_.pixel = fitOptions.resolution;
         lastStroke_.message = tr("Stroke of %1 samples fitted: degree %2, %3 control points, max error %4 mm "
-                                 "(tolerance %5 mm)%6")
+                                 "(tolerance %5 mm)%6%7")
                                   .arg(lastStroke_.samples)
                                   .arg(fit.curve.degree())
                                   .arg(lastStroke_.controlPoints)
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(fit.tolerance, 0, 'f', 3)
+                                  .arg(noteLeftOut(fit))
                                   .arg(added.size() > 1 ? tr(", on a new auxiliary plane") : QString());
         recognize(fit);
         if (!lastStroke_.habit.isEmpty() && regularizedFit_) {

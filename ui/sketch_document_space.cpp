@@ -95,12 +95,14 @@ void SketchDocument::addSpaceStroke(const std::vector<Eigen::Vector3d>& world, c
         lastStroke_.maxError = fit.maxError;
         std::vector<Eigen::Vector3d> dense;
         for (int i = 0; i <= 200; ++i) dense.push_back(fit.curve.evaluate(fit.curve.domainStart() + (fit.curve.domainEnd() - fit.curve.domainStart()) * i / 200));
-        lastStroke_.message = tr("Space stroke of %1 samples fitted: %2 control points, %3 corners, max error %4 mm, %5 mm off its best plane%6")
+        lastStroke_.message = tr("Space stroke of %1 samples fitted: %2 control points, %3 corners, max error %4 mm, "
+                                 "%5 mm off its best plane%6%7")
                                   .arg(lastStroke_.samples)
                                   .arg(fit.curve.pointCount())
                                   .arg(fit.corners.size())
                                   .arg(fit.maxError, 0, 'f', 3)
                                   .arg(offPlane(dense), 0, 'f', 1)
+                                  .arg(noteLeftOut(fit))
                                   .arg(snapped.isEmpty() ? QString() : tr("; %1").arg(snapped.join(tr(", "))));
         undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Draw a space curve")));
         recognizedCurve_ = 0;  // no recognition in space: the shapes it knows are planar

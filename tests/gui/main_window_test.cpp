@@ -245,6 +245,41 @@ void answerNextQuestion(QMessageBox::StandardButton button, bool* answered)
     });
 }
 
+// The samples a fit leaves out are reported in the window too, not only by the CLI: a loop drawn on
+// past its start loses that overshoot, and the status message says how many samples went and why
+// (the max error it reports is that of the rest).
+TEST(MainWindow, AStrokesLeftOutSamplesAreReported)
+{
+    startApplication();
+    MainWindow window;
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    SketchDocument& doc = window.document();
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
+    // Given a circle of radius 30 drawn on by a further 15 % of its turn, 92 samples, the pen
+    // drifting outward past the start (up to 5.6 units off the loop; an overshoot that retraces the
+    // loop within the tolerance is kept, FitResult::dropped)
+    std::vector<Eigen::Vector3d> points;
+    for (int i = 0; i <= 92; ++i) {
+        const double a = 2.0 * 3.14159265358979 * 1.15 * i / 92.0;
+        const double r = 30.0 + 6.0 * std::max(0.0, a - 2.0 * 3.14159265358979);
+        points.emplace_back(r * std::cos(a), r * std::sin(a), 0.0);
+    }
+    doc.select(1);
+    doc.addStroke(strokeOnPlane(frame, points));
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    // Then the overshoot's samples are counted as left out, none of them as noise
+    EXPECT_GE(doc.lastStroke().dropped, 5) << doc.lastStroke().message.toStdString();
+    EXPECT_EQ(doc.lastStroke().outliers, 0);
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("left out as a hook or overshoot")))
+        << doc.lastStroke().message.toStdString();
+    // And a stroke that loses nothing says nothing of it
+    doc.addStroke(strokeOnPlane(frame, archPoints(-40, 40, 20.0)));
+    ASSERT_TRUE(doc.lastStroke().fitted);
+    EXPECT_EQ(doc.lastStroke().dropped, 0);
+    EXPECT_FALSE(doc.lastStroke().message.contains(QStringLiteral("left out")))
+        << doc.lastStroke().message.toStdString();
+}
+
 TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
 {
     startApplication();
