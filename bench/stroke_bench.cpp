@@ -185,16 +185,24 @@ BENCHMARK(BM_StrokeFitLoop)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 // 16 seeds after trying several counts and the error-driven fit was taken; now on 2). Time: per
 // iteration (16 fits); counters: the mean time per stroke, the control points' mean, least and
 // most, and the noise outliers (FitResult::outliers) of all 16.
-void BM_StrokeFitSeeds(benchmark::State& state)
+constexpr unsigned kSeeds = 16;
+
+// The flourish of 1,000 samples drawn with noise seeds 1..kSeeds.
+std::vector<Stroke> seedFlourishes(double noise)
 {
-    constexpr unsigned kSeeds = 16;
     std::vector<Stroke> strokes;
     for (unsigned seed = 1; seed <= kSeeds; ++seed) {
         DrawOptions d;
-        d.noise = state.range(0) == 0 ? kNoise : kJitter;
+        d.noise = noise;
         d.seed = seed;
         strokes.push_back(drawWithSamples(flourishShape(300), 1000, d));
     }
+    return strokes;
+}
+
+void BM_StrokeFitSeeds(benchmark::State& state)
+{
+    const std::vector<Stroke> strokes = seedFlourishes(state.range(0) == 0 ? kNoise : kJitter);
     std::vector<FitResult> r(kSeeds);
     for (auto _ : state) {
         for (unsigned k = 0; k < kSeeds; ++k) {
@@ -229,16 +237,7 @@ BENCHMARK(BM_StrokeFitSeeds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 // runs minutes apart (2026-12-05): their ratio measured 1.43-1.58 within one hour.
 void BM_StrokeFitJitterRatio(benchmark::State& state)
 {
-    constexpr unsigned kSeeds = 16;
-    std::vector<Stroke> strokes[2];
-    for (int jittery = 0; jittery < 2; ++jittery) {
-        for (unsigned seed = 1; seed <= kSeeds; ++seed) {
-            DrawOptions d;
-            d.noise = jittery ? kJitter : kNoise;
-            d.seed = seed;
-            strokes[jittery].push_back(drawWithSamples(flourishShape(300), 1000, d));
-        }
-    }
+    const std::vector<Stroke> strokes[2] = {seedFlourishes(kNoise), seedFlourishes(kJitter)};
     std::vector<double> times[2][kSeeds];
     for (auto _ : state) {
         for (unsigned k = 0; k < kSeeds; ++k) {

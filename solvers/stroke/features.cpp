@@ -195,18 +195,24 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
 {
     const int n = cs.size();
     StrokeFeatures f;
+    const double minLen = options.neighbourhood * cs.extent;
+    const double total = cs.length();
+    // Unwrapped path position of index j (a closed stroke's seam gap counts as path). Window ends lie
+    // within half a loop of their centre, so j is in (-n, 2n): one comparison instead of an integer
+    // division (which took a fifth of this pass).
+    const auto wrap = [&](int j) { return j < 0 ? j + n : (j >= n ? j - n : j); };
+    const auto arcAt = [&](int j) { return cs.arc[wrap(j)] + (j < 0 ? -total : (j >= n ? total : 0.0)); };
     if (set == FeatureSet::Windows) {  // the ends the full pass gives, as it finds them
-        const double minLength = options.neighbourhood * cs.extent;
         if (cs.closed) {
-            windows(cs, options.k, minLength, f.lo, f.hi);
+            windows(cs, options.k, minLen, f.lo, f.hi);
             for (int i = 0; i < n; ++i) {
-                f.lo[i] = f.lo[i] < 0 ? f.lo[i] + n : (f.lo[i] >= n ? f.lo[i] - n : f.lo[i]);
-                f.hi[i] = f.hi[i] < 0 ? f.hi[i] + n : (f.hi[i] >= n ? f.hi[i] - n : f.hi[i]);
+                f.lo[i] = wrap(f.lo[i]);
+                f.hi[i] = wrap(f.hi[i]);
             }
         } else {
             f.lo.resize(n);
             f.hi.resize(n);
-            OpenWindow<false> w(options.k, minLength, n);
+            OpenWindow<false> w(options.k, minLen, n);
             for (int i = 0; i < n; ++i) {
                 w.advance(cs.points.data(), i);
                 f.lo[i] = w.a;
@@ -219,13 +225,6 @@ StrokeFeatures computeFeatures(const ConditionedStroke& cs, const FeatureOptions
     f.turning.resize(n);
     f.wideTurning.resize(n);
     f.curvature.resize(n);
-    const double minLen = options.neighbourhood * cs.extent;
-    const double total = cs.length();
-    // Unwrapped path position of index j (a closed stroke's seam gap counts as path). Window ends lie
-    // within half a loop of their centre, so j is in (-n, 2n): one comparison instead of an integer
-    // division (which took a fifth of this pass).
-    const auto wrap = [&](int j) { return j < 0 ? j + n : (j >= n ? j - n : j); };
-    const auto arcAt = [&](int j) { return cs.arc[wrap(j)] + (j < 0 ? -total : (j >= n ? total : 0.0)); };
     if (!cs.closed) {
         // Planar strokes (every z zero, as 2D input is stored) take the same arithmetic without the
         // z terms, which are exact zeros there: (x^2 + y^2) + 0 is x^2 + y^2, and the cross product's
@@ -319,11 +318,16 @@ double turningNoise(const ConditionedStroke& cs, double noise, const FeatureOpti
     return std::sqrt(6.0 / m) * noise / arm;
 }
 
+bool noiseCallsForWiderArms(const ConditionedStroke& cs, double noise, const FeatureOptions& options)
+{
+    return options.maxTurningNoise > 0.0 && turningNoise(cs, noise, options) > options.maxTurningNoise;
+}
+
 FeatureOptions widenForNoise(const ConditionedStroke& cs, double noise, const StrokeFeatures& f, const FeatureOptions& options)
 {
     FeatureOptions o = options;
     const double maxTurningNoise = options.maxTurningNoise;
-    if (!(maxTurningNoise > 0.0) || turningNoise(cs, noise, o) <= maxTurningNoise) return o;
+    if (!noiseCallsForWiderArms(cs, noise, options)) return o;
     // Dense enough: the median arm of f (options' own windows) holds kMinArmSamples samples. Counted
     // in samples, not as length over the mean spacing: jitter lengthens the path, and a jittery
     // zigzag's mean spacing (0.9 units, three times its chord spacing) called it sparse.

@@ -237,8 +237,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // unwidened ones serve the arm count and the speed (their windows, FeatureSet::Windows),
         // and only where corners are found, localizeCorners (all of them).
         cs.noise = estimateNoise(cs.points, stroke.dimension);
-        const bool noisy = options.features.maxTurningNoise > 0.0 &&
-                           turningNoise(cs, cs.noise, options.features) > options.features.maxTurningNoise;
+        const bool noisy = noiseCallsForWiderArms(cs, cs.noise, options.features);
         StrokeFeatures f = computeFeatures(cs, options.features, noisy ? FeatureSet::Windows : FeatureSet::All);
         const FeatureOptions wide = widenForNoise(cs, cs.noise, f, options.features);
         if (wide.neighbourhood == options.features.neighbourhood) {

@@ -47,11 +47,18 @@ void startApplication()
     SoQt::init(static_cast<QWidget*>(nullptr));
 }
 
+/// The window opened on data/default_scene.json, as most tests here start; its document.
+SketchDocument& showDefaultScene(MainWindow& window)
+{
+    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    return window.document();
+}
+
 TEST(MainWindow, DocksShowTheSelectionAndModesSwitchTheViewer)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    showDefaultScene(window);
     window.show();
     window.resize(1200, 800);
     QApplication::processEvents();
@@ -202,8 +209,7 @@ TEST(MainWindow, AnyRecognitionCandidateCanBePickedAndUndone)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
-    SketchDocument& doc = window.document();
+    SketchDocument& doc = showDefaultScene(window);
     // Given an arc stroke on the default plane (id 1), as the stroke input would deliver it
     const model::PlaneFrame frame = doc.model().find(1)->frame;
     const manipulators::FinishedStroke stroke = strokeOnPlane(frame, archPoints(0, 0, 30.0, true));
@@ -252,8 +258,7 @@ TEST(MainWindow, AStrokesLeftOutSamplesAreReported)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
-    SketchDocument& doc = window.document();
+    SketchDocument& doc = showDefaultScene(window);
     const model::PlaneFrame frame = doc.model().find(1)->frame;
     // Given a circle of radius 30 drawn on by a further 15 % of its turn, 92 samples, the pen
     // drifting outward past the start (up to 5.6 units off the loop; an overshoot that retraces the
@@ -284,7 +289,7 @@ TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
 {
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    showDefaultScene(window);
     window.show();
     QApplication::processEvents();
     // Given an edit (a new plane) that was not saved
@@ -317,7 +322,7 @@ TEST(MainWindow, SculptModeDeformsTheSelectedSurfaceOntoAStrokeAndUndoRestoresIt
     // Given the default scene (plane 1 at y = 95, surface 3) with the surface selected
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    showDefaultScene(window);
     window.show();
     SketchDocument& doc = window.document();
     const model::EntityId base = 3;
@@ -376,7 +381,7 @@ TEST(MainWindow, ASecondTargetInSculptModeJoinsTheSculptsTargetsInOneUndoStep)
     // Given the default scene (plane 1 at y = 95, surface 3), the surface sculpted onto one arch
     startApplication();
     MainWindow window;
-    window.showDocument(model::loadDocument(SCULPTLINE_DATA_DIR "/default_scene.json"), QString());
+    showDefaultScene(window);
     window.show();
     SketchDocument& doc = window.document();
     const model::EntityId base = 3;
