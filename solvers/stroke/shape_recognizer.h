@@ -182,7 +182,10 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& options
 
 /// A raw stroke fitted (fitStroke) and recognized (recognizeShape), as the window does when the pen
 /// lifts; a loop closed by trimming a long overshoot is refitted open (RecognizeOptions::maxOvershoot),
-/// an open stroke that nearly closes is refitted closed (minLoopTurn).
+/// an open stroke that nearly closes is refitted closed (minLoopTurn, nearLoopTurn). Closing is a
+/// guess that must explain the stroke: where the closed fit reads as freeform and the open one as
+/// a shape, the open reading stays (an arrow whose head's last line runs back toward the shaft's
+/// start turns far enough and heads for its start, but closed it is no shape).
 struct StrokeRecognition {
     FitResult fit;
     Recognition recognition;

@@ -322,3 +322,31 @@ TEST(ShapeRecognition, GivenASkewedOrTaperedRectangle_WhenRecognizedWithLooseQua
 
 }  // namespace
 }  // namespace sculptline::stroketest
+
+namespace sculptline::stroketest {
+namespace {
+
+// An arrow drawn in one stroke whose head's last line runs back toward the shaft's start (the
+// vertices of a development arrow, s03 slow 1 sheared by 0.3, in units of 200): it turns by more
+// than nearLoopTurn around its circle's centre and ends heading for its start, so recognizeStroke
+// fits it again closed. Closed it reads as nothing (freeform); the closing is a guess that must
+// explain the stroke, so the open polyline it was stays.
+TEST(ShapeRecognition, GivenAnArrowWhoseHeadPointsBackToItsStart_WhenRecognized_ThenTheOpenPolylineStays)
+{
+    const solvers::stroke::Stroke arrow =
+        penAlong({{0, 0, 0}, {128, 70, 0}, {74, 60, 0}, {136, 68, 0}, {84, 7, 0}}, kPenStep);
+
+    const auto r = solvers::stroke::recognizeStroke(arrow);
+    // The closed reading the rule declines: the same stroke fitted closed.
+    solvers::stroke::FitOptions closed;
+    closed.conditioning.closure = solvers::stroke::Closure::Closed;
+    const auto loop = solvers::stroke::recognizeShape(solvers::stroke::fitStroke(arrow, closed));
+
+    EXPECT_FALSE(r.recognition.geometry.closed);
+    EXPECT_EQ(r.recognition.kind, ShapeKind::Polyline);
+    EXPECT_EQ(r.recognition.geometry.vertices.size(), 5u);
+    EXPECT_EQ(loop.kind, ShapeKind::Freeform);
+}
+
+}  // namespace
+}  // namespace sculptline::stroketest

@@ -14,11 +14,12 @@ namespace {
 
 // Floors a little under the accuracies measured when the recognizer was tuned (README, "Recognition
 // on real pen strokes"): development s02-s06 98.2 % overall, every gesture >= 90.7 %; held-out
-// s07-s11 94.7 % overall. They guard against regressions; the held-out goal (95 %, every gesture
-// >= 90 %) is not met yet.
+// s07-s11 95.1 % overall (2,283 of 2,400, since a closing that explains nothing is undone:
+// recognizeStroke). They guard against regressions. The held-out floor is the goal itself (95 %,
+// 2,280 strokes); its other half, every gesture >= 90 %, is not met yet (rectangles 86.0 %).
 constexpr double kDevOverall = 0.97;
 constexpr double kDevPerGesture = 0.90;
-constexpr double kHeldOutOverall = 0.94;
+constexpr double kHeldOutOverall = 0.95;
 // Held-out, learning from each person's first three repetitions (unistroke-report --adapt held-out,
 // the strokes after them): 89.9 % -> 94.0 % measured at first, 94.5 % -> 98.5 % now that
 // confirmations are learned too (96.5 % before). What the person sees is the accuracy after
