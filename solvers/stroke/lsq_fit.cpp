@@ -23,11 +23,11 @@ std::vector<double> checkParameters(const SplineFitInput& in, const std::vector<
     size_t k = 0;
     for (int i = 0; i < m; ++i) {
         while (k + 1 < S.size() && S[k + 1] <= i) ++k;
-        const double c0 = in.chord[S[k]], u0 = u[k];
+        const double c0 = (*in.chord)[S[k]], u0 = u[k];
         const bool wrapEnd = k + 1 == S.size();
-        const double c1 = wrapEnd ? (in.closed ? 1.0 + in.chord[S[0]] : 1.0) : in.chord[S[k + 1]];
+        const double c1 = wrapEnd ? (in.closed ? 1.0 + (*in.chord)[S[0]] : 1.0) : (*in.chord)[S[k + 1]];
         const double u1 = wrapEnd ? (in.closed ? 1.0 + u[0] : 1.0) : u[k + 1];
-        const double t = c1 > c0 ? (in.chord[i] - c0) / (c1 - c0) : 0.0;
+        const double t = c1 > c0 ? ((*in.chord)[i] - c0) / (c1 - c0) : 0.0;
         out[i] = u0 + t * (u1 - u0);
     }
     return out;
@@ -348,6 +348,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     const int m = static_cast<int>(X.size());
     if (opt.tolerance <= 0.0) throw GeometryError("tolerance: must be positive");
     if (m < 2 || in.samples.size() < 2 || in.samples.front() != 0) throw GeometryError("stroke: too few samples to fit");
+    if (!in.chord || static_cast<int>(in.chord->size()) != m)
+        throw GeometryError("stroke: one chord parameter per point");
     Spline s;
     s.closed = in.closed;
     s.breaks = {0.0, 1.0};
@@ -356,7 +358,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     std::vector<int> S = in.samples;
     if (!in.closed && S.back() != m - 1) S.push_back(m - 1);
     std::vector<double> u(S.size());
-    for (size_t k = 0; k < S.size(); ++k) u[k] = in.chord[S[k]];
+    for (size_t k = 0; k < S.size(); ++k) u[k] = (*in.chord)[S[k]];
     // Beyond one control point per sample the least squares is interpolation with extra freedom.
     const int maxUnknowns = std::max(in.closed ? 5 : 4, static_cast<int>(m) + 2);
 
@@ -369,7 +371,10 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         // b_0 = 0 and b_j at the parameter j N_s / N samples along (interpolated between two),
         // so that every span holds N_s / N samples, the periodic form of the same averaging.
         auto averaged = [&](int nCtrl) {
-            std::vector<double> uc = u;  // this trial's parameters (corrected below)
+            // This trial's parameters (corrected below), or those a stopped fit of the same count left.
+            const AveragedCorrectionState* resume = opt.averagedControlPoints > 0 ? opt.averagedResume : nullptr;
+            std::vector<double> uc = resume ? resume->parameters : u;
+            if (uc.size() != u.size()) throw GeometryError("averaged fit: the state to resume is of another input");
             Spline t;
             t.closed = in.closed;
             t.breaks = {0.0};
@@ -413,8 +418,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             // sample's parameter moved by a Newton step toward its foot point (kept between its
             // neighbours'), the knots kept. The Newton step's evaluation also gives the sample's
             // distance at its parameter, so each correction measures the curve it corrects.
-            double before = std::numeric_limits<double>::infinity();
-            for (int c = 0; c < opt.averagedCorrections; ++c) {
+            double before = resume ? resume->error : std::numeric_limits<double>::infinity();
+            for (int c = resume ? resume->done : 0; c < opt.averagedCorrections; ++c) {
                 double e = 0.0;  // the samples' largest distance at their parameters (the ends are P_0, P_n)
                 for (size_t k = firstK; k < endK; ++k) {
                     Vec3 d[3];
@@ -433,6 +438,13 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                     const double r = std::min(1.0, e / before);
                     if (e * std::pow(r, opt.averagedCorrections - c) > kCorrectionRejection * opt.tolerance)
                         return std::make_pair(t, e);
+                }
+                if (opt.averagedControlPoints > 0 && opt.averagedStopWhenWithin && e <= opt.tolerance &&
+                    c + 1 < opt.averagedCorrections) {
+                    // The count fits (every sample within the tolerance at its parameter, a curve
+                    // point). The state: the parameters just corrected, their solve not yet made.
+                    res.correction = {uc, c + 1, e, true};
+                    return std::make_pair(t, e);
                 }
                 before = e;
                 solve(t, X, S, uc, opt.fairing);
@@ -580,7 +592,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 S.insert(pos, i);
                 sumsBreaks.clear();
                 const double lo = u[at - 1], hi = at < u.size() ? u[at] : (in.closed ? u[0] + 1.0 : 1.0);
-                const double ui = opt.correctParameters ? cu[i] : in.chord[i];
+                const double ui = opt.correctParameters ? cu[i] : (*in.chord)[i];
                 u.insert(u.begin() + static_cast<long>(at), std::clamp(ui, lo, hi));
                 added = true;
             }

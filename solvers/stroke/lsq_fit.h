@@ -64,13 +64,31 @@ struct SplineFitOptions {
     /// KnotPlacement::Averaged only: this many control points (> 0; no search), else the fewest
     /// within tolerance found by bisection.
     int averagedControlPoints = 0;
+    /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every
+    /// sample lies within the tolerance at its parameter (the count is then known to fit, which is
+    /// all a search's trial asks), leaving the corrections' state in SplineFitResult::correction.
+    bool averagedStopWhenWithin = false;
+    /// KnotPlacement::Averaged with averagedControlPoints: go on from the state a stopped fit of the
+    /// same input and count left (SplineFitResult::correction): the result is the uninterrupted
+    /// fit's, to the bit.
+    const struct AveragedCorrectionState* averagedResume = nullptr;
+};
+
+/// Where a fit with averagedStopWhenWithin stopped: the parameters after `done` corrections (the
+/// next least-squares solve not yet made) and the samples' largest distance last measured.
+struct AveragedCorrectionState {
+    std::vector<double> parameters;
+    int done = 0;
+    double error = 0.0;
+    bool stopped = false;  ///< false: the fit ran every correction, nothing to resume
 };
 
 /// Data for one piece: ordered points with chord-length parameters normalized to [0, 1]
 /// (closed: chord[0] = 0 and chord.back() < 1, the rest of [0, 1) being the seam gap).
 struct SplineFitInput {
     const std::vector<Eigen::Vector3d>* points = nullptr;  ///< every conditioned point (the check set)
-    std::vector<double> chord;                              ///< one parameter per point, increasing
+    /// One parameter per point, increasing (the caller's storage: a search's trials share one).
+    const std::vector<double>* chord = nullptr;
     std::vector<int> samples;                               ///< indices used by the least squares, increasing,
                                                             ///< containing 0 (and the last point when open)
     bool closed = false;
@@ -83,6 +101,7 @@ struct SplineFitResult {
     double maxError = 0.0;                 ///< max distance from a point to its (corrected) curve point
     bool converged = false;                ///< maxError <= tolerance
     int iterations = 0;
+    AveragedCorrectionState correction;  ///< averagedStopWhenWithin: where the corrections stopped
 };
 
 /// Open curves interpolate the first and last points and approximate the others; closed curves are

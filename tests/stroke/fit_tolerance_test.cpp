@@ -173,6 +173,27 @@ TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenFewSamplesDropped)
     EXPECT_EQ(outliers, 0u);
 }
 
+// fitStroke's search for the fewest control points: where its climb's last step misses by more
+// than the step before, the counts between the last two misses are tried before the error-driven
+// fit. Two slow, jittery flourishes (seeds 3 and 15 of BM_StrokeFitSeeds/1) climbed 20, 22 and fell
+// back to 30 and 32 control points; 21 fits both. Bound: the most of the other 14 seeds (23).
+TEST(FitTolerance, GivenJitteryFlourishesWhoseClimbJumpsPastTheFit_WhenFitted_ThenTheCountBetweenTheMissesIsFound)
+{
+    constexpr int kMostOfTheOtherSeeds = 23;
+    for (unsigned seed : {3u, 15u}) {
+        DrawOptions d;
+        d.noise = 0.5;
+        d.seed = seed;
+        const Stroke s = drawWithSamples(flourishShape(300), 1000, d);
+
+        const FitResult r = fitStroke(s);
+
+        ASSERT_TRUE(r.converged) << "seed " << seed;
+        EXPECT_LE(r.curve.pointCount(), kMostOfTheOtherSeeds) << "seed " << seed;
+        EXPECT_LE(maxDeviation(r.curve, keptSamples(s, r)), r.tolerance + kMeasureAgreement) << "seed " << seed;
+    }
+}
+
 // A slow hand with sensor jitter (noise 0.5 on the 300-unit flourish, 1,000 samples; the default
 // tolerance is 1.51, three sigma): a sample the noise puts beyond the tolerance is left out as an
 // outlier (FitResult::outliers) only when it lies alone between neighbours within the tolerance and

@@ -112,18 +112,76 @@ TEST(EllipseFit, GivenNoisyPointsOfAnElongatedEllipse_ThenParametersAndWindowedR
     EXPECT_NEAR(f.maxResidual, polylineResidual(pts, poly, true), 1e-9);
 }
 
+// SplineFitOptions::averagedStopWhenWithin and averagedResume: a fixed count whose samples fit
+// before its last correction stops there; resumed from that state it ends with the uninterrupted
+// fit's curve, to the bit (the search in fitStroke takes the resumed curve).
+TEST(LeastSquaresSpline, GivenAnAveragedFitStoppedOnceItsSamplesFit_WhenResumed_ThenTheUninterruptedFitToTheBit)
+{
+    // A wavy open curve, 400 points with a little noise, chord parameters, every 4th a row.
+    std::mt19937 rng(5);
+    std::normal_distribution<double> noise(0.0, 0.05);
+    std::vector<Eigen::Vector3d> pts;
+    for (int i = 0; i < 400; ++i) {
+        const double t = i / 399.0;
+        pts.emplace_back(100 * t + noise(rng), 20 * std::sin(9 * t) + 8 * std::sin(23 * t) + noise(rng), 0.0);
+    }
+    std::vector<double> chord(pts.size(), 0.0);
+    for (size_t i = 1; i < pts.size(); ++i) chord[i] = chord[i - 1] + (pts[i] - pts[i - 1]).norm();
+    for (double& c : chord) c /= chord.back();
+    SplineFitInput in;
+    in.points = &pts;
+    in.chord = &chord;
+    for (int i = 0; i < 400; i += 4) in.samples.push_back(i);
+    in.samples.push_back(399);
+    SplineFitOptions o;
+    o.tolerance = 0.5;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 8;
+
+    // The counts from 8 up: the first whose samples fit before the last correction stops early.
+    int stoppedAt = 0;
+    for (int count = 8; count <= 40 && stoppedAt == 0; ++count) {
+        o.averagedControlPoints = count;
+        o.averagedStopWhenWithin = true;
+        const SplineFitResult stopped = fitCubicSpline(in, o);
+        if (!stopped.correction.stopped) continue;
+        stoppedAt = count;
+        EXPECT_LE(stopped.maxError, o.tolerance);
+        EXPECT_LT(stopped.correction.done, o.averagedCorrections);
+        EXPECT_EQ(stopped.correction.parameters.size(), in.samples.size());
+
+        o.averagedStopWhenWithin = false;
+        o.averagedResume = &stopped.correction;
+        const SplineFitResult resumed = fitCubicSpline(in, o);
+        o.averagedResume = nullptr;
+        const SplineFitResult whole = fitCubicSpline(in, o);
+
+        EXPECT_FALSE(resumed.correction.stopped);
+        ASSERT_EQ(resumed.knots.size(), whole.knots.size());
+        for (size_t k = 0; k < whole.knots.size(); ++k) EXPECT_EQ(resumed.knots[k], whole.knots[k]) << k;
+        ASSERT_EQ(resumed.points.size(), whole.points.size());
+        for (size_t k = 0; k < whole.points.size(); ++k) EXPECT_EQ(resumed.points[k], whole.points[k]) << k;
+        EXPECT_EQ(resumed.maxError, whole.maxError);
+        // And the stopped curve is not already that curve: the corrections left changed it.
+        EXPECT_NE(stopped.points, whole.points);
+    }
+    EXPECT_GT(stoppedAt, 0) << "no count stopped early: the test exercises nothing";
+}
+
 TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
 {
     // A single cubic Bezier segment is in the spline space: the fit must reproduce it.
     std::vector<Eigen::Vector3d> pts;
+    std::vector<double> chord;
     SplineFitInput in;
     for (int i = 0; i <= 50; ++i) {
         const double t = i / 50.0;
         pts.emplace_back(t, t * t * t - t, 0.5 * t * t);
-        in.chord.push_back(t);
+        chord.push_back(t);
         in.samples.push_back(i);
     }
     in.points = &pts;
+    in.chord = &chord;
     SplineFitOptions o;
     o.tolerance = 1e-6;
     o.fairing = 0.0;  // no bias: the exact answer is in the space
