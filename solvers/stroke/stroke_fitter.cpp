@@ -237,7 +237,8 @@ FitPass fitConditioned(const ConditionedStroke& cs, const std::vector<Vec3>& fit
         c.samples.clear();
         c.samples.reserve(samples.size() + 1);
         for (int s : samples) c.samples.push_back(c.position[s]);
-        std::sort(c.samples.begin(), c.samples.end());
+        // (An open chain's rows come in order; a loop's are rotated to its start corner.)
+        if (!std::is_sorted(c.samples.begin(), c.samples.end())) std::sort(c.samples.begin(), c.samples.end());
         if (cs.closed) c.samples.push_back(count - 1);
         Assembled a = fitPieces(c, sopt);
         out.correction = std::move(a.correction);
@@ -246,7 +247,7 @@ FitPass fitConditioned(const ConditionedStroke& cs, const std::vector<Vec3>& fit
         out.converged = a.converged;
         out.samples.reserve(a.samples.size());
         for (int s : a.samples) out.samples.push_back((*c.source)[s]);
-        std::sort(out.samples.begin(), out.samples.end());
+        if (!std::is_sorted(out.samples.begin(), out.samples.end())) std::sort(out.samples.begin(), out.samples.end());
         out.samples.erase(std::unique(out.samples.begin(), out.samples.end()), out.samples.end());
     }
     return out;
