@@ -1,6 +1,7 @@
 #include "manipulators/stroke_input.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
@@ -195,14 +196,17 @@ void reproject(FinishedStroke& stroke, const model::PlaneFrame& frame)
 {
     stroke.frame = frame;
     stroke.points.clear();
-    std::vector<double> times;
+    std::vector<double> times, pressure;
+    const bool pressured = stroke.rayPressure.size() == stroke.rayOrigins.size();
     for (size_t i = 0; i < stroke.rayOrigins.size(); ++i) {
         if (const auto p = intersectPlane(frame, stroke.rayOrigins[i], stroke.rayDirections[i])) {
             stroke.points.push_back(*p);
             times.push_back(stroke.rayTimes[i]);
+            if (pressured) pressure.push_back(stroke.rayPressure[i]);
         }
     }
     stroke.times = std::move(times);
+    stroke.pressure = std::move(pressure);
 }
 
 double pixelFootprint(const FinishedStroke& stroke)
@@ -251,6 +255,7 @@ void StrokeInput::onEvent(SoEventCallback* node)
         drawing_ = true;
         startTime_ = now;
         stroke_ = {};
+        pressured_ = true;
         stroke_.frame = *plane;
         stroke_.start = start;
         addSample(node, 0.0);
@@ -295,6 +300,16 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     stroke_.rayOrigins.push_back(from);
     stroke_.rayDirections.push_back(direction);
     stroke_.rayTimes.push_back(time);
+    // The pen's pressure, kept while every sample has one (a mouse, or a pen that loses its reading,
+    // leaves the stroke without).
+    const std::optional<double> pressure = pressure_ ? pressure_() : std::nullopt;
+    pressured_ = pressured_ && pressure && std::isfinite(*pressure);
+    if (pressured_) {
+        stroke_.rayPressure.push_back(std::clamp(*pressure, 0.0, 1.0));
+    } else {
+        stroke_.rayPressure.clear();
+        stroke_.pressure.clear();
+    }
     FinishedStroke::PixelRays pixel;
     if (!pointerRay(node, camera_ ? camera_() : nullptr, pixel.originX, pixel.directionX, 1, 0) ||
         !pointerRay(node, camera_ ? camera_() : nullptr, pixel.originY, pixel.directionY, 0, 1)) {
@@ -306,6 +321,7 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     if (const auto local = intersectPlane(stroke_.frame, from, direction)) {
         stroke_.points.push_back(*local);
         stroke_.times.push_back(time);
+        if (pressured_) stroke_.pressure.push_back(stroke_.rayPressure.back());
         const int n = static_cast<int>(stroke_.points.size());
         previewPoints_->point.set1Value(n - 1, scene::toSb(stroke_.frame.toWorld(*local)));
         previewLine_->numVertices.setValue(n);

@@ -49,12 +49,17 @@ struct FinishedStroke {
     model::PlaneFrame frame;  ///< the plane the points are in
     std::vector<Eigen::Vector3d> points;  ///< in `frame`, z = 0, model units
     std::vector<double> times;  ///< seconds since the pen went down, one per point
+    /// The pen's pressure, 0..1, one per point where every sample carried one (a tablet pen); empty
+    /// for a mouse (solvers::stroke::Stroke::pressure: the fitter trims light-pressure hooks).
+    std::vector<double> pressure;
     /// The pointer's ray per point (world): a stroke that ends on a curve goes onto another plane
     /// (seed 000 §3.1), so its points are intersected again.
     std::vector<Eigen::Vector3d> rayOrigins, rayDirections;
     /// Seconds since the pen went down, one per ray (a ray that misses the plane has no point, and
     /// so no entry in `times`).
     std::vector<double> rayTimes;
+    /// The pressure per ray, as `pressure` per point (empty when a sample had none).
+    std::vector<double> rayPressure;
     /// Per ray, the rays through the pixel one to the right (x) and one up (y) of it, world: the
     /// pointer's pixel on whatever plane the stroke ends up on (pixelFootprint).
     struct PixelRays {
@@ -110,6 +115,10 @@ public:
     /// Where sample times come from, seconds; default: the Coin event's time stamp. A replay sets
     /// the recorded times, so a replayed stroke is sampled, and fitted, exactly as recorded.
     void setClock(std::function<double()> clock) { clock_ = std::move(clock); }
+    /// Where each sample's pen pressure comes from, 0..1, or none (a mouse): the window's last
+    /// tablet reading, or a replay's recorded value. A stroke keeps pressure only if every sample
+    /// had one.
+    void setPressure(std::function<std::optional<double>()> pressure) { pressure_ = std::move(pressure); }
     /// Called on a click (a press and release within a few pixels): also when no plane takes a
     /// stroke (the active-plane callback returned none), so a tool that only clicks can refuse strokes.
     /// `clickOnly` says whether a press that no plane takes is kept for a click (default: no, the
@@ -151,6 +160,8 @@ private:
     std::function<void(const PointerClick&)> clicked_;
     std::function<bool()> clickOnly_;
     std::function<double()> clock_;
+    std::function<std::optional<double>()> pressure_;
+    bool pressured_ = true;  // every sample of the stroke under way had a pressure so far
 };
 
 }  // namespace sculptline::manipulators

@@ -5,18 +5,19 @@
 #include "manipulators/stroke_input.h"
 #include "scene/eigen_coin.h"
 #include "scene/entity_path.h"
-#include "ui/autosave.h"
-#include "ui/pose_input.h"
 #include "ui/aesthetics_dock.h"
+#include "ui/autosave.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
 #include "ui/lcurve_dock.h"
 #include "ui/modes_dock.h"
+#include "ui/pose_input.h"
 #include "ui/recognition_dock.h"
-#include "ui/stereo_menu.h"
-#include "ui/surface_display_menu.h"
 #include "ui/sketch_document.h"
 #include "ui/solid_builder.h"
+#include "ui/stereo_menu.h"
+#include "ui/surface_display_menu.h"
+#include "ui/tablet_pressure.h"
 #include "ui/undo_history.h"
 #include "ui/view_navigation.h"
 
@@ -97,6 +98,9 @@ MainWindow::MainWindow(QWidget* parent, bool withViewer) : QMainWindow(parent)
         viewer_->setPopupMenuEnabled(FALSE);
         viewer_->setEventCallback(&MainWindow::viewerEvent, this);
         document_->setCamera([this]() { return viewer_->getCamera(); });
+        // A tablet pen's pressure goes with each stroke sample (the fitter trims light hooks).
+        const TabletPressure* tablet = new TabletPressure(viewer_->getGLWidget());
+        document_->strokeInput().setPressure([tablet]() { return tablet->pressure(); });
         new PoseInput(*this);  // 6-DOF devices and the 3D mouse (ui/pose_input.h)
     }
     createActions();

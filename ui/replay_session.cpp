@@ -42,6 +42,11 @@ ReplayEvent eventFromJson(const json& j, const std::string& path)
             else if (b == "right") e.button = Qt::RightButton;
             else throw io::InputError(path + ".button: must be \"left\", \"middle\" or \"right\"");
         }
+        if (const auto it = j.find("pressure"); it != j.end()) {
+            const double v = io::numberFromJson(*it, path + ".pressure");
+            if (!(v >= 0.0 && v <= 1.0)) throw io::InputError(path + ".pressure: must be between 0 and 1");
+            e.pressure = v;
+        }
         if (const auto it = j.find("modifiers"); it != j.end()) {
             if (!it->is_array()) throw io::InputError(path + ".modifiers: must be an array");
             for (const json& m : *it) {

@@ -25,6 +25,8 @@ struct ReplayEvent {
     std::optional<Eigen::Vector3d> at;
     Qt::MouseButton button = Qt::LeftButton;
     Qt::KeyboardModifiers modifiers;
+    /// A pen's pressure, 0..1 ("pressure"), as a tablet reports it; none: a mouse.
+    std::optional<double> pressure;
     double t = -1.0;  ///< ms since the replay started; < 0 = as soon as the previous event is done
     QKeySequence key;
     QString name;  ///< action name

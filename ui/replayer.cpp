@@ -40,6 +40,7 @@ Replayer::Replayer(MainWindow& window, ReplaySession session, QObject* parent)
 {
     window_.document().scheduler().setUpdateListener([this](double ms) { stats_.add("model_update", ms); });
     window_.document().strokeInput().setClock([this]() { return eventTime_; });
+    window_.document().strokeInput().setPressure([this]() { return eventPressure_; });
 }
 
 QString Replayer::check() const
@@ -90,6 +91,7 @@ void Replayer::dispatch(const ReplayEvent& e)
     const bool drawing = doc.strokeInput().drawing();  // a release then ends a stroke
     // The recorded time when there is one, so that a replayed stroke carries its recorded timing.
     eventTime_ = (e.t >= 0.0 ? e.t : static_cast<double>(clock_.elapsed())) / 1000.0;
+    eventPressure_ = e.pressure;
     const auto start = std::chrono::steady_clock::now();
     switch (e.type) {
     case ReplayEvent::Type::Press:

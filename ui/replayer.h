@@ -11,6 +11,7 @@
 #include <QObject>
 
 #include <functional>
+#include <optional>
 
 namespace sculptline::ui {
 
@@ -43,6 +44,7 @@ private:
     Qt::MouseButtons held_;
     QElapsedTimer clock_;
     double eventTime_ = 0.0;  ///< seconds, the time stroke samples of the current event get
+    std::optional<double> eventPressure_;  ///< the pen pressure they get (none: a mouse)
     LatencyStats stats_;
     std::function<void()> done_;
 };

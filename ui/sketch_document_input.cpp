@@ -216,6 +216,8 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
     solvers::stroke::Stroke input;
     input.points = stroke.points;
     input.times = stroke.times;
+    // A tablet pen's pressure: the fitter trims the light-pressure hooks at either end.
+    if (stroke.pressure.size() == stroke.points.size()) input.pressure = stroke.pressure;
     input.dimension = 2;
     try {
         // The stroke issue's fitter (solvers/stroke): conditioning, corners, dynamic sampling and

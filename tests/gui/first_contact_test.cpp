@@ -12,6 +12,7 @@
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/nodes/SoCamera.h>
 
+#include <gtest/gtest.h>
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
@@ -19,12 +20,12 @@
 #include <QLabel>
 #include <QListWidget>
 #include <QMenu>
-#include <QScreen>
-#include <QUndoStack>
 #include <QMouseEvent>
+#include <QScreen>
 #include <QStatusBar>
+#include <QTabletEvent>
+#include <QUndoStack>
 #include <QWheelEvent>
-#include <gtest/gtest.h>
 
 #include <cstdlib>
 
@@ -327,6 +328,58 @@ TEST(FirstContact, AStrokeThatWouldLandOutOfSightIsRefusedWithTheReason)
     const QPoint c = f.onPlane(-40, -20), d = f.onPlane(40, 30);
     drag(f.window, Qt::LeftButton, c, d.x() - c.x(), d.y() - c.y());
     EXPECT_EQ(f.curves(), before + 1);
+}
+
+// A tablet pen reaches the scene graph as mouse events Qt synthesizes from its QTabletEvents
+// (ui/tablet_pressure.h keeps the pen's reading for the stroke). Its pen-down hook (seed 003 §3.1:
+// the tip skids while the pressure builds up) is drawn lightly, so the fitter trims it; the same
+// path drawn with a mouse carries no pressure and nothing is trimmed.
+TEST(FirstContact, APensLightPressureHookIsTrimmedAndAMouseStrokeKeepsEverySample)
+{
+    startApplication();
+    Fixture f;
+    SketchDocument& doc = f.window.document();
+    // Four light samples curling in from below, then an arch of 80 at full pressure.
+    struct Sample {
+        QPoint at;
+        double pressure;
+    };
+    std::vector<Sample> path;
+    for (int k = 0; k < 4; ++k) path.push_back({QPoint(308 + k, 338 - 2 * k), 0.15});
+    for (int k = 0; k < 80; ++k) {
+        const double a = k / 79.0;
+        path.push_back({QPoint(static_cast<int>(std::lround(312 + 180 * a)),
+                               static_cast<int>(std::lround(330 - 60 * std::sin(3.14159265358979 * a)))),
+                        0.8});
+    }
+    QWidget* gl = f.window.viewport();
+    const auto pen = [&](QEvent::Type tablet, QEvent::Type mouseType, const Sample& s, Qt::MouseButton button,
+                         Qt::MouseButtons held) {
+        QTabletEvent t(tablet, QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), QTabletEvent::Stylus, QTabletEvent::Pen,
+                       s.pressure, 0, 0, 0.0, 0.0, 0, Qt::NoModifier, 1, button, held);
+        QApplication::sendEvent(gl, &t);
+        QMouseEvent m(mouseType, QPointF(s.at), QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), button, held,
+                      Qt::NoModifier, Qt::MouseEventSynthesizedByQt);
+        QApplication::sendEvent(gl, &m);
+    };
+    // When the pen draws it
+    pen(QEvent::TabletPress, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i)
+        pen(QEvent::TabletMove, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
+    pen(QEvent::TabletRelease, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+    // Then the light hook's samples are left out, and the status says so
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    EXPECT_EQ(doc.lastStroke().dropped, 4) << doc.lastStroke().message.toStdString();
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("left out as a hook")))
+        << doc.lastStroke().message.toStdString();
+
+    // And when a mouse draws the same path after the pen, no pressure is left over from it
+    mouse(f.window, QEvent::MouseButtonPress, path.front().at, Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i)
+        mouse(f.window, QEvent::MouseMove, path[i].at, Qt::NoButton, Qt::LeftButton);
+    mouse(f.window, QEvent::MouseButtonRelease, path.back().at, Qt::LeftButton, Qt::NoButton);
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    EXPECT_EQ(doc.lastStroke().dropped, 0) << doc.lastStroke().message.toStdString();
 }
 
 TEST(FirstContact, TheWindowFitsTheScreenItOpensOn)

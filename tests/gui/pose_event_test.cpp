@@ -64,6 +64,27 @@ TEST(PoseEvent, GivenWrongFields_WhenParsed_ThenTheFieldIsNamed)
     EXPECT_NE(errorOf(R"({"type": "pose", "device": "pointer", "position": [0, "x", 0]})").find("events[0].position"), std::string::npos);
 }
 
+// A pen's pressure on a press, move or release ("pressure", 0..1): kept as recorded; none for a
+// mouse; outside 0..1 or not a number, refused with the field's name.
+TEST(ReplayPressure, GivenPenEventsWithPressure_WhenParsed_ThenKeptAndBadValuesNamed)
+{
+    const ReplaySession s = parseReplaySession(session(R"({"type": "press", "x": 10, "y": 20, "pressure": 0.25},
+                                                          {"type": "move", "x": 11, "y": 20, "pressure": 1},
+                                                          {"type": "release", "x": 11, "y": 20})"));
+    ASSERT_EQ(s.events.size(), 3u);
+    ASSERT_TRUE(s.events[0].pressure.has_value());
+    EXPECT_EQ(*s.events[0].pressure, 0.25);
+    ASSERT_TRUE(s.events[1].pressure.has_value());
+    EXPECT_EQ(*s.events[1].pressure, 1.0);
+    EXPECT_FALSE(s.events[2].pressure.has_value());
+    EXPECT_NE(errorOf(R"({"type": "move", "x": 1, "y": 2, "pressure": 1.5})").find("events[0].pressure"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"type": "move", "x": 1, "y": 2, "pressure": -0.1})").find("events[0].pressure"),
+              std::string::npos);
+    EXPECT_NE(errorOf(R"({"type": "move", "x": 1, "y": 2, "pressure": "hard"})").find("events[0].pressure"),
+              std::string::npos);
+}
+
 TEST(PoseEvent, GivenNearlyUnitQuaternion_WhenParsed_ThenNormalized)
 {
     // Within kQuaternionNormSlack of unit length: a recording's rounding, normalized.
