@@ -255,7 +255,6 @@ void StrokeInput::onEvent(SoEventCallback* node)
         drawing_ = true;
         startTime_ = now;
         stroke_ = {};
-        pressured_ = true;
         stroke_.frame = *plane;
         stroke_.start = start;
         addSample(node, 0.0);
@@ -300,11 +299,12 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     stroke_.rayOrigins.push_back(from);
     stroke_.rayDirections.push_back(direction);
     stroke_.rayTimes.push_back(time);
-    // The pen's pressure, kept while every sample has one (a mouse, or a pen that loses its reading,
-    // leaves the stroke without).
+    // The pen's pressure, kept while every sample has one (every earlier ray has its pressure; a
+    // mouse, or a pen that loses its reading, leaves the stroke without).
     const std::optional<double> pressure = pressure_ ? pressure_() : std::nullopt;
-    pressured_ = pressured_ && pressure && std::isfinite(*pressure);
-    if (pressured_) {
+    const bool pressured =
+        pressure && std::isfinite(*pressure) && stroke_.rayPressure.size() + 1 == stroke_.rayOrigins.size();
+    if (pressured) {
         stroke_.rayPressure.push_back(std::clamp(*pressure, 0.0, 1.0));
     } else {
         stroke_.rayPressure.clear();
@@ -321,7 +321,7 @@ void StrokeInput::addSample(SoEventCallback* node, double time)
     if (const auto local = intersectPlane(stroke_.frame, from, direction)) {
         stroke_.points.push_back(*local);
         stroke_.times.push_back(time);
-        if (pressured_) stroke_.pressure.push_back(stroke_.rayPressure.back());
+        if (pressured) stroke_.pressure.push_back(stroke_.rayPressure.back());
         const int n = static_cast<int>(stroke_.points.size());
         previewPoints_->point.set1Value(n - 1, scene::toSb(stroke_.frame.toWorld(*local)));
         previewLine_->numVertices.setValue(n);

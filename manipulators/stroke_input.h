@@ -161,7 +161,6 @@ private:
     std::function<bool()> clickOnly_;
     std::function<double()> clock_;
     std::function<std::optional<double>()> pressure_;
-    bool pressured_ = true;  // every sample of the stroke under way had a pressure so far
 };
 
 }  // namespace sculptline::manipulators

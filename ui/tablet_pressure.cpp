@@ -4,9 +4,6 @@
 #include <QTabletEvent>
 #include <QWidget>
 
-#include <algorithm>
-#include <cmath>
-
 namespace sculptline::ui {
 
 TabletPressure::TabletPressure(QWidget* viewport) : QObject(viewport)
@@ -20,8 +17,8 @@ bool TabletPressure::eventFilter(QObject* watched, QEvent* event)
     case QEvent::TabletPress:
     case QEvent::TabletMove:
     case QEvent::TabletRelease: {
-        const double p = static_cast<QTabletEvent*>(event)->pressure();
-        pressure_ = std::isfinite(p) ? std::clamp(p, 0.0, 1.0) : 0.0;
+        // (Checked and clamped where the stroke takes it: StrokeInput::addSample.)
+        pressure_ = static_cast<QTabletEvent*>(event)->pressure();
         break;  // not taken: Qt synthesizes the mouse event the scene graph draws with
     }
     case QEvent::MouseButtonPress:

@@ -17,7 +17,8 @@ class TabletPressure : public QObject {
 public:
     /// Watches `viewport`'s events (installed as its event filter; owned by it).
     explicit TabletPressure(QWidget* viewport);
-    /// The pen's last pressure, 0..1, while the pointer is a tablet pen; none for a mouse.
+    /// The pen's last pressure as the tablet reported it (0..1), while the pointer is a tablet pen;
+    /// none for a mouse.
     std::optional<double> pressure() const { return pressure_; }
 
 protected:

@@ -590,11 +590,13 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
                     for (int k = failed + 1; k < count; ++k) {
                         FitPass b = trial(k, samples);
-                        if (fits(b)) {
-                            a = std::move(b);
-                            count = k;
-                            break;
+                        if (!fits(b)) {
+                            failed = k;  // (the bisection below starts above it)
+                            continue;
                         }
+                        a = std::move(b);
+                        count = k;
+                        break;
                     }
                 }
                 // Down by bisection between the largest count seen to miss and the count that fits:
