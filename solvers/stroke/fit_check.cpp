@@ -1,5 +1,6 @@
 #include "solvers/stroke/fit_check.h"
 
+#include "solvers/bspline/basis_evaluator.h"
 #include "solvers/bspline/geometry_error.h"
 
 #include <Eigen/Geometry>
@@ -28,12 +29,24 @@ public:
             const double a = std::max(U[i], d0_), b = std::min(U[i + 1], d1_);
             if (!(b > a)) continue;
             const double m = 0.5 * (a + b);
-            const std::vector<Vec3> d = c.derivatives(m, 3);
             Span s;
             s.a = a;
             s.b = b;
             s.m = m;
-            s.c = {d[0], d[1], 0.5 * d[2], d.size() > 3 ? (d[3] / 6.0).eval() : Vec3::Zero().eval()};
+            if (c.degree() == 3) {
+                // The span's basis functions and their derivatives at m, fixed-size (the generic
+                // derivatives() allocates: 2.9 k instructions a span, 9 % of a 1,000-sample measure).
+                const BasisDerivatives<3, 3> nb = evaluateBasis<3, 3>(U, static_cast<int>(i), m);
+                constexpr double kTaylor[4] = {1.0, 1.0, 0.5, 1.0 / 6.0};
+                for (int k = 0; k <= 3; ++k) {
+                    Vec3 v = Vec3::Zero();
+                    for (int j = 0; j <= 3; ++j) v += nb.d[k][j] * c.points()[i - 3 + j];
+                    s.c[k] = kTaylor[k] * v;
+                }
+            } else {
+                const std::vector<Vec3> d = c.derivatives(m, 3);
+                s.c = {d[0], d[1], 0.5 * d[2], d.size() > 3 ? (d[3] / 6.0).eval() : Vec3::Zero().eval()};
+            }
             spans_.push_back(s);
         }
         if (spans_.empty()) throw GeometryError("fit check: the curve has an empty domain");
@@ -62,24 +75,50 @@ public:
         const double t = wrap(u) - s.m;
         return ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
     }
-    // Parameters of a polyline whose consecutive points lie at most ~`spacing` apart: per span a
-    // count from the largest speed at its ends and middle (a cubic's speed varies little within a
-    // span of a fitted stroke; the count is capped so that a wild span cannot explode the work).
-    std::vector<double> polylineParameters(double spacing) const
+    int spanCount() const { return static_cast<int>(spans_.size()); }
+    double spanStart(int j) const { return spans_[j].a; }
+    double spanEnd(int j) const { return spans_[j].b; }
+    // The span holding u (wrapped).
+    int spanOf(double u) const { return static_cast<int>(&spanAt(wrap(u)) - spans_.data()); }
+    // The box of span j's Bezier points (B0 = C(a), B1 = C(a) + h C'(a) / 3, B2 = C(b) - h C'(b) / 3,
+    // B3 = C(b), h = b - a): the span lies in their convex hull, so no point of it is nearer to x
+    // than the box is (The NURBS Book §1.4, the convex hull property).
+    Eigen::AlignedBox3d hullBox(int j) const
+    {
+        const Span& s = spans_[j];
+        const double h = s.b - s.a, ta = s.a - s.m, tb = s.b - s.m;
+        const auto at = [&](double t, Vec3& p, Vec3& d) {
+            p = ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
+            d = (3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1];
+        };
+        Vec3 p0, d0, p3, d3;
+        at(ta, p0, d0);
+        at(tb, p3, d3);
+        Eigen::AlignedBox3d box(p0);
+        box.extend(p3);
+        box.extend((p0 + h / 3.0 * d0).eval());
+        box.extend((p3 - h / 3.0 * d3).eval());
+        return box;
+    }
+    // Parameters and points of span j's polyline, consecutive points at most ~`spacing` apart: a
+    // count from the largest speed at the span's ends and middle (a cubic's speed varies little
+    // within a span of a fitted stroke; the count is capped so that a wild span cannot explode the
+    // work). Both ends are included.
+    void spanPolyline(int j, double spacing, std::vector<double>& u, std::vector<Vec3>& p) const
     {
         constexpr int kMaxPerSpan = 512;
-        std::vector<double> out;
-        for (const Span& s : spans_) {
-            Vec3 p, da, dm, db, d2;
-            eval(s.a, p, da, d2);
-            eval(s.m, p, dm, d2);
-            eval(std::nextafter(s.b, s.a), p, db, d2);
-            const double len = std::max({da.norm(), dm.norm(), db.norm()}) * (s.b - s.a);
-            const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), 1.0, double(kMaxPerSpan)));
-            for (int k = 0; k < n; ++k) out.push_back(s.a + (s.b - s.a) * k / n);
+        const Span& s = spans_[j];
+        const auto speed = [&](double t) { return ((3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1]).norm(); };
+        const double len = std::max({speed(s.a - s.m), speed(0.0), speed(s.b - s.m)}) * (s.b - s.a);
+        const int n = static_cast<int>(std::clamp(std::ceil(len / spacing), 1.0, double(kMaxPerSpan)));
+        u.resize(static_cast<size_t>(n) + 1);
+        p.resize(static_cast<size_t>(n) + 1);
+        for (int k = 0; k <= n; ++k) {
+            const double uk = k == n ? s.b : s.a + (s.b - s.a) * k / n;
+            const double t = uk - s.m;
+            u[k] = uk;
+            p[k] = ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
         }
-        if (!closed_) out.push_back(d1_);
-        return out;
     }
 
 private:
@@ -137,82 +176,110 @@ double refineLocal(const PowerCurve& c, const Vec3& x, double lo, double hi, dou
     return best;
 }
 
-struct Polyline {
-    std::vector<double> u;
-    std::vector<Vec3> p;
-    bool closed = false;
-    double spacing = 0.0;  // the largest distance between consecutive points
-    int size() const { return static_cast<int>(u.size()); }
-    // Neighbouring parameters of point j (wrapping on a closed curve, the domain end for the last point).
-    double before(int j, double T) const { return j > 0 ? u[j - 1] : (closed ? u.back() - T : u[0]); }
-    double after(int j, double T) const { return j + 1 < size() ? u[j + 1] : (closed ? u[0] + T : u[j]); }
-    // Bounding boxes of kBlock consecutive points each, built by the first projectGlobal.
-    static constexpr int kBlock = 32;
-    std::vector<Eigen::AlignedBox3d> blocks;
-    void buildBlocks()
+// The exact distance from a point to the curve, by the spans' polylines, each built on first use:
+// a search reads only the spans whose hull box (PowerCurve::hullBox) comes nearer than the best
+// distance known, and of those every local minimum of the polyline's distances that could hold a
+// curve point nearer than the best found (within the span's polyline spacing of the smallest) is
+// refined. (It was one polyline of the whole curve, built for every measure, which also tracked
+// the samples: 35 % of the fit of BM_StrokeFit/200, most of it building the polyline.)
+class SpanSearch {
+public:
+    SpanSearch(const PowerCurve& c, double spacing)
+        : c_(c), spacing_(spacing), pieces_(static_cast<size_t>(c.spanCount()))
     {
-        if (!blocks.empty()) return;
-        for (int b = 0; b < size(); b += kBlock) {
-            Eigen::AlignedBox3d box(p[b]);
-            for (int j = b + 1; j < std::min(b + kBlock, size()); ++j) box.extend(p[j]);
-            blocks.push_back(box);
-        }
+        boxes_.reserve(pieces_.size());
+        for (int j = 0; j < c.spanCount(); ++j) boxes_.push_back(c.hullBox(j));
     }
-};
-
-// The exact distance: every local minimum of the polyline's distances that could hold a curve point
-// closer than the best found (within one polyline spacing of the smallest) is refined. `bound` is a
-// curve point's distance from x (so no less than the exact one): the nearest polyline point then
-// lies within bound + spacing, and every candidate within bound + 2 spacing, so only the blocks of
-// points whose boxes come that near are read (`near`: scratch flags, one per block). A scan of every
-// polyline point per projection took 9 % of the jittery flourish's fit; the blocks take it from 12.5
-// to 11.9 M instructions (BM_StrokeFitJitter, callgrind), the 16 jittery seeds from 90 to 88 M.
-double projectGlobal(const PowerCurve& c, Polyline& pl, const Vec3& x, double bound, double* foot,
-                     std::vector<char>& near)
-{
-    const int n = pl.size();
-    const double T = c.end() - c.start();
-    pl.buildBlocks();
-    const int blocks = static_cast<int>(pl.blocks.size());
-    const double radius = bound + 2.0 * pl.spacing;
-    near.assign(static_cast<size_t>(blocks), 1);
-    const auto dist2 = [&](int j) { return (pl.p[j] - x).squaredNorm(); };
-    double smallest = std::numeric_limits<double>::infinity();
-    for (int b = 0; b < blocks; ++b) {
-        if (pl.blocks[static_cast<size_t>(b)].exteriorDistance(x) > radius) {
-            near[static_cast<size_t>(b)] = 0;
-            continue;
+    // The distance from x to the curve where it is below `bound` (else `bound`), its parameter in
+    // *foot when found.
+    double project(const Vec3& x, double bound, double* foot)
+    {
+        candidates_.clear();
+        for (int j = 0; j < c_.spanCount(); ++j)
+            if (boxes_[static_cast<size_t>(j)].exteriorDistance(x) <= bound) candidates_.push_back(j);
+        double smallest = std::numeric_limits<double>::infinity();
+        for (int j : candidates_) {
+            Piece& pc = piece(j);
+            pc.d2.resize(pc.u.size());
+            for (size_t k = 0; k < pc.u.size(); ++k)
+                smallest = std::min(smallest, pc.d2[k] = (pc.p[k] - x).squaredNorm());
         }
-        for (int j = b * Polyline::kBlock; j < std::min(n, (b + 1) * Polyline::kBlock); ++j)
-            smallest = std::min(smallest, dist2(j));
-    }
-    const double reach = (std::sqrt(smallest) + pl.spacing) * (std::sqrt(smallest) + pl.spacing);
-    constexpr double kNone = std::numeric_limits<double>::infinity();
-    double best = std::numeric_limits<double>::infinity();
-    for (int b = 0; b < blocks; ++b) {
-        if (!near[static_cast<size_t>(b)]) continue;
-        for (int j = b * Polyline::kBlock; j < std::min(n, (b + 1) * Polyline::kBlock); ++j) {
-            const double dj = dist2(j);
-            if (dj > reach) continue;
-            const double dl = j > 0 ? dist2(j - 1) : (pl.closed ? dist2(n - 1) : kNone);
-            const double dr = j + 1 < n ? dist2(j + 1) : (pl.closed ? dist2(0) : kNone);
-            if (dj > dl || dj > dr) continue;
-            // Each side of the point on its own: the point may be a C0 corner (every span starts a
-            // polyline point), where the distance has a minimum on either side and the derivative
-            // taken at the corner belongs to one side only (a sample on the side before a corner was
-            // measured 0.47 against 0.004 when both sides shared one bracket). Each side is one span's
-            // polyline segment, started from its middle.
-            for (const auto& [lo, hi] : {std::pair{pl.before(j, T), pl.u[j]}, std::pair{pl.u[j], pl.after(j, T)}}) {
-                if (!(hi > lo)) continue;
-                double fu = pl.u[j];
-                const double e = refineLocal(c, x, lo, hi, 0.5 * (lo + hi), &fu);
-                if (e < best) {
-                    best = e;
-                    if (foot) *foot = c.wrap(fu);
+        double best = bound;
+        for (int j : candidates_) {
+            const Piece& pc = pieces_[static_cast<size_t>(j)];
+            const double r = std::sqrt(smallest) + pc.spacing;
+            const double reach = r * r;
+            const size_t n = pc.u.size();
+            for (size_t k = 0; k < n; ++k) {
+                const double dk = pc.d2[k];
+                if (dk > reach || (k > 0 && dk > pc.d2[k - 1]) || (k + 1 < n && dk > pc.d2[k + 1])) continue;
+                // Each side of the point on its own: a span's end may be a C0 corner, where the
+                // distance has a minimum on either side and the derivative taken at the corner
+                // belongs to one side only (a sample on the side before a corner was measured 0.47
+                // against 0.004 when both sides shared one bracket).
+                for (const auto& [lo, hi] : {std::pair{k > 0 ? pc.u[k - 1] : pc.u[k], pc.u[k]},
+                                             std::pair{pc.u[k], k + 1 < n ? pc.u[k + 1] : pc.u[k]}}) {
+                    if (!(hi > lo)) continue;
+                    double fu = pc.u[k];
+                    const double e = refineLocal(c_, x, lo, hi, 0.5 * (lo + hi), &fu);
+                    if (e < best) {
+                        best = e;
+                        if (foot) *foot = c_.wrap(fu);
+                    }
                 }
             }
         }
+        return best;
     }
+
+private:
+    struct Piece {
+        std::vector<double> u;
+        std::vector<Vec3> p;
+        std::vector<double> d2;  // scratch: the squared distances of the point projected
+        double spacing = -1.0;   // the largest distance between consecutive points; < 0: not built
+    };
+    Piece& piece(int j)
+    {
+        Piece& pc = pieces_[static_cast<size_t>(j)];
+        if (pc.spacing >= 0.0) return pc;
+        c_.spanPolyline(j, spacing_, pc.u, pc.p);
+        pc.spacing = 0.0;
+        for (size_t k = 0; k + 1 < pc.p.size(); ++k) pc.spacing = std::max(pc.spacing, (pc.p[k + 1] - pc.p[k]).norm());
+        return pc;
+    }
+    const PowerCurve& c_;
+    double spacing_;
+    std::vector<Piece> pieces_;
+    std::vector<Eigen::AlignedBox3d> boxes_;
+    std::vector<int> candidates_;
+};
+
+// The nearest point to x that Newton's iteration on f(u) = C'(u).(C(u) - x) (The NURBS Book eq.
+// 6.3) reaches from parameter u0, across the spans (clamped to an open curve's domain, wrapped on a
+// closed one). Returns the smallest distance met, a curve point's, so an upper bound on the
+// distance: within `slack` of the local minimum's once a step moves the foot by less than `slack`
+// (Newton's error is then about its next step), and that minimum is the distance wherever the
+// samples run along the curve and u0 is predicted from the previous samples' feet (1-3 steps). It
+// stops where the distance is not convex (far from the curve): the bound is then whatever it met,
+// and the caller searches in full where that is far.
+double trackLocal(const PowerCurve& c, const Vec3& x, double u0, double slack, double* foot)
+{
+    constexpr int kMaxSteps = 12;
+    double best = std::numeric_limits<double>::infinity(), bestU = u0, u = u0;
+    for (int it = 0; it < kMaxSteps; ++it) {
+        Vec3 p, d1, d2;
+        c.eval(u, p, d1, d2);
+        const Vec3 r = p - x;
+        const double d = r.norm();
+        if (d < best) best = d, bestU = u;
+        const double f = d1.dot(r), df = d2.dot(r) + d1.squaredNorm();
+        if (!(df > 0.0)) break;
+        const double next = c.closed() ? u - f / df : std::clamp(u - f / df, c.start(), c.end());
+        if (!(std::abs(next - u) * d1.norm() > slack)) break;
+        u = next;
+    }
+    *foot = bestU;
     return best;
 }
 
@@ -224,99 +291,67 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     if (!(resolution > 0.0) || !std::isfinite(resolution)) throw GeometryError("fit check: resolution must be positive");
     if (!keep.empty() && keep.size() != samples.size()) throw GeometryError("fit check: one keep flag per sample");
     const PowerCurve c(curve);
-    Polyline pl;
-    pl.closed = c.closed();
-    pl.u = c.polylineParameters(resolution);
-    pl.p.reserve(pl.u.size());
-    for (double u : pl.u) pl.p.push_back(c.point(u));
-    for (int j = 0; j + 1 < pl.size() || (pl.closed && j < pl.size()); ++j)
-        pl.spacing = std::max(pl.spacing, (pl.p[(j + 1) % pl.size()] - pl.p[j]).norm());
+    SpanSearch search(c, resolution);
 
     SampleDeviation out;
     const int m = static_cast<int>(samples.size());
     out.bound.assign(static_cast<size_t>(m), 0.0);
-    const int n = pl.size();
-    // The samples run along the curve: each starts from the previous one's polyline point and
-    // walks downhill along the polyline (a few points per sample), and is searched in full when it
-    // ends far from the sample (tracking lost: a seam, a skipped loop). Any polyline point gives a
-    // valid bound; the exact projection below settles every sample whose bound could matter.
-    int at = -1;
-    std::vector<int> near(static_cast<size_t>(m), 0);  // each sample's polyline point
-    auto fullScan = [&](const Vec3& x) {
-        int bestJ = 0;
-        double bd = std::numeric_limits<double>::infinity();
-        for (int j = 0; j < n; ++j) {
-            const double d = (pl.p[j] - x).squaredNorm();
-            if (d < bd) bd = d, bestJ = j;
-        }
-        return std::make_pair(bestJ, bd);
-    };
-    auto step = [&](int j, int dir) {
-        j += dir;
-        if (pl.closed) return (j % n + n) % n;
-        return j < 0 || j >= n ? -1 : j;
-    };
+    const auto kept = [&](int i) { return keep.empty() || keep[static_cast<size_t>(i)] != 0; };
+    // The samples run along the curve: each is projected by Newton from the previous one's foot
+    // (trackLocal, the first from the curve's start), and searched in full where that ends far from
+    // it (tracking lost: a seam, a skipped loop). Any curve point gives a valid bound; the exact
+    // projection below settles every sample whose bound could matter.
+    // Each start is the previous foot moved on as far as the one before it moved (the samples'
+    // pace along the curve changes slowly), unwrapped on a closed curve. The bounds are within
+    // kTrackSlack * resolution of the local minimum's distance (~1/2000 of the tolerance).
+    constexpr double kTrackSlack = 2e-2;
+    const double lost = 4.0 * resolution;
+    const double period = c.end() - c.start();
+    std::vector<char> exact(static_cast<size_t>(m), 0);  // bound[i] is sample i's distance
+    double u = c.start(), pace = 0.0;
     for (int i = 0; i < m; ++i) {
-        if (!(keep.empty() || keep[i])) continue;
-        const Vec3& x = samples[i];
-        std::pair<int, double> b;
-        if (at < 0) {
-            b = fullScan(x);
+        if (!kept(i)) continue;
+        double foot = u;
+        double e = trackLocal(c, samples[i], u + pace, kTrackSlack * resolution, &foot);
+        if (e > lost) {
+            e = search.project(samples[i], e, &foot);
+            exact[static_cast<size_t>(i)] = 1;
+            pace = 0.0;
         } else {
-            b = {at, (pl.p[at] - x).squaredNorm()};
-            for (const int dir : {1, -1}) {
-                for (int j = step(b.first, dir), walked = 0; j >= 0 && walked < n; j = step(j, dir), ++walked) {
-                    const double d = (pl.p[j] - x).squaredNorm();
-                    if (!(d < b.second)) break;
-                    b = {j, d};
-                }
-            }
-            if (std::sqrt(b.second) > 4.0 * resolution) b = fullScan(x);
+            // (The step on a closed curve is taken the short way round the seam.)
+            pace = foot - u;
+            if (c.closed()) pace -= std::round(pace / period) * period;
         }
-        at = b.first;
-        near[i] = b.first;
-        out.bound[i] = std::sqrt(b.second);
+        out.bound[i] = e;
+        u = foot;
     }
     // Exact projection of the samples whose bound could be the maximum, largest bound first: once
     // the exact maximum reaches the next bound, no other sample can exceed it.
     std::vector<int> order;
-    std::vector<char> exact(static_cast<size_t>(m), 0);  // bound[i] is sample i's distance
-    std::vector<char> scratch;                           // projectGlobal's
     double top = -1.0;
     for (int i = 0; i < m; ++i)
-        if ((keep.empty() || keep[i]) && out.bound[i] > top) top = out.bound[i], out.worst = i;
+        if (kept(i) && out.bound[i] > top) top = out.bound[i], out.worst = i;
     if (out.worst < 0) return out;
-    const int first = out.worst;  // projected in round 0
-    for (int round = 0; round < 2; ++round) {
-        // Round 0 projects the largest bound only; round 1 every bound above the exact value found
-        // or above exactAbove.
-        order.clear();
-        // (Recomputed per sample: the exact maximum grows as round 1 goes.)
-        const auto open = [&](int i) { return out.bound[i] > std::min(out.maxError, exactAbove); };
-        for (int i = 0; i < m; ++i)
-            if ((keep.empty() || keep[i]) && (round == 0 ? i == first : i != first && open(i))) order.push_back(i);
-        std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
-        for (int i : order) {
-            if (round == 1 && !open(i)) break;
-            // Each search starts from the sample's polyline point (round 1 meets no sample whose
-            // bound an earlier projection already made exact: that bound is the maximum).
-            double foot = pl.u[near[i]];
-            if (round == 1) {
-                // The polyline bound overestimates by up to half its spacing, so many samples
-                // come here: refining beside their own polyline point first (a curve point
-                // again, so still a bound) settles most of them without the global search.
-                const int j = near[i];
-                const double e = refineLocal(c, samples[i], pl.before(j, c.end() - c.start()), pl.after(j, c.end() - c.start()), pl.u[j], &foot);
-                if (e < out.bound[i]) out.bound[i] = e;
-                if (!open(i)) continue;
-            }
-            const double e = projectGlobal(c, pl, samples[i], out.bound[i], &foot, scratch);
-            if (e < out.bound[i]) out.bound[i] = e;
-            exact[static_cast<size_t>(i)] = 1;
-            if (out.bound[i] > out.maxError || round == 0) {
-                out.maxError = out.bound[i];
-                out.worst = i;
-            }
+    const auto settle = [&](int i) {
+        if (exact[static_cast<size_t>(i)]) return;
+        double foot = 0.0;
+        out.bound[i] = search.project(samples[i], out.bound[i], &foot);
+        exact[static_cast<size_t>(i)] = 1;
+    };
+    const int first = out.worst;
+    settle(first);
+    out.maxError = out.bound[first];
+    // Every other bound above the exact maximum found or above exactAbove, largest first.
+    const auto open = [&](int i) { return out.bound[i] > std::min(out.maxError, exactAbove); };
+    for (int i = 0; i < m; ++i)
+        if (kept(i) && i != first && open(i)) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
+    for (int i : order) {
+        if (!open(i)) break;
+        settle(i);
+        if (out.bound[i] > out.maxError) {
+            out.maxError = out.bound[i];
+            out.worst = i;
         }
     }
     out.maxWithin = out.maxError;
@@ -326,36 +361,19 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     // next bound.
     int largest = -1;
     for (int i = 0; i < m; ++i)
-        if ((keep.empty() || keep[i]) && out.bound[i] <= exactAbove &&
-            (largest < 0 || out.bound[i] > out.bound[largest]))
-            largest = i;
+        if (kept(i) && out.bound[i] <= exactAbove && (largest < 0 || out.bound[i] > out.bound[largest])) largest = i;
     out.maxWithin = 0.0;
     if (largest < 0) return out;
-    order.assign(1, largest);
-    for (int round = 0; round < 2; ++round) {
-        if (round == 1) {
-            order.clear();
-            for (int i = 0; i < m; ++i)
-                if ((keep.empty() || keep[i]) && i != largest && out.bound[i] <= exactAbove &&
-                    out.bound[i] > out.maxWithin)
-                    order.push_back(i);
-            std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
-        }
-        for (int i : order) {
-            if (!(out.bound[i] > out.maxWithin)) break;
-            if (!exact[static_cast<size_t>(i)]) {
-                const int j = near[i];
-                double foot = pl.u[j];
-                const double e = refineLocal(c, samples[i], pl.before(j, c.end() - c.start()),
-                                             pl.after(j, c.end() - c.start()), pl.u[j], &foot);
-                if (e < out.bound[i]) out.bound[i] = e;
-                if (out.bound[i] > out.maxWithin) {
-                    const double g = projectGlobal(c, pl, samples[i], out.bound[i], &foot, scratch);
-                    if (g < out.bound[i]) out.bound[i] = g;
-                }
-            }
-            out.maxWithin = std::max(out.maxWithin, out.bound[i]);
-        }
+    settle(largest);
+    out.maxWithin = out.bound[largest];
+    order.clear();
+    for (int i = 0; i < m; ++i)
+        if (kept(i) && i != largest && out.bound[i] <= exactAbove && out.bound[i] > out.maxWithin) order.push_back(i);
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return out.bound[a] > out.bound[b]; });
+    for (int i : order) {
+        if (!(out.bound[i] > out.maxWithin)) break;
+        settle(i);
+        out.maxWithin = std::max(out.maxWithin, out.bound[i]);
     }
     return out;
 }
