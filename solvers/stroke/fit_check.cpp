@@ -69,6 +69,15 @@ public:
         d1 = (3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1];
         d2 = 6.0 * s.c[3] * t + 2.0 * s.c[2];
     }
+    // The same on span j's polynomial, whichever span u lies in (a span's end from inside it).
+    void evalSpan(int j, double u, Vec3& p, Vec3& d1, Vec3& d2) const
+    {
+        const Span& s = spans_[j];
+        const double t = u - s.m;
+        p = ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
+        d1 = (3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1];
+        d2 = 6.0 * s.c[3] * t + 2.0 * s.c[2];
+    }
     Vec3 point(double u) const
     {
         const Span& s = spanAt(wrap(u));
@@ -153,9 +162,22 @@ double refineLocal(const PowerCurve& c, const Vec3& x, double lo, double hi, dou
 {
     constexpr int kMaxIterations = 40;  // Newton converges in < 8 from a polyline minimum; the rest bisects
     double best = std::numeric_limits<double>::infinity(), bestU = u;
-    for (double e : {lo, hi}) {  // a minimum at a bracket end (a curve end, a C0 corner)
+    // A minimum at a bracket end (a curve end, a C0 corner). The distance's slope at each end, from
+    // inside the bracket: where neither end's slope leads into the bracket there is no minimum
+    // inside it (the bracket is a polyline segment, too short for the distance to turn twice), and
+    // the Newton steps would only bisect toward the end (~40 steps).
+    double slope[2];
+    for (int k = 0; k < 2; ++k) {
+        const double e = k == 0 ? lo : hi;
+        Vec3 p, d1, d2;
+        c.eval(k == 0 ? lo : std::nextafter(hi, lo), p, d1, d2);
+        slope[k] = d1.dot(p - x);
         const double d = (c.point(e) - x).norm();
         if (d < best) best = d, bestU = e;
+    }
+    if (!(slope[0] < 0.0) || !(slope[1] > 0.0)) {
+        if (foot) *foot = bestU;
+        return best;
     }
     const double resolution = 8 * std::numeric_limits<double>::epsilon() * std::max({1.0, std::abs(lo), std::abs(hi)});
     for (int it = 0; it < kMaxIterations && hi - lo > resolution; ++it) {
@@ -256,31 +278,56 @@ private:
 };
 
 // The nearest point to x that Newton's iteration on f(u) = C'(u).(C(u) - x) (The NURBS Book eq.
-// 6.3) reaches from parameter u0, across the spans (clamped to an open curve's domain, wrapped on a
-// closed one). Returns the smallest distance met, a curve point's, so an upper bound on the
-// distance: within `slack` of the local minimum's once a step moves the foot by less than `slack`
-// (Newton's error is then about its next step), and that minimum is the distance wherever the
-// samples run along the curve and u0 is predicted from the previous samples' feet (1-3 steps). It
-// stops where the distance is not convex (far from the curve): the bound is then whatever it met,
-// and the caller searches in full where that is far.
+// 6.3) reaches from parameter u0. The steps stay in their span: one that would leave it stops at the
+// span's end, and from there, if the distance still falls beyond it, the iteration goes on in the
+// next span (on a closed curve round the seam), never back into one it left: a C0 corner (a fitted
+// stroke's corner, a triple knot) where the distance falls toward it from both sides is the
+// nearest point, where Newton across the corner would jump from leg to leg. Returns the smallest
+// distance met, a curve point's, so an upper bound on the distance: within `slack` of the local
+// minimum's once a step moves the foot by less than `slack` (Newton's error is then about its next
+// step), and that minimum is the distance wherever the samples run along the curve and u0 is
+// predicted from the previous samples' feet (1-3 steps). It stops where the distance is not convex
+// (far from the curve): the bound is then whatever it met, and the caller searches in full where
+// that is far.
 double trackLocal(const PowerCurve& c, const Vec3& x, double u0, double slack, double* foot)
 {
-    constexpr int kMaxSteps = 12;
-    double best = std::numeric_limits<double>::infinity(), bestU = u0, u = u0;
+    constexpr int kMaxSteps = 16;
+    double best2 = std::numeric_limits<double>::infinity(), u = c.wrap(u0), bestU = u;
+    const double slack2 = slack * slack;
+    const int spans = c.spanCount();
+    int span = c.spanOf(u), dir = 0;  // dir: the way the iteration last changed span
     for (int it = 0; it < kMaxSteps; ++it) {
         Vec3 p, d1, d2;
-        c.eval(u, p, d1, d2);
+        c.evalSpan(span, u, p, d1, d2);
         const Vec3 r = p - x;
-        const double d = r.norm();
-        if (d < best) best = d, bestU = u;
-        const double f = d1.dot(r), df = d2.dot(r) + d1.squaredNorm();
+        const double d = r.squaredNorm();
+        if (d < best2) best2 = d, bestU = u;
+        const double speed2 = d1.squaredNorm();
+        const double f = d1.dot(r), df = d2.dot(r) + speed2;
         if (!(df > 0.0)) break;
-        const double next = c.closed() ? u - f / df : std::clamp(u - f / df, c.start(), c.end());
-        if (!(std::abs(next - u) * d1.norm() > slack)) break;
+        double next = u - f / df;
+        const double a = c.spanStart(span), b = c.spanEnd(span);
+        if (next > b || next < a) {
+            const int way = next > b ? 1 : -1;
+            const double end = way > 0 ? b : a;
+            if (u != end) {
+                next = end;
+            } else {
+                // At the span's end with the distance still falling beyond it.
+                const bool curveEnd = !c.closed() && (way > 0 ? span == spans - 1 : span == 0);
+                if (curveEnd || dir == -way) break;
+                dir = way;
+                span = (span + way + spans) % spans;
+                u = way > 0 ? c.spanStart(span) : c.spanEnd(span);
+                continue;
+            }
+        }
+        const double step = next - u;
+        if (!(step * step * speed2 > slack2)) break;
         u = next;
     }
     *foot = bestU;
-    return best;
+    return std::sqrt(best2);
 }
 
 }  // namespace

@@ -341,14 +341,15 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // flourish from 28 to 18.
     constexpr int kAveragedCorrections = 8;
     // Rows added to a count whose raw samples miss the tolerance: the conditioned points of the raw
-    // samples beyond kRowShare of it (those near the limit too, or the re-solved curve pushes them
-    // past it), in at most kRowRounds rounds. Chosen as the largest share at which one round brings
-    // flourish-200 to its count (17), as before. Since measureSamples reports each sample's own
-    // distance rather than a polyline point's (up to a quarter tolerance more), that share is 0.65,
-    // not 0.75: at 0.7-0.75 flourish-200 needs two rounds (BM_StrokeFit/200 4.07 against 3.14 M
-    // instructions in fitStroke); 0.6-0.68 take one. scripts/compare_splprep.py at 0.65: 28 of 28
-    // strokes in both modes, totals 529 and 506 (527 and 505 with the polyline's bounds at 0.75).
-    constexpr double kRowShare = 0.65;
+    // samples beyond 0.75 of it (those near the limit too, or the re-solved curve pushes them past
+    // it), in at most 4 rounds. At 0.9 flourish-200 needed 2 rounds (a round added 3-4 rows) to reach
+    // 21 control points; at 0.75 one round of 5 rows reached them (BM_StrokeFit/200 194 -> 147 us).
+    // (That was with measureSamples' polyline bounds, up to a quarter tolerance above the distance.
+    // With each sample's own distance, 0.6-0.68 give flourish-200 one round again, BM_StrokeFit/200
+    // 3.14 against 4.07 M instructions, but more rows at once can make the count fail on its own
+    // rows: under clang the noisy ellipse of FitTolerance.GivenLoops_... went 5 -> 13 control points,
+    // and scripts/compare_splprep.py's results moved either way from one share to the next.)
+    constexpr double kRowShare = 0.75;
     constexpr int kRowRounds = 4;
     // Rows per control point of a search on evenly spread rows (see `search` below): with fewer, a
     // count near the dynamic threshold's row count interpolates its rows and swings between them

@@ -505,6 +505,37 @@ TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolyl
     }
 }
 
+// Every bound is the sample's own distance, not only the maximum's, wherever the samples run along
+// the curve: they are tracked by Newton from the foot the previous ones predict, within
+// measureSamples' kTrackSlack (2e-2 of the resolution, 1.0 here) of the local minimum. The fitter
+// chooses the rows it adds to a count by these bounds (kRowShare), which then no longer depend on
+// the exact projection's polyline spacing. (With one polyline of the whole curve the bounds were its
+// points' distances, up to half its spacing more: 0.5 here.) Not the square: at its seam, where the
+// stroke starts and ends in a jumble at a corner, a sample can settle on the other leg's local
+// minimum (1.51 against 0.54), a valid bound that the exact projection settles wherever it could be
+// the maximum (GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolylineMeasure).
+TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenEveryBoundAwayFromASeamCornerIsTheSamplesDistance)
+{
+    constexpr double kTrackAgreement = 2e-2 + kMeasureAgreement;
+    for (const auto& [name, shape] : shapes()) {
+        if (name == "square") continue;
+        DrawOptions d;
+        d.noise = 0.5;
+        const Stroke s = draw(shape, d);
+        FitOptions o;
+        o.tolerance = 3.0;
+        const FitResult r = fitStroke(s, o);
+        const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0);
+        double furthest = 0.0;  // the largest bound above the dense measure
+        for (size_t i = 0; i < s.points.size(); ++i) {
+            const double dense = maxDeviation(r.curve, {s.points[i]});
+            EXPECT_NEAR(dev.bound[i], dense, kTrackAgreement) << name << " sample " << i;
+            furthest = std::max(furthest, dev.bound[i] - dense);
+        }
+        std::printf("%s: bounds at most %.2g above the dense measure\n", name.c_str(), furthest);
+    }
+}
+
 // exactAbove: every sample whose bound is beyond it has its exact distance (the dense measure), and
 // every other lies within it. The fitter decides with it which of a loop's overshoot samples stay
 // dropped. Noise 0.5 against a threshold of 0.75: dozens of samples beyond it on each shape (at 1.0
