@@ -392,6 +392,9 @@ private:
     /// Notes in lastStroke_ the samples `fit` left out (StrokeReport::dropped, outliers) and
     /// returns the message's clause that says so (empty when none was).
     QString noteLeftOut(const solvers::stroke::FitResult& fit);
+    /// "; n sample(s) left out as a light-pressure hook" for a stroke used as drawn (over-sketch,
+    /// lift, re-sketch), empty when none was; sets lastStroke_.dropped.
+    QString noteHooks();
     void liftStroke(const manipulators::FinishedStroke& stroke);
     /// The last sketched curve replaced by `target` (undoable), when it differs.
     /// False (with the reason in lastStroke_) when the target is refused.
@@ -443,6 +446,9 @@ private:
     /// The existing plane the current stroke is on; 0 = an auxiliary plane made for it.
     model::EntityId strokeOnPlane_ = 0;
     StrokeReport lastStroke_;
+    /// Samples applyStroke left out of the stroke it hands to over-sketch, lift or re-sketch as a
+    /// pen's light-pressure hooks (0 outside that call).
+    int hooksLeftOut_ = 0;
     model::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
     /// The last stroke's fit and recognition (for picking another candidate), and the candidate

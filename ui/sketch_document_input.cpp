@@ -9,6 +9,7 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/editing/lift.h"
 #include "solvers/editing/oversketch.h"
+#include "solvers/stroke/conditioning.h"
 #include "solvers/stroke/shape_recognizer.h"
 #include "solvers/stroke/stroke_fitter.h"
 #include "ui/undo_commands.h"
@@ -34,6 +35,37 @@ constexpr double kMinStrokeFacing = 0.09;
 /// would lie far outside the square the designer sees, behind other geometry.
 constexpr double kMaxStrokeReach = 4.0;
 constexpr double kDegreesPerRadian = 57.29577951308232;
+
+/// A pen's light-pressure hooks at the stroke's ends left out, by the fitter's rule
+/// (solvers::stroke::withoutPressureHooks), from a stroke that over-sketch, lift and re-sketch take
+/// as drawn rather than through the fitter. The rays go with the points where there is one point
+/// per ray (every ray met the plane), else they are kept whole. Returns how many samples were left
+/// out (0 for a mouse: no pressure).
+int leaveOutPressureHooks(manipulators::FinishedStroke& s)
+{
+    const size_t n = s.points.size();
+    if (s.pressure.size() != n) return 0;
+    solvers::stroke::Stroke drawn;
+    drawn.points = s.points;
+    drawn.pressure = s.pressure;
+    const auto [first, last] = solvers::stroke::withoutPressureHooks(drawn);
+    const size_t kept = static_cast<size_t>(last - first + 1);
+    if (kept == n) return 0;
+    const auto trim = [&](auto& v) {
+        if (v.size() != n) return;
+        v.erase(v.begin() + last + 1, v.end());
+        v.erase(v.begin(), v.begin() + first);
+    };
+    trim(s.points);
+    trim(s.times);
+    trim(s.pressure);
+    trim(s.rayOrigins);
+    trim(s.rayDirections);
+    trim(s.rayTimes);
+    trim(s.rayPressure);
+    trim(s.pixelRays);
+    return static_cast<int>(n - kept);
+}
 
 }  // namespace
 
@@ -85,6 +117,13 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
     const int before = undo_.index();
     applyStroke(stroke);
     strokeIndex_ = undo_.index() > before ? undo_.index() : -1;
+}
+
+QString SketchDocument::noteHooks()
+{
+    lastStroke_.dropped = hooksLeftOut_;
+    return hooksLeftOut_ > 0 ? tr("; %n sample(s) left out as a light-pressure hook", nullptr, hooksLeftOut_)
+                             : QString();
 }
 
 QString SketchDocument::noteLeftOut(const solvers::stroke::FitResult& fit)
@@ -144,16 +183,20 @@ void SketchDocument::forgetStroke()
 
 void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
 {
-    if (strokeMode_ == StrokeMode::Oversketch) {
-        oversketchStroke(finished);
-        return;
-    }
-    if (strokeMode_ == StrokeMode::Lift) {
-        liftStroke(finished);
-        return;
-    }
-    if (strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Resketch) {
-        resketchStroke(finished);
+    const bool oversketch = strokeMode_ == StrokeMode::Oversketch, lift = strokeMode_ == StrokeMode::Lift;
+    const bool resketch = strokeMode_ == StrokeMode::Sculpt && sculptTool_ == SculptTool::Resketch;
+    if (oversketch || lift || resketch) {
+        // These take the stroke as drawn: a pen's light-pressure hooks are left out here, as the
+        // fitter leaves them out of a sketched stroke (noteHooks tells the designer).
+        manipulators::FinishedStroke trimmed = finished;
+        hooksLeftOut_ = leaveOutPressureHooks(trimmed);
+        if (oversketch)
+            oversketchStroke(trimmed);
+        else if (lift)
+            liftStroke(trimmed);
+        else
+            resketchStroke(trimmed);
+        hooksLeftOut_ = 0;
         return;
     }
     manipulators::FinishedStroke stroke = finished;
@@ -475,7 +518,10 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = lifted.curve.pointCount();
         lastStroke_.maxError = lifted.fitError;
-        lastStroke_.message = tr("Lifted to a space curve: %1 control points, fit error %2 mm").arg(lifted.curve.pointCount()).arg(lifted.fitError, 0, 'f', 3);
+        lastStroke_.message = tr("Lifted to a space curve: %1 control points, fit error %2 mm")
+                                  .arg(lifted.curve.pointCount())
+                                  .arg(lifted.fitError, 0, 'f', 3) +
+                              noteHooks();
         undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Lift a space curve")));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Lift not possible: %1").arg(QString::fromStdString(e.what()));
@@ -535,7 +581,11 @@ void SketchDocument::applyOversketch(model::EntityId target, const solvers::Curv
         lastStroke_.fitted = true;
         lastStroke_.controlPoints = changed.pointCount();
         lastStroke_.maxError = maxError;
-        lastStroke_.message = tr("%1: %2 control points, max error %3 mm").arg(done.arg(target)).arg(changed.pointCount()).arg(maxError, 0, 'f', 3);
+        lastStroke_.message = tr("%1: %2 control points, max error %3 mm")
+                                  .arg(done.arg(target))
+                                  .arg(changed.pointCount())
+                                  .arg(maxError, 0, 'f', 3) +
+                              noteHooks();
         undo_.push(new ReplaceCurveCommand(*this, target, curve, std::move(changed)));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));

@@ -250,12 +250,15 @@ void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
                 lastStroke_.maxError = fit.oversketchError + fit.knotFitError;
                 undo_.push(new ReplaceSurfaceCommand(*this, e->id, surface, after,
                                                      tr("Re-sketch the %1 of surface %2").arg(lineName(*r.line)).arg(e->id)));
-                lastStroke_.message = tr("Surface %1 follows its re-sketched %2: %3 of its control points moved, the line is within "
-                                         "%4 mm of the stroke (knot vector kept). Draw again to refine, or over the surface to pick another line.")
-                                          .arg(e->id)
-                                          .arg(lineName(*r.line))
-                                          .arg(fit.movedPoints)
-                                          .arg(lastStroke_.maxError, 0, 'f', 3);
+                lastStroke_.message =
+                    tr("Surface %1 follows its re-sketched %2: %3 of its control points moved, the line is within "
+                       "%4 mm of the stroke (knot vector kept). Draw again to refine, or over the surface to pick "
+                       "another line.")
+                        .arg(e->id)
+                        .arg(lineName(*r.line))
+                        .arg(fit.movedPoints)
+                        .arg(lastStroke_.maxError, 0, 'f', 3) +
+                    noteHooks();
             } else {
                 const double size = surfaceSize(surface);
                 const auto uv = deformation::markingOnSurface(surface, stroke.rayOrigins, stroke.rayDirections, kMarkingReach * size);

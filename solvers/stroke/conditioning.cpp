@@ -234,6 +234,14 @@ void keepRange(std::vector<T>& v, int first, int last)
 
 }  // namespace
 
+std::pair<int, int> withoutPressureHooks(const Stroke& stroke, const ConditioningOptions& options)
+{
+    if (!stroke.pressure.empty() && stroke.pressure.size() != stroke.points.size())
+        throw GeometryError("stroke.pressure: " + std::to_string(stroke.pressure.size()) + " values for " +
+                            std::to_string(stroke.points.size()) + " points");
+    return withoutHooks(stroke, options, -1.0);
+}
+
 double ConditionedStroke::length() const
 {
     if (points.empty()) return 0.0;

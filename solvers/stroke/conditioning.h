@@ -4,6 +4,8 @@
 // removes digitizer noise without moving corners.
 #include "solvers/stroke/stroke.h"
 
+#include <utility>
+
 namespace sculptline::solvers::stroke {
 
 /// Validates and de-duplicates a raw stroke, detects whether it closes on itself (trimming an
@@ -36,6 +38,12 @@ double estimateNoise(const std::vector<Eigen::Vector3d>& points, int dimension =
 std::vector<Eigen::Vector3d> limitSmoothing(std::vector<Eigen::Vector3d> drawn,
                                             const std::vector<Eigen::Vector3d>& smoothed, double budget,
                                             double* shift = nullptr);
+
+/// The raw samples [first, last] left when a pen's light-pressure hooks at the stroke's ends are
+/// left out (ConditioningOptions::hookPressure, maxHookLength): the range conditionStroke keeps.
+/// The whole stroke without pressure, or with fewer than five samples. For strokes that are used
+/// as drawn rather than fitted (over-sketch, lift, re-sketch in the window).
+std::pair<int, int> withoutPressureHooks(const Stroke& stroke, const ConditioningOptions& options = {});
 
 /// Recomputes cs.arc from cs.points.
 void updateArcLength(ConditionedStroke& cs);

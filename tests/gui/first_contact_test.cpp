@@ -382,6 +382,68 @@ TEST(FirstContact, APensLightPressureHookIsTrimmedAndAMouseStrokeKeepsEverySampl
     EXPECT_EQ(doc.lastStroke().dropped, 0) << doc.lastStroke().message.toStdString();
 }
 
+// Over-sketch, lift and re-sketch take the stroke as drawn, not through the fitter: a pen's light
+// pen-up hook is left out there by the fitter's rule (solvers::stroke::withoutPressureHooks), and the
+// status says so; the same over-sketch by mouse keeps every sample.
+TEST(FirstContact, AnOversketchByPenLeavesOutItsLightPressureHook)
+{
+    startApplication();
+    Fixture f;
+    SketchDocument& doc = f.window.document();
+    QWidget* gl = f.window.viewport();
+    // An arch drawn by mouse, then over-sketched
+    const auto arch = [](double a, double height) {
+        return QPoint(static_cast<int>(std::lround(312 + 180 * a)),
+                      static_cast<int>(std::lround(330 - height * std::sin(3.14159265358979 * a))));
+    };
+    mouse(f.window, QEvent::MouseButtonPress, arch(0, 60), Qt::LeftButton, Qt::LeftButton);
+    for (int k = 1; k < 80; ++k) mouse(f.window, QEvent::MouseMove, arch(k / 79.0, 60), Qt::NoButton, Qt::LeftButton);
+    mouse(f.window, QEvent::MouseButtonRelease, arch(1, 60), Qt::LeftButton, Qt::NoButton);
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    const size_t curves = f.curves();
+    f.window.action(QStringLiteral("mode.oversketch"))->trigger();
+    // The middle of the arch drawn 10 px higher at full pressure, then four light samples skidding
+    // away where the pen lifts
+    struct Sample {
+        QPoint at;
+        double pressure;
+    };
+    std::vector<Sample> path;
+    for (int k = 0; k <= 60; ++k) path.push_back({arch(0.2 + 0.6 * k / 60.0, 70), 0.8});
+    for (int k = 1; k <= 4; ++k) path.push_back({path.back().at + QPoint(1, 1), 0.15});
+    const auto pen = [&](QEvent::Type tablet, QEvent::Type mouseType, const Sample& s, Qt::MouseButton button,
+                         Qt::MouseButtons held) {
+        QTabletEvent t(tablet, QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), QTabletEvent::Stylus, QTabletEvent::Pen,
+                       s.pressure, 0, 0, 0.0, 0.0, 0, Qt::NoModifier, 1, button, held);
+        QApplication::sendEvent(gl, &t);
+        QMouseEvent m(mouseType, QPointF(s.at), QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), button, held,
+                      Qt::NoModifier, Qt::MouseEventSynthesizedByQt);
+        QApplication::sendEvent(gl, &m);
+    };
+    // When the pen over-sketches
+    pen(QEvent::TabletPress, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i)
+        pen(QEvent::TabletMove, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
+    pen(QEvent::TabletRelease, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+    // Then the curve is changed, not added to, without the hook, and the status says so
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    EXPECT_EQ(f.curves(), curves);
+    // (five light samples: the four moves and the release, a sample of its own at the last point)
+    EXPECT_EQ(doc.lastStroke().dropped, 5) << doc.lastStroke().message.toStdString();
+    EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("light-pressure hook")))
+        << doc.lastStroke().message.toStdString();
+
+    // And the same over-sketch by mouse keeps every sample
+    mouse(f.window, QEvent::MouseButtonPress, path.front().at, Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i)
+        mouse(f.window, QEvent::MouseMove, path[i].at, Qt::NoButton, Qt::LeftButton);
+    mouse(f.window, QEvent::MouseButtonRelease, path.back().at, Qt::LeftButton, Qt::NoButton);
+    ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
+    EXPECT_EQ(doc.lastStroke().dropped, 0) << doc.lastStroke().message.toStdString();
+    EXPECT_FALSE(doc.lastStroke().message.contains(QStringLiteral("light-pressure hook")))
+        << doc.lastStroke().message.toStdString();
+}
+
 TEST(FirstContact, TheWindowFitsTheScreenItOpensOn)
 {
     // Given a 1280-wide screen (tests/gui/xvfb.sh) and the viewport size replays ask for
