@@ -370,7 +370,10 @@ private:
     void oversketchInSpace(const std::vector<Eigen::Vector3d>& world);
     /// Over-sketches curve `target` with `stroke` (in the curve's local frame) as one undo step;
     /// `done` is the message's first words ("Curve %1 over-sketched").
-    void applyOversketch(model::EntityId target, const solvers::Curve3d& curve, const std::vector<Eigen::Vector3d>& stroke, const QString& done);
+    /// @param pixel the pointer pixel's footprint on the stroke's plane, model units (0: unknown, a
+    ///              stroke in space): the fit's tolerance is never below it.
+    void applyOversketch(model::EntityId target, const solvers::Curve3d& curve,
+                         const std::vector<Eigen::Vector3d>& stroke, const QString& done, double pixel = 0.0);
     struct SpaceSnap {
         model::EntityId curve = 0;
         Eigen::Vector3d point;
