@@ -54,6 +54,38 @@ void mouse(MainWindow& window, QEvent::Type type, const QPoint& at, Qt::MouseBut
     QApplication::sendEvent(gl, &event);
 }
 
+/// One sample of a tablet pen: where, and how hard (0..1).
+struct PenSample {
+    QPoint at;
+    double pressure;
+};
+
+/// A stroke drawn with a tablet pen along `path`: each sample a QTabletEvent followed by the mouse
+/// event Qt synthesizes from it (which the scene graph sees; ui/tablet_pressure.h keeps the reading).
+void penStroke(MainWindow& window, const std::vector<PenSample>& path)
+{
+    QWidget* gl = window.viewport();
+    const auto pen = [&](QEvent::Type tablet, QEvent::Type mouseType, const PenSample& s, Qt::MouseButton button, Qt::MouseButtons held) {
+        QTabletEvent t(tablet, QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), QTabletEvent::Stylus, QTabletEvent::Pen,
+                       s.pressure, 0, 0, 0.0, 0.0, 0, Qt::NoModifier, 1, button, held);
+        QApplication::sendEvent(gl, &t);
+        QMouseEvent m(mouseType, QPointF(s.at), QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), button, held,
+                      Qt::NoModifier, Qt::MouseEventSynthesizedByQt);
+        QApplication::sendEvent(gl, &m);
+    };
+    pen(QEvent::TabletPress, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i) pen(QEvent::TabletMove, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
+    pen(QEvent::TabletRelease, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+}
+
+/// The same path drawn with the mouse (no pressure).
+void mouseStroke(MainWindow& window, const std::vector<PenSample>& path)
+{
+    mouse(window, QEvent::MouseButtonPress, path.front().at, Qt::LeftButton, Qt::LeftButton);
+    for (size_t i = 1; i < path.size(); ++i) mouse(window, QEvent::MouseMove, path[i].at, Qt::NoButton, Qt::LeftButton);
+    mouse(window, QEvent::MouseButtonRelease, path.back().at, Qt::LeftButton, Qt::NoButton);
+}
+
 /// A drag with `button` from `from` by (dx, dy) pixels in 10 steps.
 void drag(MainWindow& window, Qt::MouseButton button, const QPoint& from, int dx, int dy, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
 {
@@ -340,11 +372,7 @@ TEST(FirstContact, APensLightPressureHookIsTrimmedAndAMouseStrokeKeepsEverySampl
     Fixture f;
     SketchDocument& doc = f.window.document();
     // Four light samples curling in from below, then an arch of 80 at full pressure.
-    struct Sample {
-        QPoint at;
-        double pressure;
-    };
-    std::vector<Sample> path;
+    std::vector<PenSample> path;
     for (int k = 0; k < 4; ++k) path.push_back({QPoint(308 + k, 338 - 2 * k), 0.15});
     for (int k = 0; k < 80; ++k) {
         const double a = k / 79.0;
@@ -352,21 +380,8 @@ TEST(FirstContact, APensLightPressureHookIsTrimmedAndAMouseStrokeKeepsEverySampl
                                static_cast<int>(std::lround(330 - 60 * std::sin(3.14159265358979 * a)))),
                         0.8});
     }
-    QWidget* gl = f.window.viewport();
-    const auto pen = [&](QEvent::Type tablet, QEvent::Type mouseType, const Sample& s, Qt::MouseButton button,
-                         Qt::MouseButtons held) {
-        QTabletEvent t(tablet, QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), QTabletEvent::Stylus, QTabletEvent::Pen,
-                       s.pressure, 0, 0, 0.0, 0.0, 0, Qt::NoModifier, 1, button, held);
-        QApplication::sendEvent(gl, &t);
-        QMouseEvent m(mouseType, QPointF(s.at), QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), button, held,
-                      Qt::NoModifier, Qt::MouseEventSynthesizedByQt);
-        QApplication::sendEvent(gl, &m);
-    };
     // When the pen draws it
-    pen(QEvent::TabletPress, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
-    for (size_t i = 1; i < path.size(); ++i)
-        pen(QEvent::TabletMove, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
-    pen(QEvent::TabletRelease, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+    penStroke(f.window, path);
     // Then the light hook's samples are left out, and the status says so
     ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
     EXPECT_EQ(doc.lastStroke().dropped, 4) << doc.lastStroke().message.toStdString();
@@ -374,10 +389,7 @@ TEST(FirstContact, APensLightPressureHookIsTrimmedAndAMouseStrokeKeepsEverySampl
         << doc.lastStroke().message.toStdString();
 
     // And when a mouse draws the same path after the pen, no pressure is left over from it
-    mouse(f.window, QEvent::MouseButtonPress, path.front().at, Qt::LeftButton, Qt::LeftButton);
-    for (size_t i = 1; i < path.size(); ++i)
-        mouse(f.window, QEvent::MouseMove, path[i].at, Qt::NoButton, Qt::LeftButton);
-    mouse(f.window, QEvent::MouseButtonRelease, path.back().at, Qt::LeftButton, Qt::NoButton);
+    mouseStroke(f.window, path);
     ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
     EXPECT_EQ(doc.lastStroke().dropped, 0) << doc.lastStroke().message.toStdString();
 }
@@ -390,7 +402,6 @@ TEST(FirstContact, AnOversketchByPenLeavesOutItsLightPressureHook)
     startApplication();
     Fixture f;
     SketchDocument& doc = f.window.document();
-    QWidget* gl = f.window.viewport();
     // An arch drawn by mouse, then over-sketched
     const auto arch = [](double a, double height) {
         return QPoint(static_cast<int>(std::lround(312 + 180 * a)),
@@ -404,27 +415,11 @@ TEST(FirstContact, AnOversketchByPenLeavesOutItsLightPressureHook)
     f.window.action(QStringLiteral("mode.oversketch"))->trigger();
     // The middle of the arch drawn 10 px higher at full pressure, then four light samples skidding
     // away where the pen lifts
-    struct Sample {
-        QPoint at;
-        double pressure;
-    };
-    std::vector<Sample> path;
+    std::vector<PenSample> path;
     for (int k = 0; k <= 60; ++k) path.push_back({arch(0.2 + 0.6 * k / 60.0, 70), 0.8});
     for (int k = 1; k <= 4; ++k) path.push_back({path.back().at + QPoint(1, 1), 0.15});
-    const auto pen = [&](QEvent::Type tablet, QEvent::Type mouseType, const Sample& s, Qt::MouseButton button,
-                         Qt::MouseButtons held) {
-        QTabletEvent t(tablet, QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), QTabletEvent::Stylus, QTabletEvent::Pen,
-                       s.pressure, 0, 0, 0.0, 0.0, 0, Qt::NoModifier, 1, button, held);
-        QApplication::sendEvent(gl, &t);
-        QMouseEvent m(mouseType, QPointF(s.at), QPointF(s.at), QPointF(gl->mapToGlobal(s.at)), button, held,
-                      Qt::NoModifier, Qt::MouseEventSynthesizedByQt);
-        QApplication::sendEvent(gl, &m);
-    };
     // When the pen over-sketches
-    pen(QEvent::TabletPress, QEvent::MouseButtonPress, path.front(), Qt::LeftButton, Qt::LeftButton);
-    for (size_t i = 1; i < path.size(); ++i)
-        pen(QEvent::TabletMove, QEvent::MouseMove, path[i], Qt::NoButton, Qt::LeftButton);
-    pen(QEvent::TabletRelease, QEvent::MouseButtonRelease, path.back(), Qt::LeftButton, Qt::NoButton);
+    penStroke(f.window, path);
     // Then the curve is changed, not added to, without the hook, and the status says so
     ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
     EXPECT_EQ(f.curves(), curves);
@@ -434,10 +429,7 @@ TEST(FirstContact, AnOversketchByPenLeavesOutItsLightPressureHook)
         << doc.lastStroke().message.toStdString();
 
     // And the same over-sketch by mouse keeps every sample
-    mouse(f.window, QEvent::MouseButtonPress, path.front().at, Qt::LeftButton, Qt::LeftButton);
-    for (size_t i = 1; i < path.size(); ++i)
-        mouse(f.window, QEvent::MouseMove, path[i].at, Qt::NoButton, Qt::LeftButton);
-    mouse(f.window, QEvent::MouseButtonRelease, path.back().at, Qt::LeftButton, Qt::NoButton);
+    mouseStroke(f.window, path);
     ASSERT_TRUE(doc.lastStroke().fitted) << doc.lastStroke().message.toStdString();
     EXPECT_EQ(doc.lastStroke().dropped, 0) << doc.lastStroke().message.toStdString();
     EXPECT_FALSE(doc.lastStroke().message.contains(QStringLiteral("light-pressure hook")))

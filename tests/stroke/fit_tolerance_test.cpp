@@ -481,6 +481,22 @@ TEST(FitTolerance, GivenFineResolution_WhenFitted_ThenTheSameFitAsWithoutOne)
     EXPECT_EQ(fitStroke(s, both).tolerance, 0.3);
 }
 
+// The measure tests' strokes: noise 0.5, fitted at a loose tolerance of 3.0, so that many samples
+// lie away from the curve.
+Stroke noisyStroke(const Shape& shape)
+{
+    DrawOptions d;
+    d.noise = 0.5;
+    return draw(shape, d);
+}
+
+FitResult looselyFitted(const Stroke& s)
+{
+    FitOptions o;
+    o.tolerance = 3.0;
+    return fitStroke(s, o);
+}
+
 // measureSamples against the independent dense-polyline measure of fit_checks.h: no sample's
 // bound below its distance, and the same maximum, on open curves, loops and loops with corners.
 // (The kernel's CurveProjector is no reference here: on the square it misses foot points beside
@@ -488,12 +504,8 @@ TEST(FitTolerance, GivenFineResolution_WhenFitted_ThenTheSameFitAsWithoutOne)
 TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenMaxEqualsDensePolylineMeasure)
 {
     for (const auto& [name, shape] : shapes()) {
-        DrawOptions d;
-        d.noise = 0.5;
-        const Stroke s = draw(shape, d);
-        FitOptions o;
-        o.tolerance = 3.0;  // loose: many samples away from the curve
-        const FitResult r = fitStroke(s, o);
+        const Stroke s = noisyStroke(shape);
+        const FitResult r = looselyFitted(s);
         const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0);
         double worst = 0;
         for (size_t i = 0; i < s.points.size(); ++i) {
@@ -519,12 +531,8 @@ TEST(FitTolerance, GivenFittedCurves_WhenSamplesMeasured_ThenEveryBoundAwayFromA
     constexpr double kTrackAgreement = 2e-2 + kMeasureAgreement;
     for (const auto& [name, shape] : shapes()) {
         if (name == "square") continue;
-        DrawOptions d;
-        d.noise = 0.5;
-        const Stroke s = draw(shape, d);
-        FitOptions o;
-        o.tolerance = 3.0;
-        const FitResult r = fitStroke(s, o);
+        const Stroke s = noisyStroke(shape);
+        const FitResult r = looselyFitted(s);
         const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0);
         double furthest = 0.0;  // the largest bound above the dense measure
         for (size_t i = 0; i < s.points.size(); ++i) {
@@ -544,12 +552,8 @@ TEST(FitTolerance, GivenExactAbove_WhenSamplesMeasured_ThenEveryBoundBeyondItIsT
 {
     constexpr double kExactAbove = 0.75;
     for (const auto& [name, shape] : shapes()) {
-        DrawOptions d;
-        d.noise = 0.5;
-        const Stroke s = draw(shape, d);
-        FitOptions o;
-        o.tolerance = 3.0;
-        const FitResult r = fitStroke(s, o);
+        const Stroke s = noisyStroke(shape);
+        const FitResult r = looselyFitted(s);
         const SampleDeviation dev = measureSamples(r.curve, s.points, {}, 1.0, kExactAbove);
         int beyond = 0;
         for (size_t i = 0; i < s.points.size(); ++i) {
