@@ -350,7 +350,8 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     // projection below settles every sample whose bound could matter.
     // Each start is the previous foot moved on as far as the one before it moved (the samples'
     // pace along the curve changes slowly), unwrapped on a closed curve. The bounds are within
-    // kTrackSlack * resolution of the local minimum's distance (~1/2000 of the tolerance).
+    // kTrackSlack * resolution of the local minimum's distance (a hundredth of the fitter's tolerance,
+    // whose resolution is half the tolerance).
     constexpr double kTrackSlack = 2e-2;
     const double lost = 4.0 * resolution;
     const double period = c.end() - c.start();
