@@ -366,14 +366,18 @@ private:
     QString farFromSight(const manipulators::FinishedStroke& stroke) const;
     /// The frame of the curve `hit` landed on, if it landed on one.
     std::optional<model::CurveFrameAt> curveFrame(const manipulators::StrokeHit& hit) const;
-    void oversketchStroke(const manipulators::FinishedStroke& stroke);
+    /// `hooks`: the samples applyStroke left out of `stroke` as a pen's light-pressure hooks (the
+    /// same for liftStroke and resketchStroke), reported in the status (noteHooks).
+    void oversketchStroke(const manipulators::FinishedStroke& stroke, int hooks);
     void oversketchInSpace(const std::vector<Eigen::Vector3d>& world);
     /// Over-sketches curve `target` with `stroke` (in the curve's local frame) as one undo step;
     /// `done` is the message's first words ("Curve %1 over-sketched").
     /// @param pixel the pointer pixel's footprint on the stroke's plane, model units (0: unknown, a
     ///              stroke in space): the fit's tolerance is never below it.
+    /// @param hooks samples left out of the stroke as a pen's light-pressure hooks (noteHooks).
     void applyOversketch(model::EntityId target, const solvers::Curve3d& curve,
-                         const std::vector<Eigen::Vector3d>& stroke, const QString& done, double pixel = 0.0);
+                         const std::vector<Eigen::Vector3d>& stroke, const QString& done, double pixel = 0.0,
+                         int hooks = 0);
     struct SpaceSnap {
         model::EntityId curve = 0;
         Eigen::Vector3d point;
@@ -382,7 +386,7 @@ private:
     /// The curve point nearest to `world` within kSpaceSnapDistance, if any.
     std::optional<SpaceSnap> snapToCurve(const Eigen::Vector3d& world) const;
     /// Re-sketch tool (ui/sketch_document_resketch.cpp): a marking or a line's new shape.
-    void resketchStroke(const manipulators::FinishedStroke& stroke);
+    void resketchStroke(const manipulators::FinishedStroke& stroke, int hooks);
     std::optional<model::PlaneFrame> resketchPlane(const manipulators::StrokeHit& start);
     void showResketchStrip();
     /// The strip follows its surface (a re-sketch, an undo).
@@ -397,8 +401,8 @@ private:
     QString noteLeftOut(const solvers::stroke::FitResult& fit);
     /// "; n sample(s) left out as a light-pressure hook" for a stroke used as drawn (over-sketch,
     /// lift, re-sketch), empty when none was; sets lastStroke_.dropped.
-    QString noteHooks();
-    void liftStroke(const manipulators::FinishedStroke& stroke);
+    QString noteHooks(int hooks);
+    void liftStroke(const manipulators::FinishedStroke& stroke, int hooks);
     /// The last sketched curve replaced by `target` (undoable), when it differs.
     /// False (with the reason in lastStroke_) when the target is refused.
     bool replaceRecognizedCurve(const solvers::Curve3d& target);
@@ -449,9 +453,6 @@ private:
     /// The existing plane the current stroke is on; 0 = an auxiliary plane made for it.
     model::EntityId strokeOnPlane_ = 0;
     StrokeReport lastStroke_;
-    /// Samples applyStroke left out of the stroke it hands to over-sketch, lift or re-sketch as a
-    /// pen's light-pressure hooks (0 outside that call).
-    int hooksLeftOut_ = 0;
     model::EntityId recognizedCurve_ = 0;  ///< the curve the last stroke made
     std::optional<solvers::Curve3d> freeformFit_, regularizedFit_;
     /// The last stroke's fit and recognition (for picking another candidate), and the candidate

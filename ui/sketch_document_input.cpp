@@ -35,10 +35,6 @@ constexpr double kMinStrokeFacing = 0.09;
 /// would lie far outside the square the designer sees, behind other geometry.
 constexpr double kMaxStrokeReach = 4.0;
 constexpr double kDegreesPerRadian = 57.29577951308232;
-/// The largest over-sketch tolerance the pixel footprint may ask for, as a fraction of the stroke's
-/// length (OversketchOptions::tolerance must stay below 1): a stroke only a few pixels long is fitted
-/// at a twentieth of its length, not at a pixel that would flatten it.
-constexpr double kMaxOversketchTolerance = 0.05;
 
 /// A pen's light-pressure hooks at the stroke's ends left out, by the fitter's rule
 /// (solvers::stroke::withoutPressureHooks), from a stroke that over-sketch, lift and re-sketch take
@@ -123,11 +119,10 @@ void SketchDocument::addStroke(const manipulators::FinishedStroke& stroke)
     strokeIndex_ = undo_.index() > before ? undo_.index() : -1;
 }
 
-QString SketchDocument::noteHooks()
+QString SketchDocument::noteHooks(int hooks)
 {
-    lastStroke_.dropped = hooksLeftOut_;
-    return hooksLeftOut_ > 0 ? tr("; %n sample(s) left out as a light-pressure hook", nullptr, hooksLeftOut_)
-                             : QString();
+    lastStroke_.dropped = hooks;
+    return hooks > 0 ? tr("; %n sample(s) left out as a light-pressure hook", nullptr, hooks) : QString();
 }
 
 QString SketchDocument::noteLeftOut(const solvers::stroke::FitResult& fit)
@@ -193,14 +188,13 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         // These take the stroke as drawn: a pen's light-pressure hooks are left out here, as the
         // fitter leaves them out of a sketched stroke (noteHooks tells the designer).
         manipulators::FinishedStroke trimmed = finished;
-        hooksLeftOut_ = leaveOutPressureHooks(trimmed);
+        const int hooks = leaveOutPressureHooks(trimmed);
         if (oversketch)
-            oversketchStroke(trimmed);
+            oversketchStroke(trimmed, hooks);
         else if (lift)
-            liftStroke(trimmed);
+            liftStroke(trimmed, hooks);
         else
-            resketchStroke(trimmed);
-        hooksLeftOut_ = 0;
+            resketchStroke(trimmed, hooks);
         return;
     }
     manipulators::FinishedStroke stroke = finished;
@@ -461,7 +455,7 @@ void SketchDocument::chooseNextCandidate()
     chooseCandidate((candidateInUse_ + 1) % static_cast<int>(recognition_->candidates.size()));
 }
 
-void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke)
+void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke, int hooks)
 {
     lastStroke_ = {};
     lastStroke_.samples = static_cast<int>(stroke.points.size());
@@ -487,10 +481,10 @@ void SketchDocument::oversketchStroke(const manipulators::FinishedStroke& stroke
         return;
     }
     applyOversketch(target, *curve->local, stroke.points, tr("Curve %1 over-sketched"),
-                    manipulators::pixelFootprint(stroke));
+                    manipulators::pixelFootprint(stroke), hooks);
 }
 
-void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
+void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke, int hooks)
 {
     lastStroke_ = {};
     lastStroke_.samples = static_cast<int>(stroke.points.size());
@@ -526,7 +520,7 @@ void SketchDocument::liftStroke(const manipulators::FinishedStroke& stroke)
         lastStroke_.message = tr("Lifted to a space curve: %1 control points, fit error %2 mm")
                                   .arg(lifted.curve.pointCount())
                                   .arg(lifted.fitError, 0, 'f', 3) +
-                              noteHooks();
+                              noteHooks(hooks);
         undo_.push(new AddEntitiesCommand(*this, {curve}, tr("Lift a space curve")));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Lift not possible: %1").arg(QString::fromStdString(e.what()));
@@ -578,19 +572,16 @@ void SketchDocument::pullFinished(model::EntityId id, const solvers::Curve3d& be
 }
 
 void SketchDocument::applyOversketch(model::EntityId target, const solvers::Curve3d& curve,
-                                     const std::vector<Eigen::Vector3d>& stroke, const QString& done, double pixel)
+                                     const std::vector<Eigen::Vector3d>& stroke, const QString& done, double pixel,
+                                     int hooks)
 {
     try {
-        // The tolerance never below the pointer pixel's footprint (kResolutionTolerance pixels, as a
-        // sketched stroke's fit): the samples are whole pixels, and a finer fit follows their
-        // staircase (a 110-pixel arch over-sketched at 0.002 of its length, 0.17 mm against a 0.75 mm
-        // pixel, took 42 control points and showed the steps).
+        // The samples are whole pixels: the fit's tolerance is never below one pixel's footprint
+        // (kResolutionTolerance pixels, as a sketched stroke's fit), or it follows their staircase
+        // (a 110-pixel arch over-sketched at 0.002 of its length, 0.17 mm against a 0.75 mm pixel,
+        // took 42 control points and showed the steps).
         solvers::editing::OversketchOptions options;
-        double length = 0.0;
-        for (size_t i = 1; i < stroke.size(); ++i) length += (stroke[i] - stroke[i - 1]).norm();
-        if (pixel > 0.0 && length > 0.0)
-            options.tolerance = std::clamp(solvers::stroke::kResolutionTolerance * pixel / length, options.tolerance,
-                                           kMaxOversketchTolerance);
+        options.resolution = solvers::stroke::kResolutionTolerance * pixel;
         double maxError = 0.0;
         solvers::Curve3d changed = solvers::editing::oversketch<3>(curve, stroke, options, nullptr, &maxError);
         model::requireCurveExtent(changed);
@@ -601,7 +592,7 @@ void SketchDocument::applyOversketch(model::EntityId target, const solvers::Curv
                                   .arg(done.arg(target))
                                   .arg(changed.pointCount())
                                   .arg(maxError, 0, 'f', 3) +
-                              noteHooks();
+                              noteHooks(hooks);
         undo_.push(new ReplaceCurveCommand(*this, target, curve, std::move(changed)));
     } catch (const std::exception& e) {
         lastStroke_.message = tr("Over-sketch not applied: %1").arg(QString::fromStdString(e.what()));

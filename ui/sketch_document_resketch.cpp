@@ -223,7 +223,7 @@ void SketchDocument::resketchSurfaceUpdated(model::EntityId surface)
     }
 }
 
-void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
+void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke, int hooks)
 {
     lastStroke_ = {};
     lastStroke_.samples = static_cast<int>(stroke.rayOrigins.size());
@@ -258,7 +258,7 @@ void SketchDocument::resketchStroke(const manipulators::FinishedStroke& stroke)
                         .arg(lineName(*r.line))
                         .arg(fit.movedPoints)
                         .arg(lastStroke_.maxError, 0, 'f', 3) +
-                    noteHooks();
+                    noteHooks(hooks);
             } else {
                 const double size = surfaceSize(surface);
                 const auto uv = deformation::markingOnSurface(surface, stroke.rayOrigins, stroke.rayDirections, kMarkingReach * size);

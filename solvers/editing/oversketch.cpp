@@ -107,6 +107,8 @@ BSplineCurve<Dim> oversketch(const BSplineCurve<Dim>& curve, const std::vector<E
                              const OversketchOptions& options, std::pair<double, double>* span, double* maxError)
 {
     if (!(options.tolerance > 0.0 && options.tolerance < 1.0)) throw GeometryError("tolerance: must be in (0, 1)");
+    if (!(options.resolution >= 0.0) || !std::isfinite(options.resolution))
+        throw GeometryError("resolution: must be zero or positive and finite");
     if (!(options.scale >= 0.0 && options.scale <= 1.0)) throw GeometryError("scale: must be in [0, 1]");
     if (!(options.transitionFactor >= 0.0) || !(options.minTransition > 0.0)) {
         throw GeometryError("transition: factor must be >= 0 and minimum > 0");

@@ -6,6 +6,7 @@
 #include "solvers/bspline/projection.h"
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -26,6 +27,10 @@ struct OversketchOptions {
     /// Fit tolerance as a fraction of the stroke's length (local-c2: Alg. 1-1's ε; blend: the
     /// tolerance of the stroke's own least-squares fit). (0, 1).
     double tolerance = 0.002;
+    /// The input's resolution, model units (>= 0; 0 = unknown): the fit's tolerance is never below
+    /// it. A window stroke's samples are whole pixels, and a tolerance below one pixel's footprint
+    /// follows their staircase (as stroke::FitOptions::resolution for a sketched stroke).
+    double resolution = 0.0;
     /// Blend: eq. 4-23's scale in [0, 1]; 1 follows the stroke, 0 leaves the curve as it is.
     double scale = 1.0;
     /// Local-c2: transition length as a multiple of the stroke end's distance from the curve
@@ -81,6 +86,13 @@ struct StrokeOnCurve {
     double us = 0.0, ue = 0.0;
     double length = 0.0;
 };
+
+/// The fit's tolerance in model units: OversketchOptions::tolerance of the stroke's length, never
+/// below OversketchOptions::resolution.
+inline double fitTolerance(const OversketchOptions& o, double strokeLength)
+{
+    return std::max(o.tolerance * strokeLength, o.resolution);
+}
 
 template <int Dim>
 StrokeOnCurve<Dim> placeStroke(const BSplineCurve<Dim>& curve,

@@ -196,7 +196,7 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
     const double density = std::min(st.length / M, static_cast<double>(h.size()));
     const int m0 = std::max(p + 1, static_cast<int>(std::lround(density)) + 1) + p;
     const int mMax = std::max(m0, static_cast<int>(h.size()) / 4 + 2 * p);
-    const double tol = o.tolerance * st.length;
+    const double tol = fitTolerance(o, st.length);
     auto grow = [&](int m) { return std::min(mMax, m + std::max(1, m / 4)); };
 
     // Closed curves: a stroke around most of the loop leaves a short arc for the two transitions
@@ -234,10 +234,10 @@ BSplineCurve<Dim> oversketchBlend(const BSplineCurve<Dim>& input, const StrokeOn
         if (c.isClosed() && ue < us) iE += n;  // the stroke crosses the seam
         const int maxSteps = poly.closed ? n / 2 : n;
         const bool openLeftEnd = !c.isClosed() &&
-                                 (h.front() - c.evaluate(c.domainStart())).norm() > o.tolerance * st.length &&
+                                 (h.front() - c.evaluate(c.domainStart())).norm() > fitTolerance(o, st.length) &&
                                  st.us <= c.domainStart();
         const bool openRightEnd = !c.isClosed() &&
-                                  (h.back() - c.evaluate(c.domainEnd())).norm() > o.tolerance * st.length &&
+                                  (h.back() - c.evaluate(c.domainEnd())).norm() > fitTolerance(o, st.length) &&
                                   st.ue >= c.domainEnd();
         const int cs = openLeftEnd ? kNone : transitionPoint(poly, iS, -1, h.front(), Mt, maxSteps);
         const int ce = openRightEnd ? kNone : transitionPoint(poly, iE, +1, h.back(), Mt, maxSteps);

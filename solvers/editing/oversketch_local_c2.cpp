@@ -200,7 +200,7 @@ BSplineCurve<Dim> oversketchLocalC2(const BSplineCurve<Dim>& input, const Stroke
 {
     const BSplineCurve<Dim> curve = input.isClosed() ? input : input.clamped();
     const int p = curve.degree();
-    const double tol = o.tolerance * st.length;
+    const double tol = fitTolerance(o, st.length);
     const CurveLengths<Dim> lengths(curve);
 
     // Closed curves with few spans: rounding [u_ps, u_pe] out to knots may span a whole period, or

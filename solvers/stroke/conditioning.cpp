@@ -236,9 +236,7 @@ void keepRange(std::vector<T>& v, int first, int last)
 
 std::pair<int, int> withoutPressureHooks(const Stroke& stroke, const ConditioningOptions& options)
 {
-    if (!stroke.pressure.empty() && stroke.pressure.size() != stroke.points.size())
-        throw GeometryError("stroke.pressure: " + std::to_string(stroke.pressure.size()) + " values for " +
-                            std::to_string(stroke.points.size()) + " points");
+    validateTimesAndPressure(stroke);
     return withoutHooks(stroke, options, -1.0);
 }
 

@@ -43,6 +43,7 @@ std::vector<Eigen::Vector3d> limitSmoothing(std::vector<Eigen::Vector3d> drawn,
 /// left out (ConditioningOptions::hookPressure, maxHookLength): the range conditionStroke keeps.
 /// The whole stroke without pressure, or with fewer than five samples. For strokes that are used
 /// as drawn rather than fitted (over-sketch, lift, re-sketch in the window).
+/// @throws GeometryError naming the field for mismatched or non-finite times or pressure.
 std::pair<int, int> withoutPressureHooks(const Stroke& stroke, const ConditioningOptions& options = {});
 
 /// Recomputes cs.arc from cs.points.

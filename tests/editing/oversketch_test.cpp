@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <string>
 
 using namespace sculptline::solvers;
 using namespace sculptline::solvers::editing;
@@ -141,6 +143,42 @@ TEST(OversketchLocalC2, GivenStraightStrokeOverWigglyPart_WhenOversketched_ThenF
 
     EXPECT_LT(out.pointCount(), curve.pointCount());
     EXPECT_LT(maxDistanceToCurve(out, stroke), 0.01 * 12.0);
+}
+
+// A stroke quantized to a grid (a window's whole pixels, pitch q = 0.1 on a stroke ~12 long): at the
+// default tolerance (0.002 of the length, ~0.025) the fit follows the staircase; with the input's
+// resolution q the tolerance is q, and the curve is within it of every sample with fewer control
+// points. Both methods; a negative or non-finite resolution is refused by name.
+TEST(OversketchLocalC2, GivenStrokeQuantizedToAGrid_WhenOversketchedWithItsResolution_ThenFewerControlPointsWithinIt)
+{
+    constexpr double kPitch = 0.1;
+    const Curve2d curve = wave(20);
+    std::vector<Eigen::Vector2d> stroke = bump(curve, 0.3, 0.7, 1.0, 240);
+    for (Eigen::Vector2d& p : stroke) p = (p / kPitch).array().round().matrix() * kPitch;
+    for (const OversketchMethod method : {OversketchMethod::LocalC2, OversketchMethod::Blend}) {
+        OversketchOptions fine;
+        fine.method = method;
+        OversketchOptions quantized = fine;
+        quantized.resolution = kPitch;
+        double fineError = 0.0, quantizedError = 0.0;
+        const Curve2d a = oversketch(curve, stroke, fine, nullptr, &fineError);
+        const Curve2d b = oversketch(curve, stroke, quantized, nullptr, &quantizedError);
+        std::printf(
+            "method %d: %d control points (error %.4f) at the default tolerance, %d (error %.4f) at the resolution\n",
+            static_cast<int>(method), a.pointCount(), fineError, b.pointCount(), quantizedError);
+        EXPECT_LT(b.pointCount(), a.pointCount()) << static_cast<int>(method);
+        EXPECT_LE(quantizedError, kPitch) << static_cast<int>(method);
+    }
+    for (const double bad : {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+        OversketchOptions o;
+        o.resolution = bad;
+        try {
+            oversketch(curve, stroke, o);
+            ADD_FAILURE() << "resolution " << bad << " accepted";
+        } catch (const GeometryError& e) {
+            EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos) << e.what();
+        }
+    }
 }
 
 TEST(OversketchLocalC2, GivenStrokePastTheEnd_WhenOversketched_ThenCurveIsExtendedToStrokeEnd)
