@@ -134,6 +134,70 @@ double roundedRectangleResidual(const std::vector<Point2>& pts, const std::vecto
     return best;
 }
 
+double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, double maxShare)
+{
+    const size_t m = v.size();
+    if (m < 3) return std::numeric_limits<double>::infinity();
+    const auto cross = [](const Point2& a, const Point2& b) { return a.x() * b.y() - a.y() * b.x(); };
+    double area = 0.0;
+    for (size_t i = 0; i < m; ++i) area += cross(v[i], v[(i + 1) % m]);
+    const double orient = area >= 0.0 ? 1.0 : -1.0;
+    // Inward unit normals of the sides; a side of zero length or a reflex vertex: not convex.
+    std::vector<Point2> normal(m);
+    for (size_t i = 0; i < m; ++i) {
+        const Point2 e = v[(i + 1) % m] - v[i];
+        if (!(e.norm() > 0.0) || orient * cross(e, v[(i + 2) % m] - v[(i + 1) % m]) <= 0.0)
+            return std::numeric_limits<double>::infinity();
+        normal[i] = orient * Point2(-e.y(), e.x()) / e.norm();
+    }
+    double width = std::numeric_limits<double>::infinity();
+    for (size_t i = 0; i < m; ++i) {
+        double far = 0.0;
+        for (const Point2& q : v) far = std::max(far, (q - v[i]).dot(normal[i]));
+        width = std::min(width, far);
+    }
+    double best = std::numeric_limits<double>::infinity();
+    const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));
+    std::vector<Point2> inner(m);
+    for (int s = 0; s <= steps; ++s) {
+        const double r = 0.05 * s * 0.5 * width;
+        // The polygon moved inward by r: vertex i where the offset lines of sides i-1 and i meet.
+        bool valid = true;
+        for (size_t i = 0; i < m && valid; ++i) {
+            const size_t h = (i + m - 1) % m;
+            const Point2 a = v[i] + r * normal[h], b = v[i] + r * normal[i];
+            const Point2 d0 = v[i] - v[h], d1 = v[(i + 1) % m] - v[i];
+            const double den = cross(d0, d1);
+            if (std::abs(den) <= 1e-12 * d0.norm() * d1.norm()) {
+                valid = false;
+                break;
+            }
+            inner[i] = a + d0 * (cross(b - a, d1) / den);
+        }
+        // A side the offset reversed: the rounded shape is no longer this polygon's.
+        for (size_t i = 0; i < m && valid; ++i)
+            valid = (inner[(i + 1) % m] - inner[i]).dot(v[(i + 1) % m] - v[i]) > 0.0;
+        if (!valid) break;
+        // The rounded polygon is the inner one grown by r: a point's distance from its outline is
+        // |signed distance from the inner polygon - r|.
+        double worst = 0.0;
+        for (const Point2& p : pts) {
+            double edge = std::numeric_limits<double>::infinity();
+            bool inside = true;
+            for (size_t i = 0; i < m; ++i) {
+                const Point2 a = inner[i], ab = inner[(i + 1) % m] - a;
+                const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+                edge = std::min(edge, (p - a - t * ab).norm());
+                inside = inside && (p - a).dot(normal[i]) >= 0.0;
+            }
+            worst = std::max(worst, std::abs((inside ? -edge : edge) - r));
+            if (worst >= best) break;
+        }
+        best = std::min(best, worst);
+    }
+    return best;
+}
+
 // Rhombus: diagonals through the centroid, perpendicular, with the measured half-lengths.
 std::vector<Point2> regularDiamond(const std::vector<Point2>& v)
 {

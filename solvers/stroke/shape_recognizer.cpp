@@ -22,6 +22,7 @@ using detail::detectedVertices;
 using detail::QuadShape;
 using detail::regularDiamond;
 using detail::regularRectangle;
+using detail::roundedPolygonResidual;
 using detail::roundedRectangleResidual;
 
 constexpr double kQuarterTurn = kPi / 2;
@@ -129,7 +130,20 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
     std::vector<std::pair<int, int>> curved;  // edges whose farthest point is a bend, not a corner
     for (int round = 0; round < 12; ++round) {
         if (g.closed && idx.size() < 2) {
-            idx.push_back(idx.empty() ? 0 : (idx[0] + n / 2) % n);
+            // Seeded seam-free: the sample farthest from the centroid, then the one farthest from
+            // that (or from the one corner detected). A loop's seam is wherever the hand began,
+            // often mid-side, and a vertex there makes the inserted ones miss the corners.
+            Point2 from = Point2::Zero();
+            if (idx.empty()) {
+                for (const Point2& p : g.points) from += p;
+                from /= static_cast<double>(n);
+            } else {
+                from = g.points[idx[0]];
+            }
+            int far = 0;
+            for (int k = 1; k < n; ++k)
+                if ((g.points[k] - from).squaredNorm() > (g.points[far] - from).squaredNorm()) far = k;
+            idx.push_back(far);
             std::sort(idx.begin(), idx.end());
             continue;
         }
@@ -496,6 +510,7 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     // it by far more than minCornerTurn, and the two sides fit it where no arc does.
     // The residual of a loop's polygon (infinite without one), for the round shapes' corner test.
     double loopPolygonResidual = std::numeric_limits<double>::infinity();
+    double roundedLoopResidual = std::numeric_limits<double>::infinity();
     const std::vector<int> detectedCorners = g.closed ? g.vertexIndex : std::vector<int>{};
     const int sameCorner = o.sampleSpacing > 0.0 ? 2 : 0;
     const int inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
@@ -580,15 +595,22 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
                 const double sharp = ideal(regularRectangle(g.vertices, square));
                 if (o.cornerRounding <= 0.0) return sharp;
                 const double rounded = roundedRectangleResidual(g.points, g.vertices, square, o.cornerRounding);
+                roundedLoopResidual = std::min(roundedLoopResidual, rounded);
                 return std::max(sharp, score(rounded, sigma) * (rounded < smooth ? 1.0 : guess));
             };
             // The orientation rule of ShapeKind: square on its sides, diamond on a corner; a shape
             // with equal sides is reported as a square rather than a rectangle.
             add(ShapeKind::Square, rectangular(true) * (q.axisAligned || !q.right ? 1.0 : 0.5));
             // A skewed, sheared or tapered rectangle (looseQuad): the quad itself, scaled down.
-            const bool loose = o.looseQuad > 0.0 && !q.equal && q.convex && q.smallestAngle >= kLooseQuadAngle &&
-                               detectedVertices(g.vertexIndex, detectedCorners, static_cast<int>(g.points.size()), sameCorner) >= 3;
-            const double looseScore = loose ? score(residual, sigma) * o.looseQuad : 0.0;
+            const double roundedQuad = o.cornerRounding > 0.0
+                                           ? roundedPolygonResidual(g.points, g.vertices, o.cornerRounding)
+                                           : std::numeric_limits<double>::infinity();
+            roundedLoopResidual = std::min(roundedLoopResidual, roundedQuad);
+            const bool loose =
+                o.looseQuad > 0.0 && !q.equal && q.convex && q.smallestAngle >= kLooseQuadAngle &&
+                (detectedVertices(g.vertexIndex, detectedCorners, static_cast<int>(g.points.size()), sameCorner) >= 3 ||
+                 roundedQuad < o.roundedSides * smooth);
+            const double looseScore = loose ? score(std::min(residual, roundedQuad), sigma) * o.looseQuad : 0.0;
             add(ShapeKind::Rectangle, std::max(rectangular(false) * (q.equal ? 0.7 : 1.0), looseScore));
             // A diamond is a rhombus (equal sides, QuadShape::equal): regularDiamond keeps only the
             // diagonals' directions and half-lengths, so a kite or trapezoid can lie close to it.
@@ -605,7 +627,12 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
         // window, turns a drawn circle's samples by as much as a corner there: a circle whose
         // inscribed polygon misses it by more than its own fit does is a circle with a jittered
         // outline, whatever the window's size.
-        const auto cornered = [&](double smoothResidual) { return corners >= 2 && loopPolygonResidual < smoothResidual ? 0.5 : 1.0; };
+        const auto cornered = [&](double smoothResidual) {
+            return (corners >= 2 && loopPolygonResidual < smoothResidual) ||
+                           roundedLoopResidual < o.roundedSides * smoothResidual
+                       ? 0.5
+                       : 1.0;
+        };
         const double roundness = rec.ellipse.valid ? rec.ellipse.a / std::max(rec.ellipse.b, 1e-300) : 1.0;
         if (rec.circle.valid) add(ShapeKind::Circle, score(rec.circle.maxResidual, sigma) * cornered(rec.circle.maxResidual));
         if (rec.ellipse.valid) {

@@ -119,6 +119,15 @@ struct RecognizeOptions {
     /// 0.4 the same as 0. On the strokes as drawn: 97.7 -> 97.8 %, rectangles 98.0 -> 99.3 %, no
     /// other gesture changes.
     double looseQuad = 0.6;
+    /// A loop whose quad, with its corners rounded (cornerRounding's radii, the quad's own angles:
+    /// sheared and tapered too), lies closer to the stroke than this share of the circle's and the
+    /// ellipse's residuals has straight sides: the round shapes count it against them as they count
+    /// detected corners (halved), and the quad may be read as a loose rectangle (looseQuad) without
+    /// three detected corners. A hand drawing a rectangle fast rounds every corner beyond the
+    /// corner detector's sharpness test, and then a skewed or tapered one read as an ellipse. The
+    /// share is below 1 because the rounded quad has 9 parameters against the ellipse's 5 and fits
+    /// any loop somewhat closer. 0 turns the rule off. CHOSEN_BY
+    double roundedSides = 1.0;
     double shortEdge = 0.08;       ///< edges shorter than this share of the extent are merged
     /// recognizeStroke: a loop that the conditioning closed by trimming more than this share of its
     /// length as overshoot was a stroke crossing itself (an x, a delete mark), not a loop that

@@ -9,6 +9,9 @@
 //   unistroke-report --augment-rounded --loso ...  ... and copies with corners rounded (8 %, 12 %)
 //   unistroke-report --augment-drawn --loso ...  ... and copies drawn sheared (0.3, 0.5) and tapered
 //                                              (0.4, 0.7), as a hand draws a rectangle askew
+//   unistroke-report --augment-sloppy --loso ...  ... and copies rounded (8 %) and sheared (0.3),
+//                                              tapered (0.4), overshot (10 %) or left open (6 %), and
+//                                              rounded 16 %: a fast, careless hand
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -17,7 +20,7 @@
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
 // crossingTail, cornerLeg, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
-// looseQuad).
+// looseQuad, roundedSides).
 // Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
 // held-out ones are not for tuning.
@@ -43,6 +46,7 @@ sculptline::solvers::stroke::RecognizeOptions gOptions;
 bool gAugment = false;
 bool gAugmentRounded = false;
 bool gAugmentDrawn = false;
+bool gAugmentSloppy = false;
 
 // The development recordings and, for each, the same stroke drawn otherwise as a person might
 // (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
@@ -70,6 +74,17 @@ std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
             p.taper = taper;
             all.push_back(p);
         }
+    }
+    if (gAugmentSloppy) {  // --augment-sloppy: two ways at once, corners rounded over 8 % of the length
+        // and sheared 0.3, tapered 0.4, overshot 10 % or left 6 % open; and rounded over 16 %
+        const std::vector<st::Perturbation> sloppy = {
+            {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0.3, 0},
+            {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0, 0.4},
+            {0, 1, 0, 0.1, 1, 0, 0.08},
+            {0, 1, 0.06, 0, 1, 0, 0.08},
+            {0, 1, 0, 0, 1, 0, 0.16},
+        };
+        all.insert(all.end(), sloppy.begin(), sloppy.end());
     }
     for (const auto& p : all)
         for (const auto& r : recs) {
@@ -111,6 +126,8 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "nearLoopHeading") o.nearLoopHeading = v;
     else if (k == "nearLoopGap") o.nearLoopGap = v;
     else if (k == "looseQuad") o.looseQuad = v;
+    else if (k == "roundedSides")
+        o.roundedSides = v;
     else return false;
     return true;
 }
@@ -442,6 +459,8 @@ int main(int argc, char** argv)
             gAugment = gAugmentRounded = true;
         } else if (!std::strcmp(argv[i], "--augment-drawn")) {  // ... and on sheared and tapered copies
             gAugment = gAugmentDrawn = true;
+        } else if (!std::strcmp(argv[i], "--augment-sloppy")) {  // ... and on copies drawn two ways at once
+            gAugment = gAugmentSloppy = true;
         } else if (!std::strcmp(argv[i], "--loso") && i + 2 < argc) {  // --loso option v1,v2,..
             const std::string k = argv[++i];
             std::vector<double> values;
