@@ -159,6 +159,7 @@ double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<
     double best = std::numeric_limits<double>::infinity();
     const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));
     std::vector<Point2> inner(m);
+    size_t far = 0;
     for (int s = 0; s <= steps; ++s) {
         const double r = 0.05 * s * 0.5 * width;
         // The polygon moved inward by r: vertex i where the offset lines of sides i-1 and i meet.
@@ -180,8 +181,7 @@ double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<
         if (!valid) break;
         // The rounded polygon is the inner one grown by r: a point's distance from its outline is
         // |signed distance from the inner polygon - r|.
-        double worst = 0.0;
-        for (const Point2& p : pts) {
+        const auto distance = [&](const Point2& p) {
             double edge = std::numeric_limits<double>::infinity();
             bool inside = true;
             for (size_t i = 0; i < m; ++i) {
@@ -190,8 +190,17 @@ double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<
                 edge = std::min(edge, (p - a - t * ab).norm());
                 inside = inside && (p - a).dot(normal[i]) >= 0.0;
             }
-            worst = std::max(worst, std::abs((inside ? -edge : edge) - r));
-            if (worst >= best) break;
+            return std::abs((inside ? -edge : edge) - r);
+        };
+        // The point farthest at the last radius first: a radius that does not beat the best so
+        // far is usually refused by it at once.
+        double worst = pts.empty() ? 0.0 : distance(pts[far]);
+        for (size_t k = 0; k < pts.size() && worst < best; ++k) {
+            const double d = distance(pts[k]);
+            if (d > worst) {
+                worst = d;
+                far = k;
+            }
         }
         best = std::min(best, worst);
     }
