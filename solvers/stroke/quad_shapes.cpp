@@ -152,9 +152,9 @@ double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<
     }
     double width = std::numeric_limits<double>::infinity();
     for (size_t i = 0; i < m; ++i) {
-        double far = 0.0;
-        for (const Point2& q : v) far = std::max(far, (q - v[i]).dot(normal[i]));
-        width = std::min(width, far);
+        double reach = 0.0;
+        for (const Point2& q : v) reach = std::max(reach, (q - v[i]).dot(normal[i]));
+        width = std::min(width, reach);
     }
     double best = std::numeric_limits<double>::infinity();
     const int steps = static_cast<int>(std::floor(maxShare / 0.05 + 1e-9));

@@ -35,14 +35,14 @@ int detectedVertices(const std::vector<int>& at, const std::vector<int>& detecte
 std::vector<Point2> regularRectangle(const std::vector<Point2>& v, bool square);
 /// The largest distance of `pts` from that rectangle with its corners rounded by the radius, among
 /// f * its shorter half-side for f = 0, 0.05, .. maxShare, that fits closest.
-/// The same for the convex polygon `v` itself (any number of vertices, either orientation): its
-/// corners rounded by f * half its smallest width (the least distance between a side's line and the
-/// vertex farthest from it; a rectangle's shorter half-side), f = 0, 0.05, .. maxShare. A radius at
-/// which the polygon's inward offset loses a side is not tried. Infinity for a polygon that is not
-/// convex or has fewer than 3 vertices.
-double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, double maxShare);
 double roundedRectangleResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, bool square,
                                 double maxShare);
+/// The same for the convex polygon `v` itself, not the rectangle it stands for (any number of
+/// vertices, either orientation): its corners rounded by f * half its smallest width (the least
+/// distance between a side's line and the vertex farthest from it; a rectangle's shorter
+/// half-side), f = 0, 0.05, .. maxShare. A radius at which the polygon's inward offset loses a side
+/// is not tried. Infinity for a polygon that is not convex or has fewer than 3 vertices.
+double roundedPolygonResidual(const std::vector<Point2>& pts, const std::vector<Point2>& v, double maxShare);
 /// Rhombus: diagonals through the centroid, perpendicular, with the measured half-lengths.
 std::vector<Point2> regularDiamond(const std::vector<Point2>& v);
 
