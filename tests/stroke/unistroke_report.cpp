@@ -377,6 +377,13 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
         {"times x2", {0, 1, 0, 0, 2}},
+        // Two ways at once (--augment-sloppy): a fast hand rounds the corners and also shears,
+        // tapers, overshoots or leaves the loop open.
+        {"corners rounded 16 %", {0, 1, 0, 0, 1, 0, 0.16}},
+        {"rounded 8 %, sheared 0.3", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0.3, 0}},
+        {"rounded 8 %, tapered 0.4", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0, 0.4}},
+        {"rounded 8 %, overshoot 10 %", {0, 1, 0, 0.1, 1, 0, 0.08}},
+        {"rounded 8 %, end cut 6 %", {0, 1, 0.06, 0, 1, 0, 0.08}},
     };
     const std::vector<std::string> shown = {"rectangle", "delete_mark", "triangle", "circle", "x", "check", "arrow"};
     std::cout << "| perturbation | all |";
