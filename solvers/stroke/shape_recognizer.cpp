@@ -143,6 +143,8 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
             int far = 0;
             for (int k = 1; k < n; ++k)
                 if ((g.points[k] - from).squaredNorm() > (g.points[far] - from).squaredNorm()) far = k;
+            // (Every sample at one point: the one halfway round, so that the two stay apart.)
+            if (!idx.empty() && far == idx[0]) far = (idx[0] + n / 2) % n;
             idx.push_back(far);
             std::sort(idx.begin(), idx.end());
             continue;
