@@ -1,6 +1,6 @@
 // Fitting and recognition of strokes people drew (issue 15 §3: the benchmark set gets real
 // recorded strokes): the $1 unistroke logs' development subjects (tests/data/unistrokes, s02-s06),
-// the first repetition of every gesture at every speed, 240 strokes of 19-250 samples, in pixels
+// the first repetition of every gesture at every speed, 240 strokes of 30-209 samples (81 on average), in pixels
 // and milliseconds as the pen gave them. Arg 0: fitStroke with default options, as `sculptline-cli
 // fit` does; arg 1: recognizeStroke (fit, recognize, and the refits the loop rules ask for), as the
 // window does when the pen lifts. Warm: each iteration fits all 240 in turn.
