@@ -1,7 +1,8 @@
 // Given strokes drawn from known primitives (random size, position, rotation, noise, timing),
 // when recognized, then each class is recognized with high accuracy; regularized circles are exact.
-#include "solvers/stroke/shape_recognizer.h"
 #include "fit_checks.h"
+#include "solvers/stroke/quad_shapes.h"
+#include "solvers/stroke/shape_recognizer.h"
 
 #include <gtest/gtest.h>
 
@@ -400,11 +401,15 @@ TEST(ShapeRecognition, GivenARoundedRectangleBegunMidSide_WhenRecognized_ThenARe
         // sheared by 0.5: angles 63 and 117 degrees
         {"sheared", {{0, 0, 0}, {140, 0, 0}, {175, 70, 0}, {35, 70, 0}}},
     };
-    for (const auto& [name, inner] : drawn) {
+    // Corners rounded by 20; round corners: the hand does not slow down there.
+    const auto drawRounded = [](const std::vector<Vec3>& inner) {
         DrawOptions d;
         d.noise = 0.25;
-        d.cornerSlowdown = 1.0;  // round corners: the hand does not slow down
-        const StrokeRecognition r = recognizeStroke(draw(roundedPolygon(inner, 20.0), d));
+        d.cornerSlowdown = 1.0;
+        return draw(roundedPolygon(inner, 20.0), d);
+    };
+    for (const auto& [name, inner] : drawn) {
+        const StrokeRecognition r = recognizeStroke(drawRounded(inner));
         std::string seen;
         for (const auto& c : r.recognition.candidates)
             seen += std::string(shapeName(c.kind)) + ":" + std::to_string(c.score) + " ";
@@ -415,17 +420,12 @@ TEST(ShapeRecognition, GivenARoundedRectangleBegunMidSide_WhenRecognized_ThenARe
     // test sees what the rule does.
     RecognizeOptions off;
     off.roundedSides = 0.0;
-    DrawOptions d;
-    d.noise = 0.25;
-    d.cornerSlowdown = 1.0;
-    const StrokeRecognition r = recognizeStroke(draw(roundedPolygon(drawn[1].second, 20.0), d), {}, off);
+    const StrokeRecognition r = recognizeStroke(drawRounded(drawn[1].second), {}, off);
     EXPECT_EQ(r.recognition.kind, ShapeKind::Ellipse);
 }
 
 }  // namespace
 }  // namespace sculptline::stroketest
-
-#include "solvers/stroke/quad_shapes.h"
 
 namespace sculptline::stroketest {
 namespace {

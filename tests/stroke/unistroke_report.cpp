@@ -48,6 +48,21 @@ bool gAugmentRounded = false;
 bool gAugmentDrawn = false;
 bool gAugmentSloppy = false;
 
+// Strokes drawn two ways at once, as a fast, careless hand does: corners rounded over 8 % of the
+// length and sheared 0.3, tapered 0.4, overshot 10 % or left 6 % open; and rounded over 16 %
+// (--augment-sloppy, and rows of --perturb-dev).
+const std::vector<std::pair<const char*, st::Perturbation>>& sloppyWays()
+{
+    static const std::vector<std::pair<const char*, st::Perturbation>> ways = {
+        {"corners rounded 16 %", {0, 1, 0, 0, 1, 0, 0.16}},
+        {"rounded 8 %, sheared 0.3", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0.3, 0}},
+        {"rounded 8 %, tapered 0.4", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0, 0.4}},
+        {"rounded 8 %, overshoot 10 %", {0, 1, 0, 0.1, 1, 0, 0.08}},
+        {"rounded 8 %, end cut 6 %", {0, 1, 0.06, 0, 1, 0, 0.08}},
+    };
+    return ways;
+}
+
 // The development recordings and, for each, the same stroke drawn otherwise as a person might
 // (perturbStroke): rotated 30 degrees, stretched 0.7 and 1.5 along x, its end left 3 % and 6 % short
 // of closing, drawn on 3 % past its end. Each copy keeps its subject, so that leave-one-subject-out
@@ -75,17 +90,8 @@ std::vector<st::Recording> augmented(const std::vector<st::Recording>& recs)
             all.push_back(p);
         }
     }
-    if (gAugmentSloppy) {  // --augment-sloppy: two ways at once, corners rounded over 8 % of the length
-        // and sheared 0.3, tapered 0.4, overshot 10 % or left 6 % open; and rounded over 16 %
-        const std::vector<st::Perturbation> sloppy = {
-            {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0.3, 0},
-            {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0, 0.4},
-            {0, 1, 0, 0.1, 1, 0, 0.08},
-            {0, 1, 0.06, 0, 1, 0, 0.08},
-            {0, 1, 0, 0, 1, 0, 0.16},
-        };
-        all.insert(all.end(), sloppy.begin(), sloppy.end());
-    }
+    if (gAugmentSloppy)  // --augment-sloppy: also drawn two ways at once (sloppyWays)
+        for (const auto& [name, p] : sloppyWays()) all.push_back(p);
     for (const auto& p : all)
         for (const auto& r : recs) {
             out.push_back(r);
@@ -343,7 +349,7 @@ void perturbDev(const std::vector<st::Recording>& recs)
         const char* name;
         st::Perturbation p;
     };
-    const std::vector<Row> rows = {
+    std::vector<Row> rows = {
         {"as drawn", {}},
         {"rotated 15 deg", {15, 1, 0, 0, 1}},
         {"rotated 30 deg", {30, 1, 0, 0, 1}},
@@ -377,14 +383,8 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
         {"times x2", {0, 1, 0, 0, 2}},
-        // Two ways at once (--augment-sloppy): a fast hand rounds the corners and also shears,
-        // tapers, overshoots or leaves the loop open.
-        {"corners rounded 16 %", {0, 1, 0, 0, 1, 0, 0.16}},
-        {"rounded 8 %, sheared 0.3", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0.3, 0}},
-        {"rounded 8 %, tapered 0.4", {0, 1, 0, 0, 1, 0, 0.08, 1, 0, 0, 0.4}},
-        {"rounded 8 %, overshoot 10 %", {0, 1, 0, 0.1, 1, 0, 0.08}},
-        {"rounded 8 %, end cut 6 %", {0, 1, 0.06, 0, 1, 0, 0.08}},
     };
+    for (const auto& [name, p] : sloppyWays()) rows.push_back({name, p});
     const std::vector<std::string> shown = {"rectangle", "delete_mark", "triangle", "circle", "x", "check", "arrow"};
     std::cout << "| perturbation | all |";
     for (const auto& g : shown) std::cout << ' ' << g << " |";
