@@ -4,7 +4,7 @@ smoothing spline (scipy.interpolate.splprep) and OpenCASCADE's GeomAPI_PointsToB
 on the synthesized benchmark strokes and on real pen strokes (the $1 unistroke logs, development
 subjects only).
 
-    scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real]
+    scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real] [--time]
         BUILD_DIR defaults to build-stroke and needs stroke-export and sculptline-cli built there;
         the OCCT column needs occt-fit (built with the project, OpenCASCADE being required), else "-".
         --check: exit status 1 if, in a compared mode, any stroke (synthesized or real) needs more
@@ -12,6 +12,10 @@ subjects only).
         the total over all strokes exceeds either peer's total; ctest runs it so
         (tests/stroke/CMakeLists.txt). Before 2026-12-05 only synthesized strokes were held to
         splprep, the fewer of the peers on every stroke being not yet met in the default mode.
+        --time: also times each fit at the equal deviation found (warm: the fastest of TIME_REPEAT
+        calls; ours cold too, the first call in a fresh sculptline-cli process, as `elapsed_ms`).
+        splprep is timed around the scipy call (FITPACK plus scipy's Python wrapper), OCCT inside
+        occt-fit around GeomAPI_PointsToBSpline, ours inside sculptline-cli around fitStroke.
 
 Which fit is compared. sculptline-cli fit has two knot-removal modes (SplineFitOptions::removal):
   default   what `fit`, `recognize` and the GUI use.
@@ -33,6 +37,7 @@ import json
 import os
 import subprocess
 import sys
+import time
 import warnings
 
 try:
@@ -51,6 +56,8 @@ REAL_GESTURES = ["pigtail", "left_curly_brace", "right_curly_brace", "question_m
 REAL_PICKS = [("s02", "fast", 1), ("s04", "slow", 1), ("s05", "medium", 2)]
 # The tolerance sweep of the clean s-curve: the count must follow the tolerance.
 SWEEP = [("s-curve-clean", t) for t in (1.0, 0.5, 0.25)]
+# --time: each fit timed this many times, the fastest reported (warm).
+TIME_REPEAT = 20
 
 
 def deviation(curve_points, raw):
@@ -103,13 +110,42 @@ def tune_splprep(raw, target, closed):
     return best
 
 
+def occt_request(exe, pts, tol, repeat=1):
+    request = {"points": [[float(v) for v in p] + [0.0] * (3 - len(p)) for p in pts], "tolerances": [tol],
+               "repeat": repeat}
+    return json.loads(subprocess.run([exe], input=json.dumps(request), check=True, capture_output=True,
+                                     text=True).stdout)[0]
+
+
 def occt_fit(exe, pts, tol, dim):
-    request = {"points": [[float(v) for v in p] + [0.0] * (3 - len(p)) for p in pts], "tolerances": [tol]}
-    r = json.loads(subprocess.run([exe], input=json.dumps(request), check=True, capture_output=True,
-                                  text=True).stdout)[0]
+    r = occt_request(exe, pts, tol)
     if not r["ok"]:
         return None
     return bspline_dense(r["degree"], r["knots"], r["points"])[:, :dim], len(r["points"])
+
+
+def occt_points(raw, closed):
+    """The points OCCT is given: a loop with its first point repeated (no periodic mode)."""
+    if closed and not np.allclose(raw[0], raw[-1]):
+        return np.vstack([raw, raw[:1]])
+    return raw
+
+
+def time_splprep(raw, s, closed):
+    """The fastest of TIME_REPEAT splprep calls at smoothing factor s, in ms."""
+    pts = (raw[:-1] if closed and np.allclose(raw[0], raw[-1]) else raw).T
+    best = float("inf")
+    for _ in range(TIME_REPEAT):
+        start = time.perf_counter()
+        splprep(pts, s=s, k=3, per=1 if closed else 0, quiet=2)
+        best = min(best, time.perf_counter() - start)
+    return 1000.0 * best
+
+
+def time_occt(build, raw, tol, closed):
+    """The fastest of TIME_REPEAT GeomAPI_PointsToBSpline calls at Tol3D tol, in ms."""
+    r = occt_request(os.path.join(build, "occt-fit"), occt_points(raw, closed), tol, TIME_REPEAT)
+    return r["ms_min"] if r["ok"] else None
 
 
 def tune_occt(build, raw, target, closed):
@@ -117,9 +153,7 @@ def tune_occt(build, raw, target, closed):
     exe = os.path.join(build, "occt-fit")
     if not os.path.exists(exe):
         return None
-    pts = raw
-    if closed and not np.allclose(raw[0], raw[-1]):
-        pts = np.vstack([raw, raw[:1]])
+    pts = occt_points(raw, closed)
     # Tol3D bounds OCCT's own deviation measure, near ours: the bracket [target / 4, 4 target] holds
     # the answer; a tolerance far below it costs OCCT seconds on a 1,000-sample stroke.
     lo, hi = np.log(0.25 * target), np.log(4.0 * target)
@@ -175,6 +209,7 @@ def main():
     args = [a for a in argv if not a.startswith("--")]
     build = args[0] if args else "build-stroke"
     check = "--check" in argv
+    timing = "--time" in argv
     strokes = json.loads(subprocess.run([f"{build}/stroke-export"], check=True, capture_output=True, text=True).stdout)
     by_name = {s["name"]: s for s in strokes}
     items = [(s["name"], s["stroke"], None) for s in strokes if s["name"] != "s-curve-clean"]
@@ -188,11 +223,14 @@ def main():
             "default (what fit/recognize/GUI use)"
         print(f"sculptline-cli fit, {label}")
         print(f"{'stroke':<22}{'kept':>6}{'tol':>7}{'max dev':>9}{'ours':>6}{'splprep':>9}{'occt':>6}{'ms':>7}"
-              f"  ours <= min(peers)")
+              f"  ours <= min(peers)" + ("   warm ms: ours splprep occt" if timing else ""))
         met = 0
         counts = []
+        times = []  # --time: (ours cold, ours warm, splprep warm, occt warm or None)
         for name, stroke, tol in items:
             request = {"stroke": stroke, "minimize_control_points": minimize}
+            if timing:
+                request["repeat"] = TIME_REPEAT
             if tol is not None:
                 request["tolerance"] = tol
             fit = json.loads(subprocess.run([f"{build}/sculptline-cli", "fit"], input=json.dumps(request),
@@ -212,11 +250,25 @@ def main():
             counts.append((ours, n, occ[1] if occ else None))
             if not ok:
                 failures.append((minimize, name, ours, n, occ[1] if occ else None))
+            timed = ""
+            if timing:
+                t = (fit["elapsed_ms"], fit["elapsed_ms_min"], time_splprep(raw, s, fit["closed"]),
+                     time_occt(build, raw, occ[0], fit["closed"]) if occ else None)
+                times.append(t)
+                timed = f"   {t[1]:>13.3f}{t[2]:>8.3f}" + (f"{t[3]:>8.3f}" if t[3] is not None else f"{'-':>8}")
             print(f"{name:<22}{len(raw):>6}{fit['tolerance']:>7.3f}{dev:>9.3f}{ours:>6}{n:>9}"
-                  f"{(occ[1] if occ else '-'):>6}{fit['elapsed_ms']:>7.2f}  {'yes' if ok else 'no'}")
+                  f"{(occ[1] if occ else '-'):>6}{fit['elapsed_ms']:>7.2f}  {'yes' if ok else 'no '}{timed}")
         tot = [sum(c[i] for c in counts if c[2] is not None) for i in range(3)]
         print(f"-> no more control points than the fewer of the peers on {met} of {len(items)} strokes; "
-              f"totals where OCCT ran: ours {tot[0]}, splprep {tot[1]}, occt {tot[2]}\n")
+              f"totals where OCCT ran: ours {tot[0]}, splprep {tot[1]}, occt {tot[2]}" + ("" if timing else "\n"))
+        if timing:
+            def ratios(k):
+                r = sorted(t[k] / t[1] for t in times if t[k] is not None)
+                return f"{r[len(r) // 2]:.1f}x median ({r[0]:.1f}-{r[-1]:.1f}x)" if r else "-"
+            print(f"-> time at equal deviation, summed: ours {sum(t[1] for t in times):.2f} ms warm "
+                  f"({sum(t[0] for t in times):.2f} cold), splprep {sum(t[2] for t in times):.2f}, occt "
+                  f"{sum(t[3] for t in times if t[3] is not None):.2f}; slower than ours (warm): splprep "
+                  f"{ratios(2)}, occt {ratios(3)}\n")
         if tot[0] > tot[1] or (any(c[2] is not None for c in counts) and tot[0] > tot[2]):
             failures.append((minimize, "total", tot[0], tot[1], tot[2]))
     if check and failures:

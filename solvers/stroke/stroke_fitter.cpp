@@ -461,7 +461,8 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         std::map<int, FitPass> firstTrials;
         std::set<int> firstRefused;
         const auto repeats = [&](int count) {
-            const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
+            const size_t want =
+                std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
             return rowsPer > 0 && (samples.size() >= want || want < 2);
         };
         auto trialAt = [&](int count) {

@@ -115,6 +115,28 @@ TEST(StrokeCli, GivenResolution_WhenRecognized_ThenItsFitUsesIt)
     EXPECT_EQ(coarse["regularized"]["points"], json::parse(f.out)["curve"]["points"]);
 }
 
+// "repeat": n fits n times for timing (scripts/compare_splprep.py --time): the same result as one
+// fit, the first fit's time as elapsed_ms and the fastest as elapsed_ms_min, which is no more.
+TEST(StrokeCli, GivenRepeat_WhenFit_ThenTheSameCurveAndTheFastestTimeReported)
+{
+    const std::string stroke = strokeJson(spiralShape(100, 2.0));
+    const CliRun once = cli("fit", "{\"stroke\": " + stroke + "}");
+    const CliRun many = cli("fit", "{\"stroke\": " + stroke + ", \"repeat\": 5}");
+    ASSERT_EQ(once.status, 0) << once.err;
+    ASSERT_EQ(many.status, 0) << many.err;
+    const json a = json::parse(once.out), b = json::parse(many.out);
+    EXPECT_EQ(a["curve"], b["curve"]);
+    EXPECT_EQ(a["max_error"], b["max_error"]);
+    EXPECT_FALSE(a.contains("elapsed_ms_min"));
+    ASSERT_TRUE(b.contains("elapsed_ms_min"));
+    EXPECT_GT(b["elapsed_ms_min"].get<double>(), 0.0);
+    EXPECT_LE(b["elapsed_ms_min"].get<double>(), b["elapsed_ms"].get<double>());
+    expectInvalid("fit", "{\"stroke\": " + stroke + ", \"repeat\": 0}", "repeat");
+    expectInvalid("fit", "{\"stroke\": " + stroke + ", \"repeat\": 101}", "repeat");
+    expectInvalid("fit", "{\"stroke\": " + stroke + ", \"repeat\": 2.5}", "repeat");
+    expectInvalid("fit", "{\"stroke\": " + stroke + ", \"repeat\": \"many\"}", "repeat");
+}
+
 TEST(StrokeCli, GivenInvalidStrokes_ThenExit2NamingTheField)
 {
     expectInvalid("fit", "{\"stroke\": {\"points\": [[0, 0], [1, 1]]}, \"resolution\": -1}", "resolution");
