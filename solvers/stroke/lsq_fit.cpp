@@ -14,12 +14,13 @@ namespace {
 using namespace detail;
 
 // Parameters of all points: piecewise linear in chord length between the samples' parameters.
-std::vector<double> checkParameters(const SplineFitInput& in, const std::vector<int>& S,
-                                    const std::vector<double>& u)
+// (Into `out`, whose storage the fit's rounds reuse.)
+void checkParameters(const SplineFitInput& in, const std::vector<int>& S, const std::vector<double>& u,
+                     std::vector<double>& out)
 {
     const auto& X = *in.points;
     const int m = static_cast<int>(X.size());
-    std::vector<double> out(m);
+    out.resize(static_cast<size_t>(m));
     size_t k = 0;
     for (int i = 0; i < m; ++i) {
         while (k + 1 < S.size() && S[k + 1] <= i) ++k;
@@ -30,7 +31,6 @@ std::vector<double> checkParameters(const SplineFitInput& in, const std::vector<
         const double t = c1 > c0 ? ((*in.chord)[i] - c0) / (c1 - c0) : 0.0;
         out[i] = u0 + t * (u1 - u0);
     }
-    return out;
 }
 
 // Inserts one knot into every break interval whose samples deviate by more than the tolerance.
@@ -43,7 +43,11 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     // round's threshold is the tolerance plus a share of the worst excess over it.
     const double target = tol;
     const double threshold = tol + share * std::max(0.0, *std::max_element(err.begin(), err.end()) - tol);
-    std::vector<double> wsum(spans, 0.0), wmax(spans, 0.0);
+    // Scratch kept between calls (a fit inserts knots in several rounds, a search fits many times).
+    thread_local std::vector<double> wsum, wmax, acc, newKnots;
+    thread_local std::vector<int> pieces, placed;
+    wsum.assign(static_cast<size_t>(spans), 0.0);
+    wmax.assign(static_cast<size_t>(spans), 0.0);
     for (size_t k = 0; k < u.size(); ++k) {
         const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
         if (err[k] > threshold) wsum[j] += err[k];
@@ -53,14 +57,15 @@ int insertKnots(Spline& s, const std::vector<double>& u, const std::vector<doubl
     // h (de Boor, A Practical Guide to Splines, ch. XII), so a span deviating by E needs about
     // (E / tol)^(1/4) pieces; at most kMaxPieces per round, for the estimate is rough.
     constexpr int kMaxPieces = 4;
-    std::vector<int> pieces(spans, 0);
+    pieces.assign(static_cast<size_t>(spans), 0);
     for (int j = 0; j < spans; ++j) {
         // Clamped as a double: the ratio of a wild stroke's error to a tiny target overflows int.
         if (wmax[j] > threshold)
             pieces[j] = static_cast<int>(std::clamp(std::ceil(std::pow(wmax[j] / target, 0.25)), 2.0, double(kMaxPieces)));
     }
-    std::vector<double> acc(spans, 0.0), newKnots;
-    std::vector<int> placed(spans, 0);
+    acc.assign(static_cast<size_t>(spans), 0.0);
+    newKnots.clear();
+    placed.assign(static_cast<size_t>(spans), 0);
     for (size_t k = 0; k < u.size(); ++k) {
         const int j = std::min(s.spanOf(s.wrap(u[k])), spans - 1);
         if (pieces[j] == 0 || placed[j] + 1 >= pieces[j] || err[k] <= threshold) continue;
@@ -157,7 +162,7 @@ double measureAll(const Spline& s, const SplineFitInput& in, const std::vector<i
     const int m = static_cast<int>(X.size());
     PointCheck local;
     PointCheck& r = pc ? *pc : local;
-    r.cu = checkParameters(in, S, u);
+    checkParameters(in, S, u, r.cu);
     r.e.assign(m, 0.0);
     r.span.assign(m, 0);
     r.gap.assign(m, std::numeric_limits<double>::infinity());
@@ -492,6 +497,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     // the knots a round inserted are summed again, as long as the samples and their parameters
     // stay (adding samples, polishing or correcting parameters starts the sums afresh).
     std::vector<SpanSums> sums, nextSums;
+    std::vector<int> offender;  // per round: each span's worst point beyond the tolerance (storage reused)
+    std::vector<double> offErr, foot;
     std::vector<double> sumsBreaks;  // the breaks `sums` belong to; empty: none valid
     for (res.iterations = 1; res.iterations <= opt.maxIterations; ++res.iterations) {
         if (in.closed) {
@@ -519,11 +526,11 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         // All samples fit (or no more knots help): verify every point, and add the worst offender of
         // each span to the samples so that the next solve sees it.
-        checked.cu = checkParameters(in, S, u);
+        checkParameters(in, S, u, checked.cu);
         std::vector<double>& cu = checked.cu;
         const int spans = static_cast<int>(s.breaks.size());
-        std::vector<int> offender(spans, -1);
-        std::vector<double> offErr(spans, opt.tolerance);
+        offender.assign(static_cast<size_t>(spans), -1);
+        offErr.assign(static_cast<size_t>(spans), opt.tolerance);
         res.maxError = 0.0;
         std::vector<double>& pointErr = checked.e;
         std::vector<int>& pointSpan = checked.span;
@@ -569,7 +576,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         if (opt.polishParameters && !polished && !in.closed && res.maxError > opt.tolerance) {
             polished = true;  // SplineFitOptions::polishParameters: once, with the same knots
-            std::vector<double> foot(u.size());
+            foot.resize(u.size());
             bool increasing = true;
             for (size_t k = 0; k < S.size(); ++k) {
                 foot[k] = k == 0 || k + 1 == S.size() ? u[k] : cu[S[k]];
@@ -623,6 +630,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             std::vector<SpanSums> sums, trialSums;
             spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
             std::vector<double> tried;
+            Spline trial;  // (assigned per removal tried: its storage is reused)
             bool removed = true;
             while (removed) {
                 removed = false;
@@ -636,11 +644,11 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 for (const auto& entry : rank) {
                     const int r = entry.second;
                     tried.push_back(s.breaks[r]);
-                    Spline trial = s;
+                    trial = s;
                     sumsWithoutBreak(trial, r, X, S, u, sums, trialSums);
                     solveOpenFromSums(trial, X, S, trialSums, opt.fairing);
                     if (!checkTrial(s, pc, trial, r, in, opt.tolerance, trialCheck)) continue;
-                    s = std::move(trial);
+                    std::swap(s, trial);
                     std::swap(pc, trialCheck);
                     std::swap(sums, trialSums);
                     removed = removedAny = true;
@@ -656,8 +664,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         } else {
             const std::vector<double> tryRemove =
                 opt.removal == KnotRemoval::AllKnots ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end()) : lastInserted;
+            Spline trial;  // (assigned per knot tried: its storage is reused)
             for (double knot : tryRemove) {
-                Spline trial = s;
+                trial = s;
                 const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
                 if (it == trial.breaks.end()) continue;
                 trial.breaks.erase(it);
@@ -672,7 +681,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 if (!ok) continue;
                 const double e = measureAll(trial, in, S, u, opt.tolerance, opt.tolerance);
                 if (e <= opt.tolerance) {
-                    s = std::move(trial);
+                    std::swap(s, trial);
                     res.maxError = e;
                 }
             }

@@ -61,11 +61,14 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
         single.averagedResume = nullptr;
         o = &single;
     }
+    // (Sized for the whole chain up front, as fitConditioned's: grown piece by piece they were
+    // reallocated several times a fit.)
+    out.samples.reserve(c.samples.size() + pieces + 1);
+    std::vector<Vec3> pts;  // a piece's points (storage reused from piece to piece)
     for (size_t p = 0; p < pieces; ++p) {
         const int a = c.breaks[p], b = c.breaks[p + 1];
         // A piece that is the whole chain (no corner) is fitted in place, without a copy.
         const bool whole = a == 0 && b + 1 == static_cast<int>(c.points->size());
-        std::vector<Vec3> pts;
         if (!whole) pts.assign(c.points->begin() + a, c.points->begin() + b + 1);
         SplineFitInput in;
         in.points = whole ? c.points : &pts;
