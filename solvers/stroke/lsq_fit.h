@@ -52,8 +52,9 @@ struct SplineFitOptions {
     /// Once the samples fit but the check of every point fails (an open piece), the samples'
     /// parameters are moved once to their foot points (one Hoschek correction, on a curve that
     /// already has the shape, so the bunching above cannot happen) and the same knots are solved
-    /// again before a knot is added. On the benchmark strokes: arc 5 -> 4 and flourish-200
-    /// 22 -> 20 control points, the others unchanged (scripts/compare_splprep.py).
+    /// again, with the points the check found worst among the rows, before a knot is added. On the
+    /// benchmark strokes: arc 5 -> 4 and flourish-200 22 -> 20 control points, the others
+    /// unchanged (scripts/compare_splprep.py).
     bool polishParameters = true;
     /// Measure a sample's deviation at its Newton-improved foot point (closer to the true distance)
     /// rather than at its chord parameter; the parameter itself is kept.
