@@ -463,11 +463,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // against 1,283 and 559 raw-sample measures against 574, 331 against 340 M instructions.)
         std::map<int, FitPass> firstTrials;
         std::set<int> firstRefused;
-        const auto repeats = [&](int count) {
-            const size_t want =
-                std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
-            return rowsPer > 0 && (samples.size() >= want || want < 2);
+        // (Whether a count's trial on `per` rows per control point adds no rows to the samples.)
+        const auto addsNoRows = [&](int per, int count) {
+            const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(per) * static_cast<size_t>(count));
+            return samples.size() >= want || want < 2;
         };
+        const auto repeats = [&](int count) { return rowsPer > 0 && addsNoRows(rowsPer, count); };
         auto trialAt = [&](int count) {
             if (repeats(count)) {
                 const auto it = firstTrials.find(count);
@@ -477,7 +478,9 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 }
             }
             FitPass a = trial(count, samples);
-            if (rowsPer == 0) firstTrials.emplace(count, a);
+            // (Kept only where the second pass can ask again: a count whose dense rows add some is
+            // solved afresh there.)
+            if (rowsPer == 0 && addsNoRows(kDenseRowsPerPoint, count)) firstTrials.emplace(count, a);
             return a;
         };
         // A trial stops its corrections once its samples fit (averagedStopWhenWithin): the search
