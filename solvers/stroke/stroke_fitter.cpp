@@ -465,7 +465,8 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         std::set<int> firstRefused;
         // (Whether a count's trial on `per` rows per control point adds no rows to the samples.)
         const auto addsNoRows = [&](int per, int count) {
-            const size_t want = std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(per) * static_cast<size_t>(count));
+            const size_t want =
+                std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(per) * static_cast<size_t>(count));
             return samples.size() >= want || want < 2;
         };
         const auto repeats = [&](int count) { return rowsPer > 0 && addsNoRows(rowsPer, count); };
