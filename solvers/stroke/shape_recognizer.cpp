@@ -122,7 +122,7 @@ double localTurn(const std::vector<Point2>& pts, int k, int from, int to, double
 
 // Returns how many of the final vertices were inserted here (the corner detector did not find them).
 int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, double cornerLeg, double collinear,
-                   double shortEdgeLength, int sameCorner)
+                   double shortEdgeLength, int sameCorner, double straightLegs)
 {
     auto& idx = g.vertexIndex;
     const std::vector<int> detected = idx;
@@ -174,7 +174,27 @@ int refineVertices(StrokeGeometry& g, double insertAbove, double minCornerTurn, 
         // RecognizeOptions::cornerLeg).
         const double fromEnds = turnAt(g.points[from], g.points[at], g.points[to]);
         const double fromLegs = cornerLeg > 0.0 ? localTurn(g.points, at, from, to, cornerLeg, g.closed) : 0.0;
-        if (std::max(fromEnds, fromLegs) < minCornerTurn) {
+        // A loop read as three vertices may still have missed a corner that turns less: the obtuse
+        // corner of a hand's skewed or tapered rectangle turns 55-60 degrees seen from the two
+        // corners beside it, as much as a circle's arc seen from its inscribed triangle's vertices.
+        // It is taken as a corner where the edge is two straight sides meeting there: every sample
+        // of either half within straightLegs of the insertion distance of the half's chord (an arc
+        // of a third of a circle, halved, bows by 0.13 of the radius, 0.067 of the extent against
+        // 0.03), both halves longer than twice the shortest edge kept (not a hook beside a
+        // triangle's seam), and the turn at least 45 degrees (a circle seen from its inscribed
+        // square's vertices).
+        const auto straight = [&](int a, int b) {
+            for (int k = (a + 1) % n; k != b; k = (k + 1) % n)
+                if (segmentDistance(g.points[k], g.points[a], g.points[b]) > straightLegs * insertAbove) return false;
+            return true;
+        };
+        const auto twoSides = [&] {
+            const double shorter =
+                std::min((g.points[at] - g.points[from]).norm(), (g.points[to] - g.points[at]).norm());
+            return straightLegs > 0.0 && g.closed && idx.size() == 3u && std::max(fromEnds, fromLegs) >= kPi / 4 &&
+                   shorter >= 2.0 * shortEdgeLength && straight(from, at) && straight(at, to);
+        };
+        if (std::max(fromEnds, fromLegs) < minCornerTurn && !twoSides()) {
             curved.emplace_back(from, to);
             continue;
         }
@@ -515,8 +535,9 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     double roundedLoopResidual = std::numeric_limits<double>::infinity();
     const std::vector<int> detectedCorners = g.closed ? g.vertexIndex : std::vector<int>{};
     const int sameCorner = o.sampleSpacing > 0.0 ? 2 : 0;
-    const int inserted = refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
-                                        o.collinearAngle, o.shortEdge * g.extent, sameCorner);
+    const int inserted =
+        refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
+                       o.collinearAngle, o.shortEdge * g.extent, sameCorner, o.straightLegs);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon
         // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked

@@ -20,7 +20,7 @@
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
 // crossingTail, cornerLeg, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
-// looseQuad, roundedSides).
+// looseQuad, roundedSides, straightLegs).
 // Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
 // held-out ones are not for tuning.
@@ -132,6 +132,8 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
     else if (k == "nearLoopHeading") o.nearLoopHeading = v;
     else if (k == "nearLoopGap") o.nearLoopGap = v;
     else if (k == "looseQuad") o.looseQuad = v;
+    else if (k == "straightLegs")
+        o.straightLegs = v;
     else if (k == "roundedSides")
         o.roundedSides = v;
     else return false;
