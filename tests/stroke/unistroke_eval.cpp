@@ -14,6 +14,10 @@ namespace stroke = solvers::stroke;
 
 std::vector<std::string> devSubjects() { return {"s02", "s03", "s04", "s05", "s06"}; }
 std::vector<std::string> heldOutSubjects() { return {"s07", "s08", "s09", "s10", "s11"}; }
+std::vector<Recording> loadQuickDraw(const std::string& dir)
+{
+    return loadUnistrokes(dir, {"quickdraw"});
+}
 
 std::vector<Recording> loadUnistrokes(const std::string& dir, const std::vector<std::string>& subjects)
 {
@@ -71,6 +75,13 @@ const std::vector<ShapeKind>& acceptedKinds(const std::string& gesture)
         // A curly brace is two S-bends meeting at a point: curved, not straight segments.
         {"left_curly_brace", {ShapeKind::Freeform}},
         {"right_curly_brace", {ShapeKind::Freeform}},
+        // Quick, Draw! categories (tests/data/quickdraw; circle, triangle and star as above).
+        {"square", {ShapeKind::Rectangle, ShapeKind::Square}},  // the rectangle class, as the $1 rectangle
+        {"line", {ShapeKind::Line}},
+        {"zigzag", {ShapeKind::Polyline}},
+        // The recognizer has no class for more than four sides: a hexagon or octagon is a polygon.
+        {"hexagon", {ShapeKind::Polyline}},
+        {"octagon", {ShapeKind::Polyline}},
     };
     const auto it = table.find(gesture);
     if (it == table.end()) throw std::invalid_argument("unknown gesture " + gesture);

@@ -30,6 +30,10 @@ std::vector<Recording> loadUnistrokes(const std::string& dir, const std::vector<
 /// have no s01, so development is s02-s06.
 std::vector<std::string> devSubjects();
 std::vector<std::string> heldOutSubjects();
+/// The Quick, Draw! drawings made in one stroke (tests/data/quickdraw/README.md): circle, square,
+/// triangle, line, star, zigzag, hexagon, octagon; `subject` is "quickdraw", `speed` the player's
+/// country code. A second source of real strokes, from other people and devices, used only to test.
+std::vector<Recording> loadQuickDraw(const std::string& dir = SCULPTLINE_QUICKDRAW_DATA);
 
 /// The classes a designer reads each gesture as: triangle -> triangle; rectangle -> rectangle or
 /// square; circle -> circle or ellipse; straight-segment marks (check, caret, v, square brackets,

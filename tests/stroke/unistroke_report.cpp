@@ -1,7 +1,9 @@
 // unistroke-report: recognition accuracy on the $1 unistroke logs (tests/data/unistrokes), as
 // Markdown confusion matrices for the development subjects (s02-s06) and, with --held-out, for the
 // held-out subjects (s07-s11).
-//   unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value]...
+//   unistroke-report [--dev] [--held-out] [--quickdraw] [--data DIR] [--set option=value]...
+//                                              (--quickdraw: the Quick, Draw! drawings made in one
+//                                              stroke, tests/data/quickdraw; a test set only)
 //   unistroke-report --adapt dev|held-out      accuracy per person before/after learning corrections
 //   unistroke-report --dump-dev GESTURE        one line per development recording of GESTURE
 //   unistroke-report --loso OPTION V1,V2,..    leave-one-subject-out on s02-s06 for one option
@@ -104,7 +106,12 @@ void report(const char* title, const std::vector<st::Recording>& recs)
 {
     const st::Confusion c = st::evaluate(recs, gOptions);
     std::cout << "### " << title << "\n\n" << c.table() << "\nPer class: ";
-    for (auto k : {st::ShapeKind::Triangle, st::ShapeKind::Rectangle, st::ShapeKind::Circle, st::ShapeKind::Polyline, st::ShapeKind::Freeform}) {
+    for (auto k : {st::ShapeKind::Line, st::ShapeKind::Triangle, st::ShapeKind::Rectangle, st::ShapeKind::Circle,
+                   st::ShapeKind::Polyline, st::ShapeKind::Freeform}) {
+        // (Only the classes some gesture of the set maps to: the $1 logs have no line.)
+        bool present = false;
+        for (const auto& [gesture, row] : c.rows) present = present || st::acceptedKinds(gesture).front() == k;
+        if (!present) continue;
         std::cout << sculptline::solvers::stroke::shapeName(k) << ' ' << std::fixed << std::setprecision(1) << 100.0 * c.classAccuracy(k) << " %  ";
     }
     std::cout << "\n\n";
@@ -415,10 +422,12 @@ void perturbDev(const std::vector<st::Recording>& recs)
 int main(int argc, char** argv)
 {
     std::string dir = SCULPTLINE_UNISTROKE_DATA;
-    bool dev = false, held = false;
+    bool dev = false, held = false, quickdraw = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--dev")) dev = true;
         else if (!std::strcmp(argv[i], "--held-out")) held = true;
+        else if (!std::strcmp(argv[i], "--quickdraw"))
+            quickdraw = true;
         else if (!std::strcmp(argv[i], "--data") && i + 1 < argc) dir = argv[++i];
         else if (!std::strcmp(argv[i], "--set") && i + 1 < argc) {  // --set name=value (RecognizeOptions)
             const std::string kv = argv[++i];
@@ -494,14 +503,18 @@ int main(int argc, char** argv)
             dump(st::loadUnistrokes(dir, st::devSubjects()), argv[++i]);
             return 0;
         } else {
-            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--data DIR] [--set option=value].. | --adapt "
+            std::cerr << "usage: unistroke-report [--dev] [--held-out] [--quickdraw] [--data DIR] [--set "
+                         "option=value].. | --adapt "
                          "dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] "
                          "[--augment-rounded] [--augment-drawn] --loso OPTION V1,V2,..\n";
             return 2;
         }
     }
-    if (!dev && !held) dev = true;
+    if (!dev && !held && !quickdraw) dev = true;
     if (dev) report("Development subjects s02-s06 (slow, medium, fast)", st::loadUnistrokes(dir, st::devSubjects()));
     if (held) report("Held-out subjects s07-s11 (slow, medium, fast)", st::loadUnistrokes(dir, st::heldOutSubjects()));
+    if (quickdraw)
+        report("Quick, Draw! one-stroke drawings (tests/data/quickdraw; a test set, never tuned on)",
+               st::loadQuickDraw());
     return 0;
 }
