@@ -150,6 +150,18 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
     b.assign(static_cast<size_t>(nFree), Vec3::Zero());
     for (int i = 0; i < s.spanCount(); ++i) {
         const SpanSums& t = sums[i];
+        if (i > 0 && i + kDegree < nCtrl - 1) {
+            // An interior span: no fixed point among its control points i..i+3 (free unknowns
+            // i-1..i+2), so its sums go straight into the band, row by row (entry (row, row - d) at
+            // offset d of the row), in the same order as below.
+            for (int q = 0; q <= kDegree; ++q) {
+                const int row = i + q - 1;
+                b[row] += t.r[q];
+                double* band = &a.at(row, row);
+                for (int r = 0; r <= q; ++r) band[q - r] += t.g[q][r];
+            }
+            continue;
+        }
         for (int q = 0; q <= kDegree; ++q) {
             const int cq = i + q;  // control point of basis q on span i
             if (fixedPoint(cq)) continue;
