@@ -5,6 +5,7 @@ on the synthesized benchmark strokes and on real pen strokes (the $1 unistroke l
 subjects only).
 
     scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real] [--time]
+                               [--quickdraw N]
         BUILD_DIR defaults to build-stroke and needs stroke-export and sculptline-cli built there;
         the OCCT column needs occt-fit (built with the project, OpenCASCADE being required), else "-".
         --check: exit status 1 if, in a compared mode, any stroke (synthesized or real) needs more
@@ -12,6 +13,8 @@ subjects only).
         the total over all strokes exceeds either peer's total; ctest runs it so
         (tests/stroke/CMakeLists.txt). Before 2026-12-05 only synthesized strokes were held to
         splprep, the fewer of the peers on every stroke being not yet met in the default mode.
+        --quickdraw N: also the first N one-stroke circles of the Quick, Draw! test set
+        (tests/data/quickdraw), drawn with a mouse or a finger by other people.
         --time: also times each fit at the equal deviation found (warm: the fastest of TIME_REPEAT
         calls; ours cold too, the first call in a fresh sculptline-cli process, as `elapsed_ms`).
         splprep is timed around the scipy call (FITPACK plus scipy's Python wrapper), OCCT inside
@@ -196,6 +199,24 @@ def load_real():
     return out
 
 
+def load_quickdraw(count):
+    """The first `count` one-stroke Quick, Draw! circles (tests/data/quickdraw; a test set, never
+    tuned on), as load_real reads the unistroke logs."""
+    out = []
+    path = os.path.join(ROOT, "tests", "data", "quickdraw", "quickdraw.csv")
+    with open(path) as f:
+        for row in csv.reader(f):
+            if row[0] != "circle" or len(out) >= count:
+                continue
+            pts, times = [], []
+            for triple in row[3].split(";"):
+                x, y, t = (float(v) for v in triple.split())
+                pts.append([x, -y])
+                times.append(t / 1000.0)
+            out.append({"name": f"qd-circle-{row[2]}", "stroke": {"points": pts, "times": times}})
+    return out
+
+
 def main():
     warnings.simplefilter("ignore")  # FITPACK's iteration-limit warnings; the deviation is measured anyway
     argv = sys.argv[1:]
@@ -206,6 +227,11 @@ def main():
         argv.remove(mode)
     if mode not in ("default", "minimize", "both"):
         sys.exit("--mode: must be default, minimize or both")
+    quickdraw = 0
+    if "--quickdraw" in argv:
+        i = argv.index("--quickdraw")
+        quickdraw = int(argv[i + 1])
+        del argv[i:i + 2]
     args = [a for a in argv if not a.startswith("--")]
     build = args[0] if args else "build-stroke"
     check = "--check" in argv
@@ -216,6 +242,7 @@ def main():
     items += [(f"{name}@{tol:g}", by_name[name]["stroke"], tol) for name, tol in SWEEP if name in by_name]
     if "--no-real" not in argv:
         items += [(s["name"], s["stroke"], None) for s in load_real()]
+    items += [(s["name"], s["stroke"], None) for s in load_quickdraw(quickdraw)]
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
