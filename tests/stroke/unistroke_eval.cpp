@@ -374,6 +374,26 @@ stroke::Stroke perturbStroke(const stroke::Stroke& s, const Perturbation& p)
         }
         out.points = q;
     }
+    if (p.wobble > 0.0 && out.points.size() > 2) {  // along the normal of the chord of each sample's neighbours
+        const size_t m = out.points.size();
+        Eigen::Vector3d lo = out.points[0], hi = out.points[0];
+        for (const auto& q : out.points) {
+            lo = lo.cwiseMin(q);
+            hi = hi.cwiseMax(q);
+        }
+        const double extent = (hi - lo).head<2>().maxCoeff();
+        std::vector<double> u(m, 0.0);
+        for (size_t i = 1; i < m; ++i) u[i] = u[i - 1] + (out.points[i] - out.points[i - 1]).norm();
+        std::vector<Eigen::Vector3d> q = out.points;
+        for (size_t i = 0; i < m; ++i) {
+            const Eigen::Vector3d t = out.points[std::min(i + 1, m - 1)] - out.points[i > 0 ? i - 1 : 0];
+            if (t.head<2>().norm() <= 0.0 || u.back() <= 0.0) continue;
+            const Eigen::Vector3d normal(-t.y() / t.head<2>().norm(), t.x() / t.head<2>().norm(), 0.0);
+            q[i] +=
+                p.wobble * extent * std::sin(2.0 * 3.14159265358979323846 * p.wobbleWaves * u[i] / u.back()) * normal;
+        }
+        out.points = q;
+    }
     if (p.keepEvery > 1 && out.points.size() > 2) {
         stroke::Stroke kept;
         const size_t m = out.points.size();

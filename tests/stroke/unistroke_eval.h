@@ -129,6 +129,10 @@ struct Perturbation {
     /// so a rectangle's top edge is about 1 - taper/2 and its bottom edge 1 + taper/2 of its width (a
     /// trapezoid).
     double taper = 0;
+    /// Drawn with a wavering hand: each sample moved along the stroke's normal by `wobble` times the
+    /// extent (the larger side of its bounding box) times sin(2 pi wobbleWaves s / L), s its arc length.
+    double wobble = 0;
+    double wobbleWaves = 5;
 };
 solvers::stroke::Stroke perturbStroke(const solvers::stroke::Stroke& stroke, const Perturbation& p);
 

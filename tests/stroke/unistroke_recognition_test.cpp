@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <ostream>
 #include <string>
 
@@ -200,6 +202,29 @@ TEST(UnistrokeRecognition, GivenSkewedRectanglesWithAnObtuseCorner_WhenRecognize
         }
     }
     ASSERT_EQ(found, 4);
+}
+
+TEST(UnistrokeRecognition, GivenAStraightStroke_WhenWavering_ThenMovedAcrossItBySinesOfTheGivenAmplitude)
+{
+    // Arrange: 101 samples along x over 100 units (extent 100).
+    solvers::stroke::Stroke s;
+    for (int i = 0; i <= 100; ++i) {
+        s.points.emplace_back(double(i), 0.0, 0.0);
+        s.times.push_back(0.01 * i);
+    }
+    Perturbation p;
+    p.wobble = 0.02;
+    p.wobbleWaves = 5;
+    // Act
+    const auto w = perturbStroke(s, p);
+    // Assert: x unchanged, y = 2 sin(2 pi 5 x / 100) (the normal of a stroke along +x is +y).
+    ASSERT_EQ(w.points.size(), s.points.size());
+    constexpr double kTol = 1e-9;
+    for (size_t i = 0; i < w.points.size(); ++i) {
+        EXPECT_NEAR(w.points[i].x(), s.points[i].x(), kTol) << i;
+        EXPECT_NEAR(w.points[i].y(), 2.0 * std::sin(2.0 * M_PI * 5.0 * double(i) / 100.0), kTol) << i;
+    }
+    EXPECT_EQ(w.times, s.times);
 }
 
 TEST(UnistrokeRecognition, GivenDevelopmentPeople_WhenTheModelLearnsTheirFirstStrokes_ThenTheirAccuracyRises)

@@ -223,12 +223,12 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
         // DUMP_SPACING=f: the stroke resampled at f times its sample spacing (--invariance).
         const double spacing = std::getenv("DUMP_SPACING") ? std::atof(std::getenv("DUMP_SPACING")) : 1.0;
         // DUMP_PERTURB=rotateDeg,aspect,cutShare,overshootShare,timeScale,extendShare,roundShare,keepEvery,
-        // leadInShare,shear,taper (--perturb-dev).
+        // leadInShare,shear,taper,wobble,wobbleWaves (--perturb-dev).
         st::Perturbation pert;
         if (const char* e = std::getenv("DUMP_PERTURB")) {
-            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect, &pert.cutShare,
-                        &pert.overshootShare, &pert.timeScale, &pert.extendShare, &pert.roundShare, &pert.keepEvery,
-                        &pert.leadInShare, &pert.shear, &pert.taper);
+            std::sscanf(e, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%d,%lf,%lf,%lf,%lf,%lf", &pert.rotateDeg, &pert.aspect,
+                        &pert.cutShare, &pert.overshootShare, &pert.timeScale, &pert.extendShare, &pert.roundShare,
+                        &pert.keepEvery, &pert.leadInShare, &pert.shear, &pert.taper, &pert.wobble, &pert.wobbleWaves);
         }
         const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
         const sk::FitResult& fit = sr.fit;
@@ -392,6 +392,10 @@ void perturbDev(const std::vector<st::Recording>& recs)
         {"every 3rd sample", {0, 1, 0, 0, 1, 0, 0, 3}},
         {"times x0.5", {0, 1, 0, 0, 0.5}},
         {"times x2", {0, 1, 0, 0, 2}},
+        {"wavering 1 %, 5 waves", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0.01, 5}},
+        {"wavering 2 %, 5 waves", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0.02, 5}},
+        {"wavering 2 %, 9 waves", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0.02, 9}},
+        {"wavering 3 %, 3 waves", {0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 0, 0.03, 3}},
     };
     for (const auto& [name, p] : sloppyWays()) rows.push_back({name, p});
     const std::vector<std::string> shown = {"rectangle", "delete_mark", "triangle", "circle", "x", "check", "arrow"};
