@@ -22,7 +22,7 @@ subjects only).
 
 Which fit is compared. sculptline-cli fit has two knot-removal modes (SplineFitOptions::removal):
   default   what `fit`, `recognize` and the GUI use.
-  minimize  `"minimize_control_points": true` (KnotRemoval::AllKnots).
+  minimize  `"minimize_control_points": true` (FitOptions::countUp: the search counts up from the least count).
 
 How. For each stroke: `sculptline-cli fit` (its default tolerance, or the tolerance in the stroke's
 name, "s-curve-clean@0.25") gives a curve and the raw samples it dropped (hooks, a loop's
@@ -246,7 +246,7 @@ def main():
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
-        label = "minimize_control_points = true (KnotRemoval::AllKnots)" if minimize else \
+        label = "minimize_control_points = true (FitOptions::countUp)" if minimize else \
             "default (what fit/recognize/GUI use)"
         print(f"sculptline-cli fit, {label}")
         print(f"{'stroke':<22}{'kept':>6}{'tol':>7}{'max dev':>9}{'ours':>6}{'splprep':>9}{'occt':>6}{'ms':>7}"

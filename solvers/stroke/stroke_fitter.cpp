@@ -369,12 +369,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // and to loops with one. By default it runs without the error-driven fit (which it replaced as
     // the first step: a quarter to a third of the time went into a fit that served only as the
     // search's ceiling); the error-driven fit runs only when the search finds nothing. The
-    // fewest-points mode (KnotRemoval::AllKnots) counts up below the error-driven count instead.
+    // fewest-points mode (FitOptions::countUp) counts up below the error-driven count instead.
     // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
     // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
     const bool periodic = cs.closed && corners.empty();
     const bool search = (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
-    const bool scan = options.spline.removal == KnotRemoval::AllKnots;
+    const bool scan = options.countUp;
     // The noise's outliers (noiseOutliers) of the fit taken. Where the noise can reach beyond the
     // tolerance, every measure projects the samples beyond it exactly (exactAbove); elsewhere the
     // measures are as before.

@@ -51,6 +51,11 @@ struct FitOptions {
     /// raw sample stays within the tolerance. Smooth loops search with periodic averaged knots;
     /// strokes with corners keep the error-driven fit.
     bool fewerControlPoints = true;
+    /// The search counts up from the least count a curve can have (below the error-driven count)
+    /// instead of predicting the count from the error (stroke_fitter.cpp): the fewest control
+    /// points the averaged knots allow, for up to 3x the time on long strokes
+    /// (`"minimize_control_points": true`; BM_StrokeFitFewest).
+    bool countUp = false;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;

@@ -396,7 +396,7 @@ TEST(FitTolerance, GivenLoops_WhenFitted_ThenFewerControlPointsThanTheErrorDrive
     }
 }
 
-// Sparse loops (4-40 samples, noise 0, 0.5, 3), both knot-removal modes: the loops' search never
+// Sparse loops (4-40 samples, noise 0, 0.5, 3), both knot-removal modes and both searches: the loops' search never
 // turns a stroke the error-driven fit takes into an error, and converges wherever that fit does.
 // (Teardrops of 16-24 samples failed: a trial's clamped piece kept too few distinct points for a
 // closed cubic, and the curve's constructor threw out of fitStroke.)
@@ -408,12 +408,16 @@ TEST(FitTolerance, GivenSparseLoops_WhenFitted_ThenTheSearchFailsNoStrokeTheErro
     for (const auto& [name, shape] : loops) {
         for (int n = 4; n <= 40; ++n) {
             for (double noise : {0.0, 0.5, 3.0}) {
-                for (const KnotRemoval removal : {KnotRemoval::LastRound, KnotRemoval::AllKnots}) {
+                // (Both removal modes with the predicted search, and the count-up search.)
+                for (const auto& [removal, countUp] :
+                     {std::pair{KnotRemoval::LastRound, false}, std::pair{KnotRemoval::AllKnots, false},
+                      std::pair{KnotRemoval::AllKnots, true}}) {
                     DrawOptions d;
                     d.noise = noise;
                     const Stroke s = drawWithSamples(shape, n, d);
                     FitOptions o;
                     o.spline.removal = removal;
+                    o.countUp = countUp;
                     FitOptions errorDriven = o;
                     errorDriven.fewerControlPoints = false;
                     FitResult e;

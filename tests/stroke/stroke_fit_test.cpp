@@ -145,15 +145,22 @@ TEST(StrokeFit, GivenAllKnotsRemovalPass_WhenFitted_ThenNoMoreControlPointsAndSt
         DrawOptions d;
         d.noise = kNoiseSigma;
         const Stroke s = draw(shape, d);
-        FitOptions fewest;
-        fewest.spline.removal = KnotRemoval::AllKnots;
+        // Every knot tried (the default since session 40) against the last round's only; and the
+        // count-up search (FitOptions::countUp) within tolerance too.
+        FitOptions lastRound;
+        lastRound.spline.removal = KnotRemoval::LastRound;
+        FitOptions countUp;
+        countUp.countUp = true;
 
-        const FitResult a = fitStroke(s);
-        const FitResult b = fitStroke(s, fewest);
+        const FitResult a = fitStroke(s, lastRound);
+        const FitResult b = fitStroke(s);
+        const FitResult c = fitStroke(s, countUp);
 
         EXPECT_LE(b.curve.pointCount(), a.curve.pointCount()) << name;
-        EXPECT_TRUE(b.converged) << name;
-        EXPECT_LE(maxDeviation(b.curve, b.conditioned.points), b.tolerance * (1 + 1e-9)) << name;
+        for (const FitResult* r : {&b, &c}) {
+            EXPECT_TRUE(r->converged) << name;
+            EXPECT_LE(maxDeviation(r->curve, r->conditioned.points), r->tolerance * (1 + 1e-9)) << name;
+        }
     }
 }
 
