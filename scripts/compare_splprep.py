@@ -177,6 +177,17 @@ def tune_occt(build, raw, target, closed):
     return best
 
 
+def parse_samples(samples):
+    """A recording's "x y t;..." field (tests/data/unistrokes, tests/data/quickdraw) as a stroke:
+    y up, as tests/stroke/unistroke_eval.cpp reads them; t from ms to s."""
+    pts, times = [], []
+    for triple in samples.split(";"):
+        x, y, t = (float(v) for v in triple.split())
+        pts.append([x, -y])
+        times.append(t / 1000.0)
+    return {"points": pts, "times": times}
+
+
 def load_real():
     """The REAL_PICKS drawings of REAL_GESTURES from the unistroke CSVs (x y t; t in ms)."""
     out = []
@@ -189,13 +200,7 @@ def load_real():
             for row in csv.reader(f):
                 gesture, sp, num, samples = row[0], row[1], int(row[2]), row[3]
                 if gesture in REAL_GESTURES and sp == speed and num == number:
-                    pts, times = [], []
-                    for triple in samples.split(";"):
-                        x, y, t = (float(v) for v in triple.split())
-                        pts.append([x, -y])  # y up, as tests/stroke/unistroke_eval.cpp reads them
-                        times.append(t / 1000.0)
-                    out.append({"name": f"{gesture[:12]}-{subject}{sp[0]}{number}",
-                                "stroke": {"points": pts, "times": times}})
+                    out.append({"name": f"{gesture[:12]}-{subject}{sp[0]}{number}", "stroke": parse_samples(samples)})
     return out
 
 
@@ -208,12 +213,7 @@ def load_quickdraw(count):
         for row in csv.reader(f):
             if row[0] != "circle" or len(out) >= count:
                 continue
-            pts, times = [], []
-            for triple in row[3].split(";"):
-                x, y, t = (float(v) for v in triple.split())
-                pts.append([x, -y])
-                times.append(t / 1000.0)
-            out.append({"name": f"qd-circle-{row[2]}", "stroke": {"points": pts, "times": times}})
+            out.append({"name": f"qd-circle-{row[2]}", "stroke": parse_samples(row[3])})
     return out
 
 

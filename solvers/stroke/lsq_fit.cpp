@@ -625,8 +625,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
     // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal),
     // keeping a removal when the refit stays within tolerance at every point and chord. Open
     // curves rank the breaks by their knot-removal distance and check a trial from the bounds of
-    // the last accepted spline (checkTrial); closed curves try the last round's knots, each
-    // measured in full.
+    // the last accepted spline (checkTrial); closed curves try each break (AllKnots) or the last
+    // round's knots (LastRound), each measured in full.
     if (opt.removal != KnotRemoval::None && res.maxError <= opt.tolerance) {
         if (!in.closed && opt.removal != KnotRemoval::LastRound) {
             PointCheck pc = std::move(checked), trialCheck;

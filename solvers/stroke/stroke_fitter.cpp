@@ -672,16 +672,10 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         }
     }
     if (!found && !(search && scan)) {
-        // Where the search ran on an open stroke and found nothing, the error-driven fit tries
-        // every knot for removal (KnotRemoval::AllKnots; spiral 19 -> 18), not only its last round's. (It was a
-        // second error-driven fit with AllKnots after the first: the same control points on every
-        // stroke measured, scripts/compare_splprep.py, the benchmarks' strokes and 16 jittery
-        // flourishes, whose fits it made 6 % faster.) Loops keep the last round's knots (lsq_fit
-        // tries those only on closed curves).
-        const KnotRemoval removal = sopt.removal;
-        if (search && !cs.closed && sopt.removal == KnotRemoval::LastRound) sopt.removal = KnotRemoval::AllKnots;
+        // Where the search found nothing, the error-driven fit (its knots then removed as
+        // SplineFitOptions::removal says: every knot by default since session 40; before, an open
+        // stroke's fit here was switched to every knot alone, spiral 19 -> 18).
         refine(kMaxRefinements);
-        sopt.removal = removal;
     }
     if (!res.converged) {
         // Below the noise (a tolerance of a twentieth of a pixel on integer pixel samples) the
