@@ -77,9 +77,22 @@ def bspline_dense(degree, knots, points):
     return BSpline(t, c, degree)(u)
 
 
+def splprep_points(raw, closed):
+    """The points splprep is given, as a fresh array. With per=1 FITPACK treats the last point as
+    the first one's periodic repeat: it ignores it, and scipy overwrites it with the first point in
+    place (through the transposed view, so the caller's samples changed too). A loop is therefore
+    passed with its first point repeated, unless the stroke already ends on it, so that every kept
+    sample enters the fit and the deviation is measured on the samples as drawn. (Before
+    2026-12-06 the last kept sample of a loop was replaced so: neither peer was given it, nor was
+    either measured on it.) Repeated consecutive samples (the pen resting) are passed once: they
+    give FITPACK equal parameters, which its periodic fit refuses ("Invalid inputs")."""
+    pts = np.vstack([raw, raw[:1]]) if closed and not np.allclose(raw[0], raw[-1]) else np.array(raw, copy=True)
+    moved = np.concatenate([[True], np.any(np.diff(pts, axis=0) != 0.0, axis=1)])
+    return pts[moved]
+
+
 def splprep_fit(raw, s, closed):
-    pts = raw[:-1] if closed and np.allclose(raw[0], raw[-1]) else raw
-    tck, _ = splprep(pts.T, s=s, k=3, per=1 if closed else 0, quiet=2)
+    tck, _ = splprep(splprep_points(raw, closed).T, s=s, k=3, per=1 if closed else 0, quiet=2)
     u = np.linspace(0, 1, DENSE)
     dense = np.array(splev(u, tck)).T
     ncoef = len(tck[0]) - 3 - 1
@@ -136,7 +149,7 @@ def occt_points(raw, closed):
 
 def time_splprep(raw, s, closed):
     """The fastest of TIME_REPEAT splprep calls at smoothing factor s, in ms."""
-    pts = (raw[:-1] if closed and np.allclose(raw[0], raw[-1]) else raw).T
+    pts = splprep_points(raw, closed).T
     best = float("inf")
     for _ in range(TIME_REPEAT):
         start = time.perf_counter()
@@ -269,8 +282,11 @@ def main():
             ours = len(curve["points"]) - (3 if fit["closed"] else 0)
             dense = bspline_dense(curve["degree"], curve["knots"], curve["points"])[:, :raw.shape[1]]
             dev = deviation(dense, raw)
+            drawn = raw.copy()
             s, n, sdev = tune_splprep(raw, dev, fit["closed"])
             occ = tune_occt(build, raw, dev, fit["closed"])
+            # The peers are measured on the samples as drawn (splprep_points).
+            assert np.array_equal(raw, drawn), f"{name}: a peer's fit changed the samples"
             peers = [n] + ([occ[1]] if occ else [])
             ok = ours <= min(peers)
             met += ok
