@@ -288,6 +288,62 @@ std::vector<Point2> edgeLineVertices(const StrokeGeometry& g, double trim, doubl
     return v;
 }
 
+// A loop's vertices moved to where its sides meet: each vertex goes to the sample nearest the
+// intersection of the lines fitted to its two edges (edgeLineVertices), searched between its
+// neighbours, and the lines are fitted again on the new edges, for at most `rounds` rounds or until
+// no vertex moves. refineVertices places a vertex at the sample farthest from the chord between two
+// others; on a corner the hand rounded off, that is where the arc's tangent is parallel to the
+// chord, which lies toward the longer side when the chord is a rectangle's diagonal. The edge on
+// either side then takes in part of the arc, its fitted line tilts, and the polygon comes out
+// skewed (a rounded rectangle whose end ran on past its start read as an ellipse). Fitting the
+// sides and splitting the samples between them in turn is the usual alternation of piecewise line
+// fitting. A vertex whose lines are nearly parallel or meet farther than `maxShift` stays, and so
+// does one within `sameCorner` samples of a corner the detector found (`detected`): the pen turned
+// sharply there, and the polygon's tests count it as detected.
+void relocateVertices(StrokeGeometry& g, int rounds, double trim, double minAngle, double maxShift,
+                      const std::vector<int>& detected, int sameCorner)
+{
+    auto& idx = g.vertexIndex;
+    const int n = static_cast<int>(g.points.size());
+    const size_t m = idx.size();
+    if (!g.closed || m < 3u || m > 4u || rounds <= 0) return;
+    for (int round = 0; round < rounds; ++round) {
+        const std::vector<Point2> meet = edgeLineVertices(g, trim, minAngle, maxShift);
+        bool moved = false;
+        for (size_t i = 0; i < m; ++i) {
+            if (meet[i] == g.vertices[i]) continue;  // (kept at its sample)
+            bool atCorner = false;
+            for (int d : detected) {
+                const int gap = std::abs(idx[i] - d);
+                atCorner = atCorner || std::min(gap, n - gap) <= sameCorner;
+            }
+            if (atCorner) continue;
+            const int lo = idx[(i + m - 1) % m], hi = idx[(i + 1) % m];
+            int best = idx[i];
+            for (int k = (lo + 1) % n; k != hi; k = (k + 1) % n)
+                if ((g.points[k] - meet[i]).squaredNorm() < (g.points[best] - meet[i]).squaredNorm()) best = k;
+            if (best != idx[i]) {
+                idx[i] = best;
+                g.vertices[i] = g.points[best];
+                moved = true;
+            }
+        }
+        if (!moved) break;
+    }
+    // (A vertex moved across the seam keeps its place in the cycle; the indices are kept ascending.)
+    std::vector<size_t> order(m);
+    for (size_t i = 0; i < m; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return idx[a] < idx[b]; });
+    std::vector<int> sortedIdx;
+    std::vector<Point2> sortedVertices;
+    for (size_t i : order) {
+        sortedIdx.push_back(idx[i]);
+        sortedVertices.push_back(g.vertices[i]);
+    }
+    idx = std::move(sortedIdx);
+    g.vertices = std::move(sortedVertices);
+}
+
 double score(double residual, double scale) { return std::exp(-(residual / scale) * (residual / scale)); }
 
 // strokeExtent of the stroke as a curve rather than as samples: twice the largest distance of a
@@ -538,6 +594,8 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     const int inserted =
         refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
                        o.collinearAngle, o.shortEdge * g.extent, sameCorner, o.straightLegs);
+    relocateVertices(rec.geometry, o.relocateRounds, o.edgeTrim, o.collinearAngle, o.relocateShift * g.extent,
+                     detectedCorners, sameCorner);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon
         // whose sides are lines fitted to the edges (edgeLineVertices: rounded, overshot or hooked

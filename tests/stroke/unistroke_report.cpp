@@ -143,6 +143,10 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
         o.straightLegs = v;
     else if (k == "roundedSides")
         o.roundedSides = v;
+    else if (k == "relocateRounds")
+        o.relocateRounds = static_cast<int>(v);
+    else if (k == "relocateShift")
+        o.relocateShift = v;
     else return false;
     return true;
 }
@@ -263,6 +267,11 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
                 const auto q = (v - rec.geometry.points.front()) / rec.geometry.extent;
                 std::cout << " (" << std::setprecision(2) << q.x() << ',' << q.y() << ')';
             }
+        }
+        if (std::getenv("DUMP_VERTICES")) {  // and the samples the polygon's vertices were found at, of how many
+            std::cout << "  I:";
+            for (int k : rec.geometry.vertexIndex) std::cout << ' ' << k;
+            std::cout << " of " << rec.geometry.points.size();
         }
         if (std::getenv("DUMP_POINTS")) {  // the recognizer's (resampled) points, plane coordinates
             std::cout << "  P:";
