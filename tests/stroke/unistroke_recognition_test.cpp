@@ -18,13 +18,14 @@ namespace {
 
 // Floors a little under the accuracies measured when the recognizer was tuned (README, "Recognition
 // on real pen strokes"): development s02-s06 98.2 % overall, every gesture >= 90.7 %; held-out
-// s07-s11 95.4 % overall (2,290 of 2,400 since session 38; 2,283 since a closing that explains
-// nothing is undone: recognizeStroke). They guard against regressions. The held-out floor is the
-// goal itself (95 %, 2,280 strokes); its other half, every gesture >= 90 %, is not met yet
-// (rectangles 89.3 %).
+// s07-s11 95.6 % overall (2,295 of 2,400 since session 41's relocated vertices; 2,290 since session
+// 38). They guard against regressions. The held-out floors are the goal itself: 95 % overall (2,280
+// strokes) and every gesture at least 90 %, met since session 41 (the lowest: checks 90.7 %,
+// delete marks 91.3 %, rectangles 91.3 %).
 constexpr double kDevOverall = 0.97;
 constexpr double kDevPerGesture = 0.90;
 constexpr double kHeldOutOverall = 0.95;
+constexpr double kHeldOutPerGesture = 0.90;
 // Held-out, learning from each person's first three repetitions (unistroke-report --adapt held-out,
 // the strokes after them): 89.9 % -> 94.0 % measured at first, 94.5 % -> 98.5 % now that
 // confirmations are learned too (96.5 % before). What the person sees is the accuracy after
@@ -66,12 +67,13 @@ TEST(UnistrokeRecognition, GivenDevelopmentSubjects_WhenRecognized_ThenOverallAn
     for (const auto& [gesture, row] : c.rows) EXPECT_GE(c.accuracy(gesture), kDevPerGesture) << gesture;
 }
 
-TEST(UnistrokeRecognition, GivenHeldOutSubjects_WhenRecognized_ThenOverallAboveFloor)
+TEST(UnistrokeRecognition, GivenHeldOutSubjects_WhenRecognized_ThenOverallAndEveryGestureAboveFloor)
 {
     const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, heldOutSubjects());
     ASSERT_EQ(recs.size(), 2400u);
     const Confusion c = evaluate(recs);
     EXPECT_GE(c.accuracy(), kHeldOutOverall) << c.table();
+    for (const auto& [gesture, row] : c.rows) EXPECT_GE(c.accuracy(gesture), kHeldOutPerGesture) << gesture;
     // Every stroke was fitted: none in the failure column.
     for (const auto& [gesture, row] : c.rows) EXPECT_EQ(row[kFailed], 0) << gesture;
 }
