@@ -273,6 +273,13 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
             for (int k : rec.geometry.vertexIndex) std::cout << ' ' << k;
             std::cout << " of " << rec.geometry.points.size();
         }
+        if (std::getenv("DUMP_RAW")) {  // the stroke given to the recognizer (perturbed): x,y,t (y up, s)
+            const auto given = st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert);
+            std::cout << "  R:";
+            for (size_t k = 0; k < given.points.size(); ++k)
+                std::cout << std::setprecision(6) << ' ' << given.points[k].x() << ',' << given.points[k].y() << ','
+                          << (k < given.times.size() ? given.times[k] : 0.0);
+        }
         if (std::getenv("DUMP_POINTS")) {  // the recognizer's (resampled) points, plane coordinates
             std::cout << "  P:";
             for (const auto& p : rec.geometry.points) std::cout << std::setprecision(6) << ' ' << p.x() << ',' << p.y();
