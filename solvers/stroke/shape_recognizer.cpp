@@ -594,7 +594,7 @@ Recognition recognizeShape(const FitResult& fit, const RecognizeOptions& o)
     const int inserted =
         refineVertices(rec.geometry, o.vertexInsertion * sigma, o.minCornerTurn, o.cornerLeg * g.extent,
                        o.collinearAngle, o.shortEdge * g.extent, sameCorner, o.straightLegs);
-    relocateVertices(rec.geometry, o.relocateRounds, o.edgeTrim, o.collinearAngle, o.relocateShift * g.extent,
+    relocateVertices(rec.geometry, o.relocateRounds, o.relocateTrim, o.collinearAngle, o.relocateShift * g.extent,
                      detectedCorners, sameCorner);
     if (g.vertices.size() >= 3u) {
         // The better of the polygon through the samples where the stroke turned and the polygon

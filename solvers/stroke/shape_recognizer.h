@@ -100,22 +100,27 @@ struct RecognizeOptions {
     /// against 96.9 % at the former 0.2.
     double edgeTrim = 0.05;
     /// A loop's guessed vertices (not at a detected corner) on a triangle or quadrilateral are
-    /// moved to the samples nearest where its fitted sides meet, for up to this many rounds
-    /// (relocateVertices), where the sides meet within relocateShift of the extent from the
-    /// vertex; 0 leaves them where refineVertices put them. A vertex placed on a rounded corner as
-    /// the farthest sample from a diagonal lies toward the longer side, and the polygon came out
-    /// skewed: development rectangles with corners rounded over 12 % of the length and drawn on
-    /// 10 % past the start were read as ellipses 54 times in 150 (`unistroke-report --dump-dev
-    /// rectangle` with DUMP_PERTURB=0,1,0,0.1,1,0,0.12), 19 with one round. Chosen by
-    /// leave-one-subject-out on the development subjects and their perturbed copies
-    /// (unistroke-report --augment --augment-rounded --augment-drawn --augment-sloppy):
-    /// `--set relocateShift=0.25 --loso relocateRounds 0,1,2,3,5` chose 1 on all five folds,
-    /// pooled 40,377 of 43,200 against 40,345 without the rule; `--set relocateRounds=1 --loso
-    /// relocateShift 0.08,0.15,0.25,0.4` chose 0.25 on four folds and 0.15 on the fifth, pooled
-    /// 40,375 against 40,377 at 0.25. More rounds take the vertices further toward the corners
-    /// (the test's s02 slow 3 reaches them in three) but were not chosen.
-    int relocateRounds = 1;
+    /// moved to the samples nearest where its sides meet, the sides being lines fitted to the
+    /// middle of each edge (relocateTrim of its samples left out at either end), for up to
+    /// relocateRounds rounds (relocateVertices), where the sides meet within relocateShift of the
+    /// extent from the vertex; 0 rounds leave them where refineVertices put them. A vertex placed
+    /// on a rounded corner as the farthest sample from a diagonal lies toward the longer side, and
+    /// the polygon came out skewed: development rectangles with corners rounded over 12 % of the
+    /// length and drawn on 10 % past the start were read as ellipses 54 times in 150
+    /// (`unistroke-report --dump-dev rectangle` with DUMP_PERTURB=0,1,0,0.1,1,0,0.12), 9 with the
+    /// rule. Chosen by leave-one-subject-out on the development subjects and their perturbed copies
+    /// (unistroke-report --augment --augment-rounded --augment-drawn --augment-sloppy --loso),
+    /// pooled of 43,200, 40,345 without the rule:
+    /// - first with the polygon's edgeTrim (0.05): relocateRounds 0,1,2,3,5 chose 1 on all five
+    ///   folds (40,377), relocateShift 0.08,0.15,0.25,0.4 0.25 on four (40,377);
+    /// - then relocateTrim 0.05,0.1,0.15,0.2,0.25,0.35 chose 0.35 on all five (40,386), and
+    ///   0.25,...,0.45 0.35 on four and 0.4 on one;
+    /// - with it relocateRounds 0,1,2,3 chose 3 on four folds (40,389), and with 3 rounds
+    ///   relocateTrim 0.05,0.25,0.3,0.35,0.4 0.35 on four (40,391) and relocateShift 0.15,0.25,0.4
+    ///   0.25 on four (40,393 at these defaults).
+    int relocateRounds = 3;
     double relocateShift = 0.25;
+    double relocateTrim = 0.35;
     /// A rectangle or square also scores by how closely the stroke follows it with its corners
     /// rounded, by a radius of up to this share of its shorter half-side (the best of 0, 0.05, ...):
     /// a hand drawing fast rounds the corners off, and the straight sides are what makes it a

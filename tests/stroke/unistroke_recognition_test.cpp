@@ -211,9 +211,9 @@ TEST(UnistrokeRecognition, GivenSkewedRectanglesWithAnObtuseCorner_WhenRecognize
 // vertices refineVertices places on a rounded corner lie toward the longer side (the farthest
 // samples from a diagonal), the sides fitted between them tilt, and without relocateVertices 54 of
 // the 150 were read as ellipses (unistroke-report --dump-dev rectangle with
-// DUMP_PERTURB=0,1,0,0.1,1,0,0.12); with it (one round, the default) 19. The bounds sit between
-// the two. On one of them, s02 slow 3, the vertices reach the corners in three rounds: it is
-// checked with five, against none.
+// DUMP_PERTURB=0,1,0,0.1,1,0,0.12); with it 9 (one round with the polygon's edgeTrim: 19). The
+// bounds sit between the two. On one of them, s02 slow 3, the vertices are checked after five
+// rounds, against none.
 TEST(UnistrokeRecognition, GivenRoundedRectanglesDrawnPastTheStart_WhenRecognized_ThenVerticesWhereTheSidesMeet)
 {
     // Arrange

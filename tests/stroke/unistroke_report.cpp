@@ -147,6 +147,8 @@ bool setOption(sculptline::solvers::stroke::RecognizeOptions& o, const std::stri
         o.relocateRounds = static_cast<int>(v);
     else if (k == "relocateShift")
         o.relocateShift = v;
+    else if (k == "relocateTrim")
+        o.relocateTrim = v;
     else return false;
     return true;
 }
