@@ -22,7 +22,7 @@
 // --set changes a RecognizeOptions field (residualScale, freeformScore, vertexInsertion,
 // collinearAngle, shortEdge, minCornerTurn, guessedVertex, maxOvershoot, minLoopTurn, habitDistance,
 // crossingTail, cornerLeg, nearLoopTurn, nearLoopHeading, nearLoopGap, cornerRounding, edgeTrim, sampleSpacing,
-// looseQuad, roundedSides, straightLegs).
+// looseQuad, roundedSides, straightLegs, relocateRounds, relocateShift, relocateTrim).
 // Options are read left to right: put --set before the mode (--perturb-dev, --loso, ...).
 // The dump, feature, perturbation and leave-one-out modes read the development subjects only: the
 // held-out ones are not for tuning.
@@ -236,7 +236,8 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
                         &pert.cutShare, &pert.overshootShare, &pert.timeScale, &pert.extendShare, &pert.roundShare,
                         &pert.keepEvery, &pert.leadInShare, &pert.shear, &pert.taper, &pert.wobble, &pert.wobbleWaves);
         }
-        const sk::StrokeRecognition sr = sk::recognizeStroke(st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert), {}, o);
+        const sk::Stroke given = st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert);
+        const sk::StrokeRecognition sr = sk::recognizeStroke(given, {}, o);
         const sk::FitResult& fit = sr.fit;
         const sk::Recognition& rec = sr.recognition;
         std::cout << r.subject << ' ' << r.speed << ' ' << r.number << " n=" << r.stroke.points.size() << " cond=" << fit.conditioned.size()
@@ -276,7 +277,6 @@ void dump(const std::vector<st::Recording>& recs, const std::string& gesture)
             std::cout << " of " << rec.geometry.points.size();
         }
         if (std::getenv("DUMP_RAW")) {  // the stroke given to the recognizer (perturbed): x,y,t (y up, s)
-            const auto given = st::perturbStroke(st::transformStroke(r.stroke, 1.0, spacing), pert);
             std::cout << "  R:";
             for (size_t k = 0; k < given.points.size(); ++k)
                 std::cout << std::setprecision(6) << ' ' << given.points[k].x() << ',' << given.points[k].y() << ','
