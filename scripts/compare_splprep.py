@@ -20,7 +20,8 @@ subjects only).
         splprep is timed around the scipy call (FITPACK plus scipy's Python wrapper), OCCT inside
         occt-fit around GeomAPI_PointsToBSpline, ours inside sculptline-cli around fitStroke.
 
-Which fit is compared. sculptline-cli fit has two knot-removal modes (SplineFitOptions::removal):
+Which fit is compared. sculptline-cli fit has two search modes (FitOptions::countUp; every knot is
+tried for removal in both, SplineFitOptions::removal):
   default   what `fit`, `recognize` and the GUI use.
   minimize  `"minimize_control_points": true` (FitOptions::countUp: the search counts up from the least count).
 
