@@ -14,6 +14,9 @@
 //   unistroke-report --augment-sloppy --loso ...  ... and copies rounded (8 %) and sheared (0.3),
 //                                              tapered (0.4), overshot (10 %) or left open (6 %), and
 //                                              rounded 16 %: a fast, careless hand
+//   unistroke-report --fit-dev                 the fit alone on the development strokes: control
+//                                              points, loops and time per gesture (FIT_NAMES=1: and
+//                                              one line per stroke)
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -31,9 +34,10 @@
 #include "solvers/stroke/stroke_fitter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <iomanip>
 #include <iostream>
@@ -367,6 +371,59 @@ void features(const std::vector<st::Recording>& recs)
     }
 }
 
+// The fit alone (fitStroke, default options, as recognizeStroke runs it) on every development
+// stroke: control points, loops and the time per gesture, for measuring a fitting change on strokes
+// people drew (the held-out subjects and Quick, Draw! are not for tuning). With `names`, one line
+// per stroke too.
+void fitDev(const std::vector<st::Recording>& recs, bool names)
+{
+    namespace sk = sculptline::solvers::stroke;
+    struct Sum {
+        int strokes = 0, points = 0, loops = 0, loopPoints = 0, missed = 0, failed = 0;
+        double ms = 0.0;
+    };
+    std::map<std::string, Sum> by;
+    Sum all;
+    for (const auto& r : recs) {
+        Sum& g = by[r.gesture];
+        ++g.strokes;
+        ++all.strokes;
+        try {
+            const auto start = std::chrono::steady_clock::now();
+            const sk::FitResult fit = sk::fitStroke(r.stroke);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            const bool closed = fit.conditioned.closed;
+            // (A closed curve repeats 3 points: scripts/compare_splprep.py counts it so too.)
+            const int points = fit.curve.pointCount() - (closed ? 3 : 0);
+            for (Sum* s : {&g, &all}) {
+                s->points += points;
+                s->loops += closed;
+                s->loopPoints += closed ? points : 0;
+                s->missed += !fit.converged;
+                s->ms += ms;
+            }
+            if (names)
+                std::cout << r.subject << ' ' << r.speed << ' ' << r.number << ' ' << r.gesture << ' ' << points
+                          << (closed ? " loop " : " open ") << fit.corners.size() << " corners " << std::fixed
+                          << std::setprecision(3) << ms << " ms" << std::defaultfloat << '\n';
+        } catch (const std::exception&) {
+            ++g.failed;
+            ++all.failed;
+        }
+    }
+    std::cout << "| gesture | strokes | control points | loops | loops' control points | beyond tolerance | failed | "
+                 "fit ms |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    const auto row = [](const std::string& name, const Sum& s) {
+        std::cout << "| " << name << " | " << s.strokes << " | " << s.points << " | " << s.loops << " | "
+                  << s.loopPoints << " | " << s.missed << " | " << s.failed << " | " << std::fixed
+                  << std::setprecision(1) << s.ms << std::defaultfloat << " |\n";
+    };
+    for (const auto& [name, s] : by) row(name, s);
+    row("**all**", all);
+}
+
 // The development strokes drawn otherwise (perturbStroke): which gestures stop being recognized when
 // a person rotates, stretches, leaves open or overshoots them, or draws faster. A stress test on the
 // development subjects only; each perturbation's accuracy is that of every gesture so perturbed.
@@ -518,6 +575,9 @@ int main(int argc, char** argv)
         } else if (!std::strcmp(argv[i], "--perturb-dev")) {
             perturbDev(st::loadUnistrokes(dir, st::devSubjects()));
             return 0;
+        } else if (!std::strcmp(argv[i], "--fit-dev")) {
+            fitDev(st::loadUnistrokes(dir, st::devSubjects()), std::getenv("FIT_NAMES") != nullptr);
+            return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
             return 0;
@@ -527,7 +587,7 @@ int main(int argc, char** argv)
         } else {
             std::cerr << "usage: unistroke-report [--dev] [--held-out] [--quickdraw] [--data DIR] [--set "
                          "option=value].. | --adapt "
-                         "dev|held-out | --dump-dev GESTURE | --features-dev | --perturb-dev | [--augment] "
+                         "dev|held-out | --dump-dev GESTURE | --fit-dev | --features-dev | --perturb-dev | [--augment] "
                          "[--augment-rounded] [--augment-drawn] --loso OPTION V1,V2,..\n";
             return 2;
         }
