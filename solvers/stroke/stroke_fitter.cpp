@@ -733,7 +733,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // one reading). The cost: 346.4 -> 379.8 M instructions over BM_StrokeRecorded/0
     // (callgrind; 383.0 uncapped). The detected corners (FitResult::corners, which recognition
     // reads) stay as found.
-    if (cs.closed && corners.size() <= 1 && options.fewerControlPoints && res.converged) {
+    if (cs.closed && corners.size() <= 1 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
         // (The count a trial is asked for: the distinct points of a periodic curve, one more for a
         // loop's clamped piece, whose seam point comes twice.)
         const int distinct = fit.curve.pointCount() - 3;

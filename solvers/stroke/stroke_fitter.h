@@ -56,6 +56,10 @@ struct FitOptions {
     /// points the averaged knots allow, for up to 3x the time on long strokes
     /// (`"minimize_control_points": true`; BM_StrokeFitFewest).
     bool countUp = false;
+    /// A loop with at most one corner is fitted both periodic and as one clamped piece (from its
+    /// corner, or from its seam), and the reading with fewer control points is taken
+    /// (stroke_fitter.cpp). false: the detected corners alone decide (before session 42).
+    bool bothLoopReadings = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;
