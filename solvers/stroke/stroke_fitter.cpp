@@ -366,10 +366,9 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // The noise's outliers (noiseOutliers) of the fit taken.
     std::vector<int> outliers;
     // One reading of the stroke: the fit with these corners, into `fit`, `outliers` and res's
-    // maxError, converged and refinements. `limit` caps the counts the search tries (a loop's other
-    // reading, below, need not try those its first reading beat).
-    constexpr int kNoLimit = std::numeric_limits<int>::max();
-    const auto fitReading = [&](const std::vector<int>& corners, int limit) {
+    // maxError, converged and refinements; `searched`: with the fewer-control-points search where
+    // it applies (a loop's other reading, below, runs the error-driven fit alone).
+    const auto fitReading = [&](const std::vector<int>& corners, bool searched) {
         SplineFitOptions sopt = options.spline;
         sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
 
@@ -381,7 +380,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
         // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
         const bool periodic = cs.closed && corners.empty();
-        const bool search = (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
+        const bool search = searched && (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
         const bool scan = options.countUp;
         // Where the noise can reach beyond the tolerance, every measure projects the samples beyond
         // it exactly (exactAbove); elsewhere the measures are as before.
@@ -563,7 +562,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                 // (The count a trial is asked for: a closed curve repeats 3 points, and a loop's one
                 // clamped piece has its seam point twice.)
                 const int errorDriven = fit.curve.pointCount() - (!cs.closed ? 0 : periodic ? 3 : 2);
-                const int ceiling = std::min(limit, errorDriven - (res.converged ? 1 : 0));
+                const int ceiling = errorDriven - (res.converged ? 1 : 0);
                 rowsPer = kDenseRowsPerPoint;
                 for (int count = cs.closed ? 5 : 4; count <= ceiling && !found; ++count) {
                     FitPass a = trial(count, samples);
@@ -616,8 +615,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
                         break;
                     highest = 0;
                     // interpolation beyond
-                    const int cap = std::min(capOf(rowsPer), limit);
-                    if (cap < least) break;
+                    const int cap = capOf(rowsPer);
                     // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
                     // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
                     int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
@@ -719,26 +717,23 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             }
         }
     };
-    fitReading(corners, kNoLimit);
+    fitReading(corners, true);
     // A loop has two readings when it has at most one corner: periodic (C2 all round) and one
-    // clamped piece from a point round to it (C0 there). Which needs fewer control points depends on
-    // how the hand closed it, more than on whether a corner was detected: on the 2,400 development
-    // strokes (unistroke-report --fit-dev) the seam's clamped piece took fewer on 30 of 58 smooth
-    // loops and the periodic curve on 19 of 37 loops with one corner (224 control points fewer over
-    // the 95, 7.3 %), at all angles of the seam's turn: no cheap test told them apart. So the other
-    // reading is fitted too and taken when it holds the tolerance with fewer control points and no
-    // more outliers. Its search tries no count the first reading beat (`limit`); the error-driven
-    // fit still runs after it, as most of the gains are the error-driven fit's (without it, the
-    // development strokes took 57,544 control points in all against 57,332 with it and 57,556 with
-    // one reading). The cost: 346.4 -> 379.8 M instructions over BM_StrokeRecorded/0
-    // (callgrind; 383.0 uncapped). The detected corners (FitResult::corners, which recognition
-    // reads) stay as found.
+    // clamped piece from a point round to it (C0 there). Which needs fewer control points depends
+    // on how the hand closed it, more than on whether a corner was detected: on the 2,400
+    // development strokes (unistroke-report --fit-dev, both readings searched) the seam's clamped
+    // piece took fewer on 30 of 58 smooth loops and the periodic curve on 19 of 37 loops with one
+    // corner (224 control points fewer over the 95, 7.3 %), at all angles of the seam's turn: no
+    // cheap test told them apart. So the other reading is fitted too and taken when it holds the
+    // tolerance with fewer control points and no more outliers. It runs the error-driven fit alone:
+    // nearly all the gains are that fit's (the development loops 21,554 control points with it
+    // alone, 21,544 with the search before it too, 21,768 with one reading), for 359.8 M
+    // instructions over BM_StrokeRecorded/0 against 379.8 M with the search and 346.4 M with one
+    // reading (callgrind). The detected corners (FitResult::corners, which recognition reads) stay
+    // as found.
     if (cs.closed && corners.size() <= 1 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
-        // (The count a trial is asked for: the distinct points of a periodic curve, one more for a
-        // loop's clamped piece, whose seam point comes twice.)
-        const int distinct = fit.curve.pointCount() - 3;
+        const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
         const std::vector<int> other = corners.empty() ? std::vector<int>{0} : std::vector<int>{};
-        const int limit = other.empty() ? distinct - 1 : distinct;
         FitPass first = std::move(fit);
         std::vector<int> firstOutliers = std::move(outliers);
         const double firstError = res.maxError;
@@ -747,7 +742,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         outliers.clear();
         bool made = true;
         try {
-            fitReading(other, limit);
+            fitReading(other, false);
         } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
             made = false;
         }

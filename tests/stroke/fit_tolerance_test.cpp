@@ -118,7 +118,7 @@ TEST(FitTolerance, GivenSparseRealPigtail_WhenFitted_ThenNoMoreControlPointsThan
 // A loop with at most one corner has two readings, periodic and one clamped piece (from the corner,
 // or from the seam where the hand closed it), and takes the one with fewer control points. On the
 // development circles no loop needs more than with the detected corners alone, every kept sample
-// stays within the tolerance, and the loops need fewer in all (measured: 3,051 -> 2,828 control
+// stays within the tolerance, and the loops need fewer in all (measured: 3,051 -> 2,838 control
 // points over the 96 loops). s03's eighth slow circle, whose periodic fit needs 80 control points,
 // takes 35 clamped at its seam.
 TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlPointsAndTheToleranceHeld)
