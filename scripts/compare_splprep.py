@@ -5,7 +5,7 @@ on the synthesized benchmark strokes and on real pen strokes (the $1 unistroke l
 subjects only).
 
     scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real] [--time]
-                               [--quickdraw N]
+                               [--quickdraw N] [--dev GESTURE]
         BUILD_DIR defaults to build-stroke and needs stroke-export and sculptline-cli built there;
         the OCCT column needs occt-fit (built with the project, OpenCASCADE being required), else "-".
         --check: exit status 1 if, in a compared mode, any stroke (synthesized or real) needs more
@@ -15,6 +15,8 @@ subjects only).
         splprep, the fewer of the peers on every stroke being not yet met in the default mode.
         --quickdraw N: also the first N one-stroke circles of the Quick, Draw! test set
         (tests/data/quickdraw), drawn with a mouse or a finger by other people.
+        --dev GESTURE: also every development drawing (s02-s06, 150) of one unistroke gesture, e.g.
+        circle: where a fitting change may be tuned, unlike the Quick, Draw! and held-out strokes.
         --time: also times each fit at the equal deviation found (warm: the fastest of TIME_REPEAT
         calls; ours cold too, the first call in a fresh sculptline-cli process, as `elapsed_ms`).
         splprep is timed around the scipy call (FITPACK plus scipy's Python wrapper), OCCT inside
@@ -218,6 +220,18 @@ def load_real():
     return out
 
 
+def load_dev(gesture):
+    """Every development drawing (tests/data/unistrokes/README.md: s02-s06) of `gesture`."""
+    out = []
+    for subject in ("s02", "s03", "s04", "s05", "s06"):
+        path = os.path.join(ROOT, "tests", "data", "unistrokes", f"{subject}.csv")
+        with open(path) as f:
+            for row in csv.reader(f):
+                if row[0] == gesture:
+                    out.append({"name": f"{gesture[:8]}-{subject}{row[1][0]}{row[2]}", "stroke": parse_samples(row[3])})
+    return out
+
+
 def load_quickdraw(count):
     """The first `count` one-stroke Quick, Draw! circles (tests/data/quickdraw; a test set, never
     tuned on), as load_real reads the unistroke logs."""
@@ -246,6 +260,11 @@ def main():
         i = argv.index("--quickdraw")
         quickdraw = int(argv[i + 1])
         del argv[i:i + 2]
+    dev_gesture = None
+    if "--dev" in argv:
+        i = argv.index("--dev")
+        dev_gesture = argv[i + 1]
+        del argv[i:i + 2]
     args = [a for a in argv if not a.startswith("--")]
     build = args[0] if args else "build-stroke"
     check = "--check" in argv
@@ -257,6 +276,8 @@ def main():
     if "--no-real" not in argv:
         items += [(s["name"], s["stroke"], None) for s in load_real()]
     items += [(s["name"], s["stroke"], None) for s in load_quickdraw(quickdraw)]
+    if dev_gesture:
+        items += [(s["name"], s["stroke"], None) for s in load_dev(dev_gesture)]
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
