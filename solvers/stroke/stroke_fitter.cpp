@@ -258,6 +258,410 @@ FitPass fitConditioned(const ConditionedStroke& cs, const std::vector<Vec3>& fit
     return out;
 }
 
+// The constants of fitStroke and of one reading (fitReading).
+// Four rounds: each cuts the inner tolerance by the worst excess, so the error is cut by it too
+// unless a sample is out of reach (noise beyond the tolerance), which more rounds would not fix.
+constexpr int kMaxRefinements = 4;
+// The inner tolerance is cut a little more than the excess (the error does not fall exactly in
+// proportion), and never below a tenth of the tolerance (a sample out of reach would otherwise
+// drive it to interpolation).
+constexpr double kRefineMargin = 0.95;
+constexpr double kMinInnerShare = 0.1;
+// The polyline of measureSamples: points half a tolerance apart leave few samples for exact
+// projection (those within ~tolerance / 30 of the maximum).
+constexpr double kCheckSpacingShare = 0.5;
+// Hoschek corrections per trial of the fewer-control-points search. Measured on the benchmark
+// strokes (s-curve, flourish): 3 corrections left the error-driven count (the averaged knots'
+// chord parameters are off by too much); 8 brought the s-curve from 11 to 7 and the 1,000-sample
+// flourish from 28 to 18.
+constexpr int kAveragedCorrections = 8;
+// Rows added to a count whose raw samples miss the tolerance: the conditioned points of the raw
+// samples beyond 0.75 of it (those near the limit too, or the re-solved curve pushes them past
+// it), in at most 4 rounds. At 0.9 flourish-200 needed 2 rounds (a round added 3-4 rows) to reach
+// 21 control points; at 0.75 one round of 5 rows reached them (BM_StrokeFit/200 194 -> 147 us).
+// (That was with measureSamples' polyline bounds, up to a quarter tolerance above the distance.
+// With each sample's own distance, 0.6-0.68 give flourish-200 one round again, BM_StrokeFit/200
+// 3.14 against 4.07 M instructions, but more rows at once can make the count fail on its own
+// rows: under clang the noisy ellipse of FitTolerance.GivenLoops_... went 5 -> 13 control points,
+// and scripts/compare_splprep.py's results moved either way from one share to the next.)
+constexpr double kRowShare = 0.75;
+constexpr int kRowRounds = 4;
+// Rows per control point of a search on evenly spread rows (see `search` below): with fewer, a
+// count near the dynamic threshold's row count interpolates its rows and swings between them
+// (a sparse real pigtail: 10 rows for 47 samples, 9 control points fit the rows within 0.11
+// and miss a raw sample by 16.7). Two, the least that leaves each control point over-determined;
+// three gave no more on scripts/compare_splprep.py (minimize mode 25 of 28 strokes against 27).
+constexpr int kDenseRowsPerPoint = 2;
+
+// What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
+// conditioned stroke with the points the least squares fits, the dynamic threshold's rows and the
+// raw samples kept (not dropped).
+struct Prepared {
+    const Stroke& stroke;
+    const FitOptions& options;
+    const ConditionedStroke& cs;
+    const std::vector<Vec3>& fitPoints;
+    const std::vector<int>& samples;
+    const std::vector<char>& keep;
+};
+
+// One reading of the stroke: the fit with these corners, into `fit`, `outliers` (the noise's
+// outliers of the fit taken, noiseOutliers) and res's maxError, converged and refinements (res's
+// tolerance is read). `searched`: with the fewer-control-points search where it applies (a loop's
+// other reading, in fitStroke, runs the error-driven fit alone).
+void fitReading(const Prepared& p, const std::vector<int>& corners, bool searched, FitResult& res, FitPass& fit,
+                std::vector<int>& outliers)
+{
+    const auto& [stroke, options, cs, fitPoints, samples, keep] = p;
+    SplineFitOptions sopt = options.spline;
+    sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
+    // The averaged-knot search (FitOptions::fewerControlPoints) applies to strokes without corners
+    // and to loops with one. By default it runs without the error-driven fit (which it replaced as
+    // the first step: a quarter to a third of the time went into a fit that served only as the
+    // search's ceiling); the error-driven fit runs only when the search finds nothing. The
+    // fewest-points mode (FitOptions::countUp) counts up below the error-driven count instead.
+    // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
+    // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
+    const bool periodic = cs.closed && corners.empty();
+    const bool search =
+        searched && (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
+    const bool scan = options.countUp;
+    // Where the noise can reach beyond the tolerance, every measure projects the samples beyond
+    // it exactly (exactAbove); elsewhere the measures are as before.
+    const double exactAbove =
+        kOutlierSigmas * cs.noise > res.tolerance ? res.tolerance : std::numeric_limits<double>::infinity();
+    // The deviation of the kept samples from `curve`, the noise's outliers left out when every
+    // sample beyond the tolerance is one (`suspects`; the maximum is then that of the samples within
+    // the tolerance, SampleDeviation::maxWithin).
+    std::vector<int> suspects;
+    // One measure: a worst sample beyond kOutlierSigmas * sigma is no outlier, so the count misses
+    // at once. (Measuring the maximum first, and the samples beyond the tolerance in a second
+    // measure only where the maximum left room for outliers, cost more over the 16 jittery
+    // flourishes of BM_StrokeFitSeeds/1: 138 against 132 M instructions, callgrind.)
+    auto deviation = [&](const Curve3d& curve, SampleDeviation& dev) {
+        dev = measureSamples(curve, stroke.points, keep, kCheckSpacingShare * res.tolerance, exactAbove);
+        suspects.clear();
+        if (dev.maxError <= res.tolerance || !(dev.maxError <= kOutlierSigmas * cs.noise)) return dev.maxError;
+        if (!noiseOutliers(dev, keep, res.tolerance, cs.noise, suspects)) return dev.maxError;
+        return dev.maxWithin;
+    };
+    // The chain every fit below shares (the same points, corners and chord parameters; the rows
+    // and options differ), built by the first.
+    Chain chain;
+    int round = 0;
+    auto refine = [&](int rounds) {
+        for (;; ++round) {
+            fit = fitConditioned(cs, fitPoints, corners, samples, sopt, nullptr, &chain);
+            SampleDeviation dev;
+            const double err = deviation(fit.curve, dev);
+            outliers = suspects;
+            res.maxError = err;
+            res.converged = err <= res.tolerance;
+            res.refinements = round;
+            if (res.converged || round >= rounds || sopt.tolerance <= kMinInnerShare * res.tolerance) break;
+            sopt.tolerance =
+                std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / err);
+        }
+    };
+    bool found = false;
+    if (search) {
+        // The fewest control points with knots averaged over the samples' parameters (The NURBS
+        // Book eq. 9.69) and the parameters corrected toward their foot points (Hoschek). A count
+        // is taken only when every kept raw sample lies within the tolerance (measureSamples); the
+        // samples' own distances reject it first, without that measure.
+        SplineFitOptions alt = sopt;
+        alt.knotPlacement = KnotPlacement::Averaged;
+        alt.averagedCorrections = kAveragedCorrections;
+        alt.tolerance = res.tolerance;
+        int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
+        std::vector<int> dense;
+        int highest = 0;  // the largest count tried in this pass
+        auto solveTrial = [&](int count, const std::vector<int>& rows) {
+            highest = std::max(highest, count);
+            alt.averagedControlPoints = count;
+            const size_t want =
+                std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
+            if (rows.size() >= want || want < 2)
+                return fitConditioned(cs, fitPoints, corners, rows, alt, nullptr, &chain);
+            // The rows given and `want` conditioned points spread evenly over the stroke's indices.
+            dense = rows;
+            for (size_t k = 0; k < want; ++k)
+                dense.push_back(static_cast<int>(
+                    std::lround(static_cast<double>(k) * (cs.size() - 1) / static_cast<double>(want - 1))));
+            std::sort(dense.begin(), dense.end());
+            dense.erase(std::unique(dense.begin(), dense.end()), dense.end());
+            return fitConditioned(cs, fitPoints, corners, dense, alt, nullptr, &chain);
+        };
+        // A trial that cannot make a curve is a count that does not fit, not a failed stroke: a
+        // sparse loop's clamped piece whose averaged knots merge can leave fewer than the 4
+        // distinct points a closed cubic needs (teardrops of 16-24 samples), and the error-driven
+        // fit after the search still fits such a stroke.
+        auto trial = [&](int count, const std::vector<int>& rows) {
+            try {
+                return solveTrial(count, rows);
+            } catch (const GeometryError&) {
+                FitPass none;
+                none.maxError = std::numeric_limits<double>::infinity();
+                return none;
+            }
+        };
+        auto fits = [&](const FitPass& a) { return a.maxError <= res.tolerance; };
+        // The first pass's answers by count (the trial on the dynamic threshold's rows, and whether
+        // take() refused it). The second pass asks a count the same question when its
+        // kDenseRowsPerPoint rows per control point are no more than those rows: solveTrial then
+        // adds none, and the trial, its row rounds and their measures are the first pass's to the
+        // bit. (On the 240 strokes people drew of BM_StrokeRecorded: 1,218 least-squares fits
+        // against 1,283 and 559 raw-sample measures against 574, 331 against 340 M instructions.)
+        std::map<int, FitPass> firstTrials;
+        std::set<int> firstRefused;
+        // (Whether a count's trial on `per` rows per control point adds no rows to the samples.)
+        const auto addsNoRows = [&](int per, int count) {
+            const size_t want =
+                std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(per) * static_cast<size_t>(count));
+            return samples.size() >= want || want < 2;
+        };
+        const auto repeats = [&](int count) { return rowsPer > 0 && addsNoRows(rowsPer, count); };
+        auto trialAt = [&](int count) {
+            if (repeats(count)) {
+                const auto it = firstTrials.find(count);
+                if (it != firstTrials.end()) {
+                    highest = std::max(highest, count);
+                    return it->second;
+                }
+            }
+            FitPass a = trial(count, samples);
+            // (Kept only where the second pass can ask again: a count whose dense rows add some is
+            // solved afresh there.)
+            if (rowsPer == 0 && addsNoRows(kDenseRowsPerPoint, count)) firstTrials.emplace(count, a);
+            return a;
+        };
+        // A trial stops its corrections once its samples fit (averagedStopWhenWithin): the search
+        // asks only whether a count fits. The count it ends at goes on from there to the last
+        // correction before it is measured on the raw samples, so the curve taken is the one the
+        // uninterrupted trial makes, to the bit. (Counts above the least that fits stop after 3-7 of
+        // the 8 corrections: BM_StrokeFit/1000's 23 fits after 3.) Where the corrections are not
+        // monotone a count stopped as fitting might have ended beyond the tolerance: that count is
+        // then measured after finishing, and take() rejects it as any count that misses.
+        alt.averagedStopWhenWithin = true;
+        auto finish = [&](FitPass& a, int count, const std::vector<int>& rows) {
+            if (!a.correction.stopped) return;
+            const AveragedCorrectionState state = std::move(a.correction);
+            alt.averagedStopWhenWithin = false;
+            alt.averagedResume = &state;
+            a = trial(count, rows);
+            alt.averagedResume = nullptr;
+            alt.averagedStopWhenWithin = true;
+        };
+        // A count whose samples fit is taken when every kept raw sample is within the tolerance too.
+        auto accept = [&](FitPass& a, SampleDeviation& dev) {
+            const double err = deviation(a.curve, dev);
+            if (!(err <= res.tolerance)) return false;
+            fit = std::move(a);
+            outliers = suspects;
+            res.maxError = err;
+            res.refinements = 0;
+            return res.converged = true;
+        };
+        // Where raw samples between the least squares' rows lie beyond the tolerance, the same count
+        // is solved again with their conditioned points among the rows (kRowRounds, kRowShare), so
+        // that the least squares answers for them: flourish-200 22 -> 21 control points, the
+        // s-curve in the fewest-points mode 7 -> 6 (scripts/compare_splprep.py).
+        auto takeOnRows = [&](FitPass& a, int count) {
+            finish(a, count, samples);
+            if (!fits(a)) return false;
+            SampleDeviation dev;
+            if (accept(a, dev)) return true;
+            std::vector<int> rows = samples;
+            for (int round = 0; round < kRowRounds; ++round) {
+                const size_t before = rows.size();
+                for (size_t i = 0; i < dev.bound.size(); ++i) {
+                    if (!keep[i] || !(dev.bound[i] > kRowShare * res.tolerance)) continue;
+                    // The conditioned point of raw sample i, or the next one when i was merged.
+                    const auto it = std::lower_bound(cs.source.begin(), cs.source.end(), static_cast<int>(i));
+                    rows.push_back(std::min(static_cast<int>(it - cs.source.begin()), cs.size() - 1));
+                }
+                std::sort(rows.begin(), rows.end());
+                rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+                if (rows.size() == before) return false;
+                FitPass b = trial(count, rows);
+                finish(b, count, rows);
+                if (!fits(b)) return false;
+                if (accept(b, dev)) return true;
+            }
+            return false;
+        };
+        auto take = [&](FitPass& a, int count) {
+            if (repeats(count) && firstRefused.count(count) > 0) return false;
+            const bool taken = takeOnRows(a, count);
+            if (!taken && rowsPer == 0) firstRefused.insert(count);
+            return taken;
+        };
+        // The search runs on the samples' own distances (cheap); only the count it ends at is
+        // measured on every raw sample, and if that misses, the next counts up (kVerifySteps).
+        constexpr int kVerifySteps = 3;
+        if (scan) {
+            // Counting up from the smallest, below the error-driven count: never more than the
+            // default's search (the error does not fall strictly with the count).
+            refine(kMaxRefinements);
+            // (The count a trial is asked for: a closed curve repeats 3 points, and a loop's one
+            // clamped piece has its seam point twice.)
+            const int errorDriven = fit.curve.pointCount() - (!cs.closed ? 0 : periodic ? 3 : 2);
+            const int ceiling = errorDriven - (res.converged ? 1 : 0);
+            rowsPer = kDenseRowsPerPoint;
+            for (int count = cs.closed ? 5 : 4; count <= ceiling && !found; ++count) {
+                FitPass a = trial(count, samples);
+                found = take(a, count);
+            }
+        } else {
+            // Predicted counts instead of a bisection: a cubic's least-squares error falls about
+            // as the fourth power of the span (de Boor, ch. XII), so a count n - 3 spans missing
+            // by e / tol needs about (n - 3) (e / tol)^(1/4) spans. From kFirstCount the counts
+            // climb by that law until the samples fit, then step down while they still fit (the
+            // law overshoots where the error falls faster), and the count reached is verified on
+            // the raw samples. On the benchmark strokes the same counts as the bisection below the
+            // error-driven count it replaces (flourish-200 22, flourish-1000 18, s-curve 7), with
+            // 4-5 trials instead of 5-7 plus the error-driven fit. Where the law keeps missing
+            // (more than kMaxClimbSteps predictions fall short: flourish-200 needs 3, the Fig. 4-3
+            // hairpin climbs past the error-driven count, 22 against 16) averaged knots do not
+            // suit the stroke and the error-driven fit is taken instead.
+            // When the search on the dynamic threshold's rows finds nothing, it runs once more on
+            // evenly spread rows, kDenseRowsPerPoint per control point (a sparse real pigtail 26 ->
+            // 18 control points; the Fig. 4-3 hairpin still finds nothing and keeps its 14), before
+            // the error-driven fit. Not first: on flourish-200 those rows cost a control point (24
+            // against 21 with the climbs as they are, 22 with 5 climbs, which moved the hairpin to 20).
+            constexpr int kFirstCount = 8;
+            constexpr int kMaxClimbSteps = 3;
+            // A count that misses by no more than kNearMiss earns the climb another step, at most
+            // kNearMissClimbs times: the law then predicts the next count, and a stroke that close
+            // is not one the law keeps missing. A sparse real circle (30 samples, one corner where
+            // its ends meet) climbed 8, 10, 11, 12 on evenly spread rows and stopped at 12, 1.7 %
+            // over, for the error-driven fit's 17 control points; now 13 fits (12 after its seam
+            // is shared; FITPACK's splprep: 14; compare_splprep default mode 27 -> 28 of 28
+            // strokes, total 523 -> 518). The Fig. 4-3 hairpin keeps its count, and the benchmarks'
+            // strokes (BM_StrokeFit, -Jitter, -Loop, -Seeds) make the same trials, counted.
+            constexpr double kNearMiss = 1.05;
+            constexpr int kNearMissClimbs = 2;
+            // The second pass replays the first trial for trial (the same counts on the same rows,
+            // so the same answers) while kDenseRowsPerPoint rows per control point are no more than
+            // the dynamic threshold's rows and neither pass's cap binds: then it is skipped. (Jittery
+            // flourishes of 1,000 samples have ~205 rows and try at most 29 control points: the
+            // replay was 30 % of their fit time.) One count of margin covers the verify loop's
+            // test of the count after the last.
+            const int least = cs.closed ? 5 : 4;
+            const auto capOf = [&](int per) {
+                return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size()));
+            };
+            for (int pass = 0; pass < 2 && !found; ++pass) {
+                rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
+                if (pass == 1 &&
+                    static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
+                    highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
+                    break;
+                highest = 0;
+                // interpolation beyond
+                const int cap = capOf(rowsPer);
+                // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
+                // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
+                int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
+                FitPass a = trialAt(count);
+                const auto climbing = [&](int climb) {
+                    return climb < kMaxClimbSteps ||
+                           (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
+                };
+                double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
+                for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
+                    failed = count;
+                    missedBy = a.maxError;
+                    // (An open cubic has count - 3 spans, a closed one count.)
+                    const int extra = periodic ? 0 : 3;
+                    // (A trial that made no curve misses by an infinite error: the next count.)
+                    const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
+                    const int predicted =
+                        std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
+                    count = std::min(cap, std::max(count + 1, predicted));
+                    a = trialAt(count);
+                }
+                // A climb whose last step missed by more than the step before (the error is not
+                // monotone in the count, and a count given up early reports its error after fewer
+                // corrections) has jumped past counts the law cannot judge: those between the last
+                // two misses are tried in turn before the search gives up. Two of the 16 jittery
+                // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
+                // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
+                // and 32 control points in about 1 ms; 21 fits both, in about half that.
+                if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
+                    for (int k = failed + 1; k < count; ++k) {
+                        FitPass b = trialAt(k);
+                        if (!fits(b)) {
+                            failed = k;  // (the bisection below starts above it)
+                            continue;
+                        }
+                        a = std::move(b);
+                        count = k;
+                        break;
+                    }
+                }
+                // Down by bisection between the largest count seen to miss and the count that fits:
+                // a climb can land several counts above the least that fits (the law's prediction
+                // from a large miss), and stepping down one count at a time took up to 6 trials on
+                // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
+                // at most 3. (The error does not fall strictly with the count, so the two can end
+                // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
+                // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
+                for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
+                    const int mid = failed + (fitsAt - failed) / 2;
+                    FitPass b = trialAt(mid);
+                    if (fits(b)) {
+                        a = std::move(b);
+                        count = fitsAt = mid;
+                    } else {
+                        failed = mid;
+                    }
+                }
+                for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
+                    if (step > 0) {
+                        if (count > cap) break;
+                        a = trialAt(count);
+                    }
+                    found = take(a, count);
+                }
+            }
+        }
+    }
+    if (!found && !(search && scan)) {
+        // Where the search found nothing, the error-driven fit (its knots then removed as
+        // SplineFitOptions::removal says: every knot by default since session 40; before, an open
+        // stroke's fit here was switched to every knot alone, spiral 19 -> 18).
+        refine(kMaxRefinements);
+    }
+    if (!res.converged) {
+        // Below the noise (a tolerance of a twentieth of a pixel on integer pixel samples) the
+        // dynamic threshold's subset leaves too few rows: the error-driven insertion runs out of
+        // room (one control point per point) before every sample is held. Every conditioned point
+        // then enters the least squares; an open stroke may also take averaged knots on every
+        // point (The NURBS Book eq. 9.69), which meet the Schoenberg-Whitney condition and so
+        // interpolate when nothing less does. The best of these is kept.
+        std::vector<int> all(static_cast<size_t>(cs.size()));
+        for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
+        SplineFitOptions fallback = sopt;
+        fallback.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
+        for (const KnotPlacement placement : {KnotPlacement::ErrorDriven, KnotPlacement::Averaged}) {
+            if (res.converged || (placement == KnotPlacement::Averaged && cs.closed)) break;
+            fallback.knotPlacement = placement;
+            const bool interpolate = placement == KnotPlacement::Averaged;
+            if (interpolate) fallback.fairing = 1e-10;
+            FitPass alt = fitConditioned(cs, fitPoints, corners, all, fallback, interpolate ? &fitPoints : nullptr);
+            const SampleDeviation dev =
+                measureSamples(alt.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
+            if (dev.maxError < res.maxError) {
+                fit = std::move(alt);
+                outliers.clear();
+                res.maxError = dev.maxError;
+                res.converged = dev.maxError <= res.tolerance;
+            }
+        }
+    }
+}
+
 }  // namespace
 
 FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
@@ -329,395 +733,10 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // where those samples are, at most kMaxRefinements times.
     std::vector<char> keep(stroke.points.size(), 1);
     for (int i : cs.dropped) keep[static_cast<size_t>(i)] = 0;
-    // Four rounds: each cuts the inner tolerance by the worst excess, so the error is cut by it too
-    // unless a sample is out of reach (noise beyond the tolerance), which more rounds would not fix.
-    constexpr int kMaxRefinements = 4;
-    // The inner tolerance is cut a little more than the excess (the error does not fall exactly in
-    // proportion), and never below a tenth of the tolerance (a sample out of reach would otherwise
-    // drive it to interpolation).
-    constexpr double kRefineMargin = 0.95;
-    constexpr double kMinInnerShare = 0.1;
-    // The polyline of measureSamples: points half a tolerance apart leave few samples for exact
-    // projection (those within ~tolerance / 30 of the maximum).
-    constexpr double kCheckSpacingShare = 0.5;
-    // Hoschek corrections per trial of the fewer-control-points search. Measured on the benchmark
-    // strokes (s-curve, flourish): 3 corrections left the error-driven count (the averaged knots'
-    // chord parameters are off by too much); 8 brought the s-curve from 11 to 7 and the 1,000-sample
-    // flourish from 28 to 18.
-    constexpr int kAveragedCorrections = 8;
-    // Rows added to a count whose raw samples miss the tolerance: the conditioned points of the raw
-    // samples beyond 0.75 of it (those near the limit too, or the re-solved curve pushes them past
-    // it), in at most 4 rounds. At 0.9 flourish-200 needed 2 rounds (a round added 3-4 rows) to reach
-    // 21 control points; at 0.75 one round of 5 rows reached them (BM_StrokeFit/200 194 -> 147 us).
-    // (That was with measureSamples' polyline bounds, up to a quarter tolerance above the distance.
-    // With each sample's own distance, 0.6-0.68 give flourish-200 one round again, BM_StrokeFit/200
-    // 3.14 against 4.07 M instructions, but more rows at once can make the count fail on its own
-    // rows: under clang the noisy ellipse of FitTolerance.GivenLoops_... went 5 -> 13 control points,
-    // and scripts/compare_splprep.py's results moved either way from one share to the next.)
-    constexpr double kRowShare = 0.75;
-    constexpr int kRowRounds = 4;
-    // Rows per control point of a search on evenly spread rows (see `search` below): with fewer, a
-    // count near the dynamic threshold's row count interpolates its rows and swings between them
-    // (a sparse real pigtail: 10 rows for 47 samples, 9 control points fit the rows within 0.11
-    // and miss a raw sample by 16.7). Two, the least that leaves each control point over-determined;
-    // three gave no more on scripts/compare_splprep.py (minimize mode 25 of 28 strokes against 27).
-    constexpr int kDenseRowsPerPoint = 2;
     FitPass fit;
-    // The noise's outliers (noiseOutliers) of the fit taken.
-    std::vector<int> outliers;
-    // One reading of the stroke: the fit with these corners, into `fit`, `outliers` and res's
-    // maxError, converged and refinements; `searched`: with the fewer-control-points search where
-    // it applies (a loop's other reading, below, runs the error-driven fit alone).
-    const auto fitReading = [&](const std::vector<int>& corners, bool searched) {
-        SplineFitOptions sopt = options.spline;
-        sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
-
-        // The averaged-knot search (FitOptions::fewerControlPoints) applies to strokes without corners
-        // and to loops with one. By default it runs without the error-driven fit (which it replaced as
-        // the first step: a quarter to a third of the time went into a fit that served only as the
-        // search's ceiling); the error-driven fit runs only when the search finds nothing. The
-        // fewest-points mode (FitOptions::countUp) counts up below the error-driven count instead.
-        // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
-        // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
-        const bool periodic = cs.closed && corners.empty();
-        const bool search = searched && (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
-        const bool scan = options.countUp;
-        // Where the noise can reach beyond the tolerance, every measure projects the samples beyond
-        // it exactly (exactAbove); elsewhere the measures are as before.
-        const double exactAbove =
-            kOutlierSigmas * cs.noise > res.tolerance ? res.tolerance : std::numeric_limits<double>::infinity();
-        // The deviation of the kept samples from `curve`, the noise's outliers left out when every
-        // sample beyond the tolerance is one (`suspects`; the maximum is then that of the samples within
-        // the tolerance, SampleDeviation::maxWithin).
-        std::vector<int> suspects;
-        // One measure: a worst sample beyond kOutlierSigmas * sigma is no outlier, so the count misses
-        // at once. (Measuring the maximum first, and the samples beyond the tolerance in a second
-        // measure only where the maximum left room for outliers, cost more over the 16 jittery
-        // flourishes of BM_StrokeFitSeeds/1: 138 against 132 M instructions, callgrind.)
-        auto deviation = [&](const Curve3d& curve, SampleDeviation& dev) {
-            dev = measureSamples(curve, stroke.points, keep, kCheckSpacingShare * res.tolerance, exactAbove);
-            suspects.clear();
-            if (dev.maxError <= res.tolerance || !(dev.maxError <= kOutlierSigmas * cs.noise)) return dev.maxError;
-            if (!noiseOutliers(dev, keep, res.tolerance, cs.noise, suspects)) return dev.maxError;
-            return dev.maxWithin;
-        };
-        // The chain every fit below shares (the same points, corners and chord parameters; the rows
-        // and options differ), built by the first.
-        Chain chain;
-        int round = 0;
-        auto refine = [&](int rounds) {
-            for (;; ++round) {
-                fit = fitConditioned(cs, fitPoints, corners, samples, sopt, nullptr, &chain);
-                SampleDeviation dev;
-                const double err = deviation(fit.curve, dev);
-                outliers = suspects;
-                res.maxError = err;
-                res.converged = err <= res.tolerance;
-                res.refinements = round;
-                if (res.converged || round >= rounds || sopt.tolerance <= kMinInnerShare * res.tolerance) break;
-                sopt.tolerance =
-                    std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / err);
-            }
-        };
-        bool found = false;
-        if (search) {
-            // The fewest control points with knots averaged over the samples' parameters (The NURBS
-            // Book eq. 9.69) and the parameters corrected toward their foot points (Hoschek). A count
-            // is taken only when every kept raw sample lies within the tolerance (measureSamples); the
-            // samples' own distances reject it first, without that measure.
-            SplineFitOptions alt = sopt;
-            alt.knotPlacement = KnotPlacement::Averaged;
-            alt.averagedCorrections = kAveragedCorrections;
-            alt.tolerance = res.tolerance;
-            int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
-            std::vector<int> dense;
-            int highest = 0;  // the largest count tried in this pass
-            auto solveTrial = [&](int count, const std::vector<int>& rows) {
-                highest = std::max(highest, count);
-                alt.averagedControlPoints = count;
-                const size_t want =
-                    std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(rowsPer) * static_cast<size_t>(count));
-                if (rows.size() >= want || want < 2)
-                    return fitConditioned(cs, fitPoints, corners, rows, alt, nullptr, &chain);
-                // The rows given and `want` conditioned points spread evenly over the stroke's indices.
-                dense = rows;
-                for (size_t k = 0; k < want; ++k)
-                    dense.push_back(static_cast<int>(
-                        std::lround(static_cast<double>(k) * (cs.size() - 1) / static_cast<double>(want - 1))));
-                std::sort(dense.begin(), dense.end());
-                dense.erase(std::unique(dense.begin(), dense.end()), dense.end());
-                return fitConditioned(cs, fitPoints, corners, dense, alt, nullptr, &chain);
-            };
-            // A trial that cannot make a curve is a count that does not fit, not a failed stroke: a
-            // sparse loop's clamped piece whose averaged knots merge can leave fewer than the 4
-            // distinct points a closed cubic needs (teardrops of 16-24 samples), and the error-driven
-            // fit after the search still fits such a stroke.
-            auto trial = [&](int count, const std::vector<int>& rows) {
-                try {
-                    return solveTrial(count, rows);
-                } catch (const GeometryError&) {
-                    FitPass none;
-                    none.maxError = std::numeric_limits<double>::infinity();
-                    return none;
-                }
-            };
-            auto fits = [&](const FitPass& a) { return a.maxError <= res.tolerance; };
-            // The first pass's answers by count (the trial on the dynamic threshold's rows, and whether
-            // take() refused it). The second pass asks a count the same question when its
-            // kDenseRowsPerPoint rows per control point are no more than those rows: solveTrial then
-            // adds none, and the trial, its row rounds and their measures are the first pass's to the
-            // bit. (On the 240 strokes people drew of BM_StrokeRecorded: 1,218 least-squares fits
-            // against 1,283 and 559 raw-sample measures against 574, 331 against 340 M instructions.)
-            std::map<int, FitPass> firstTrials;
-            std::set<int> firstRefused;
-            // (Whether a count's trial on `per` rows per control point adds no rows to the samples.)
-            const auto addsNoRows = [&](int per, int count) {
-                const size_t want =
-                    std::min(static_cast<size_t>(cs.size()), static_cast<size_t>(per) * static_cast<size_t>(count));
-                return samples.size() >= want || want < 2;
-            };
-            const auto repeats = [&](int count) { return rowsPer > 0 && addsNoRows(rowsPer, count); };
-            auto trialAt = [&](int count) {
-                if (repeats(count)) {
-                    const auto it = firstTrials.find(count);
-                    if (it != firstTrials.end()) {
-                        highest = std::max(highest, count);
-                        return it->second;
-                    }
-                }
-                FitPass a = trial(count, samples);
-                // (Kept only where the second pass can ask again: a count whose dense rows add some is
-                // solved afresh there.)
-                if (rowsPer == 0 && addsNoRows(kDenseRowsPerPoint, count)) firstTrials.emplace(count, a);
-                return a;
-            };
-            // A trial stops its corrections once its samples fit (averagedStopWhenWithin): the search
-            // asks only whether a count fits. The count it ends at goes on from there to the last
-            // correction before it is measured on the raw samples, so the curve taken is the one the
-            // uninterrupted trial makes, to the bit. (Counts above the least that fits stop after 3-7 of
-            // the 8 corrections: BM_StrokeFit/1000's 23 fits after 3.) Where the corrections are not
-            // monotone a count stopped as fitting might have ended beyond the tolerance: that count is
-            // then measured after finishing, and take() rejects it as any count that misses.
-            alt.averagedStopWhenWithin = true;
-            auto finish = [&](FitPass& a, int count, const std::vector<int>& rows) {
-                if (!a.correction.stopped) return;
-                const AveragedCorrectionState state = std::move(a.correction);
-                alt.averagedStopWhenWithin = false;
-                alt.averagedResume = &state;
-                a = trial(count, rows);
-                alt.averagedResume = nullptr;
-                alt.averagedStopWhenWithin = true;
-            };
-            // A count whose samples fit is taken when every kept raw sample is within the tolerance too.
-            auto accept = [&](FitPass& a, SampleDeviation& dev) {
-                const double err = deviation(a.curve, dev);
-                if (!(err <= res.tolerance)) return false;
-                fit = std::move(a);
-                outliers = suspects;
-                res.maxError = err;
-                res.refinements = 0;
-                return res.converged = true;
-            };
-            // Where raw samples between the least squares' rows lie beyond the tolerance, the same count
-            // is solved again with their conditioned points among the rows (kRowRounds, kRowShare), so
-            // that the least squares answers for them: flourish-200 22 -> 21 control points, the
-            // s-curve in the fewest-points mode 7 -> 6 (scripts/compare_splprep.py).
-            auto takeOnRows = [&](FitPass& a, int count) {
-                finish(a, count, samples);
-                if (!fits(a)) return false;
-                SampleDeviation dev;
-                if (accept(a, dev)) return true;
-                std::vector<int> rows = samples;
-                for (int round = 0; round < kRowRounds; ++round) {
-                    const size_t before = rows.size();
-                    for (size_t i = 0; i < dev.bound.size(); ++i) {
-                        if (!keep[i] || !(dev.bound[i] > kRowShare * res.tolerance)) continue;
-                        // The conditioned point of raw sample i, or the next one when i was merged.
-                        const auto it = std::lower_bound(cs.source.begin(), cs.source.end(), static_cast<int>(i));
-                        rows.push_back(std::min(static_cast<int>(it - cs.source.begin()), cs.size() - 1));
-                    }
-                    std::sort(rows.begin(), rows.end());
-                    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-                    if (rows.size() == before) return false;
-                    FitPass b = trial(count, rows);
-                    finish(b, count, rows);
-                    if (!fits(b)) return false;
-                    if (accept(b, dev)) return true;
-                }
-                return false;
-            };
-            auto take = [&](FitPass& a, int count) {
-                if (repeats(count) && firstRefused.count(count) > 0) return false;
-                const bool taken = takeOnRows(a, count);
-                if (!taken && rowsPer == 0) firstRefused.insert(count);
-                return taken;
-            };
-            // The search runs on the samples' own distances (cheap); only the count it ends at is
-            // measured on every raw sample, and if that misses, the next counts up (kVerifySteps).
-            constexpr int kVerifySteps = 3;
-            if (scan) {
-                // Counting up from the smallest, below the error-driven count: never more than the
-                // default's search (the error does not fall strictly with the count).
-                refine(kMaxRefinements);
-                // (The count a trial is asked for: a closed curve repeats 3 points, and a loop's one
-                // clamped piece has its seam point twice.)
-                const int errorDriven = fit.curve.pointCount() - (!cs.closed ? 0 : periodic ? 3 : 2);
-                const int ceiling = errorDriven - (res.converged ? 1 : 0);
-                rowsPer = kDenseRowsPerPoint;
-                for (int count = cs.closed ? 5 : 4; count <= ceiling && !found; ++count) {
-                    FitPass a = trial(count, samples);
-                    found = take(a, count);
-                }
-            } else {
-                // Predicted counts instead of a bisection: a cubic's least-squares error falls about
-                // as the fourth power of the span (de Boor, ch. XII), so a count n - 3 spans missing
-                // by e / tol needs about (n - 3) (e / tol)^(1/4) spans. From kFirstCount the counts
-                // climb by that law until the samples fit, then step down while they still fit (the
-                // law overshoots where the error falls faster), and the count reached is verified on
-                // the raw samples. On the benchmark strokes the same counts as the bisection below the
-                // error-driven count it replaces (flourish-200 22, flourish-1000 18, s-curve 7), with
-                // 4-5 trials instead of 5-7 plus the error-driven fit. Where the law keeps missing
-                // (more than kMaxClimbSteps predictions fall short: flourish-200 needs 3, the Fig. 4-3
-                // hairpin climbs past the error-driven count, 22 against 16) averaged knots do not
-                // suit the stroke and the error-driven fit is taken instead.
-                // When the search on the dynamic threshold's rows finds nothing, it runs once more on
-                // evenly spread rows, kDenseRowsPerPoint per control point (a sparse real pigtail 26 ->
-                // 18 control points; the Fig. 4-3 hairpin still finds nothing and keeps its 14), before
-                // the error-driven fit. Not first: on flourish-200 those rows cost a control point (24
-                // against 21 with the climbs as they are, 22 with 5 climbs, which moved the hairpin to 20).
-                constexpr int kFirstCount = 8;
-                constexpr int kMaxClimbSteps = 3;
-                // A count that misses by no more than kNearMiss earns the climb another step, at most
-                // kNearMissClimbs times: the law then predicts the next count, and a stroke that close
-                // is not one the law keeps missing. A sparse real circle (30 samples, one corner where
-                // its ends meet) climbed 8, 10, 11, 12 on evenly spread rows and stopped at 12, 1.7 %
-                // over, for the error-driven fit's 17 control points; now 13 fits (12 after its seam
-                // is shared; FITPACK's splprep: 14; compare_splprep default mode 27 -> 28 of 28
-                // strokes, total 523 -> 518). The Fig. 4-3 hairpin keeps its count, and the benchmarks'
-                // strokes (BM_StrokeFit, -Jitter, -Loop, -Seeds) make the same trials, counted.
-                constexpr double kNearMiss = 1.05;
-                constexpr int kNearMissClimbs = 2;
-                // The second pass replays the first trial for trial (the same counts on the same rows,
-                // so the same answers) while kDenseRowsPerPoint rows per control point are no more than
-                // the dynamic threshold's rows and neither pass's cap binds: then it is skipped. (Jittery
-                // flourishes of 1,000 samples have ~205 rows and try at most 29 control points: the
-                // replay was 30 % of their fit time.) One count of margin covers the verify loop's
-                // test of the count after the last.
-                const int least = cs.closed ? 5 : 4;
-                const auto capOf = [&](int per) {
-                    return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size()));
-                };
-                for (int pass = 0; pass < 2 && !found; ++pass) {
-                    rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
-                    if (pass == 1 &&
-                        static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
-                        highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
-                        break;
-                    highest = 0;
-                    // interpolation beyond
-                    const int cap = capOf(rowsPer);
-                    // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
-                    // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
-                    int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
-                    FitPass a = trialAt(count);
-                    const auto climbing = [&](int climb) {
-                        return climb < kMaxClimbSteps ||
-                               (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
-                    };
-                    double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
-                    for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
-                        failed = count;
-                        missedBy = a.maxError;
-                        // (An open cubic has count - 3 spans, a closed one count.)
-                        const int extra = periodic ? 0 : 3;
-                        // (A trial that made no curve misses by an infinite error: the next count.)
-                        const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
-                        const int predicted =
-                            std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
-                        count = std::min(cap, std::max(count + 1, predicted));
-                        a = trialAt(count);
-                    }
-                    // A climb whose last step missed by more than the step before (the error is not
-                    // monotone in the count, and a count given up early reports its error after fewer
-                    // corrections) has jumped past counts the law cannot judge: those between the last
-                    // two misses are tried in turn before the search gives up. Two of the 16 jittery
-                    // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
-                    // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
-                    // and 32 control points in about 1 ms; 21 fits both, in about half that.
-                    if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
-                        for (int k = failed + 1; k < count; ++k) {
-                            FitPass b = trialAt(k);
-                            if (!fits(b)) {
-                                failed = k;  // (the bisection below starts above it)
-                                continue;
-                            }
-                            a = std::move(b);
-                            count = k;
-                            break;
-                        }
-                    }
-                    // Down by bisection between the largest count seen to miss and the count that fits:
-                    // a climb can land several counts above the least that fits (the law's prediction
-                    // from a large miss), and stepping down one count at a time took up to 6 trials on
-                    // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
-                    // at most 3. (The error does not fall strictly with the count, so the two can end
-                    // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
-                    // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
-                    for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
-                        const int mid = failed + (fitsAt - failed) / 2;
-                        FitPass b = trialAt(mid);
-                        if (fits(b)) {
-                            a = std::move(b);
-                            count = fitsAt = mid;
-                        } else {
-                            failed = mid;
-                        }
-                    }
-                    for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
-                        if (step > 0) {
-                            if (count > cap) break;
-                            a = trialAt(count);
-                        }
-                        found = take(a, count);
-                    }
-                }
-            }
-        }
-        if (!found && !(search && scan)) {
-            // Where the search found nothing, the error-driven fit (its knots then removed as
-            // SplineFitOptions::removal says: every knot by default since session 40; before, an open
-            // stroke's fit here was switched to every knot alone, spiral 19 -> 18).
-            refine(kMaxRefinements);
-        }
-        if (!res.converged) {
-            // Below the noise (a tolerance of a twentieth of a pixel on integer pixel samples) the
-            // dynamic threshold's subset leaves too few rows: the error-driven insertion runs out of
-            // room (one control point per point) before every sample is held. Every conditioned point
-            // then enters the least squares; an open stroke may also take averaged knots on every
-            // point (The NURBS Book eq. 9.69), which meet the Schoenberg-Whitney condition and so
-            // interpolate when nothing less does. The best of these is kept.
-            std::vector<int> all(static_cast<size_t>(cs.size()));
-            for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
-            SplineFitOptions fallback = sopt;
-            fallback.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
-            for (const KnotPlacement placement : {KnotPlacement::ErrorDriven, KnotPlacement::Averaged}) {
-                if (res.converged || (placement == KnotPlacement::Averaged && cs.closed)) break;
-                fallback.knotPlacement = placement;
-                const bool interpolate = placement == KnotPlacement::Averaged;
-                if (interpolate) fallback.fairing = 1e-10;
-                FitPass alt = fitConditioned(cs, fitPoints, corners, all, fallback, interpolate ? &fitPoints : nullptr);
-                const SampleDeviation dev =
-                    measureSamples(alt.curve, stroke.points, keep, kCheckSpacingShare * res.tolerance);
-                if (dev.maxError < res.maxError) {
-                    fit = std::move(alt);
-                    outliers.clear();
-                    res.maxError = dev.maxError;
-                    res.converged = dev.maxError <= res.tolerance;
-                }
-            }
-        }
-    };
-    fitReading(corners, true);
+    std::vector<int> outliers;  // the noise's outliers (noiseOutliers) of the fit taken
+    const Prepared prepared{stroke, options, cs, fitPoints, samples, keep};
+    fitReading(prepared, corners, true, res, fit, outliers);
     // A loop has two readings when it has at most one corner: periodic (C2 all round) and one
     // clamped piece from a point round to it (C0 there). Which needs fewer control points depends
     // on how the hand closed it, more than on whether a corner was detected: on the 2,400
@@ -742,7 +761,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         outliers.clear();
         bool made = true;
         try {
-            fitReading(other, false);
+            fitReading(prepared, other, false, res, fit, outliers);
         } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
             made = false;
         }
