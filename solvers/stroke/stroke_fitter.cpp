@@ -312,7 +312,14 @@ struct Prepared {
 void fitReading(const Prepared& p, const std::vector<int>& corners, bool searched, FitResult& res, FitPass& fit,
                 std::vector<int>& outliers)
 {
-    const auto& [stroke, options, cs, fitPoints, samples, keep] = p;
+    // (References, not a structured binding: clang 14, the sanitizer build's compiler, does not let
+    // the lambdas below capture a structured binding.)
+    const Stroke& stroke = p.stroke;
+    const FitOptions& options = p.options;
+    const ConditionedStroke& cs = p.cs;
+    const std::vector<Vec3>& fitPoints = p.fitPoints;
+    const std::vector<int>& samples = p.samples;
+    const std::vector<char>& keep = p.keep;
     SplineFitOptions sopt = options.spline;
     sopt.tolerance = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
     // The averaged-knot search (FitOptions::fewerControlPoints) applies to strokes without corners
