@@ -204,32 +204,35 @@ def parse_samples(samples):
     return {"points": pts, "times": times}
 
 
+DEV_SUBJECTS = ("s02", "s03", "s04", "s05", "s06")  # tests/data/unistrokes/README.md: s07-s11 are held out
+
+
+def unistroke_rows(subject):
+    """(gesture, speed, number, samples) of each drawing in a development subject's CSV (x y t; t in
+    ms), none when the file is absent."""
+    assert subject in DEV_SUBJECTS, f"{subject}: held-out subjects are not compared"
+    path = os.path.join(ROOT, "tests", "data", "unistrokes", f"{subject}.csv")
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        for row in csv.reader(f):
+            yield row[0], row[1], int(row[2]), row[3]
+
+
 def load_real():
-    """The REAL_PICKS drawings of REAL_GESTURES from the unistroke CSVs (x y t; t in ms)."""
+    """The REAL_PICKS drawings of REAL_GESTURES."""
     out = []
-    folder = os.path.join(ROOT, "tests", "data", "unistrokes")
     for subject, speed, number in REAL_PICKS:
-        path = os.path.join(folder, f"{subject}.csv")
-        if not os.path.exists(path):
-            continue
-        with open(path) as f:
-            for row in csv.reader(f):
-                gesture, sp, num, samples = row[0], row[1], int(row[2]), row[3]
-                if gesture in REAL_GESTURES and sp == speed and num == number:
-                    out.append({"name": f"{gesture[:12]}-{subject}{sp[0]}{number}", "stroke": parse_samples(samples)})
+        for gesture, sp, num, samples in unistroke_rows(subject):
+            if gesture in REAL_GESTURES and sp == speed and num == number:
+                out.append({"name": f"{gesture[:12]}-{subject}{sp[0]}{number}", "stroke": parse_samples(samples)})
     return out
 
 
 def load_dev(gesture):
-    """Every development drawing (tests/data/unistrokes/README.md: s02-s06) of `gesture`."""
-    out = []
-    for subject in ("s02", "s03", "s04", "s05", "s06"):
-        path = os.path.join(ROOT, "tests", "data", "unistrokes", f"{subject}.csv")
-        with open(path) as f:
-            for row in csv.reader(f):
-                if row[0] == gesture:
-                    out.append({"name": f"{gesture[:8]}-{subject}{row[1][0]}{row[2]}", "stroke": parse_samples(row[3])})
-    return out
+    """Every development drawing of `gesture`."""
+    return [{"name": f"{gesture[:8]}-{subject}{sp[0]}{num}", "stroke": parse_samples(samples)}
+            for subject in DEV_SUBJECTS for g, sp, num, samples in unistroke_rows(subject) if g == gesture]
 
 
 def load_quickdraw(count):
