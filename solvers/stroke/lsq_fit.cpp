@@ -346,6 +346,10 @@ double removalDistance(const Spline& s, int r)
 // covers the few ratios that fall again (21 control points: 0.903, 0.899, 0.897). Counts far from
 // fitting (the search's first climbs) then cost two or three solves instead of nine.
 constexpr double kCorrectionRejection = 1.1;
+// SplineFitOptions::minimaxRounds: the largest error of the least squares (in tolerances) the
+// minimax rounds try to bring within the tolerance, and the least weight (of a mean of one).
+constexpr double kMinimaxReach = 1.5;
+constexpr double kMinimaxWeightFloor = 1e-3;
 
 SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions& opt)
 {
@@ -375,6 +379,47 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         // A closed curve (periodic, period 1) of N control points has N spans, one break each:
         // b_0 = 0 and b_j at the parameter j N_s / N samples along (interpolated between two),
         // so that every span holds N_s / N samples, the periodic form of the same averaging.
+        // SplineFitOptions::minimaxRounds: Lawson's algorithm (C. L. Lawson, 1961; the weights of
+        // a least squares whose fixed point is the minimax fit) on curve t, whose samples at their
+        // parameters uc miss the tolerance by e. Each round measures every sample at its parameter,
+        // moves the parameter a Newton step toward its foot point (as a correction does), multiplies
+        // its weight by its distance and solves the weighted least squares. The curve with the
+        // smallest maximum distance is returned with it.
+        auto minimax = [&](Spline t, double e, std::vector<double>& uc, size_t firstK, size_t endK) {
+            thread_local std::vector<double> w, dist;
+            w.assign(uc.size(), 1.0);
+            dist.assign(uc.size(), 0.0);
+            Spline best = t;
+            double bestError = e;
+            for (int round = 0; round < opt.minimaxRounds; ++round) {
+                double sum = 0.0;
+                for (size_t k = firstK; k < endK; ++k) {
+                    Vec3 d[3];
+                    t.eval(uc[k], d);
+                    dist[k] = (d[0] - X[S[k]]).norm();
+                    const double lo = k > 0 ? uc[k - 1] : uc.back() - 1.0;
+                    const double hi = k + 1 < uc.size() ? uc[k + 1] : uc.front() + 1.0;
+                    footPointNewtonStep(d[0], d[1], d[2], X[S[k]], lo, hi, uc[k]);
+                    w[k] *= dist[k];
+                    sum += w[k];
+                }
+                if (!(sum > 0.0)) break;
+                // Normalized to a mean of one (the fairing term's weight is relative to the samples'
+                // count), and never below kMinimaxWeightFloor: a sample the curve passes through
+                // would otherwise drop out of the least squares for good.
+                const double scale = static_cast<double>(endK - firstK) / sum;
+                for (size_t k = firstK; k < endK; ++k) w[k] = std::max(kMinimaxWeightFloor, w[k] * scale);
+                solve(t, X, S, uc, opt.fairing, &w);
+                double err = 0.0;
+                for (size_t k = 0; k < uc.size(); ++k) err = std::max(err, distanceAt(t, X[S[k]], uc[k]));
+                if (err < bestError) {
+                    best = t;
+                    bestError = err;
+                }
+                if (bestError <= (opt.minimaxWithin > 0.0 ? opt.minimaxWithin : opt.tolerance)) break;
+            }
+            return std::make_pair(std::move(best), bestError);
+        };
         auto averaged = [&](int nCtrl) {
             // This trial's parameters (corrected below), or those a stopped fit of the same count left.
             const AveragedCorrectionState* resume = opt.averagedControlPoints > 0 ? opt.averagedResume : nullptr;
@@ -424,6 +469,8 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             // neighbours'), the knots kept. The Newton step's evaluation also gives the sample's
             // distance at its parameter, so each correction measures the curve it corrects.
             double before = resume ? resume->error : std::numeric_limits<double>::infinity();
+            // (The error the least squares may leave for the minimax rounds to bring within.)
+            const double reach = opt.minimaxRounds > 0 ? kMinimaxReach : 1.0;
             for (int c = resume ? resume->done : 0; c < opt.averagedCorrections; ++c) {
                 double e = 0.0;  // the samples' largest distance at their parameters (the ends are P_0, P_n)
                 for (size_t k = firstK; k < endK; ++k) {
@@ -441,7 +488,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                     // than the projection says (at 8 control points, 19.0 after one correction,
                     // 16.4 after eight, projected 8.6).
                     const double r = std::min(1.0, e / before);
-                    if (e * std::pow(r, opt.averagedCorrections - c) > kCorrectionRejection * opt.tolerance)
+                    if (e * std::pow(r, opt.averagedCorrections - c) > kCorrectionRejection * reach * opt.tolerance)
                         return std::make_pair(t, e);
                 }
                 if (opt.averagedControlPoints > 0 && opt.averagedStopWhenWithin && e <= opt.tolerance &&
@@ -459,6 +506,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 // as a quick bound for rejecting it.
                 double e = 0.0;
                 for (size_t k = 0; k < uc.size(); ++k) e = std::max(e, distanceAt(t, X[S[k]], uc[k]));
+                if (e > opt.tolerance && e <= reach * opt.tolerance) return minimax(std::move(t), e, uc, firstK, endK);
                 return std::make_pair(t, e);
             }
             return std::make_pair(t, measureAll(t, in, S, uc, opt.tolerance));

@@ -68,6 +68,16 @@ struct SplineFitOptions {
     /// KnotPlacement::Averaged only: this many control points (> 0; no search), else the fewest
     /// within tolerance found by bisection.
     int averagedControlPoints = 0;
+    /// KnotPlacement::Averaged with averagedControlPoints: rounds of Lawson's algorithm after the
+    /// corrections when the samples still miss the tolerance (by at most kMinimaxReach): the least
+    /// squares reweighted toward the smallest maximum distance (each sample's weight times its
+    /// distance, normalized), one Hoschek correction per round; the round whose curve has the
+    /// smallest maximum distance is kept, the first within the tolerance ends them. The tolerance
+    /// bounds the largest distance, which least squares does not minimize: on strokes whose noise is
+    /// near the tolerance a minimax curve needs fewer control points. 0: least squares only.
+    int minimaxRounds = 0;
+    /// The minimax rounds end once every sample is within this (0: the tolerance).
+    double minimaxWithin = 0.0;
     /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every
     /// sample lies within the tolerance at its parameter (the count is then known to fit, which is
     /// all a search's trial asks), leaving the corrections' state in SplineFitResult::correction.

@@ -57,7 +57,7 @@ double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u)
 }
 
 void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-              int first, int last, std::vector<SpanSums>& sums)
+              int first, int last, std::vector<SpanSums>& sums, const std::vector<double>* weights)
 {
     const int spans = s.spanCount();
     if (static_cast<int>(sums.size()) < spans) sums.resize(spans);
@@ -78,6 +78,18 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
             spanBasis = SpanBasis<kDegree>(s.knots, i + kDegree);
         }
         spanBasis.functions(u[k], basis);
+        if (weights) {
+            // (The weighted sums: each basis value times the sample's weight on one side.)
+            SpanSums& t = sums[i];
+            const double w = (*weights)[k];
+            const Vec3& x = X[S[k]];
+            for (int q = 0; q <= kDegree; ++q) {
+                const double wb = w * basis[q];
+                t.r[q] += wb * x;
+                for (int r = 0; r <= q; ++r) t.g[q][r] += wb * basis[r];
+            }
+            continue;
+        }
         SpanSums& t = sums[i];
         const Vec3& x = X[S[k]];
         for (int q = 0; q <= kDegree; ++q) {
@@ -215,8 +227,9 @@ constexpr int kDenseCyclic = 96;
 // The periodic normal equations, entry by entry: addA(i, j, v) adds v to A(i, j) (both triangles),
 // addB(i, x) adds x to row i of the right-hand side.
 template <class AddA, class AddB>
-void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-                    double lambda, AddA&& addA, AddB&& addB)
+void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
+                    const std::vector<double>& u, const std::vector<double>* weights, double lambda, AddA&& addA,
+                    AddB&& addB)
 {
     const int n = s.unknowns();
     for (size_t k = 0; k < S.size(); ++k) {
@@ -224,10 +237,12 @@ void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vect
         const int span = findSpan(kDegree, s.knots, uk);
         const BasisDerivatives<kDegree, 0> nk = evaluateBasis<kDegree, 0>(s.knots, span, uk);
         const auto& basis = nk.d[0];
+        const double w = weights ? (*weights)[k] : 1.0;
         for (int q = 0; q <= kDegree; ++q) {
             const int i = (span - kDegree + q) % n;
-            addB(i, basis[q] * X[S[k]]);
-            for (int r = 0; r <= kDegree; ++r) addA(i, (span - kDegree + r) % n, basis[q] * basis[r]);
+            const double wb = w * basis[q];
+            addB(i, wb * X[S[k]]);
+            for (int r = 0; r <= kDegree; ++r) addA(i, (span - kDegree + r) % n, wb * basis[r]);
         }
     }
     for (int c = 0; c < n; ++c) {
@@ -239,7 +254,7 @@ void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vect
 }
 
 void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-                 double fairing)
+                 double fairing, const std::vector<double>* weights)
 {
     const int n = s.unknowns();
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
@@ -251,14 +266,16 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
         thread_local Eigen::MatrixXd a;
         thread_local Eigen::LLT<Eigen::MatrixXd> llt;
         a.setZero(n, n);
-        assembleClosed(s, X, S, u, lambda, [&](int i, int j, double v) { a(i, j) += v; }, addB);
+        assembleClosed(
+            s, X, S, u, weights, lambda, [&](int i, int j, double v) { a(i, j) += v; }, addB);
         llt.compute(a);
         if (llt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
         llt.solveInPlace(b);
     } else {
         std::vector<Eigen::Triplet<double>> trip;
         trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
-        assembleClosed(s, X, S, u, lambda, [&](int i, int j, double v) { trip.emplace_back(i, j, v); }, addB);
+        assembleClosed(
+            s, X, S, u, weights, lambda, [&](int i, int j, double v) { trip.emplace_back(i, j, v); }, addB);
         Eigen::SparseMatrix<double> a(n, n);
         a.setFromTriplets(trip.begin(), trip.end());
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
@@ -270,18 +287,18 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
 }
 
 void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-           double fairing)
+           double fairing, const std::vector<double>* weights)
 {
     s.makeKnots();
     if (s.closed) {
-        solveClosed(s, X, S, u, fairing);
+        solveClosed(s, X, S, u, fairing, weights);
         s.buildPowerForm();
         return;
     }
     // The sums' storage is kept between solves (a fit solves a few dozen times; spanSums zeroes
     // the spans it sums, and solveOpenFromSums reads the first spanCount() only).
     thread_local std::vector<SpanSums> sums;
-    spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
+    spanSums(s, X, S, u, 0, s.spanCount() - 1, sums, weights);
     solveOpenFromSums(s, X, S, sums, fairing);
 }
 

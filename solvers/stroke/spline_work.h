@@ -126,9 +126,10 @@ struct SpanSums {
     double g[kDegree + 1][kDegree + 1] = {};
     Vec3 r[kDegree + 1] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
 };
-/// Sums of the spans first..last of s (knots made; sums grown to s.spanCount() if shorter).
+/// Sums of the spans first..last of s (knots made; sums grown to s.spanCount() if shorter), each
+/// sample's terms times its weight when `weights` (one per entry of S) is given.
 void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
-              int first, int last, std::vector<SpanSums>& sums);
+              int first, int last, std::vector<SpanSums>& sums, const std::vector<double>* weights = nullptr);
 /// The sums of s (open, knots made) from oldSums, the sums over the same samples and parameters
 /// for the breaks oldBreaks: spans whose six breaks are unchanged keep theirs, the others (around
 /// inserted knots) are summed again.
@@ -144,7 +145,9 @@ void sumsWithoutBreak(Spline& t, int r, const std::vector<Vec3>& X, const std::v
 void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
                        const std::vector<SpanSums>& sums, double fairing);
 /// Least squares with the fairing term for the spline's breaks (makes knots, solves, builds the
-/// power form). Open: P_0 and P_n fixed to the first and last sample.
-void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u, double fairing);
+/// power form). Open: P_0 and P_n fixed to the first and last sample. `weights` (one per entry of
+/// S, positive): a weighted least squares (the minimax rounds, SplineFitOptions::minimaxRounds).
+void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
+           double fairing, const std::vector<double>* weights = nullptr);
 
 }  // namespace sculptline::solvers::stroke::detail

@@ -83,6 +83,17 @@ constexpr int kRowRounds = 4;
 // and miss a raw sample by 16.7). Two, the least that leaves each control point over-determined;
 // three gave no more on scripts/compare_splprep.py (minimize mode 25 of 28 strokes against 27).
 constexpr int kDenseRowsPerPoint = 2;
+// Lawson rounds (SplineFitOptions::minimaxRounds) of the minimax trials below. On the 2,400
+// development strokes (unistroke-report --fit-dev; the least squares alone 57,342 control points):
+// 6 rounds 57,172, 10 rounds 57,148, 20 rounds 57,124 (for a tenth more time than 10).
+constexpr int kMinimaxRounds = 10;
+// The search is run again with minimax trials where the least squares' count leaves fewer than this
+// many conditioned points per control point: there the fit follows the digitizer's noise (a circle
+// of 39 samples drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and
+// the largest distance, which the tolerance bounds, is far above the least squares' mean one. On
+// the development strokes: 57,217 control points with 2, 57,163 with 4 and 57,154 with every
+// stroke, for 21 % more instructions with 4 (BM_StrokeRecorded/0, callgrind) and more beyond.
+constexpr int kNoiseRowsPerPoint = 4;
 
 // What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
 // conditioned stroke with the points the least squares fits, the dynamic threshold's rows and the
@@ -161,7 +172,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / err);
         }
     };
-    bool found = false;
+    bool found = false, refined = false;
     if (search) {
         // The fewest control points with knots averaged over the samples' parameters (The NURBS
         // Book eq. 9.69) and the parameters corrected toward their foot points (Hoschek). A count
@@ -171,6 +182,12 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
         alt.knotPlacement = KnotPlacement::Averaged;
         alt.averagedCorrections = kAveragedCorrections;
         alt.tolerance = res.tolerance;
+        // The count a trial is asked for is the curve's points less this: a closed curve repeats 3
+        // points, and a loop's one clamped piece has its seam point twice.
+        const int countOffset = !cs.closed ? 0 : periodic ? 3 : 2;
+        // (The minimax trials, after the search, end their rounds where the least squares' points,
+        // smoothed by up to cs.smoothingShift, leave every drawn point within the tolerance.)
+        alt.minimaxWithin = std::max(kMinInnerShare * res.tolerance, res.tolerance - cs.smoothingShift);
         int rowsPer = 0;  // 0: the rows given; else at least rowsPer * count (kDenseRowsPerPoint)
         std::vector<int> dense;
         int highest = 0;  // the largest count tried in this pass
@@ -246,14 +263,25 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             const AveragedCorrectionState state = std::move(a.correction);
             alt.averagedStopWhenWithin = false;
             alt.averagedResume = &state;
+            // (A count judged to fit is finished by least squares alone: its curve is the one the
+            // least squares' search would take. Its rows' distances, measured at their parameters,
+            // can end above the tolerance while every raw sample's own distance is within it, and
+            // minimax rounds from there lost such counts: a fast circle 12 -> 23 control points.)
+            const int rounds = alt.minimaxRounds;
+            alt.minimaxRounds = 0;
             a = trial(count, rows);
+            alt.minimaxRounds = rounds;
             alt.averagedResume = nullptr;
             alt.averagedStopWhenWithin = true;
         };
         // A count whose samples fit is taken when every kept raw sample is within the tolerance too.
+        // (A minimax trial, which replaces a fit already taken, is taken only with no more noise
+        // outliers than that fit: on the development strokes it otherwise left one, where the least
+        // squares leave none.)
+        bool replacing = false;
         auto accept = [&](FitPass& a, SampleDeviation& dev) {
             const double err = deviation(a.curve, dev);
-            if (!(err <= res.tolerance)) return false;
+            if (!(err <= res.tolerance) || (replacing && suspects.size() > outliers.size())) return false;
             fit = std::move(a);
             outliers = suspects;
             res.maxError = err;
@@ -301,9 +329,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             // Counting up from the smallest, below the error-driven count: never more than the
             // default's search (the error does not fall strictly with the count).
             refine(kMaxRefinements);
-            // (The count a trial is asked for: a closed curve repeats 3 points, and a loop's one
-            // clamped piece has its seam point twice.)
-            const int errorDriven = fit.curve.pointCount() - (!cs.closed ? 0 : periodic ? 3 : 2);
+            const int errorDriven = fit.curve.pointCount() - countOffset;
             const int ceiling = errorDriven - (res.converged ? 1 : 0);
             rowsPer = kDenseRowsPerPoint;
             for (int count = cs.closed ? 5 : 4; count <= ceiling && !found; ++count) {
@@ -349,83 +375,123 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             const auto capOf = [&](int per) {
                 return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size()));
             };
-            for (int pass = 0; pass < 2 && !found; ++pass) {
-                rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
-                if (pass == 1 &&
-                    static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
-                    highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
-                    break;
-                highest = 0;
-                // interpolation beyond
-                const int cap = capOf(rowsPer);
-                // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
-                // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
-                int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
-                FitPass a = trialAt(count);
-                const auto climbing = [&](int climb) {
-                    return climb < kMaxClimbSteps ||
-                           (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
-                };
-                double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
-                for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
-                    failed = count;
-                    missedBy = a.maxError;
-                    // (An open cubic has count - 3 spans, a closed one count.)
-                    const int extra = periodic ? 0 : 3;
-                    // (A trial that made no curve misses by an infinite error: the next count.)
-                    const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
-                    const int predicted =
-                        std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
-                    count = std::min(cap, std::max(count + 1, predicted));
-                    a = trialAt(count);
-                }
-                // A climb whose last step missed by more than the step before (the error is not
-                // monotone in the count, and a count given up early reports its error after fewer
-                // corrections) has jumped past counts the law cannot judge: those between the last
-                // two misses are tried in turn before the search gives up. Two of the 16 jittery
-                // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
-                // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
-                // and 32 control points in about 1 ms; 21 fits both, in about half that.
-                if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
-                    for (int k = failed + 1; k < count; ++k) {
-                        FitPass b = trialAt(k);
-                        if (!fits(b)) {
-                            failed = k;  // (the bisection below starts above it)
-                            continue;
-                        }
-                        a = std::move(b);
-                        count = k;
+            auto predictedSearch = [&](int ceiling) {
+                bool got = false;
+                for (int pass = 0; pass < 2 && !got; ++pass) {
+                    rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
+                    if (pass == 1 &&
+                        static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
+                        highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
                         break;
-                    }
-                }
-                // Down by bisection between the largest count seen to miss and the count that fits:
-                // a climb can land several counts above the least that fits (the law's prediction
-                // from a large miss), and stepping down one count at a time took up to 6 trials on
-                // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
-                // at most 3. (The error does not fall strictly with the count, so the two can end
-                // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
-                // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
-                for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
-                    const int mid = failed + (fitsAt - failed) / 2;
-                    FitPass b = trialAt(mid);
-                    if (fits(b)) {
-                        a = std::move(b);
-                        count = fitsAt = mid;
-                    } else {
-                        failed = mid;
-                    }
-                }
-                for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
-                    if (step > 0) {
-                        if (count > cap) break;
+                    highest = 0;
+                    // interpolation beyond
+                    const int cap = std::min(ceiling, capOf(rowsPer));
+                    // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
+                    // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
+                    int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
+                    FitPass a = trialAt(count);
+                    const auto climbing = [&](int climb) {
+                        return climb < kMaxClimbSteps ||
+                               (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
+                    };
+                    double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
+                    for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
+                        failed = count;
+                        missedBy = a.maxError;
+                        // (An open cubic has count - 3 spans, a closed one count.)
+                        const int extra = periodic ? 0 : 3;
+                        // (A trial that made no curve misses by an infinite error: the next count.)
+                        const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
+                        const int predicted =
+                            std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
+                        count = std::min(cap, std::max(count + 1, predicted));
                         a = trialAt(count);
                     }
-                    found = take(a, count);
+                    // A climb whose last step missed by more than the step before (the error is not
+                    // monotone in the count, and a count given up early reports its error after fewer
+                    // corrections) has jumped past counts the law cannot judge: those between the last
+                    // two misses are tried in turn before the search gives up. Two of the 16 jittery
+                    // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
+                    // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
+                    // and 32 control points in about 1 ms; 21 fits both, in about half that.
+                    if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
+                        for (int k = failed + 1; k < count; ++k) {
+                            FitPass b = trialAt(k);
+                            if (!fits(b)) {
+                                failed = k;  // (the bisection below starts above it)
+                                continue;
+                            }
+                            a = std::move(b);
+                            count = k;
+                            break;
+                        }
+                    }
+                    // Down by bisection between the largest count seen to miss and the count that fits:
+                    // a climb can land several counts above the least that fits (the law's prediction
+                    // from a large miss), and stepping down one count at a time took up to 6 trials on
+                    // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
+                    // at most 3. (The error does not fall strictly with the count, so the two can end
+                    // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
+                    // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
+                    for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
+                        const int mid = failed + (fitsAt - failed) / 2;
+                        FitPass b = trialAt(mid);
+                        if (fits(b)) {
+                            a = std::move(b);
+                            count = fitsAt = mid;
+                        } else {
+                            failed = mid;
+                        }
+                    }
+                    for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !got; ++step, ++count) {
+                        if (step > 0) {
+                            if (count > cap) break;
+                            a = trialAt(count);
+                        }
+                        got = take(a, count);
+                    }
+                }
+                return got;
+            };
+            found = predictedSearch(std::numeric_limits<int>::max());
+            if (!found) {
+                refine(kMaxRefinements);
+                refined = true;
+            }
+            // Where the count follows the noise (kNoiseRowsPerPoint), the search again below it with
+            // minimax trials (SplineFitOptions::minimaxRounds): the tolerance bounds the largest
+            // distance, which the least squares does not minimize. Any count it takes has fewer
+            // control points. (Its first trials' answers are not the least squares'.)
+            if (res.converged && options.minimaxTrials) {
+                const int current = fit.curve.pointCount() - countOffset;
+                if (current - 1 >= least && current * kNoiseRowsPerPoint >= cs.size()) {
+                    firstTrials.clear();
+                    firstRefused.clear();
+                    alt.minimaxRounds = kMinimaxRounds;
+                    replacing = true;
+                    found = predictedSearch(current - 1) || found;
                 }
             }
         }
+        if (res.converged && options.minimaxTrials) {
+            // Then down from the count taken, one count at a time while the count below fits: minimax
+            // trials on every conditioned point (the rows that hold the noise the least squares'
+            // rows skip). A count is taken only when every kept raw sample is within the tolerance.
+            // (The counts do not fall monotonically; the search above reaches the counts well below.)
+            const int least = cs.closed ? 5 : 4;
+            std::vector<int> all(static_cast<size_t>(cs.size()));
+            for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
+            alt.minimaxRounds = kMinimaxRounds;
+            alt.averagedStopWhenWithin = false;
+            replacing = true;
+            for (int k = fit.curve.pointCount() - countOffset - 1; k >= least; --k) {
+                FitPass a = trial(k, all);
+                SampleDeviation dev;
+                if (!fits(a) || !accept(a, dev)) break;
+            }
+        }
     }
-    if (!found && !(search && scan)) {
+    if (!found && !refined && !(search && scan)) {
         // Where the search found nothing, the error-driven fit (its knots then removed as
         // SplineFitOptions::removal says: every knot by default since session 40; before, an open
         // stroke's fit here was switched to every knot alone, spiral 19 -> 18).

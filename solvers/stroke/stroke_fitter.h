@@ -60,6 +60,13 @@ struct FitOptions {
     /// corner, or from its seam), and the reading with fewer control points is taken
     /// (stroke_fitter.cpp). false: the detected corners alone decide (before session 42).
     bool bothLoopReadings = true;
+    /// After the search, counts below the one taken are tried with minimax trials (Lawson's
+    /// reweighted least squares, SplineFitOptions::minimaxRounds): the tolerance bounds the
+    /// largest distance, which least squares does not minimize, and on strokes whose noise is near
+    /// the tolerance a minimax curve needs fewer control points (stroke_fitter.cpp). A count is
+    /// taken only when every kept raw sample is within the tolerance. false: least squares alone
+    /// (before session 43).
+    bool minimaxTrials = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;

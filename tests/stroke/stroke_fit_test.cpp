@@ -106,10 +106,14 @@ TEST(StrokeFit, GivenLoopsWithGapOrOvershoot_WhenFitted_ThenCurveIsClosed)
             DrawOptions d;
             d.noise = kNoiseSigma;
             d.closureOffset = offset;
-            const FitResult r = fitStroke(draw(shape, d));
+            const Stroke s = draw(shape, d);
+            const FitResult r = fitStroke(s);
             EXPECT_TRUE(r.curve.isClosed()) << "offset " << offset;
             EXPECT_TRUE(r.converged);
-            EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9));
+            // The tolerance bounds the drawn samples kept (FitResult::tolerance; before session 43
+            // this read the conditioned points, which the least squares fitted; a minimax curve
+            // holds the drawn samples, and a loop's smoothed seam points can lie farther).
+            EXPECT_LE(maxDeviation(r.curve, keptSamples(s, r)), r.tolerance + kMeasureAgreement) << "offset " << offset;
         }
     }
 }

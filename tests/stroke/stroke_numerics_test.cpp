@@ -168,6 +168,115 @@ TEST(LeastSquaresSpline, GivenAnAveragedFitStoppedOnceItsSamplesFit_WhenResumed_
     EXPECT_GT(stoppedAt, 0) << "no count stopped early: the test exercises nothing";
 }
 
+// The weighted least squares (detail::solve with weights, the minimax rounds' solve) is the
+// weighted problem's minimum: the residuals are orthogonal to every free basis function in the
+// weighted inner product (sum_k w_k N_j(u_k) (C(u_k) - x_k) = 0; no fairing term), open and
+// periodic; and the weights change the curve (weights of one give the unweighted solve, to the bit).
+TEST(LeastSquaresSpline, GivenWeights_WhenSolved_ThenTheWeightedNormalEquationsHold)
+{
+    using namespace solvers::stroke::detail;
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> weight(0.05, 3.0);
+    std::normal_distribution<double> noise(0.0, 0.3);
+    for (const bool closed : {false, true}) {
+        std::vector<Eigen::Vector3d> pts;
+        std::vector<double> u;
+        std::vector<int> S;
+        const int m = 120;
+        for (int i = 0; i < m; ++i) {
+            const double t = closed ? i / double(m) : i / double(m - 1);
+            pts.emplace_back(40 * std::cos(6.283185307179586 * t) + noise(rng),
+                             25 * std::sin(6.283185307179586 * t) + noise(rng), 0.0);
+            u.push_back(t);
+            S.push_back(i);
+        }
+        std::vector<double> w(m);
+        for (double& v : w) v = weight(rng);
+        Spline s, ones, plain;
+        s.closed = ones.closed = plain.closed = closed;
+        s.breaks = closed ? std::vector<double>{0.0, 0.13, 0.27, 0.4, 0.55, 0.7, 0.84}
+                          : std::vector<double>{0.0, 0.13, 0.27, 0.4, 0.55, 0.7, 0.84, 1.0};
+        ones.breaks = plain.breaks = s.breaks;
+        solve(s, pts, S, u, 0.0, &w);
+        const std::vector<double> unit(m, 1.0);
+        solve(ones, pts, S, u, 0.0, &unit);
+        solve(plain, pts, S, u, 0.0);
+        EXPECT_EQ(ones.ctrl, plain.ctrl) << "closed " << closed;
+        double moved = 0.0;
+        for (size_t i = 0; i < s.ctrl.size(); ++i) moved = std::max(moved, (s.ctrl[i] - plain.ctrl[i]).norm());
+        EXPECT_GT(moved, 0.01) << "closed " << closed << ": the weights changed nothing";
+
+        // The weighted normal equations, from the basis evaluated independently of the solve.
+        const int n = s.unknowns();
+        std::vector<Eigen::Vector3d> grad(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+        double scale = 0.0;
+        const int first = closed ? 0 : 1, last = closed ? m : m - 1;  // (open: the ends are P_0, P_n)
+        for (int k = first; k < last; ++k) {
+            const double uk = s.wrap(u[k]);
+            const int span = solvers::findSpan(kDegree, s.knots, uk);
+            const auto b = solvers::evaluateBasis<kDegree, 0>(s.knots, span, uk);
+            Eigen::Vector3d c = Eigen::Vector3d::Zero();
+            for (int q = 0; q <= kDegree; ++q) c += b.d[0][q] * s.ctrl[span - kDegree + q];
+            const Eigen::Vector3d r = c - pts[k];
+            for (int q = 0; q <= kDegree; ++q) {
+                const int j = closed ? (span - kDegree + q) % n : span - kDegree + q;
+                grad[static_cast<size_t>(j)] += w[k] * b.d[0][q] * r;
+            }
+            scale += w[k] * r.norm();
+        }
+        // Round-off of sums of ~100 terms of the residuals' size, relative to their weighted sum.
+        constexpr double kOrthogonality = 1e-10;
+        for (int j = closed ? 0 : 1; j < (closed ? n : n - 1); ++j)
+            EXPECT_LE(grad[static_cast<size_t>(j)].norm(), kOrthogonality * scale)
+                << "closed " << closed << " basis " << j;
+    }
+}
+
+// SplineFitOptions::minimaxRounds: at a fixed averaged count, the minimax rounds never leave a
+// larger maximum distance than the least squares (the best round is kept), and they bring counts
+// within the tolerance that the least squares misses: a circle of 60 points rounded to the pixel
+// (the noise of the $1 logs) at a tolerance of 0.45 pixel.
+TEST(LeastSquaresSpline, GivenPixelNoise_WhenMinimaxRoundsFollowTheCorrections_ThenTheLargestDistanceFallsWithin)
+{
+    std::vector<Eigen::Vector3d> pts;
+    const int m = 60;
+    for (int i = 0; i < m; ++i) {
+        const double t = 6.283185307179586 * i / m;
+        pts.emplace_back(std::round(30 * std::cos(t) + 0.3 * std::sin(3 * t)), std::round(22 * std::sin(t)), 0.0);
+    }
+    std::vector<double> chord(m, 0.0);
+    double length = 0.0;
+    for (int i = 1; i <= m; ++i) {
+        length += (pts[i % m] - pts[i - 1]).norm();
+        if (i < m) chord[i] = length;
+    }
+    for (double& c : chord) c /= length;
+    SplineFitInput in;
+    in.points = &pts;
+    in.chord = &chord;
+    in.closed = true;
+    for (int i = 0; i < m; ++i) in.samples.push_back(i);
+    SplineFitOptions o;
+    o.tolerance = 0.45;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 8;
+    int leastSquares = 0, minimax = 0;  // the fewest counts within the tolerance
+    for (int count = 6; count <= 40; ++count) {
+        o.averagedControlPoints = count;
+        o.minimaxRounds = 0;
+        const SplineFitResult a = fitCubicSpline(in, o);
+        o.minimaxRounds = 10;
+        const SplineFitResult b = fitCubicSpline(in, o);
+        EXPECT_LE(b.maxError, a.maxError) << count;
+        if (a.maxError <= o.tolerance && leastSquares == 0) leastSquares = count;
+        if (b.maxError <= o.tolerance && minimax == 0) minimax = count;
+    }
+    std::printf("fewest control points within %.2f: least squares %d, minimax rounds %d\n", o.tolerance, leastSquares,
+                minimax);
+    ASSERT_GT(minimax, 0);
+    EXPECT_TRUE(leastSquares == 0 || minimax < leastSquares);
+}
+
 TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
 {
     // A single cubic Bezier segment is in the spline space: the fit must reproduce it.
