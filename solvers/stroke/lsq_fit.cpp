@@ -416,7 +416,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                     best = t;
                     bestError = err;
                 }
-                if (bestError <= (opt.minimaxWithin > 0.0 ? opt.minimaxWithin : opt.tolerance)) break;
+                if (opt.minimaxWithin >= 0.0 &&
+                    bestError <= (opt.minimaxWithin > 0.0 ? opt.minimaxWithin : opt.tolerance))
+                    break;
             }
             return std::make_pair(std::move(best), bestError);
         };

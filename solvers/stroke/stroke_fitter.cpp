@@ -84,15 +84,25 @@ constexpr int kRowRounds = 4;
 // three gave no more on scripts/compare_splprep.py (minimize mode 25 of 28 strokes against 27).
 constexpr int kDenseRowsPerPoint = 2;
 // Lawson rounds (SplineFitOptions::minimaxRounds) of the minimax trials below. On the 2,400
-// development strokes (unistroke-report --fit-dev; the least squares alone 57,342 control points):
-// 6 rounds 57,172, 10 rounds 57,148, 20 rounds 57,124 (for a tenth more time than 10).
+// development strokes (unistroke-report --fit-dev; the least squares alone 57,342 control points),
+// measured with 8 corrections before the rounds: 6 rounds 57,172, 10 rounds 57,148, 20 rounds
+// 57,124 (for a tenth more time than 10).
 constexpr int kMinimaxRounds = 10;
+// Hoschek corrections before a minimax trial's rounds (each round corrects the parameters too).
+// Development strokes: 57,154 control points with the search's 8, 57,107 with 3, 57,149 with 2 and
+// 57,147 with 1; 411 against 438 M instructions with 8 (BM_StrokeRecorded/0, callgrind).
+constexpr int kMinimaxCorrections = 3;
+// Rounds run to the end on the count a minimax trial took (see the descent below). On the 150
+// development circles against the peers (compare_splprep.py --dev circle): 145 -> 146 of 163
+// strokes (with the 13 synthesized) meet the fewer peer, for 3 % more instructions.
+constexpr int kPolishRounds = 20;
 // The search is run again with minimax trials where the least squares' count leaves fewer than this
 // many conditioned points per control point: there the fit follows the digitizer's noise (a circle
 // of 39 samples drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and
 // the largest distance, which the tolerance bounds, is far above the least squares' mean one. On
-// the development strokes: 57,217 control points with 2, 57,163 with 4 and 57,154 with every
-// stroke, for 21 % more instructions with 4 (BM_StrokeRecorded/0, callgrind) and more beyond.
+// the development strokes (8 corrections before the rounds): 57,217 control points with 2, 57,163
+// with 4 and 57,154 with every stroke, for 21 % more instructions with 4 (BM_StrokeRecorded/0,
+// callgrind, with the descent below) and more beyond.
 constexpr int kNoiseRowsPerPoint = 4;
 
 // What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
@@ -278,10 +288,11 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
         // (A minimax trial, which replaces a fit already taken, is taken only with no more noise
         // outliers than that fit: on the development strokes it otherwise left one, where the least
         // squares leave none.)
-        bool replacing = false;
+        bool replacing = false, byMinimax = false;
         auto accept = [&](FitPass& a, SampleDeviation& dev) {
             const double err = deviation(a.curve, dev);
             if (!(err <= res.tolerance) || (replacing && suspects.size() > outliers.size())) return false;
+            byMinimax = replacing;
             fit = std::move(a);
             outliers = suspects;
             res.maxError = err;
@@ -468,6 +479,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                     firstTrials.clear();
                     firstRefused.clear();
                     alt.minimaxRounds = kMinimaxRounds;
+                    alt.averagedCorrections = kMinimaxCorrections;
                     replacing = true;
                     found = predictedSearch(current - 1) || found;
                 }
@@ -482,12 +494,28 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             std::vector<int> all(static_cast<size_t>(cs.size()));
             for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
             alt.minimaxRounds = kMinimaxRounds;
+            alt.averagedCorrections = kMinimaxCorrections;
             alt.averagedStopWhenWithin = false;
             replacing = true;
             for (int k = fit.curve.pointCount() - countOffset - 1; k >= least; --k) {
                 FitPass a = trial(k, all);
                 SampleDeviation dev;
                 if (!fits(a) || !accept(a, dev)) break;
+            }
+            // A count a minimax trial took is its curve once its rounds stop, anywhere within the
+            // tolerance. Its rounds are then run to the end (kPolishRounds, the best kept): the
+            // curve as close to the drawn samples as that count allows.
+            if (byMinimax) {
+                alt.minimaxRounds = kPolishRounds;
+                alt.minimaxWithin = -1.0;
+                FitPass a = trial(fit.curve.pointCount() - countOffset, all);
+                SampleDeviation dev;
+                const double err = deviation(a.curve, dev);
+                if (err < res.maxError && suspects.size() <= outliers.size()) {
+                    fit = std::move(a);
+                    outliers = suspects;
+                    res.maxError = err;
+                }
             }
         }
     }
