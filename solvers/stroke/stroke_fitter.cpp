@@ -85,24 +85,26 @@ constexpr int kRowRounds = 4;
 constexpr int kDenseRowsPerPoint = 2;
 // Lawson rounds (SplineFitOptions::minimaxRounds) of the minimax trials below. On the 2,400
 // development strokes (unistroke-report --fit-dev; the least squares alone 57,342 control points),
-// measured with 8 corrections before the rounds: 6 rounds 57,172, 10 rounds 57,148, 20 rounds
-// 57,124 (for a tenth more time than 10).
+// measured with 8 corrections before the rounds and the second search of kNoiseRowsPerPoint's
+// note: 6 rounds 57,172, 10 rounds 57,148, 20 rounds 57,124 (for a tenth more time than 10).
 constexpr int kMinimaxRounds = 10;
 // Hoschek corrections before a minimax trial's rounds (each round corrects the parameters too).
-// Development strokes: 57,154 control points with the search's 8, 57,107 with 3, 57,149 with 2 and
-// 57,147 with 1; 411 against 438 M instructions with 8 (BM_StrokeRecorded/0, callgrind).
+// Development strokes, measured with the second search of kNoiseRowsPerPoint's note: 57,154 control
+// points with the search's 8, 57,107 with 3, 57,149 with 2 and 57,147 with 1; 411 against 438 M
+// instructions with 8 (BM_StrokeRecorded/0, callgrind).
 constexpr int kMinimaxCorrections = 3;
 // Rounds run to the end on the count a minimax trial took (see the descent below). On the 150
 // development circles against the peers (compare_splprep.py --dev circle): 145 -> 146 of 163
 // strokes (with the 13 synthesized) meet the fewer peer, for 3 % more instructions.
 constexpr int kPolishRounds = 20;
-// The search is run again with minimax trials where the least squares' count leaves fewer than this
-// many conditioned points per control point: there the fit follows the digitizer's noise (a circle
-// of 39 samples drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and
-// the largest distance, which the tolerance bounds, is far above the least squares' mean one. On
-// the development strokes (8 corrections before the rounds): 57,217 control points with 2, 57,163
-// with 4 and 57,154 with every stroke, for 21 % more instructions with 4 (BM_StrokeRecorded/0,
-// callgrind, with the descent below) and more beyond.
+// The minimax trials bisect below the count taken where it leaves fewer than this many conditioned
+// points per control point: there the fit follows the digitizer's noise (a circle of 39 samples
+// drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and the largest
+// distance, which the tolerance bounds, is far above the least squares' mean one. On the
+// development strokes: 57,070 control points with 3, 57,037 with 4, 57,029 with 6 or every stroke,
+// for 391 / 399 / 425 / 447 M instructions (BM_StrokeRecorded/0, callgrind; 358 M without the
+// minimax trials). (Searching again with the climbs and rows of the least squares' search
+// instead of the bisection on every point: 57,107 control points for 421 M.)
 constexpr int kNoiseRowsPerPoint = 4;
 
 // What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
@@ -386,110 +388,94 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             const auto capOf = [&](int per) {
                 return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size()));
             };
-            auto predictedSearch = [&](int ceiling) {
-                bool got = false;
-                for (int pass = 0; pass < 2 && !got; ++pass) {
-                    rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
-                    if (pass == 1 &&
-                        static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
-                        highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
+            for (int pass = 0; pass < 2 && !found; ++pass) {
+                rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
+                if (pass == 1 &&
+                    static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
+                    highest + 1 < std::min(capOf(0), capOf(kDenseRowsPerPoint)))
+                    break;
+                highest = 0;
+                // interpolation beyond
+                const int cap = capOf(rowsPer);
+                // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
+                // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
+                int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
+                FitPass a = trialAt(count);
+                const auto climbing = [&](int climb) {
+                    return climb < kMaxClimbSteps ||
+                           (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
+                };
+                double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
+                for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
+                    failed = count;
+                    missedBy = a.maxError;
+                    // (An open cubic has count - 3 spans, a closed one count.)
+                    const int extra = periodic ? 0 : 3;
+                    // (A trial that made no curve misses by an infinite error: the next count.)
+                    const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
+                    const int predicted =
+                        std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
+                    count = std::min(cap, std::max(count + 1, predicted));
+                    a = trialAt(count);
+                }
+                // A climb whose last step missed by more than the step before (the error is not
+                // monotone in the count, and a count given up early reports its error after fewer
+                // corrections) has jumped past counts the law cannot judge: those between the last
+                // two misses are tried in turn before the search gives up. Two of the 16 jittery
+                // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
+                // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
+                // and 32 control points in about 1 ms; 21 fits both, in about half that.
+                if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
+                    for (int k = failed + 1; k < count; ++k) {
+                        FitPass b = trialAt(k);
+                        if (!fits(b)) {
+                            failed = k;  // (the bisection below starts above it)
+                            continue;
+                        }
+                        a = std::move(b);
+                        count = k;
                         break;
-                    highest = 0;
-                    // interpolation beyond
-                    const int cap = std::min(ceiling, capOf(rowsPer));
-                    // the largest count seen to miss (below the least a curve can have: 4 open, 5 closed;
-                    // a loop's clamped piece of 4 would leave 3 distinct points, too few for a periodic cubic)
-                    int count = std::min(kFirstCount, cap), failed = cs.closed ? 4 : 3;
-                    FitPass a = trialAt(count);
-                    const auto climbing = [&](int climb) {
-                        return climb < kMaxClimbSteps ||
-                               (climb < kMaxClimbSteps + kNearMissClimbs && a.maxError <= kNearMiss * res.tolerance);
-                    };
-                    double missedBy = std::numeric_limits<double>::infinity();  // the last miss's error before `a`
-                    for (int climb = 0; !fits(a) && count < cap && climbing(climb); ++climb) {
-                        failed = count;
-                        missedBy = a.maxError;
-                        // (An open cubic has count - 3 spans, a closed one count.)
-                        const int extra = periodic ? 0 : 3;
-                        // (A trial that made no curve misses by an infinite error: the next count.)
-                        const double spans = (count - extra) * std::pow(a.maxError / res.tolerance, 0.25);
-                        const int predicted =
-                            std::isfinite(spans) && spans < cap ? extra + static_cast<int>(std::ceil(spans)) : cap;
-                        count = std::min(cap, std::max(count + 1, predicted));
-                        a = trialAt(count);
-                    }
-                    // A climb whose last step missed by more than the step before (the error is not
-                    // monotone in the count, and a count given up early reports its error after fewer
-                    // corrections) has jumped past counts the law cannot judge: those between the last
-                    // two misses are tried in turn before the search gives up. Two of the 16 jittery
-                    // flourishes (BM_StrokeFitSeeds/1, seeds 3 and 15) climbed 20 (1.38 tolerances
-                    // after 6 corrections), 22 (2.44 after 2) and fell back to the error-driven fit, 30
-                    // and 32 control points in about 1 ms; 21 fits both, in about half that.
-                    if (!fits(a) && a.maxError > missedBy && count - failed > 1) {
-                        for (int k = failed + 1; k < count; ++k) {
-                            FitPass b = trialAt(k);
-                            if (!fits(b)) {
-                                failed = k;  // (the bisection below starts above it)
-                                continue;
-                            }
-                            a = std::move(b);
-                            count = k;
-                            break;
-                        }
-                    }
-                    // Down by bisection between the largest count seen to miss and the count that fits:
-                    // a climb can land several counts above the least that fits (the law's prediction
-                    // from a large miss), and stepping down one count at a time took up to 6 trials on
-                    // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
-                    // at most 3. (The error does not fall strictly with the count, so the two can end
-                    // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
-                    // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
-                    for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
-                        const int mid = failed + (fitsAt - failed) / 2;
-                        FitPass b = trialAt(mid);
-                        if (fits(b)) {
-                            a = std::move(b);
-                            count = fitsAt = mid;
-                        } else {
-                            failed = mid;
-                        }
-                    }
-                    for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !got; ++step, ++count) {
-                        if (step > 0) {
-                            if (count > cap) break;
-                            a = trialAt(count);
-                        }
-                        got = take(a, count);
                     }
                 }
-                return got;
-            };
-            found = predictedSearch(std::numeric_limits<int>::max());
-            if (!found) {
-                refine(kMaxRefinements);
-                refined = true;
-            }
-            // Where the count follows the noise (kNoiseRowsPerPoint), the search again below it with
-            // minimax trials (SplineFitOptions::minimaxRounds): the tolerance bounds the largest
-            // distance, which the least squares does not minimize. Any count it takes has fewer
-            // control points. (Its first trials' answers are not the least squares'.)
-            if (res.converged && options.minimaxTrials) {
-                const int current = fit.curve.pointCount() - countOffset;
-                if (current - 1 >= least && current * kNoiseRowsPerPoint >= cs.size()) {
-                    firstTrials.clear();
-                    firstRefused.clear();
-                    alt.minimaxRounds = kMinimaxRounds;
-                    alt.averagedCorrections = kMinimaxCorrections;
-                    replacing = true;
-                    found = predictedSearch(current - 1) || found;
+                // Down by bisection between the largest count seen to miss and the count that fits:
+                // a climb can land several counts above the least that fits (the law's prediction
+                // from a large miss), and stepping down one count at a time took up to 6 trials on
+                // the 32 flourishes of BM_StrokeFitSeeds (3-6 on 13 of them); the bisection takes
+                // at most 3. (The error does not fall strictly with the count, so the two can end
+                // at different counts: 16 clean flourishes 20.5 -> 19.9 control points on average,
+                // 16 jittery 23.2 -> 23.6; scripts/compare_splprep.py unchanged, 518 and 496.)
+                for (int fitsAt = count; fits(a) && fitsAt - 1 > failed;) {
+                    const int mid = failed + (fitsAt - failed) / 2;
+                    FitPass b = trialAt(mid);
+                    if (fits(b)) {
+                        a = std::move(b);
+                        count = fitsAt = mid;
+                    } else {
+                        failed = mid;
+                    }
+                }
+                for (int step = 0; step <= kVerifySteps && (step > 0 || fits(a)) && !found; ++step, ++count) {
+                    if (step > 0) {
+                        if (count > cap) break;
+                        a = trialAt(count);
+                    }
+                    found = take(a, count);
                 }
             }
         }
+        if (!found && !scan) {
+            refine(kMaxRefinements);  // (the error-driven fit, as below, before the minimax trials)
+            refined = true;
+        }
         if (res.converged && options.minimaxTrials) {
-            // Then down from the count taken, one count at a time while the count below fits: minimax
-            // trials on every conditioned point (the rows that hold the noise the least squares'
-            // rows skip). A count is taken only when every kept raw sample is within the tolerance.
-            // (The counts do not fall monotonically; the search above reaches the counts well below.)
+            // Minimax trials below the count taken (SplineFitOptions::minimaxRounds, on every
+            // conditioned point: the rows that hold the noise the least squares' rows skip): the
+            // tolerance bounds the largest distance, which the least squares does not minimize. A
+            // count is taken only when every kept raw sample is within the tolerance, with no more
+            // noise outliers. Where the count follows the noise (kNoiseRowsPerPoint), a bisection
+            // between the least count and the one taken; then down from the count reached, one at a
+            // time while the count below is taken. (The counts do not fall monotonically: the
+            // bisection reaches counts far below that a descent from the top stops short of.)
             const int least = cs.closed ? 5 : 4;
             std::vector<int> all(static_cast<size_t>(cs.size()));
             for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
@@ -497,10 +483,26 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             alt.averagedCorrections = kMinimaxCorrections;
             alt.averagedStopWhenWithin = false;
             replacing = true;
-            for (int k = fit.curve.pointCount() - countOffset - 1; k >= least; --k) {
-                FitPass a = trial(k, all);
+            std::set<int> missed;
+            const auto takes = [&](int count) {
+                if (missed.count(count) > 0) return false;
+                FitPass a = trial(count, all);
                 SampleDeviation dev;
-                if (!fits(a) || !accept(a, dev)) break;
+                if (fits(a) && accept(a, dev)) return true;
+                missed.insert(count);
+                return false;
+            };
+            const int current = fit.curve.pointCount() - countOffset;
+            if (current * kNoiseRowsPerPoint >= cs.size()) {
+                for (int lo = least - 1, hi = current; hi - lo > 1;) {
+                    const int mid = lo + (hi - lo) / 2;
+                    if (takes(mid))
+                        hi = mid;
+                    else
+                        lo = mid;
+                }
+            }
+            for (int k = fit.curve.pointCount() - countOffset - 1; k >= least && takes(k); --k) {
             }
             // A count a minimax trial took is its curve once its rounds stop, anywhere within the
             // tolerance. Its rounds are then run to the end (kPolishRounds, the best kept): the

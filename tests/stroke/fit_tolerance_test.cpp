@@ -109,17 +109,18 @@ TEST(FitTolerance, GivenSparseRealPigtail_WhenFitted_ThenNoMoreControlPointsThan
 // takes 35 clamped at its seam.
 TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
-    // Of the loops' control points, the least saving taken as a gain (measured 7.0 % when the
-    // readings came, session 42; 6.0 % since the minimax trials make the first reading's count
-    // fewer, session 43).
+    // Of the loops' control points, the least saving taken as a gain (measured 7.0 %). The minimax
+    // trials (session 43) are off in both fits: they make either reading's count fewer, and this
+    // measures the readings.
     constexpr double kMinSavedShare = 0.05;
     const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
     int loops = 0, one = 0, both = 0, fewer = 0;
     for (const Recording& rec : recs) {
         if (rec.gesture != "circle") continue;
-        FitOptions alone;
+        FitOptions alone, readings;
         alone.bothLoopReadings = false;
-        const FitResult a = fitStroke(rec.stroke, alone), b = fitStroke(rec.stroke);
+        alone.minimaxTrials = readings.minimaxTrials = false;
+        const FitResult a = fitStroke(rec.stroke, alone), b = fitStroke(rec.stroke, readings);
         const std::string name = rec.subject + " " + rec.speed + " " + std::to_string(rec.number);
         ASSERT_TRUE(b.converged) << name;
         EXPECT_LE(maxDeviation(b.curve, keptSamples(rec.stroke, b)), b.tolerance + kMeasureAgreement) << name;
@@ -148,8 +149,8 @@ TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlP
 // the tolerance, every kept raw sample still within it, and never more.
 TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
-    // Of the circles' control points, the least saving taken as a gain (measured 1.6 %: 5,176 ->
-    // 5,095 over the 150, a closed curve's 3 repeated points counted).
+    // Of the circles' control points, the least saving taken as a gain (measured 2.2 %: 5,176 ->
+    // 5,063 over the 150, a closed curve's 3 repeated points counted).
     constexpr double kMinSavedShare = 0.01;
     const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
     int strokes = 0, without = 0, with = 0, fewer = 0;
@@ -167,11 +168,11 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
         without += a.curve.pointCount();
         with += b.curve.pointCount();
         fewer += b.curve.pointCount() < a.curve.pointCount();
-        if (rec.subject == "s02" && rec.speed == "medium" && rec.number == 7) {
-            // 43 samples at a tolerance of 0.64 pixel: 21 control points by least squares, 11 with
-            // the minimax trials (FITPACK's splprep 18, OCCT 20 at our deviation before).
-            EXPECT_GE(a.curve.pointCount() - 3, 21) << "least squares";
-            EXPECT_LE(b.curve.pointCount() - 3, 12) << "minimax trials";
+        if (rec.subject == "s06" && rec.speed == "fast" && rec.number == 9) {
+            // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares, 14 with
+            // the minimax trials (FITPACK's splprep 21, OCCT 28 at the least squares' deviation).
+            EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
+            EXPECT_LE(b.curve.pointCount() - 3, 15) << "minimax trials";
         }
     }
     std::printf("%d circles: %d control points by least squares, %d with minimax trials (%d fewer)\n", strokes, without,
