@@ -659,8 +659,11 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
             made = false;
         }
-        if (!made || !res.converged || fit.curve.pointCount() - 3 >= distinct ||
-            outliers.size() > firstOutliers.size()) {
+        // (As many control points and closer to the drawn samples also takes it: a minimax curve,
+        // below, can end at the other reading's count with a larger deviation.)
+        const int otherDistinct = made ? fit.curve.pointCount() - 3 : 0;
+        if (!made || !res.converged || otherDistinct > distinct ||
+            (otherDistinct == distinct && !(res.maxError < firstError)) || outliers.size() > firstOutliers.size()) {
             fit = std::move(first);
             outliers = std::move(firstOutliers);
             res.maxError = firstError;
