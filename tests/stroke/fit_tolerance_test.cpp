@@ -107,38 +107,49 @@ TEST(FitTolerance, GivenSparseRealPigtail_WhenFitted_ThenNoMoreControlPointsThan
 // stays within the tolerance, and the loops need fewer in all (measured: 3,051 -> 2,838 control
 // points over the 96 loops). s03's eighth slow circle, whose periodic fit needs 80 control points,
 // takes 35 clamped at its seam.
+// Each of the 150 development circles fitted with `first` (a) and `second` (b): b holds the
+// tolerance on every kept raw sample, needs no more control points than a and reports the same
+// corners; `each(rec, name, a, b)` checks and counts the rest.
+template <class Each>
+void compareOnDevelopmentCircles(const FitOptions& first, const FitOptions& second, Each&& each)
+{
+    for (const Recording& rec : loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects())) {
+        if (rec.gesture != "circle") continue;
+        const FitResult a = fitStroke(rec.stroke, first), b = fitStroke(rec.stroke, second);
+        const std::string name = rec.subject + " " + rec.speed + " " + std::to_string(rec.number);
+        ASSERT_TRUE(b.converged) << name;
+        EXPECT_LE(maxDeviation(b.curve, keptSamples(rec.stroke, b)), b.tolerance + kMeasureAgreement) << name;
+        EXPECT_LE(b.curve.pointCount(), a.curve.pointCount()) << name;
+        EXPECT_EQ(a.corners, b.corners) << name << ": the detected corners are reported either way";
+        each(rec, name, a, b);
+    }
+}
+
 TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
     // Of the loops' control points, the least saving taken as a gain (measured 7.0 %). The minimax
     // trials (session 43) are off in both fits: they make either reading's count fewer, and this
     // measures the readings.
     constexpr double kMinSavedShare = 0.05;
-    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
     int loops = 0, one = 0, both = 0, fewer = 0;
-    for (const Recording& rec : recs) {
-        if (rec.gesture != "circle") continue;
-        FitOptions alone, readings;
-        alone.bothLoopReadings = false;
-        alone.minimaxTrials = readings.minimaxTrials = false;
-        const FitResult a = fitStroke(rec.stroke, alone), b = fitStroke(rec.stroke, readings);
-        const std::string name = rec.subject + " " + rec.speed + " " + std::to_string(rec.number);
-        ASSERT_TRUE(b.converged) << name;
-        EXPECT_LE(maxDeviation(b.curve, keptSamples(rec.stroke, b)), b.tolerance + kMeasureAgreement) << name;
-        EXPECT_EQ(a.corners, b.corners) << name << ": the detected corners are reported either way";
-        if (!b.conditioned.closed) {
-            EXPECT_EQ(a.curve.pointCount(), b.curve.pointCount()) << name << ": open strokes have one reading";
-            continue;
-        }
-        ++loops;
-        EXPECT_LE(b.curve.pointCount(), a.curve.pointCount()) << name;
-        one += a.curve.pointCount() - 3;
-        both += b.curve.pointCount() - 3;
-        fewer += b.curve.pointCount() < a.curve.pointCount();
-        if (rec.subject == "s03" && rec.speed == "slow" && rec.number == 8) {
-            EXPECT_GE(a.curve.pointCount() - 3, 70) << "periodic alone";
-            EXPECT_LE(b.curve.pointCount() - 3, 35) << "clamped at the seam";
-        }
-    }
+    FitOptions alone, readings;
+    alone.bothLoopReadings = false;
+    alone.minimaxTrials = readings.minimaxTrials = false;
+    compareOnDevelopmentCircles(
+        alone, readings, [&](const Recording& rec, const std::string& name, const FitResult& a, const FitResult& b) {
+            if (!b.conditioned.closed) {
+                EXPECT_EQ(a.curve.pointCount(), b.curve.pointCount()) << name << ": open strokes have one reading";
+                return;
+            }
+            ++loops;
+            one += a.curve.pointCount() - 3;
+            both += b.curve.pointCount() - 3;
+            fewer += b.curve.pointCount() < a.curve.pointCount();
+            if (rec.subject == "s03" && rec.speed == "slow" && rec.number == 8) {
+                EXPECT_GE(a.curve.pointCount() - 3, 70) << "periodic alone";
+                EXPECT_LE(b.curve.pointCount() - 3, 35) << "clamped at the seam";
+            }
+        });
     std::printf("%d loops: %d control points with one reading, %d with both (%d fewer)\n", loops, one, both, fewer);
     EXPECT_GE(loops, 90) << "the development circles that close";
     EXPECT_LE(static_cast<double>(both), (1.0 - kMinSavedShare) * static_cast<double>(one));
@@ -152,29 +163,23 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
     // Of the circles' control points, the least saving taken as a gain (measured 2.2 %: 5,176 ->
     // 5,063 over the 150, a closed curve's 3 repeated points counted).
     constexpr double kMinSavedShare = 0.01;
-    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
     int strokes = 0, without = 0, with = 0, fewer = 0;
-    for (const Recording& rec : recs) {
-        if (rec.gesture != "circle") continue;
-        FitOptions plain;
-        plain.minimaxTrials = false;
-        const FitResult a = fitStroke(rec.stroke, plain), b = fitStroke(rec.stroke);
-        const std::string name = rec.subject + " " + rec.speed + " " + std::to_string(rec.number);
-        ASSERT_TRUE(b.converged) << name;
-        EXPECT_LE(maxDeviation(b.curve, keptSamples(rec.stroke, b)), b.tolerance + kMeasureAgreement) << name;
-        EXPECT_LE(b.curve.pointCount(), a.curve.pointCount()) << name;
-        EXPECT_EQ(a.corners, b.corners) << name;
-        ++strokes;
-        without += a.curve.pointCount();
-        with += b.curve.pointCount();
-        fewer += b.curve.pointCount() < a.curve.pointCount();
-        if (rec.subject == "s06" && rec.speed == "fast" && rec.number == 9) {
-            // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares, 14 with
-            // the minimax trials (FITPACK's splprep 21, OCCT 28 at the least squares' deviation).
-            EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
-            EXPECT_LE(b.curve.pointCount() - 3, 15) << "minimax trials";
-        }
-    }
+    FitOptions plain;
+    plain.minimaxTrials = false;
+    compareOnDevelopmentCircles(plain, FitOptions{},
+                                [&](const Recording& rec, const std::string&, const FitResult& a, const FitResult& b) {
+                                    ++strokes;
+                                    without += a.curve.pointCount();
+                                    with += b.curve.pointCount();
+                                    fewer += b.curve.pointCount() < a.curve.pointCount();
+                                    if (rec.subject == "s06" && rec.speed == "fast" && rec.number == 9) {
+                                        // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares,
+                                        // 14 with the minimax trials (FITPACK's splprep 21, OCCT 28 at the least
+                                        // squares' deviation).
+                                        EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
+                                        EXPECT_LE(b.curve.pointCount() - 3, 15) << "minimax trials";
+                                    }
+                                });
     std::printf("%d circles: %d control points by least squares, %d with minimax trials (%d fewer)\n", strokes, without,
                 with, fewer);
     EXPECT_EQ(strokes, 150);
