@@ -350,6 +350,9 @@ constexpr double kCorrectionRejection = 1.1;
 // minimax rounds try to bring within the tolerance, and the least weight (of a mean of one).
 constexpr double kMinimaxReach = 1.5;
 constexpr double kMinimaxWeightFloor = 1e-3;
+// SplineFitOptions::equidistributions: a span's error is taken as at least this share of the mean
+// span's, so that spans the curve already fits are not emptied of breaks (their error would grow).
+constexpr double kEquidistributionFloor = 0.2;
 
 SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions& opt)
 {
@@ -422,16 +425,19 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
             }
             return std::make_pair(std::move(best), bestError);
         };
-        auto averaged = [&](int nCtrl) {
+        std::vector<double> uc;  // the parameters of the last trial (corrected in it)
+        auto averaged = [&](int nCtrl, const std::vector<double>* given) {
             // This trial's parameters (corrected below), or those a stopped fit of the same count left.
             const AveragedCorrectionState* resume = opt.averagedControlPoints > 0 ? opt.averagedResume : nullptr;
-            std::vector<double> uc = resume ? resume->parameters : u;
+            uc = resume ? resume->parameters : u;
             if (uc.size() != u.size()) throw GeometryError("averaged fit: the state to resume is of another input");
             Spline t;
             t.closed = in.closed;
             t.breaks = {0.0};
             const int nS = static_cast<int>(u.size());
-            if (in.closed) {
+            if (given) {
+                t.breaks = *given;
+            } else if (in.closed) {
                 const double d = double(nS) / nCtrl;
                 for (int j = 1; j < nCtrl; ++j) {
                     const int i = static_cast<int>(j * d);
@@ -444,7 +450,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 if (t.breaks.size() < 5) return std::make_pair(t, std::numeric_limits<double>::infinity());
             }
             const double d = double(nS) / (nCtrl - kDegree);
-            if (!in.closed && nCtrl >= nS) {
+            if (!given && !in.closed && nCtrl >= nS) {
                 // Interpolation: The NURBS Book eq. 9.8 (each knot the mean of p parameters), which
                 // keeps every sample inside the support of its own basis function (Schoenberg-
                 // Whitney); eq. 9.69 at n = m can leave a span empty and its neighbour two.
@@ -455,13 +461,13 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                     if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
                 }
             }
-            for (int j = 1; !in.closed && nCtrl < nS && j < nCtrl - kDegree; ++j) {
+            for (int j = 1; !given && !in.closed && nCtrl < nS && j < nCtrl - kDegree; ++j) {
                 const int i = static_cast<int>(j * d);
                 const double a = j * d - i;
                 const double knot = (1 - a) * u[std::max(0, i - 1)] + a * u[std::min(nS - 1, i)];
                 if (knot > t.breaks.back() + 1e-12 && knot < 1.0 - 1e-12) t.breaks.push_back(knot);
             }
-            if (!in.closed) t.breaks.push_back(1.0);
+            if (!given && !in.closed) t.breaks.push_back(1.0);
             solve(t, X, S, uc, opt.fairing);
             // An open curve's end samples are its end points P_0 and P_n; a closed curve has none,
             // and each of its samples is kept between its neighbours across the seam.
@@ -517,10 +523,53 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         const int least = in.closed ? 5 : 4;
         int lo = least, hi = std::max(least, static_cast<int>(S.size()) - (in.closed ? 1 : 0));
         if (opt.averagedControlPoints > 0) lo = hi = std::clamp(opt.averagedControlPoints, least, hi);
-        auto best = averaged(hi);
+        auto best = averaged(hi, nullptr);
+        // SplineFitOptions::equidistributions (a fixed count whose trial misses): the breaks moved so
+        // that every span carries the same share of the fourth root of its largest distance. A
+        // cubic's error on a span of width h goes as h^4 |f''''| (de Boor, A Practical Guide to
+        // Splines, ch. XII), so widths in proportion to (e_j)^(-1/4) h_j even the spans' errors out
+        // (de Boor's equidistribution, here of the measured error rather than an estimated
+        // derivative: where the noise is near the tolerance it is the error that matters). The
+        // breaks are the quantiles of that mass, linear within a span; the trial with the smallest
+        // largest distance is kept.
+        {
+            const double within = opt.minimaxWithin > 0.0 ? opt.minimaxWithin : opt.tolerance;
+            for (int r = 0; r < opt.equidistributions && opt.averagedControlPoints > 0 && std::isfinite(best.second) &&
+                            best.second > within;
+                 ++r) {
+                const Spline& b = best.first;
+                const int spans = b.spanCount();
+                std::vector<double> e(static_cast<size_t>(spans), 0.0);
+                for (size_t k = 0; k < uc.size(); ++k) {
+                    const int j = b.spanOf(b.wrap(uc[k]));
+                    e[j] = std::max(e[j], distanceAt(b, X[S[k]], uc[k]));
+                }
+                double mean = 0.0;
+                for (double v : e) mean += v / spans;
+                if (!(mean > 0.0)) break;
+                std::vector<double> mass(static_cast<size_t>(spans));
+                double total = 0.0;
+                for (int j = 0; j < spans; ++j)
+                    total += mass[j] = std::pow(std::max(e[j], kEquidistributionFloor * mean), 0.25);
+                std::vector<double> nb = {0.0};
+                double acc = 0.0;
+                int j = 0;
+                for (int i = 1; i < spans; ++i) {
+                    const double target = total * i / spans;
+                    while (j < spans - 1 && acc + mass[j] < target) acc += mass[j++];
+                    const double h = b.spanEnd(j) - b.breaks[j];
+                    const double knot = b.breaks[j] + h * std::clamp((target - acc) / mass[j], 0.0, 1.0);
+                    if (knot > nb.back() + 1e-12 && knot < 1.0 - 1e-12) nb.push_back(knot);
+                }
+                if (!in.closed) nb.push_back(1.0);
+                if (nb.size() != b.breaks.size()) break;
+                auto again = averaged(hi, &nb);
+                if (again.second < best.second) best = std::move(again);
+            }
+        }
         while (lo < hi) {
             const int mid = (lo + hi) / 2;
-            auto trial = averaged(mid);
+            auto trial = averaged(mid, nullptr);
             if (trial.second <= opt.tolerance) {
                 hi = mid;
                 best = std::move(trial);
@@ -530,7 +579,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         // (A fixed count is solved once: its knots may merge, leaving fewer unknowns, and solving it
         // again would give the same.)
-        if (opt.averagedControlPoints == 0 && best.first.unknowns() != hi) best = averaged(hi);
+        if (opt.averagedControlPoints == 0 && best.first.unknowns() != hi) best = averaged(hi, nullptr);
         res.maxError = best.second;
         res.converged = res.maxError <= opt.tolerance;
         res.knots = best.first.knots;

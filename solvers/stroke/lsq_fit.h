@@ -76,6 +76,10 @@ struct SplineFitOptions {
     /// bounds the largest distance, which least squares does not minimize: on strokes whose noise is
     /// near the tolerance a minimax curve needs fewer control points. 0: least squares only.
     int minimaxRounds = 0;
+    /// KnotPlacement::Averaged with averagedControlPoints: when the trial misses (its rounds end
+    /// above minimaxWithin), this many more trials with the breaks moved to equidistribute the
+    /// fourth root of each span's largest distance (lsq_fit.cpp); the best trial is kept.
+    int equidistributions = 0;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;
     /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every

@@ -97,6 +97,13 @@ constexpr int kMinimaxCorrections = 3;
 // development circles against the peers (compare_splprep.py --dev circle): 145 -> 146 of 163
 // strokes (with the 13 synthesized) meet the fewer peer, for 3 % more instructions.
 constexpr int kPolishRounds = 20;
+// Trials with the breaks equidistributed (SplineFitOptions::equidistributions) per count of the
+// last descent, on strokes whose count follows the noise (kNoiseRowsPerPoint). On the development
+// strokes: 57,037 control points without, 56,852 with 3 and 56,784 with 5, for 398 / 410 / 418 M
+// instructions (BM_StrokeRecorded/0, callgrind); on every stroke, 3 trials: 56,834 for 501 M. The
+// 150 development circles against the peers (compare_splprep.py --dev circle): 136 -> 142 meet
+// the fewer peer with 3.
+constexpr int kEquidistributions = 3;
 // The minimax trials bisect below the count taken where it leaves fewer than this many conditioned
 // points per control point: there the fit follows the digitizer's noise (a circle of 39 samples
 // drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and the largest
@@ -503,6 +510,16 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 }
             }
             for (int k = fit.curve.pointCount() - countOffset - 1; k >= least && takes(k); --k) {
+            }
+            // Where the count still follows the noise, the same descent with the trials' breaks
+            // moved to where the error is (SplineFitOptions::equidistributions, kEquidistributions).
+            const int reached = fit.curve.pointCount() - countOffset;
+            if (reached * kNoiseRowsPerPoint >= cs.size()) {
+                alt.equidistributions = kEquidistributions;
+                missed.clear();  // (other trials)
+                for (int k = reached - 1; k >= least && takes(k); --k) {
+                }
+                alt.equidistributions = 0;
             }
             // A count a minimax trial took is its curve once its rounds stop, anywhere within the
             // tolerance. Its rounds are then run to the end (kPolishRounds, the best kept): the

@@ -160,9 +160,9 @@ TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlP
 // the tolerance, every kept raw sample still within it, and never more.
 TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
-    // Of the circles' control points, the least saving taken as a gain (measured 2.2 %: 5,176 ->
-    // 5,063 over the 150, a closed curve's 3 repeated points counted).
-    constexpr double kMinSavedShare = 0.01;
+    // Of the circles' control points, the least saving taken as a gain (measured 3.8 %: 5,176 ->
+    // 4,979 over the 150, a closed curve's 3 repeated points counted).
+    constexpr double kMinSavedShare = 0.02;
     int strokes = 0, without = 0, with = 0, fewer = 0;
     FitOptions plain;
     plain.minimaxTrials = false;

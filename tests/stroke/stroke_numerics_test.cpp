@@ -277,6 +277,49 @@ TEST(LeastSquaresSpline, GivenPixelNoise_WhenMinimaxRoundsFollowTheCorrections_T
     EXPECT_TRUE(leastSquares == 0 || minimax < leastSquares);
 }
 
+// SplineFitOptions::equidistributions: where the detail is in one part of a stroke (a ripple on a
+// third of an open curve), breaks averaged over the samples spread the control points evenly; moved
+// to equidistribute the spans' largest distances they gather where the error is, and a count the
+// averaged breaks miss fits. The best trial is kept, so the error never grows.
+TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenFewerControlPointsFit)
+{
+    std::vector<Eigen::Vector3d> pts;
+    const int m = 300;
+    for (int i = 0; i < m; ++i) {
+        const double t = i / double(m - 1);
+        const double ripple = t > 0.6 && t < 0.9 ? 2.0 * std::sin(40 * (t - 0.6)) : 0.0;
+        pts.emplace_back(100 * t, 10 * std::sin(3 * t) + ripple, 0.0);
+    }
+    std::vector<double> chord(m, 0.0);
+    for (int i = 1; i < m; ++i) chord[i] = chord[i - 1] + (pts[i] - pts[i - 1]).norm();
+    for (double& c : chord) c /= chord.back();
+    SplineFitInput in;
+    in.points = &pts;
+    in.chord = &chord;
+    for (int i = 0; i < m; ++i) in.samples.push_back(i);
+    SplineFitOptions o;
+    o.tolerance = 0.05;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 3;
+    o.minimaxRounds = 10;
+    int averaged = 0, moved = 0;  // the fewest counts within the tolerance
+    for (int count = 6; count <= 150 && (averaged == 0 || moved == 0); ++count) {
+        o.averagedControlPoints = count;
+        o.equidistributions = 0;
+        const SplineFitResult a = fitCubicSpline(in, o);
+        o.equidistributions = 3;
+        const SplineFitResult b = fitCubicSpline(in, o);
+        EXPECT_LE(b.maxError, a.maxError) << count;
+        if (a.maxError <= o.tolerance && averaged == 0) averaged = count;
+        if (b.maxError <= o.tolerance && moved == 0) moved = count;
+    }
+    std::printf("fewest control points within %.2f: averaged breaks %d, equidistributed %d\n", o.tolerance, averaged,
+                moved);
+    ASSERT_GT(moved, 0);
+    ASSERT_GT(averaged, 0);
+    EXPECT_LT(moved, averaged);
+}
+
 TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
 {
     // A single cubic Bezier segment is in the spline space: the fit must reproduce it.
