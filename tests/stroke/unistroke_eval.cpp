@@ -158,12 +158,19 @@ std::string Confusion::table() const
     return o.str();
 }
 
+stroke::FitOptions classFitOptions()
+{
+    stroke::FitOptions f;
+    f.minimaxTrials = false;
+    return f;
+}
+
 int recognizeRecording(const Recording& r, const stroke::RecognizeOptions& options)
 {
     try {
         stroke::RecognizeOptions o = options;
         o.regularize = false;  // the class is what is measured; regularizing does not change it
-        return static_cast<int>(stroke::recognizeStroke(r.stroke, {}, o).recognition.kind);
+        return static_cast<int>(stroke::recognizeStroke(r.stroke, classFitOptions(), o).recognition.kind);
     } catch (const std::exception&) {
         return -1;
     }
@@ -204,7 +211,7 @@ std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& reco
             for (const Recording* r : recs) {
                 if (r->number != number) continue;
                 try {
-                    stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                    stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, classFitOptions(), o);
                     model.applyHabits(sr.recognition, sr.fit, o);
                     // The designer confirms a stroke read as one of its gesture's classes and
                     // corrects any other to the gesture's first class.
@@ -219,7 +226,7 @@ std::vector<AdaptationResult> adaptPerSubject(const std::vector<Recording>& reco
             if (r->number <= firstN) continue;
             ++a.tested;
             try {
-                stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, {}, o);
+                stroke::StrokeRecognition sr = stroke::recognizeStroke(r->stroke, classFitOptions(), o);
                 a.correctBefore += isCorrect(r->gesture, sr.recognition.kind);
                 model.applyHabits(sr.recognition, sr.fit, o);
                 a.correctAfter += isCorrect(r->gesture, sr.recognition.kind);

@@ -1,7 +1,8 @@
 #pragma once
 // Recognition measured on real pen strokes: the $1 unistroke gesture logs (Wobbrock, Wilson and Li,
 // UIST 2007; tests/data/unistrokes/README.md) run through the pipeline the window uses
-// (fitStroke, then recognizeShape, both with default options).
+// (fitStroke, then recognizeShape, both with default options; the fit without its minimax trials,
+// classFitOptions).
 #include "solvers/stroke/shape_recognizer.h"
 
 #include <array>
@@ -21,6 +22,15 @@ struct Recording {
     int number = 0;       ///< 1..10, the order in which the subject drew it at that speed
     solvers::stroke::Stroke stroke;
 };
+
+/// The fit options of every recognition here: the defaults without the minimax trials
+/// (FitOptions::minimaxTrials). They change the fitted curve's control points, never what the class
+/// is read from (the conditioned stroke, its corners and whether the curve is closed: strokeGeometry
+/// in shape_recognizer.cpp), and they are most of the fit's time on these strokes, which the
+/// sanitizer build pays on every test that recognizes the 2,400 development strokes.
+/// UnistrokeRecognition.GivenDevelopmentStrokes_WhenFittedWithOrWithoutMinimaxTrials_ThenTheSameClass
+/// holds the two to the same class.
+solvers::stroke::FitOptions classFitOptions();
 
 /// All recordings of the given subjects ("s02".."s11") from `dir` (one CSV per subject).
 /// @throws std::runtime_error when a file is missing or malformed.

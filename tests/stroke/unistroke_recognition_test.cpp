@@ -101,6 +101,28 @@ TEST(UnistrokeRecognition, GivenQuickDrawDrawings_WhenRecognized_ThenAboveFloor)
     for (const auto& [gesture, row] : c.rows) EXPECT_EQ(row[kFailed], 0) << gesture;
 }
 
+// classFitOptions (the recognitions of these tests) leaves the minimax trials out, which is exact
+// only while the class never depends on them: the 750 development circles, triangles, rectangles,
+// stars and x's (loops and corners) recognized with the default fit and with classFitOptions.
+TEST(UnistrokeRecognition, GivenDevelopmentStrokes_WhenFittedWithOrWithoutMinimaxTrials_ThenTheSameClass)
+{
+    const auto recs = loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, devSubjects());
+    int compared = 0, fewer = 0;
+    for (const Recording& r : recs) {
+        if (r.gesture != "circle" && r.gesture != "triangle" && r.gesture != "rectangle" && r.gesture != "star" &&
+            r.gesture != "x")
+            continue;
+        const auto product = solvers::stroke::recognizeStroke(r.stroke);
+        const auto measured = solvers::stroke::recognizeStroke(r.stroke, classFitOptions());
+        EXPECT_EQ(product.recognition.kind, measured.recognition.kind)
+            << r.subject << " " << r.gesture << " " << r.speed << " " << r.number;
+        ++compared;
+        fewer += product.fit.curve.pointCount() < measured.fit.curve.pointCount();
+    }
+    EXPECT_EQ(compared, 750);
+    EXPECT_GT(fewer, 0) << "the minimax trials changed no curve: the comparison shows nothing";
+}
+
 // A window of another size passes the same stroke in other plane units per pixel: scaled, and with
 // its samples (pointer events a pixel or more apart) denser or sparser in plane units. Measured on
 // the development strokes (unistroke-report --invariance dev): scaled alone, 100.0 % keep their class
