@@ -48,4 +48,44 @@ void BandMatrix::solveInPlace(std::vector<Eigen::Vector3d>& b) const
     }
 }
 
+void CyclicBandMatrix::reset(int size, int bandwidth)
+{
+    n_ = size;
+    w_ = bandwidth;
+    m_ = size - bandwidth;
+    band_.reset(m_, bandwidth);
+    c_.setZero(m_, bandwidth);
+    d_.setZero(bandwidth, bandwidth);
+}
+
+bool CyclicBandMatrix::factor()
+{
+    if (!band_.factor()) return false;
+    border_ = c_;
+    band_.solveInPlace(c_);  // W = B^-1 C
+    Eigen::MatrixXd s = d_.selfadjointView<Eigen::Lower>();
+    s.noalias() -= border_.transpose() * c_;
+    schur_.compute(s);
+    return schur_.info() == Eigen::Success;
+}
+
+void CyclicBandMatrix::solveInPlace(std::vector<Eigen::Vector3d>& b) const
+{
+    z_.assign(b.begin(), b.begin() + m_);
+    band_.solveInPlace(z_);  // B^-1 b_1
+    Eigen::MatrixXd r(w_, 3);
+    for (int k = 0; k < w_; ++k) {
+        Eigen::Vector3d v = b[static_cast<size_t>(m_ + k)];
+        for (int i = 0; i < m_; ++i) v -= border_(i, k) * z_[static_cast<size_t>(i)];
+        r.row(k) = v.transpose();
+    }
+    schur_.solveInPlace(r);  // x_2
+    for (int i = 0; i < m_; ++i) {
+        Eigen::Vector3d v = z_[static_cast<size_t>(i)];
+        for (int k = 0; k < w_; ++k) v -= c_(i, k) * r.row(k).transpose();
+        b[static_cast<size_t>(i)] = v;
+    }
+    for (int k = 0; k < w_; ++k) b[static_cast<size_t>(m_ + k)] = r.row(k).transpose();
+}
+
 }  // namespace sculptline::solvers::stroke

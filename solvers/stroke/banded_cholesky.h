@@ -3,6 +3,7 @@
 // memory (Golub & Van Loan, Matrix Computations, 4th ed., Alg. 4.3.5 "band Cholesky").
 // The least-squares B-spline normal matrix of degree p has half-bandwidth p (de Boor,
 // A Practical Guide to Splines, ch. XIV: B_i B_j vanishes for |i - j| > p).
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <vector>
 
@@ -40,6 +41,45 @@ private:
     int n_ = 0;
     int w_ = 0;
     std::vector<double> a_;
+};
+
+/// A symmetric positive definite cyclic band matrix: A(i, j) = 0 unless i and j are within
+/// `bandwidth` of each other modulo the size (the normal matrix of a periodic B-spline least
+/// squares). Solved by block elimination, O(n w^2): with m = n - w, the leading m x m block B is a
+/// plain band matrix (two of its indices within w modulo n are within w outright), the last w
+/// unknowns border it. B = L L^T (BandMatrix), W = B^-1 C for the border columns C, the Schur
+/// complement S = D - C^T W (w x w, positive definite as A is) by a dense Cholesky; then
+/// x_2 = S^-1 (b_2 - C^T B^-1 b_1) and x_1 = B^-1 b_1 - W x_2 (Golub & Van Loan, Matrix
+/// Computations, 4th ed., §4.5.4 on block elimination; the cyclic case as for the periodic
+/// splines of de Boor, A Practical Guide to Splines, ch. XIV).
+class CyclicBandMatrix {
+public:
+    /// Zero matrix of this size (> bandwidth) and bandwidth, reusing the storage.
+    void reset(int size, int bandwidth);
+    int size() const { return n_; }
+    /// Adds v to entry (i, j), i >= j, of the lower triangle (the symmetric entry is the same).
+    void addLower(int i, int j, double v)
+    {
+        if (i < m_)
+            band_.at(i, j) += v;
+        else if (j < m_)
+            c_(j, i - m_) += v;
+        else
+            d_(i - m_, j - m_) += v;
+    }
+    /// Factors in place. Returns false if the matrix is not positive definite.
+    bool factor();
+    /// Solves A X = B for the factored matrix, three right-hand sides as one 3-vector per unknown.
+    void solveInPlace(std::vector<Eigen::Vector3d>& b) const;
+
+private:
+    int n_ = 0, m_ = 0, w_ = 0;
+    BandMatrix band_;
+    Eigen::MatrixXd c_;  // the border B^-1 C after factor(); C before
+    Eigen::MatrixXd d_;  // the lower triangle of D before factor()
+    Eigen::LLT<Eigen::MatrixXd> schur_;
+    mutable std::vector<Eigen::Vector3d> z_;
+    Eigen::MatrixXd border_;  // C itself (kept for the right-hand side's elimination)
 };
 
 }  // namespace sculptline::solvers::stroke

@@ -4,9 +4,6 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/stroke/banded_cholesky.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Sparse>
-
 namespace sculptline::solvers::stroke::detail {
 
 // One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
@@ -214,16 +211,10 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
 }
 
 // Periodic least squares: unknowns c_0..c_{N-1}, unwrapped point i is c_{i mod N}; the normal
-// matrix is cyclic-banded. Up to kDenseCyclic unknowns it is assembled dense and factored by a dense
-// Cholesky (LLT); beyond, as triplets factored by a sparse LDL^T (fill-in stays O(N) for a cyclic
-// band). Measured (a microbenchmark of this pattern, 6 samples per unknown, on the 2-core machine
-// while a build ran beside it, so the ratios count, not the times): sparse with its
-// assembly 15 / 30 / 73 / 111 / 142 / 238 / 194 us at N = 8 / 16 / 32 / 48 / 64 / 96 / 128, dense 0.5
-// / 1.3 / 21 / 35 / 71 / 141 / 239 us: the sparse path's set-up (triplets, ordering, symbolic
-// analysis), paid on every solve, outweighs the dense O(N^3) until about a hundred unknowns. Loops
-// rarely have more; the averaged-knot search solves a loop nine times per trial count.
-constexpr int kDenseCyclic = 96;
-
+// matrix is cyclic-banded (half-bandwidth 3), solved in O(N) by CyclicBandMatrix. (Until session 44
+// it was assembled dense and factored by a dense Cholesky up to 96 unknowns, by a sparse LDL^T
+// beyond: O(N^3) on the loops' trials, about half the instructions of a 35-point development
+// circle's fit.)
 // The periodic normal equations, entry by entry: addA(i, j, v) adds v to A(i, j) (both triangles),
 // addB(i, x) adds x to row i of the right-hand side.
 template <class AddA, class AddB>
@@ -259,31 +250,21 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
     const int n = s.unknowns();
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
     // Storage kept between solves.
-    thread_local Eigen::MatrixXd b;
-    b.setZero(n, 3);
-    const auto addB = [&](int i, const Vec3& x) { b.row(i) += x.transpose(); };
-    if (n <= kDenseCyclic) {
-        thread_local Eigen::MatrixXd a;
-        thread_local Eigen::LLT<Eigen::MatrixXd> llt;
-        a.setZero(n, n);
-        assembleClosed(
-            s, X, S, u, weights, lambda, [&](int i, int j, double v) { a(i, j) += v; }, addB);
-        llt.compute(a);
-        if (llt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
-        llt.solveInPlace(b);
-    } else {
-        std::vector<Eigen::Triplet<double>> trip;
-        trip.reserve(S.size() * 16 + static_cast<size_t>(n) * 9);
-        assembleClosed(
-            s, X, S, u, weights, lambda, [&](int i, int j, double v) { trip.emplace_back(i, j, v); }, addB);
-        Eigen::SparseMatrix<double> a(n, n);
-        a.setFromTriplets(trip.begin(), trip.end());
-        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(a);
-        if (ldlt.info() != Eigen::Success) throw GeometryError("stroke: periodic least-squares system is singular");
-        b = ldlt.solve(b).eval();
-    }
+    thread_local CyclicBandMatrix a;
+    thread_local std::vector<Vec3> b;
+    a.reset(n, kDegree);
+    b.assign(static_cast<size_t>(n), Vec3::Zero());
+    // (assembleClosed adds both triangles, the same values: the lower one is kept.)
+    assembleClosed(
+        s, X, S, u, weights, lambda,
+        [&](int i, int j, double v) {
+            if (i >= j) a.addLower(i, j, v);
+        },
+        [&](int i, const Vec3& x) { b[static_cast<size_t>(i)] += x; });
+    if (!a.factor()) throw GeometryError("stroke: periodic least-squares system is singular");
+    a.solveInPlace(b);
     s.ctrl.resize(n + kDegree);
-    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = b.row(i % n).transpose();
+    for (int i = 0; i < n + kDegree; ++i) s.ctrl[i] = b[static_cast<size_t>(i % n)];
 }
 
 void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,

@@ -54,18 +54,34 @@ struct Spline {
         coef.resize(spans);
         thread_local std::vector<std::array<Vec3, 3>> at;  // storage kept between calls
         at.resize(spans + 1);
+        // The basis functions and derivatives at the breaks depend on the knots alone: kept for
+        // the knots last seen, which the corrections and minimax rounds of a trial solve again
+        // and again (about 60 % of buildPowerForm's instructions on a 30-point curve).
+        thread_local KnotVector basisKnots;
+        thread_local bool basisClosed = false;
+        thread_local std::vector<BasisDerivatives<kDegree, 2>> basisAt;
+        if (basisClosed != closed || basisKnots != knots) {
+            basisClosed = closed;
+            basisKnots = knots;
+            basisAt.resize(spans + 1);
+            for (int j = 0; j < spans + (closed ? 0 : 1); ++j) {
+                const double a = j < spans ? breaks[j] : 1.0;
+                // The open knot vector is 0,0,0,b_0,..,b_s,1,1,1 with distinct breaks: b_j starts span j + p.
+                const int span = j == spans ? static_cast<int>(knots.size()) - kDegree - 2
+                                 : closed   ? findSpan(kDegree, knots, a)
+                                            : j + kDegree;
+                basisAt[j] = evaluateBasis<kDegree, 2>(knots, span, a);
+            }
+        }
         for (int j = 0; j <= spans; ++j) {
             if (j == spans && closed) {
                 at[j] = at[0];
                 break;
             }
-            const double a = j < spans ? breaks[j] : 1.0;
-            // The open knot vector is 0,0,0,b_0,..,b_s,1,1,1 with distinct breaks: b_j starts span j + p.
-            const int span = j == spans ? static_cast<int>(knots.size()) - kDegree - 2 : closed ? findSpan(kDegree, knots, a) : j + kDegree;
-            const BasisDerivatives<kDegree, 2> b = evaluateBasis<kDegree, 2>(knots, span, a);
+            const BasisDerivatives<kDegree, 2>& b = basisAt[j];
             for (int k = 0; k < 3; ++k) at[j][k].setZero();
             for (int q = 0; q <= kDegree; ++q) {
-                const Vec3& p = ctrl[span - kDegree + q];
+                const Vec3& p = ctrl[b.span - kDegree + q];
                 for (int k = 0; k < 3; ++k) at[j][k] += b.d[k][q] * p;
             }
         }
@@ -149,5 +165,14 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
 /// S, positive): a weighted least squares (the minimax rounds, SplineFitOptions::minimaxRounds).
 void solve(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S, const std::vector<double>& u,
            double fairing, const std::vector<double>* weights = nullptr);
+
+/// The largest deviation of every point of the input (foot-point distance) and of every chord between
+/// neighbours from s, the samples S at parameters u (lsq_fit.cpp).
+double measureAllPoints(const Spline& s, const SplineFitInput& in, const std::vector<int>& S,
+                        const std::vector<double>& u, double tol);
+/// KnotPlacement::Averaged (averaged_fit.cpp): the samples S (with the last point when open) at
+/// their chord parameters u.
+SplineFitResult fitAveraged(const SplineFitInput& in, const SplineFitOptions& opt, std::vector<int> S,
+                            std::vector<double> u);
 
 }  // namespace sculptline::solvers::stroke::detail

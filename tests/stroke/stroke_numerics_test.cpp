@@ -53,6 +53,68 @@ TEST(BandedCholesky, GivenIndefiniteMatrix_ThenFactorReportsFailure)
     EXPECT_FALSE(band.factor());
 }
 
+// The periodic least squares' solver (solveClosed): a cyclic band of half-bandwidth 3 at every size a
+// loop can have, from the smallest (5 unknowns; 4, the least the border leaves a block for) where
+// the cyclic band fills the whole matrix, to sizes beyond the dense path it replaced (96).
+TEST(CyclicBandedCholesky, GivenRandomSpdCyclicBandMatrices_WhenSolved_ThenMatchDenseLlt)
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> uni(-1, 1);
+    const int w = 3;
+    for (const int n : {4, 5, 6, 7, 8, 13, 40, 200}) {
+        SCOPED_TRACE(n);
+        Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+        CyclicBandMatrix cyclic;
+        cyclic.reset(n, w);
+        // Entries within w of the diagonal modulo n, each pair once (small n: some pairs are
+        // within w both ways round; they are one entry).
+        for (int i = 0; i < n; ++i) {
+            for (int d = 1; d <= w; ++d) {
+                const int j = (i + d) % n;
+                if (dense(i, j) != 0.0 || i == j) continue;
+                const double v = uni(rng);
+                dense(i, j) = dense(j, i) = v;
+                cyclic.addLower(std::max(i, j), std::min(i, j), v);
+            }
+        }
+        for (int i = 0; i < n; ++i) {
+            dense(i, i) = 2.0 * w + 2.0 + uni(rng);  // diagonally dominant: SPD
+            cyclic.addLower(i, i, dense(i, i));
+        }
+        std::vector<Eigen::Vector3d> b(static_cast<size_t>(n));
+        Eigen::MatrixXd rhs(n, 3);
+        for (int i = 0; i < n; ++i) {
+            b[static_cast<size_t>(i)] = Eigen::Vector3d(uni(rng), uni(rng), uni(rng));
+            rhs.row(i) = b[static_cast<size_t>(i)].transpose();
+        }
+        const Eigen::MatrixXd expected = dense.llt().solve(rhs);
+
+        ASSERT_TRUE(cyclic.factor());
+        cyclic.solveInPlace(b);
+
+        // (Condition number below 3 by the diagonal dominance: agreement to round-off.)
+        double worst = 0.0;
+        for (int i = 0; i < n; ++i)
+            worst = std::max(worst, (b[static_cast<size_t>(i)] - expected.row(i).transpose()).cwiseAbs().maxCoeff());
+        EXPECT_LE(worst, 1e-12);
+    }
+}
+
+TEST(CyclicBandedCholesky, GivenIndefiniteMatrices_ThenFactorReportsFailure)
+{
+    // The leading band block indefinite, then only the border's Schur complement.
+    CyclicBandMatrix leading;
+    leading.reset(8, 3);
+    for (int i = 0; i < 8; ++i) leading.addLower(i, i, 1.0);
+    leading.addLower(1, 0, 2.0);
+    EXPECT_FALSE(leading.factor());
+    CyclicBandMatrix border;
+    border.reset(8, 3);
+    for (int i = 0; i < 8; ++i) border.addLower(i, i, 1.0);
+    border.addLower(7, 0, 2.0);  // a wrapped entry: (0, 7) are neighbours modulo 8
+    EXPECT_FALSE(border.factor());
+}
+
 TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
 {
     const double unit = 2.0;

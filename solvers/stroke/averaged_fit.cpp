@@ -1,0 +1,310 @@
+// KnotPlacement::Averaged (lsq_fit.h): knots averaged over the samples' parameters, Hoschek's
+// parameter corrections, and for a fixed count the minimax rounds (Lawson) and the equidistributed
+// breaks that the stroke fitter's minimax trials ask for.
+#include "solvers/bspline/geometry_error.h"
+#include "solvers/bspline/projection.h"
+#include "solvers/stroke/spline_work.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace sculptline::solvers::stroke::detail {
+namespace {
+
+// Parameter corrections of a fixed averaged-knot count (SplineFitOptions::averagedControlPoints)
+// stop once the error they are heading for stays above this multiple of the tolerance: the error
+// after c corrections times the last correction's ratio (e_c / e_{c-1}) raised to the corrections
+// left. The ratios grow from correction to correction (convergence slows: on the flourish of
+// BM_StrokeFit/200, 0.78, 0.85, 0.875, 0.878, 0.881 at 20 control points; 0.90, 0.97, 0.98, 0.99 at
+// 13), so the projection is optimistic and a count it gives up would not have fitted; the margin
+// covers the few ratios that fall again (21 control points: 0.903, 0.899, 0.897). Counts far from
+// fitting (the search's first climbs) then cost two or three solves instead of nine.
+constexpr double kCorrectionRejection = 1.1;
+// SplineFitOptions::minimaxRounds: the largest error of the least squares (in tolerances) the
+// minimax rounds try to bring within the tolerance, and the least weight (of a mean of one).
+constexpr double kMinimaxReach = 1.5;
+constexpr double kMinimaxWeightFloor = 1e-3;
+// SplineFitOptions::equidistributions: a span's error is taken as at least this share of the mean
+// span's, so that spans the curve already fits are not emptied of breaks (their error would grow).
+constexpr double kEquidistributionFloor = 0.2;
+
+// One trial count's curve and the largest distance of the samples at their parameters (for a
+// search without a fixed count, of every point: measureAll).
+struct Trial {
+    Spline curve;
+    double error = std::numeric_limits<double>::infinity();
+};
+
+// The averaged-knot fit of one input: the trials share the samples, their chord parameters and
+// the parameters the last trial corrected.
+class AveragedFit {
+public:
+    AveragedFit(const SplineFitInput& in, const SplineFitOptions& opt, std::vector<int> S, std::vector<double> u)
+        : in_(in), opt_(opt), X_(*in.points), S_(std::move(S)), u_(std::move(u))
+    {
+    }
+
+    SplineFitResult run()
+    {
+        // (Closed: at least the five spans of the smallest periodic start, fewer unknowns than samples.)
+        const int least = in_.closed ? 5 : 4;
+        int lo = least, hi = std::max(least, static_cast<int>(S_.size()) - (in_.closed ? 1 : 0));
+        if (opt_.averagedControlPoints > 0) lo = hi = std::clamp(opt_.averagedControlPoints, least, hi);
+        Trial best = trial(hi, nullptr);
+        equidistribute(hi, best);
+        while (lo < hi) {
+            const int mid = (lo + hi) / 2;
+            Trial t = trial(mid, nullptr);
+            if (t.error <= opt_.tolerance) {
+                hi = mid;
+                best = std::move(t);
+            } else {
+                lo = mid + 1;
+            }
+        }
+        // (A fixed count is solved once: its knots may merge, leaving fewer unknowns, and solving it
+        // again would give the same.)
+        if (opt_.averagedControlPoints == 0 && best.curve.unknowns() != hi) best = trial(hi, nullptr);
+        res_.maxError = best.error;
+        res_.converged = res_.maxError <= opt_.tolerance;
+        res_.knots = best.curve.knots;
+        res_.points = best.curve.ctrl;
+        res_.samples = S_;
+        return std::move(res_);
+    }
+
+private:
+    // The NURBS Book eqs. 9.68-9.69 (de Boor's averaging): n+1 control points get knots that
+    // follow the density of the sample parameters. A closed curve (periodic, period 1) of N
+    // control points has N spans, one break each: b_0 = 0 and b_j at the parameter j N_s / N
+    // samples along (interpolated between two), so that every span holds N_s / N samples, the
+    // periodic form of the same averaging. Empty when a closed curve's breaks merge below the
+    // smallest periodic start (five spans).
+    std::vector<double> averagedBreaks(int nCtrl) const
+    {
+        const std::vector<double>& u = u_;
+        const int nS = static_cast<int>(u.size());
+        std::vector<double> b = {0.0};
+        const auto add = [&](double knot) {
+            if (knot > b.back() + 1e-12 && knot < 1.0 - 1e-12) b.push_back(knot);
+        };
+        if (in_.closed) {
+            const double d = double(nS) / nCtrl;
+            for (int j = 1; j < nCtrl; ++j) {
+                const int i = static_cast<int>(j * d);
+                const double a = j * d - i;
+                const double next = i + 1 < nS ? u[i + 1] : 1.0;
+                add((1 - a) * u[std::min(i, nS - 1)] + a * next);
+            }
+            if (b.size() < 5) b.clear();
+            return b;
+        }
+        if (nCtrl >= nS) {
+            // Interpolation: The NURBS Book eq. 9.8 (each knot the mean of p parameters), which
+            // keeps every sample inside the support of its own basis function (Schoenberg-
+            // Whitney); eq. 9.69 at n = m can leave a span empty and its neighbour two.
+            for (int j = 1; j < nS - kDegree; ++j) {
+                double knot = 0.0;
+                for (int i = j; i < j + kDegree; ++i) knot += u[i];
+                add(knot / kDegree);
+            }
+        } else {
+            const double d = double(nS) / (nCtrl - kDegree);
+            for (int j = 1; j < nCtrl - kDegree; ++j) {
+                const int i = static_cast<int>(j * d);
+                const double a = j * d - i;
+                add((1 - a) * u[std::max(0, i - 1)] + a * u[std::min(nS - 1, i)]);
+            }
+        }
+        b.push_back(1.0);
+        return b;
+    }
+
+    // One count: the least squares on the averaged (or `given`) breaks, Hoschek's corrections
+    // (SplineFitOptions::averagedCorrections), and for a fixed count that misses by little the
+    // minimax rounds.
+    Trial trial(int nCtrl, const std::vector<double>* given)
+    {
+        // This trial's parameters (corrected below), or those a stopped fit of the same count left.
+        const AveragedCorrectionState* resume = opt_.averagedControlPoints > 0 ? opt_.averagedResume : nullptr;
+        uc_ = resume ? resume->parameters : u_;
+        if (uc_.size() != u_.size()) throw GeometryError("averaged fit: the state to resume is of another input");
+        Trial t;
+        t.curve.closed = in_.closed;
+        t.curve.breaks = given ? *given : averagedBreaks(nCtrl);
+        if (t.curve.breaks.empty()) {
+            t.curve.breaks = {0.0};
+            return t;  // (infinite error: no curve)
+        }
+        Spline& c = t.curve;
+        solve(c, X_, S_, uc_, opt_.fairing);
+        // An open curve's end samples are its end points P_0 and P_n; a closed curve has none,
+        // and each of its samples is kept between its neighbours across the seam.
+        const size_t firstK = in_.closed ? 0 : 1, endK = in_.closed ? uc_.size() : uc_.size() - 1;
+        // SplineFitOptions::averagedCorrections: Hoschek's intrinsic parametrization, each
+        // sample's parameter moved by a Newton step toward its foot point (kept between its
+        // neighbours'), the knots kept. The Newton step's evaluation also gives the sample's
+        // distance at its parameter, so each correction measures the curve it corrects.
+        double before = resume ? resume->error : std::numeric_limits<double>::infinity();
+        // (The error the least squares may leave for the minimax rounds to bring within.)
+        const double reach = opt_.minimaxRounds > 0 ? kMinimaxReach : 1.0;
+        for (int k = resume ? resume->done : 0; k < opt_.averagedCorrections; ++k) {
+            const double e = correct(c, firstK, endK, nullptr);  // (the ends are P_0, P_n)
+            if (opt_.averagedControlPoints > 0 && e > opt_.tolerance) {
+                // A count that cannot fit is given up early (kCorrectionRejection). It reports
+                // the error it has, not the optimistic projection: the caller's search predicts
+                // the next count from it, and the corrections left would lower it by less
+                // than the projection says (at 8 control points, 19.0 after one correction,
+                // 16.4 after eight, projected 8.6).
+                const double r = std::min(1.0, e / before);
+                if (e * std::pow(r, opt_.averagedCorrections - k) > kCorrectionRejection * reach * opt_.tolerance) {
+                    t.error = e;
+                    return t;
+                }
+            }
+            if (opt_.averagedControlPoints > 0 && opt_.averagedStopWhenWithin && e <= opt_.tolerance &&
+                k + 1 < opt_.averagedCorrections) {
+                // The count fits (every sample within the tolerance at its parameter, a curve
+                // point). The state: the parameters just corrected, their solve not yet made.
+                res_.correction = {uc_, k + 1, e, true};
+                t.error = e;
+                return t;
+            }
+            before = e;
+            solve(c, X_, S_, uc_, opt_.fairing);
+        }
+        if (opt_.averagedControlPoints == 0) {
+            t.error = measureAllPoints(c, in_, S_, uc_, opt_.tolerance);
+            return t;
+        }
+        // The caller measures the result itself: only the samples, at their parameters, as a
+        // quick bound for rejecting it.
+        t.error = 0.0;
+        for (size_t k = 0; k < uc_.size(); ++k) t.error = std::max(t.error, distanceAt(c, X_[S_[k]], uc_[k]));
+        if (t.error > opt_.tolerance && t.error <= reach * opt_.tolerance) minimax(t, firstK, endK);
+        return t;
+    }
+
+    // One Hoschek correction of uc_ on c: each sample's parameter (firstK..endK) a Newton step
+    // toward its foot point, kept between its neighbours' (none when !step: a measure only).
+    // Returns the samples' largest distance at their parameters before the step (the curve's, as
+    // solved); `dist`, when given, receives each one.
+    double correct(const Spline& c, size_t firstK, size_t endK, std::vector<double>* dist, bool step = true)
+    {
+        double e = 0.0;
+        for (size_t k = firstK; k < endK; ++k) {
+            Vec3 d[3];
+            c.eval(uc_[k], d);
+            const double dk = (d[0] - X_[S_[k]]).norm();
+            e = std::max(e, dk);
+            if (dist) (*dist)[k] = dk;
+            if (!step) continue;
+            const double lo = k > 0 ? uc_[k - 1] : uc_.back() - 1.0;
+            const double hi = k + 1 < uc_.size() ? uc_[k + 1] : uc_.front() + 1.0;
+            footPointNewtonStep(d[0], d[1], d[2], X_[S_[k]], lo, hi, uc_[k]);
+        }
+        return e;
+    }
+
+    // SplineFitOptions::minimaxRounds: Lawson's algorithm (C. L. Lawson, 1961; the weights of a
+    // least squares whose fixed point is the minimax fit) on t, whose samples at their parameters
+    // uc_ miss the tolerance. Each round moves every sample's parameter a Newton step toward its
+    // foot point (as a correction does), multiplies its weight by its distance and solves the
+    // weighted least squares; the pass that makes the next round's steps measures the round's
+    // curve (an open curve's end samples are its end points). t becomes the round's curve with
+    // the smallest maximum distance.
+    void minimax(Trial& t, size_t firstK, size_t endK)
+    {
+        thread_local std::vector<double> w, dist;
+        w.assign(uc_.size(), 1.0);
+        dist.assign(uc_.size(), 0.0);
+        Spline c = t.curve;
+        const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
+        for (int round = 0;; ++round) {
+            // (The last round's curve is measured without moving the parameters: the breaks
+            // equidistributed after the rounds are placed from the last round's.)
+            const bool last = round == opt_.minimaxRounds;
+            const double err = correct(c, firstK, endK, &dist, !last);
+            if (round > 0) {
+                if (err < t.error) {
+                    t.curve = c;
+                    t.error = err;
+                }
+                if (opt_.minimaxWithin >= 0.0 && t.error <= within) break;
+            }
+            if (last) break;
+            double sum = 0.0;
+            for (size_t k = firstK; k < endK; ++k) sum += w[k] *= dist[k];
+            if (!(sum > 0.0)) break;
+            // Normalized to a mean of one (the fairing term's weight is relative to the samples'
+            // count), and never below kMinimaxWeightFloor: a sample the curve passes through
+            // would otherwise drop out of the least squares for good.
+            const double scale = static_cast<double>(endK - firstK) / sum;
+            for (size_t k = firstK; k < endK; ++k) w[k] = std::max(kMinimaxWeightFloor, w[k] * scale);
+            solve(c, X_, S_, uc_, opt_.fairing, &w);
+        }
+    }
+
+    // SplineFitOptions::equidistributions (a fixed count whose trial misses): the breaks moved so
+    // that every span carries the same share of the fourth root of its largest distance. A cubic's
+    // error on a span of width h goes as h^4 |f''''| (de Boor, A Practical Guide to Splines, ch.
+    // XII), so widths in proportion to (e_j)^(-1/4) h_j even the spans' errors out (de Boor's
+    // equidistribution, here of the measured error rather than an estimated derivative: where the
+    // noise is near the tolerance it is the error that matters). The breaks are the quantiles of
+    // that mass, linear within a span; the trial with the smallest largest distance is kept.
+    void equidistribute(int nCtrl, Trial& best)
+    {
+        const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
+        for (int r = 0; r < opt_.equidistributions && opt_.averagedControlPoints > 0 && std::isfinite(best.error) &&
+                        best.error > within;
+             ++r) {
+            const Spline& b = best.curve;
+            const int spans = b.spanCount();
+            std::vector<double> e(static_cast<size_t>(spans), 0.0);
+            for (size_t k = 0; k < uc_.size(); ++k) {
+                const int j = b.spanOf(b.wrap(uc_[k]));
+                e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], uc_[k]));
+            }
+            double mean = 0.0;
+            for (double v : e) mean += v / spans;
+            if (!(mean > 0.0)) break;
+            std::vector<double> mass(static_cast<size_t>(spans));
+            double total = 0.0;
+            for (int j = 0; j < spans; ++j)
+                total += mass[j] = std::pow(std::max(e[j], kEquidistributionFloor * mean), 0.25);
+            std::vector<double> nb = {0.0};
+            double acc = 0.0;
+            int j = 0;
+            for (int i = 1; i < spans; ++i) {
+                const double target = total * i / spans;
+                while (j < spans - 1 && acc + mass[j] < target) acc += mass[j++];
+                const double h = b.spanEnd(j) - b.breaks[j];
+                const double knot = b.breaks[j] + h * std::clamp((target - acc) / mass[j], 0.0, 1.0);
+                if (knot > nb.back() + 1e-12 && knot < 1.0 - 1e-12) nb.push_back(knot);
+            }
+            if (!in_.closed) nb.push_back(1.0);
+            if (nb.size() != b.breaks.size()) break;
+            Trial again = trial(nCtrl, &nb);
+            if (again.error < best.error) best = std::move(again);
+        }
+    }
+
+    const SplineFitInput& in_;
+    const SplineFitOptions& opt_;
+    const std::vector<Vec3>& X_;
+    const std::vector<int> S_;
+    const std::vector<double> u_;  // the samples' chord parameters
+    std::vector<double> uc_;       // the parameters of the last trial (corrected in it)
+    SplineFitResult res_;
+};
+
+}  // namespace
+
+SplineFitResult fitAveraged(const SplineFitInput& in, const SplineFitOptions& opt, std::vector<int> S,
+                            std::vector<double> u)
+{
+    return AveragedFit(in, opt, std::move(S), std::move(u)).run();
+}
+
+}  // namespace sculptline::solvers::stroke::detail
