@@ -48,23 +48,22 @@ void BandMatrix::solveInPlace(std::vector<Eigen::Vector3d>& b) const
     }
 }
 
-void CyclicBandMatrix::reset(int size, int bandwidth)
+void CyclicBandMatrix::reset(int size)
 {
     n_ = size;
-    w_ = bandwidth;
-    m_ = size - bandwidth;
-    band_.reset(m_, bandwidth);
-    c_.setZero(m_, bandwidth);
-    d_.setZero(bandwidth, bandwidth);
+    m_ = size - kBandwidth;
+    band_.reset(m_, kBandwidth);
+    w_.assign(static_cast<size_t>(m_), Eigen::Vector3d::Zero());
+    d_.setZero();
 }
 
 bool CyclicBandMatrix::factor()
 {
     if (!band_.factor()) return false;
-    border_ = c_;
-    band_.solveInPlace(c_);  // W = B^-1 C
-    Eigen::MatrixXd s = d_.selfadjointView<Eigen::Lower>();
-    s.noalias() -= border_.transpose() * c_;
+    c_ = w_;
+    band_.solveInPlace(w_);  // W = B^-1 C (the three border columns as the three right-hand sides)
+    Eigen::Matrix3d s = d_.selfadjointView<Eigen::Lower>();
+    for (int i = 0; i < m_; ++i) s.noalias() -= c_[static_cast<size_t>(i)] * w_[static_cast<size_t>(i)].transpose();
     schur_.compute(s);
     return schur_.info() == Eigen::Success;
 }
@@ -73,19 +72,14 @@ void CyclicBandMatrix::solveInPlace(std::vector<Eigen::Vector3d>& b) const
 {
     z_.assign(b.begin(), b.begin() + m_);
     band_.solveInPlace(z_);  // B^-1 b_1
-    Eigen::MatrixXd r(w_, 3);
-    for (int k = 0; k < w_; ++k) {
-        Eigen::Vector3d v = b[static_cast<size_t>(m_ + k)];
-        for (int i = 0; i < m_; ++i) v -= border_(i, k) * z_[static_cast<size_t>(i)];
-        r.row(k) = v.transpose();
-    }
+    // r = b_2 - C^T B^-1 b_1: row k (a border unknown) holds its three coordinates.
+    Eigen::Matrix3d r;
+    for (int k = 0; k < kBandwidth; ++k) r.row(k) = b[static_cast<size_t>(m_ + k)].transpose();
+    for (int i = 0; i < m_; ++i) r.noalias() -= c_[static_cast<size_t>(i)] * z_[static_cast<size_t>(i)].transpose();
     schur_.solveInPlace(r);  // x_2
-    for (int i = 0; i < m_; ++i) {
-        Eigen::Vector3d v = z_[static_cast<size_t>(i)];
-        for (int k = 0; k < w_; ++k) v -= c_(i, k) * r.row(k).transpose();
-        b[static_cast<size_t>(i)] = v;
-    }
-    for (int k = 0; k < w_; ++k) b[static_cast<size_t>(m_ + k)] = r.row(k).transpose();
+    for (int i = 0; i < m_; ++i)
+        b[static_cast<size_t>(i)] = z_[static_cast<size_t>(i)] - r.transpose() * w_[static_cast<size_t>(i)];
+    for (int k = 0; k < kBandwidth; ++k) b[static_cast<size_t>(m_ + k)] = r.row(k).transpose();
 }
 
 }  // namespace sculptline::solvers::stroke

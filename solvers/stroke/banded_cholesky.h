@@ -43,19 +43,19 @@ private:
     std::vector<double> a_;
 };
 
-/// A symmetric positive definite cyclic band matrix: A(i, j) = 0 unless i and j are within
-/// `bandwidth` of each other modulo the size (the normal matrix of a periodic B-spline least
-/// squares). Solved by block elimination, O(n w^2): with m = n - w, the leading m x m block B is a
-/// plain band matrix (two of its indices within w modulo n are within w outright), the last w
+/// A symmetric positive definite cyclic band matrix of half-bandwidth 3 (a periodic cubic
+/// B-spline least squares' normal matrix): A(i, j) = 0 unless i and j are within 3 of each other
+/// modulo the size. Solved by block elimination, O(n): with m = n - 3, the leading m x m block B
+/// is a plain band matrix (two of its indices within 3 modulo n are within 3 outright), the last 3
 /// unknowns border it. B = L L^T (BandMatrix), W = B^-1 C for the border columns C, the Schur
-/// complement S = D - C^T W (w x w, positive definite as A is) by a dense Cholesky; then
+/// complement S = D - C^T W (3 x 3, positive definite as A is) by a dense Cholesky; then
 /// x_2 = S^-1 (b_2 - C^T B^-1 b_1) and x_1 = B^-1 b_1 - W x_2 (Golub & Van Loan, Matrix
-/// Computations, 4th ed., §4.5.4 on block elimination; the cyclic case as for the periodic
-/// splines of de Boor, A Practical Guide to Splines, ch. XIV).
+/// Computations, 4th ed., §4.5.4 on block elimination).
 class CyclicBandMatrix {
 public:
-    /// Zero matrix of this size (> bandwidth) and bandwidth, reusing the storage.
-    void reset(int size, int bandwidth);
+    static constexpr int kBandwidth = 3;
+    /// Zero matrix of this size (> kBandwidth), reusing the storage.
+    void reset(int size);
     int size() const { return n_; }
     /// Adds v to entry (i, j), i >= j, of the lower triangle (the symmetric entry is the same).
     void addLower(int i, int j, double v)
@@ -63,7 +63,7 @@ public:
         if (i < m_)
             band_.at(i, j) += v;
         else if (j < m_)
-            c_(j, i - m_) += v;
+            w_[static_cast<size_t>(j)][i - m_] += v;
         else
             d_(i - m_, j - m_) += v;
     }
@@ -73,13 +73,13 @@ public:
     void solveInPlace(std::vector<Eigen::Vector3d>& b) const;
 
 private:
-    int n_ = 0, m_ = 0, w_ = 0;
+    int n_ = 0, m_ = 0;
     BandMatrix band_;
-    Eigen::MatrixXd c_;  // the border B^-1 C after factor(); C before
-    Eigen::MatrixXd d_;  // the lower triangle of D before factor()
-    Eigen::LLT<Eigen::MatrixXd> schur_;
+    std::vector<Eigen::Vector3d> c_;  // the border C, one row of 3 per unknown of B (after factor())
+    std::vector<Eigen::Vector3d> w_;  // C before factor(), B^-1 C after
+    Eigen::Matrix3d d_;               // the lower triangle of D
+    Eigen::LLT<Eigen::Matrix3d> schur_;
     mutable std::vector<Eigen::Vector3d> z_;
-    Eigen::MatrixXd border_;  // C itself (kept for the right-hand side's elimination)
 };
 
 }  // namespace sculptline::solvers::stroke

@@ -4,6 +4,8 @@
 #include "solvers/bspline/projection.h"
 #include "solvers/stroke/banded_cholesky.h"
 
+#include <optional>
+
 namespace sculptline::solvers::stroke::detail {
 
 // One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
@@ -215,32 +217,58 @@ void solveOpenFromSums(Spline& s, const std::vector<Vec3>& X, const std::vector<
 // it was assembled dense and factored by a dense Cholesky up to 96 unknowns, by a sparse LDL^T
 // beyond: O(N^3) on the loops' trials, about half the instructions of a 35-point development
 // circle's fit.)
-// The periodic normal equations, entry by entry: addA(i, j, v) adds v to A(i, j) (both triangles),
-// addB(i, x) adds x to row i of the right-hand side.
-template <class AddA, class AddB>
+// The periodic normal equations into a (lower triangle) and b. The samples' terms are summed per
+// span first (the span's four basis functions, evaluated with SpanBasis's reciprocals of the knot
+// differences) and added to the matrix once per run of samples in a span: a loop's samples come
+// in increasing parameter, but the first can wrap round the seam into the last span.
 void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vector<int>& S,
-                    const std::vector<double>& u, const std::vector<double>* weights, double lambda, AddA&& addA,
-                    AddB&& addB)
+                    const std::vector<double>& u, const std::vector<double>* weights, double lambda,
+                    CyclicBandMatrix& a, std::vector<Vec3>& b)
 {
     const int n = s.unknowns();
+    int run = -1;  // the span whose sums g, r hold (its control points run..run+3 modulo n)
+    double g[kDegree + 1][kDegree + 1] = {};
+    Vec3 r[kDegree + 1];
+    const auto flush = [&] {
+        if (run < 0) return;
+        int idx[kDegree + 1];
+        for (int q = 0; q <= kDegree; ++q) idx[q] = (run + q) % n;
+        for (int q = 0; q <= kDegree; ++q) {
+            b[static_cast<size_t>(idx[q])] += r[q];
+            for (int c = 0; c <= q; ++c) a.addLower(std::max(idx[q], idx[c]), std::min(idx[q], idx[c]), g[q][c]);
+        }
+    };
+    std::optional<SpanBasis<kDegree>> basis;
     for (size_t k = 0; k < S.size(); ++k) {
         const double uk = s.wrap(u[k]);
-        const int span = findSpan(kDegree, s.knots, uk);
-        const BasisDerivatives<kDegree, 0> nk = evaluateBasis<kDegree, 0>(s.knots, span, uk);
-        const auto& basis = nk.d[0];
+        const int j = s.spanOf(uk);  // the periodic knots' span j + 3 starts at break j
+        if (j != run) {
+            flush();
+            run = j;
+            basis.emplace(s.knots, j + kDegree);
+            for (int q = 0; q <= kDegree; ++q) {
+                r[q].setZero();
+                for (int c = 0; c <= q; ++c) g[q][c] = 0.0;
+            }
+        }
+        double nk[kDegree + 1];
+        basis->functions(uk, nk);
         const double w = weights ? (*weights)[k] : 1.0;
+        const Vec3& x = X[S[k]];
         for (int q = 0; q <= kDegree; ++q) {
-            const int i = (span - kDegree + q) % n;
-            const double wb = w * basis[q];
-            addB(i, wb * X[S[k]]);
-            for (int r = 0; r <= kDegree; ++r) addA(i, (span - kDegree + r) % n, wb * basis[r]);
+            const double wb = w * nk[q];
+            r[q] += wb * x;
+            for (int c = 0; c <= q; ++c) g[q][c] += wb * nk[c];
         }
     }
+    flush();
+    // The fairing term: rows (1, -2, 1) on control points c-1, c, c+1 modulo n.
     for (int c = 0; c < n; ++c) {
         const int idx[3] = {(c + n - 1) % n, c, (c + 1) % n};
         const double w[3] = {1.0, -2.0, 1.0};
         for (int t = 0; t < 3; ++t)
-            for (int r = 0; r < 3; ++r) addA(idx[t], idx[r], lambda * w[t] * w[r]);
+            for (int q = 0; q < 3; ++q)
+                if (idx[t] >= idx[q]) a.addLower(idx[t], idx[q], lambda * w[t] * w[q]);
     }
 }
 
@@ -250,17 +278,12 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
     const int n = s.unknowns();
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
     // Storage kept between solves.
+    static_assert(CyclicBandMatrix::kBandwidth == kDegree, "the normal matrix of a periodic cubic");
     thread_local CyclicBandMatrix a;
     thread_local std::vector<Vec3> b;
-    a.reset(n, kDegree);
+    a.reset(n);
     b.assign(static_cast<size_t>(n), Vec3::Zero());
-    // (assembleClosed adds both triangles, the same values: the lower one is kept.)
-    assembleClosed(
-        s, X, S, u, weights, lambda,
-        [&](int i, int j, double v) {
-            if (i >= j) a.addLower(i, j, v);
-        },
-        [&](int i, const Vec3& x) { b[static_cast<size_t>(i)] += x; });
+    assembleClosed(s, X, S, u, weights, lambda, a, b);
     if (!a.factor()) throw GeometryError("stroke: periodic least-squares system is singular");
     a.solveInPlace(b);
     s.ctrl.resize(n + kDegree);

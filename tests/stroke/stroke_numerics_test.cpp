@@ -60,12 +60,12 @@ TEST(CyclicBandedCholesky, GivenRandomSpdCyclicBandMatrices_WhenSolved_ThenMatch
 {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> uni(-1, 1);
-    const int w = 3;
+    const int w = CyclicBandMatrix::kBandwidth;
     for (const int n : {4, 5, 6, 7, 8, 13, 40, 200}) {
         SCOPED_TRACE(n);
         Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
         CyclicBandMatrix cyclic;
-        cyclic.reset(n, w);
+        cyclic.reset(n);
         // Entries within w of the diagonal modulo n, each pair once (small n: some pairs are
         // within w both ways round; they are one entry).
         for (int i = 0; i < n; ++i) {
@@ -104,12 +104,12 @@ TEST(CyclicBandedCholesky, GivenIndefiniteMatrices_ThenFactorReportsFailure)
 {
     // The leading band block indefinite, then only the border's Schur complement.
     CyclicBandMatrix leading;
-    leading.reset(8, 3);
+    leading.reset(8);
     for (int i = 0; i < 8; ++i) leading.addLower(i, i, 1.0);
     leading.addLower(1, 0, 2.0);
     EXPECT_FALSE(leading.factor());
     CyclicBandMatrix border;
-    border.reset(8, 3);
+    border.reset(8);
     for (int i = 0; i < 8; ++i) border.addLower(i, i, 1.0);
     border.addLower(7, 0, 2.0);  // a wrapped entry: (0, 7) are neighbours modulo 8
     EXPECT_FALSE(border.factor());
