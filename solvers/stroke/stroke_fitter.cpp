@@ -128,10 +128,11 @@ struct Prepared {
 
 // One reading of the stroke: the fit with these corners, into `fit`, `outliers` (the noise's
 // outliers of the fit taken, noiseOutliers) and res's maxError, converged and refinements (res's
-// tolerance is read). `searched`: with the fewer-control-points search where it applies (a loop's
-// other reading, in fitStroke, runs the error-driven fit alone).
+// tolerance is read). `searched`: with the fewer-control-points search where it applies.
+// `ceiling`: no count above it is searched for or tried by the minimax trials (a loop's other
+// reading, which fitStroke takes only at no more control points than the first).
 void fitReading(const Prepared& p, const std::vector<int>& corners, bool searched, FitResult& res, FitPass& fit,
-                std::vector<int>& outliers)
+                std::vector<int>& outliers, int ceiling = std::numeric_limits<int>::max())
 {
     // (References, not a structured binding: clang 14, the sanitizer build's compiler, does not let
     // the lambdas below capture a structured binding.)
@@ -395,7 +396,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             // test of the count after the last.
             const int least = cs.closed ? 5 : 4;
             const auto capOf = [&](int per) {
-                return std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size()));
+                return std::min(ceiling, std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size())));
             };
             for (int pass = 0; pass < 2 && !found; ++pass) {
                 rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
@@ -502,8 +503,10 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
+            // (No count above the ceiling is tried: the caller takes none.)
+            const auto below = [&](int count) { return count > ceiling ? ceiling + 1 : count; };
             if (current * kNoiseRowsPerPoint >= cs.size()) {
-                for (int lo = least - 1, hi = current; hi - lo > 1;) {
+                for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
                     const int mid = lo + (hi - lo) / 2;
                     if (takes(mid))
                         hi = mid;
@@ -511,7 +514,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                         lo = mid;
                 }
             }
-            for (int k = fit.curve.pointCount() - countOffset - 1; k >= least && takes(k); --k) {
+            for (int k = below(fit.curve.pointCount() - countOffset) - 1; k >= least && takes(k); --k) {
             }
             // Where the count still follows the noise, the same descent with the trials' breaks
             // moved to where the error is (SplineFitOptions::equidistributions, kEquidistributions).
@@ -519,7 +522,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             if (reached * kNoiseRowsPerPoint >= cs.size()) {
                 alt.equidistributions = kEquidistributions;
                 missed.clear();  // (other trials)
-                for (int k = reached - 1; k >= least && takes(k); --k) {
+                for (int k = below(reached) - 1; k >= least && takes(k); --k) {
                 }
                 alt.equidistributions = 0;
             }
@@ -657,13 +660,19 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // piece took fewer on 30 of 58 smooth loops and the periodic curve on 19 of 37 loops with one
     // corner (224 control points fewer over the 95, 7.3 %), at all angles of the seam's turn: no
     // cheap test told them apart. So the other reading is fitted too and taken when it holds the
-    // tolerance with fewer control points and no more outliers. It runs the error-driven fit alone:
-    // nearly all the gains are that fit's (the development loops 21,554 control points with it
-    // alone, 21,544 with the search before it too, 21,768 with one reading), for 359.8 M
-    // instructions over BM_StrokeRecorded/0 against 379.8 M with the search and 346.4 M with one
-    // reading (callgrind). The detected corners (FitResult::corners, which recognition reads) stay
-    // as found.
-    if (cs.closed && corners.size() <= 1 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
+    // tolerance with fewer control points and no more outliers. A loop with two corners has the
+    // periodic reading as its other (a circle whose ends meet at an angle, or whose hand paused,
+    // can show two; s02 slow 1, 31 -> 28 control points).
+    // The other reading runs the search with its minimax trials, as the first does, no higher
+    // than the first reading's count (fitReading's ceiling: it is taken at no more). On the
+    // development strokes 56,852 -> 56,731 control points (circles 4,691 -> 4,604; the loser
+    // circles of compare_splprep.py --dev circle s02 fast 5 18 -> 10, s02 medium 10 16 -> 12,
+    // s05 fast 3 20 -> 17, s05 fast 8 25 -> 23, s03 medium 10 40 -> 35), the fit time 0.69 ->
+    // 0.91 s. (Before the minimax trials it was the error-driven fit alone: nearly all the gains
+    // were that fit's then, the development loops 21,554 control points with it alone, 21,544
+    // with the search before it.) The detected corners (FitResult::corners, which recognition
+    // reads) stay as found.
+    if (cs.closed && corners.size() <= 2 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
         const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
         const std::vector<int> other = corners.empty() ? std::vector<int>{0} : std::vector<int>{};
         FitPass first = std::move(fit);
@@ -674,7 +683,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         outliers.clear();
         bool made = true;
         try {
-            fitReading(prepared, other, false, res, fit, outliers);
+            fitReading(prepared, other, true, res, fit, outliers, distinct);
         } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
             made = false;
         }
