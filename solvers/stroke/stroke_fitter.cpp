@@ -660,19 +660,20 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // piece took fewer on 30 of 58 smooth loops and the periodic curve on 19 of 37 loops with one
     // corner (224 control points fewer over the 95, 7.3 %), at all angles of the seam's turn: no
     // cheap test told them apart. So the other reading is fitted too and taken when it holds the
-    // tolerance with fewer control points and no more outliers. A loop with two corners has the
-    // periodic reading as its other (a circle whose ends meet at an angle, or whose hand paused,
-    // can show two; s02 slow 1, 31 -> 28 control points).
+    // tolerance with fewer control points and no more outliers. (Loops with two corners keep
+    // them: fitted periodic too, triangles and rectangles lose corners a designer expects, for 22
+    // and 7 fewer control points over their 150 each in session 44; session 42 found the same.)
     // The other reading runs the search with its minimax trials, as the first does, no higher
-    // than the first reading's count (fitReading's ceiling: it is taken at no more). On the
-    // development strokes 56,852 -> 56,731 control points (circles 4,691 -> 4,604; the loser
-    // circles of compare_splprep.py --dev circle s02 fast 5 18 -> 10, s02 medium 10 16 -> 12,
-    // s05 fast 3 20 -> 17, s05 fast 8 25 -> 23, s03 medium 10 40 -> 35), the fit time 0.69 ->
-    // 0.91 s. (Before the minimax trials it was the error-driven fit alone: nearly all the gains
-    // were that fit's then, the development loops 21,554 control points with it alone, 21,544
-    // with the search before it.) The detected corners (FitResult::corners, which recognition
-    // reads) stay as found.
-    if (cs.closed && corners.size() <= 2 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
+    // than the first reading's count (fitReading's ceiling: it is taken at no more). Session 44,
+    // on the development strokes: circles 4,691 -> 4,621 control points (with two-corner loops
+    // periodic too and the ceiling on the minimax trials, 4,604; the loser circles of
+    // compare_splprep.py --dev circle s02 fast 5 18 -> 10, s02 medium 10 16 -> 12, s05 fast 3
+    // 20 -> 17, s05 fast 8 25 -> 23, s03 medium 10 40 -> 35), the circles' fit time 193 -> 282 ms.
+    // (Before the minimax trials it was the error-driven fit alone: nearly all the gains were
+    // that fit's then, the development loops 21,554 control points with it alone, 21,544 with the
+    // search before it.) The detected corners (FitResult::corners, which recognition reads) stay
+    // as found.
+    if (cs.closed && corners.size() <= 1 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
         const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
         const std::vector<int> other = corners.empty() ? std::vector<int>{0} : std::vector<int>{};
         FitPass first = std::move(fit);

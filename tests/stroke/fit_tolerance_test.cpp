@@ -105,11 +105,10 @@ TEST(FitTolerance, GivenSparseRealPigtail_WhenFitted_ThenNoMoreControlPointsThan
 // or from the seam where the hand closed it), and takes the one with fewer control points. On the
 // development circles no loop needs more than with the detected corners alone, every kept sample
 // stays within the tolerance, and the loops need fewer in all (measured: 3,051 -> 2,838 control
-// points over the 96 loops). s03's eighth slow circle, whose periodic fit needs 80 control points,
-// takes 35 clamped at its seam.
-// Each of the 150 development circles fitted with `first` (a) and `second` (b): b holds the
-// tolerance on every kept raw sample, needs no more control points than a and reports the same
-// corners; `each(rec, name, a, b)` checks and counts the rest.
+// points over the 96 loops; 2,828 since session 44 searches the other reading too). s03's eighth slow circle, whose
+// periodic fit needs 80 control points, takes 35 clamped at its seam. Each of the 150 development circles fitted with
+// `first` (a) and `second` (b): b holds the tolerance on every kept raw sample, needs no more control points than a and
+// reports the same corners; `each(rec, name, a, b)` checks and counts the rest.
 template <class Each>
 void compareOnDevelopmentCircles(const FitOptions& first, const FitOptions& second, Each&& each)
 {
@@ -127,7 +126,7 @@ void compareOnDevelopmentCircles(const FitOptions& first, const FitOptions& seco
 
 TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
-    // Of the loops' control points, the least saving taken as a gain (measured 7.0 %). The minimax
+    // Of the loops' control points, the least saving taken as a gain (measured 7.0 %; 7.3 % in session 44). The minimax
     // trials (session 43) are off in both fits: they make either reading's count fewer, and this
     // measures the readings.
     constexpr double kMinSavedShare = 0.05;
@@ -161,25 +160,38 @@ TEST(FitTolerance, GivenRealLoops_WhenFittedInBothReadings_ThenNeverMoreControlP
 TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
     // Of the circles' control points, the least saving taken as a gain (measured 3.8 %: 5,176 ->
-    // 4,979 over the 150, a closed curve's 3 repeated points counted).
+    // 4,979 over the 150, a closed curve's 3 repeated points counted; 5.2 % in session 44, 5,166 ->
+    // 4,898, with a loop's other reading searched and the equidistributed breaks chained).
     constexpr double kMinSavedShare = 0.02;
     int strokes = 0, without = 0, with = 0, fewer = 0;
     FitOptions plain;
     plain.minimaxTrials = false;
-    compareOnDevelopmentCircles(plain, FitOptions{},
-                                [&](const Recording& rec, const std::string&, const FitResult& a, const FitResult& b) {
-                                    ++strokes;
-                                    without += a.curve.pointCount();
-                                    with += b.curve.pointCount();
-                                    fewer += b.curve.pointCount() < a.curve.pointCount();
-                                    if (rec.subject == "s06" && rec.speed == "fast" && rec.number == 9) {
-                                        // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares,
-                                        // 14 with the minimax trials (FITPACK's splprep 21, OCCT 28 at the least
-                                        // squares' deviation).
-                                        EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
-                                        EXPECT_LE(b.curve.pointCount() - 3, 15) << "minimax trials";
-                                    }
-                                });
+    compareOnDevelopmentCircles(
+        plain, FitOptions{},
+        [&](const Recording& rec, const std::string& name, const FitResult& a, const FitResult& b) {
+            ++strokes;
+            without += a.curve.pointCount();
+            with += b.curve.pointCount();
+            fewer += b.curve.pointCount() < a.curve.pointCount();
+            // A loop's other reading searched with its minimax trials too (session 44;
+            // session 43: 18, 16 and 40 control points, the fewer peer 13, 14 and 30).
+            const auto loop = [&](const char* subject, const char* speed, int number) {
+                return rec.subject == subject && rec.speed == speed && rec.number == number;
+            };
+            if (loop("s02", "fast", 5) || loop("s02", "medium", 10)) {
+                EXPECT_LE(b.curve.pointCount() - 3, 12) << name;
+            }
+            if (loop("s03", "medium", 10)) {
+                EXPECT_LE(b.curve.pointCount() - 3, 35) << name;
+            }
+            if (rec.subject == "s06" && rec.speed == "fast" && rec.number == 9) {
+                // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares,
+                // 14 with the minimax trials (FITPACK's splprep 21, OCCT 28 at the least
+                // squares' deviation).
+                EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
+                EXPECT_LE(b.curve.pointCount() - 3, 15) << "minimax trials";
+            }
+        });
     std::printf("%d circles: %d control points by least squares, %d with minimax trials (%d fewer)\n", strokes, without,
                 with, fewer);
     EXPECT_EQ(strokes, 150);
