@@ -665,10 +665,9 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // and 7 fewer control points over their 150 each in session 44; session 42 found the same.)
     // The other reading runs the search with its minimax trials, as the first does, no higher
     // than the first reading's count (fitReading's ceiling: it is taken at no more). Session 44,
-    // on the development strokes: circles 4,691 -> 4,621 control points (with two-corner loops
-    // periodic too and the ceiling on the minimax trials, 4,604; the loser circles of
-    // compare_splprep.py --dev circle s02 fast 5 18 -> 10, s02 medium 10 16 -> 12, s05 fast 3
-    // 20 -> 17, s05 fast 8 25 -> 23, s03 medium 10 40 -> 35), the circles' fit time 193 -> 282 ms.
+    // on the development strokes (with the equidistributed breaks chained, averaged_fit.cpp):
+    // circles 4,691 -> 4,610 control points (s02 fast 5 18 -> 12, s02 medium 10 16 -> 12, s03
+    // medium 10 40 -> 35), the circles' fit time 193 -> 264 ms (unistroke-report --fit-dev).
     // (Before the minimax trials it was the error-driven fit alone: nearly all the gains were
     // that fit's then, the development loops 21,554 control points with it alone, 21,544 with the
     // search before it.) The detected corners (FitResult::corners, which recognition reads) stay
