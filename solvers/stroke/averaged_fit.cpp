@@ -202,8 +202,7 @@ private:
             e = std::max(e, dk);
             if (dist) (*dist)[k] = dk;
             if (!step) continue;
-            const double lo = k > 0 ? uc_[k - 1] : uc_.back() - 1.0;
-            const double hi = k + 1 < uc_.size() ? uc_[k + 1] : uc_.front() + 1.0;
+            const auto [lo, hi] = neighbourRange(uc_, k);
             footPointNewtonStep(d[0], d[1], d[2], X_[S_[k]], lo, hi, uc_[k]);
         }
         return e;

@@ -393,8 +393,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         const size_t first = in.closed ? 0 : 1, last = in.closed ? S.size() : S.size() - 1;
         std::fill(err.begin(), err.end(), 0.0);
         for (size_t k = first; k < last; ++k) {
-            const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
-            const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+            const auto [lo, hi] = neighbourRange(u, k);
             if (opt.correctParameters) u[k] = newtonStep(s, X[S[k]], u[k], lo, hi);
             err[k] = opt.measureAtFootPoint ? footDistance(s, X[S[k]], u[k], lo, hi, opt.tolerance)
                                             : distanceAt(s, X[S[k]], u[k]);
@@ -560,8 +559,7 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
                 solve(trial, X, S, u, opt.fairing);
                 bool ok = true;
                 for (size_t k = 0; ok && k < S.size(); ++k) {
-                    const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
-                    const double hi = k + 1 < u.size() ? u[k + 1] : u[0] + 1.0;
+                    const auto [lo, hi] = neighbourRange(u, k);
                     ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
                 }
                 if (!ok) continue;

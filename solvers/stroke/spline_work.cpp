@@ -276,6 +276,9 @@ void solveClosed(Spline& s, const std::vector<Vec3>& X, const std::vector<int>& 
                  double fairing, const std::vector<double>* weights)
 {
     const int n = s.unknowns();
+    // (The fitters start a loop at five spans and never go below: a guard, not a case.)
+    if (n <= CyclicBandMatrix::kBandwidth)
+        throw GeometryError("stroke: a closed cubic needs at least 4 control points");
     const double lambda = fairing * std::max(1.0, static_cast<double>(S.size()) / n);
     // Storage kept between solves.
     static_assert(CyclicBandMatrix::kBandwidth == kDegree, "the normal matrix of a periodic cubic");

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace sculptline::solvers::stroke::detail {
 
@@ -124,6 +125,17 @@ struct Spline {
         return hint = std::clamp(static_cast<int>(it - breaks.begin()) - 1, 0, last);
     }
 };
+
+/// The range sample k's parameter may move in: between its neighbours' (across a closed curve's
+/// seam, a period away). Round-off at the seam ((u_0 + 1) - 1 != u_0) can invert the range of a
+/// sample whose neighbours coincide, as a sparse loop's corrections produced (the sanitizer
+/// build's clamp assertion): it is then the one point lo.
+inline std::pair<double, double> neighbourRange(const std::vector<double>& u, size_t k)
+{
+    const double lo = k > 0 ? u[k - 1] : u.back() - 1.0;
+    const double hi = k + 1 < u.size() ? u[k + 1] : u.front() + 1.0;
+    return {lo, std::max(lo, hi)};
+}
 
 /// One Newton step on f(u) = C'(u).(C(u) - x) (The NURBS Book eq. 6.3), kept inside [lo, hi].
 double newtonStep(const Spline& s, const Vec3& x, double u, double lo, double hi);
