@@ -115,6 +115,27 @@ TEST(CyclicBandedCholesky, GivenIndefiniteMatrices_ThenFactorReportsFailure)
     EXPECT_FALSE(border.factor());
 }
 
+// A closed curve's samples move between their neighbours, the first and last a period apart. When
+// the last sample was clamped to the first's parameter plus one, (u_0 + 1) - 1 rounds above u_0:
+// with the second sample at u_0 too, the first sample's range [u_last - 1, u_1] came out inverted
+// and std::clamp asserted in the sanitizer build (a sparse loop, FitTolerance.GivenSparseLoops_*).
+TEST(SeamRange, GivenNeighboursThatMeetAcrossTheSeam_ThenTheRangeIsOnePointNotInverted)
+{
+    const double u0 = 0.0044240393791330317;  // the failing loop's parameters, 16 samples
+    const std::vector<double> u = {u0, u0, 0.3, 0.7, u0 + 1.0};
+    ASSERT_GT(u.back() - 1.0, u[1]) << "the round-off this guards against";
+    const auto [lo, hi] = detail::neighbourRange(u, 0);
+    EXPECT_EQ(lo, u.back() - 1.0);
+    EXPECT_EQ(hi, lo);
+    // Elsewhere the range is the neighbours' parameters.
+    const auto [lo2, hi2] = detail::neighbourRange(u, 2);
+    EXPECT_EQ(lo2, u0);
+    EXPECT_EQ(hi2, 0.7);
+    const auto [lo4, hi4] = detail::neighbourRange(u, 4);
+    EXPECT_EQ(lo4, 0.7);
+    EXPECT_EQ(hi4, u0 + 1.0);
+}
+
 TEST(DynamicThreshold, GivenSpeedRatios_ThenEquations42And43AsRead)
 {
     const double unit = 2.0;
