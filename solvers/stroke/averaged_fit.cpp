@@ -37,8 +37,8 @@ struct Trial {
     std::vector<double> params;  // the samples' parameters `error` was measured at (fixed counts)
 };
 
-// The averaged-knot fit of one input: the trials share the samples, their chord parameters and
-// the parameters the last trial corrected.
+// The averaged-knot fit of one input: the trials share the samples and their chord parameters;
+// the trial being made corrects its own copy (uc_).
 class AveragedFit {
 public:
     AveragedFit(const SplineFitInput& in, const SplineFitOptions& opt, std::vector<int> S, std::vector<double> u)
@@ -223,8 +223,8 @@ private:
         Spline c = t.curve;
         const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
         for (int round = 0;; ++round) {
-            // (The last round's curve is measured without moving the parameters: the breaks
-            // equidistributed after the rounds are placed from the last round's.)
+            // (The last round's curve is measured without moving the parameters: no round
+            // follows to use them.)
             const bool last = round == opt_.minimaxRounds;
             before = uc_;  // (the parameters the round's curve is measured at, before its steps)
             const double err = correct(c, firstK, endK, &dist, !last);
