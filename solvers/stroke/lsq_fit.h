@@ -78,7 +78,7 @@ struct SplineFitOptions {
     int minimaxRounds = 0;
     /// KnotPlacement::Averaged with averagedControlPoints: when the trial misses (its rounds end
     /// above minimaxWithin), this many more trials with the breaks moved to equidistribute the
-    /// fourth root of each span's largest distance (lsq_fit.cpp); the best trial is kept.
+    /// fourth root of each span's largest distance (averaged_fit.cpp); the best trial is kept.
     int equidistributions = 0;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;

@@ -77,24 +77,7 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
             spanBasis = SpanBasis<kDegree>(s.knots, i + kDegree);
         }
         spanBasis.functions(u[k], basis);
-        if (weights) {
-            // (The weighted sums: each basis value times the sample's weight on one side.)
-            SpanSums& t = sums[i];
-            const double w = (*weights)[k];
-            const Vec3& x = X[S[k]];
-            for (int q = 0; q <= kDegree; ++q) {
-                const double wb = w * basis[q];
-                t.r[q] += wb * x;
-                for (int r = 0; r <= q; ++r) t.g[q][r] += wb * basis[r];
-            }
-            continue;
-        }
-        SpanSums& t = sums[i];
-        const Vec3& x = X[S[k]];
-        for (int q = 0; q <= kDegree; ++q) {
-            t.r[q] += basis[q] * x;
-            for (int r = 0; r <= q; ++r) t.g[q][r] += basis[q] * basis[r];
-        }
+        sums[i].add(basis, weights ? (*weights)[k] : 1.0, X[S[k]]);
     }
 }
 
@@ -226,16 +209,15 @@ void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vect
                     CyclicBandMatrix& a, std::vector<Vec3>& b)
 {
     const int n = s.unknowns();
-    int run = -1;  // the span whose sums g, r hold (its control points run..run+3 modulo n)
-    double g[kDegree + 1][kDegree + 1] = {};
-    Vec3 r[kDegree + 1];
+    int run = -1;  // the span whose sums t hold (its control points run..run+3 modulo n)
+    SpanSums t;
     const auto flush = [&] {
         if (run < 0) return;
         int idx[kDegree + 1];
         for (int q = 0; q <= kDegree; ++q) idx[q] = (run + q) % n;
         for (int q = 0; q <= kDegree; ++q) {
-            b[static_cast<size_t>(idx[q])] += r[q];
-            for (int c = 0; c <= q; ++c) a.addLower(std::max(idx[q], idx[c]), std::min(idx[q], idx[c]), g[q][c]);
+            b[static_cast<size_t>(idx[q])] += t.r[q];
+            for (int c = 0; c <= q; ++c) a.addLower(std::max(idx[q], idx[c]), std::min(idx[q], idx[c]), t.g[q][c]);
         }
     };
     std::optional<SpanBasis<kDegree>> basis;
@@ -246,20 +228,11 @@ void assembleClosed(const Spline& s, const std::vector<Vec3>& X, const std::vect
             flush();
             run = j;
             basis.emplace(s.knots, j + kDegree);
-            for (int q = 0; q <= kDegree; ++q) {
-                r[q].setZero();
-                for (int c = 0; c <= q; ++c) g[q][c] = 0.0;
-            }
+            t = SpanSums{};
         }
         double nk[kDegree + 1];
         basis->functions(uk, nk);
-        const double w = weights ? (*weights)[k] : 1.0;
-        const Vec3& x = X[S[k]];
-        for (int q = 0; q <= kDegree; ++q) {
-            const double wb = w * nk[q];
-            r[q] += wb * x;
-            for (int c = 0; c <= q; ++c) g[q][c] += wb * nk[c];
-        }
+        t.add(nk, weights ? (*weights)[k] : 1.0, X[S[k]]);
     }
     flush();
     // The fairing term: rows (1, -2, 1) on control points c-1, c, c+1 modulo n.

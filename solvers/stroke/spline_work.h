@@ -153,6 +153,16 @@ double rawChordGap(const Spline& s, const Vec3& a, const Vec3& b, double u);
 struct SpanSums {
     double g[kDegree + 1][kDegree + 1] = {};
     Vec3 r[kDegree + 1] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+    /// One sample's terms: the span's four basis values at it, its weight (1: unweighted, the
+    /// same sums to the bit) and its point.
+    void add(const double* basis, double w, const Vec3& x)
+    {
+        for (int q = 0; q <= kDegree; ++q) {
+            const double wb = w * basis[q];
+            r[q] += wb * x;
+            for (int c = 0; c <= q; ++c) g[q][c] += wb * basis[c];
+        }
+    }
 };
 /// Sums of the spans first..last of s (knots made; sums grown to s.spanCount() if shorter), each
 /// sample's terms times its weight when `weights` (one per entry of S) is given.

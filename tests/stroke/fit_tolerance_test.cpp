@@ -105,10 +105,12 @@ TEST(FitTolerance, GivenSparseRealPigtail_WhenFitted_ThenNoMoreControlPointsThan
 // or from the seam where the hand closed it), and takes the one with fewer control points. On the
 // development circles no loop needs more than with the detected corners alone, every kept sample
 // stays within the tolerance, and the loops need fewer in all (measured: 3,051 -> 2,838 control
-// points over the 96 loops; 2,828 since session 44 searches the other reading too). s03's eighth slow circle, whose
-// periodic fit needs 80 control points, takes 35 clamped at its seam. Each of the 150 development circles fitted with
-// `first` (a) and `second` (b): b holds the tolerance on every kept raw sample, needs no more control points than a and
-// reports the same corners; `each(rec, name, a, b)` checks and counts the rest.
+// points over the 96 loops; 2,828 since session 44 searches the other reading too). s03's eighth
+// slow circle, whose periodic fit needs 80 control points, takes 35 clamped at its seam.
+//
+// Each of the 150 development circles fitted with `first` (a) and `second` (b): b holds the
+// tolerance on every kept raw sample, needs no more control points than a and reports the same
+// corners; `each(rec, name, a, b)` checks and counts the rest.
 template <class Each>
 void compareOnDevelopmentCircles(const FitOptions& first, const FitOptions& second, Each&& each)
 {
