@@ -4,6 +4,7 @@
 #include "solvers/bspline/basis.h"
 
 #include <Eigen/Core>
+#include <memory>
 #include <vector>
 
 namespace sculptline::solvers::stroke {
@@ -80,6 +81,9 @@ struct SplineFitOptions {
     /// above minimaxWithin), this many more trials with the breaks moved to equidistribute the
     /// fourth root of each span's largest distance (averaged_fit.cpp); the best trial is kept.
     int equidistributions = 0;
+    /// KnotPlacement::Averaged with averagedControlPoints: when the trial on averaged knots misses,
+    /// one more on the knots of FITPACK's insertion (averaged_fit.cpp); the better is kept.
+    bool insertedTrials = false;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;
     /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every
@@ -90,6 +94,25 @@ struct SplineFitOptions {
     /// same input and count left (SplineFitResult::correction): the result is the uninterrupted
     /// fit's, to the bit.
     const struct AveragedCorrectionState* averagedResume = nullptr;
+    /// KnotPlacement::Averaged with averagedControlPoints: what the trials on one input keep for
+    /// the trials after them (AveragedTrialCache; null: each trial starts afresh).
+    class AveragedTrialCache* trialCache = nullptr;
+};
+
+/// What the fixed-count averaged-knot trials on one input (the same rows, parameters and points)
+/// keep for the trials after them: the knots FITPACK's insertion placed, in the order inserted, and
+/// each count's best trial before its equidistributions, which a trial of the same count and
+/// options takes instead of solving it again (averaged_fit.cpp; the result is the same to the bit).
+/// A trial on another input starts it afresh. The caller's, passed to every trial that may share it.
+class AveragedTrialCache {
+public:
+    AveragedTrialCache();
+    ~AveragedTrialCache();
+    AveragedTrialCache(const AveragedTrialCache&) = delete;
+    AveragedTrialCache& operator=(const AveragedTrialCache&) = delete;
+
+    struct State;
+    std::unique_ptr<State> state;
 };
 
 /// Where a fit with averagedStopWhenWithin stopped: the parameters after `done` corrections (the
@@ -99,6 +122,7 @@ struct AveragedCorrectionState {
     int done = 0;
     double error = 0.0;
     bool stopped = false;  ///< false: the fit ran every correction, nothing to resume
+    std::vector<double> breaks;  ///< the breaks the stopped fit solves on
 };
 
 /// Data for one piece: ordered points with chord-length parameters normalized to [0, 1]

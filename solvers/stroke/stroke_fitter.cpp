@@ -201,6 +201,8 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
         SplineFitOptions alt = sopt;
         alt.knotPlacement = KnotPlacement::Averaged;
         alt.averagedCorrections = kAveragedCorrections;
+        AveragedTrialCache trialCache;  // (kept by the trials on the same rows for one another)
+        alt.trialCache = &trialCache;
         alt.tolerance = res.tolerance;
         // The count a trial is asked for is the curve's points less this: a closed curve repeats 3
         // points, and a loop's one clamped piece has its seam point twice.
@@ -503,6 +505,17 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
+            // Where the count follows the noise (kNoiseRowsPerPoint), a count whose trial on averaged
+            // knots misses is tried on FITPACK's knots too (SplineFitOptions::insertedTrials): they
+            // follow the error of the shape where averaged knots follow the samples' density. On the
+            // development strokes 56,762 -> 56,474 control points (circles 4,610 -> 4,420), and
+            // compare_splprep.py --dev circle 139 -> 144 of 150 circles meeting the fewer peer. For
+            // 24 % more instructions there (callgrind, fitStroke over unistroke-report --fit-dev,
+            // 7.43 -> 9.25 G), 1.5 % more on BM_StrokeRecorded/0 (423 -> 429 M). On every stroke
+            // the minimax trials reach: 56,473 for 6 % more instructions on BM_StrokeRecorded/0;
+            // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
+            // (no averaged trial first): 56,563.
+            alt.insertedTrials = current * kNoiseRowsPerPoint >= cs.size();
             // (No count above the ceiling is tried: the caller takes none.)
             const auto below = [&](int count) { return count > ceiling ? ceiling + 1 : count; };
             if (current * kNoiseRowsPerPoint >= cs.size()) {

@@ -407,6 +407,103 @@ TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenF
     EXPECT_LT(moved, averaged);
 }
 
+// A ripple on a third of an open curve (the detail in one part): 300 points, chord parameters,
+// every point a row.
+struct RippleInput {
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> chord;
+    SplineFitInput in;
+    RippleInput()
+    {
+        const int m = 300;
+        for (int i = 0; i < m; ++i) {
+            const double t = i / double(m - 1);
+            const double ripple = t > 0.6 && t < 0.9 ? 2.0 * std::sin(40 * (t - 0.6)) : 0.0;
+            pts.emplace_back(100 * t, 10 * std::sin(3 * t) + ripple, 0.0);
+        }
+        chord.assign(m, 0.0);
+        for (int i = 1; i < m; ++i) chord[i] = chord[i - 1] + (pts[i] - pts[i - 1]).norm();
+        for (double& c : chord) c /= chord.back();
+        in.points = &pts;
+        in.chord = &chord;
+        for (int i = 0; i < m; ++i) in.samples.push_back(i);
+    }
+};
+
+// SplineFitOptions::insertedTrials: a count whose trial on averaged breaks misses is tried on
+// FITPACK's knots (a knot at the middle sample of the span whose squared distances sum the most,
+// one per least squares), which gather where the detail is: a count the averaged breaks miss fits,
+// the error never grows (the better trial is kept), and a curve that took FITPACK's knots has its
+// interior knots at samples' parameters.
+TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenFitpackKnotsAreTried_ThenFewerControlPointsFit)
+{
+    const RippleInput r;
+    SplineFitOptions o;
+    o.tolerance = 0.05;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 3;
+    o.minimaxRounds = 10;
+    // (Counts up to 40 only: the averaged breaks need 120, measured up to 150; the sanitizer build
+    // takes seconds for them.)
+    const auto [averaged, inserted] = fewestWithin(
+        r.in, o, 40, [](SplineFitOptions& v) { v.insertedTrials = false; },
+        [](SplineFitOptions& v) { v.insertedTrials = true; });
+    std::printf(
+        "fewest control points within %.2f up to 40: averaged breaks %d (0: none), FITPACK's where they "
+        "miss %d\n",
+        o.tolerance, averaged, inserted);
+    ASSERT_GT(inserted, 0);
+    EXPECT_TRUE(averaged == 0 || inserted < averaged);
+
+    o.insertedTrials = true;
+    o.averagedControlPoints = inserted;
+    const SplineFitResult f = fitCubicSpline(r.in, o);
+    ASSERT_LE(f.maxError, o.tolerance);
+    for (size_t k = 4; k + 4 < f.knots.size(); ++k)
+        EXPECT_TRUE(std::binary_search(r.chord.begin(), r.chord.end(), f.knots[k])) << "knot " << f.knots[k];
+}
+
+// SplineFitOptions::trialCache: trials on one input keep FITPACK's knots and each count's trial for
+// the trials after them. Asked in any order (counts up and down, again, after trials on another
+// input), each count's curve is the one a fit without the cache makes, to the bit.
+TEST(LeastSquaresSpline, GivenATrialCache_WhenCountsAreAskedInAnyOrder_ThenEachCurveIsTheUncachedOneToTheBit)
+{
+    const RippleInput r;
+    SplineFitInput other = r.in;  // (another input: every other row)
+    other.samples.clear();
+    for (int i = 0; i < 300; i += 2) other.samples.push_back(i);
+    other.samples.push_back(299);
+    SplineFitOptions o;
+    o.tolerance = 0.05;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 3;
+    o.minimaxRounds = 10;
+    o.insertedTrials = true;
+    o.equidistributions = 2;
+    AveragedTrialCache cache;
+    int differ = 0;  // (counts where FITPACK's knots were taken: the cache's insertion was used)
+    const std::vector<std::pair<const SplineFitInput*, int>> asked = {
+        {&r.in, 40},  {&r.in, 20},  {&r.in, 30}, {&r.in, 20}, {&r.in, 55}, {&other, 12},
+        {&other, 20}, {&other, 12}, {&r.in, 40}, {&r.in, 12}, {&r.in, 40}};
+    for (const auto& [in, count] : asked) {
+        {
+            o.averagedControlPoints = count;
+            o.trialCache = nullptr;
+            const SplineFitResult fresh = fitCubicSpline(*in, o);
+            o.trialCache = &cache;
+            const SplineFitResult cached = fitCubicSpline(*in, o);
+            o.insertedTrials = false;
+            o.trialCache = nullptr;
+            differ += fitCubicSpline(*in, o).knots != fresh.knots;
+            o.insertedTrials = true;
+            EXPECT_EQ(cached.knots, fresh.knots) << count;
+            EXPECT_EQ(cached.points, fresh.points) << count;
+            EXPECT_EQ(cached.maxError, fresh.maxError) << count;
+        }
+    }
+    EXPECT_GT(differ, 0) << "FITPACK's knots were never taken: the cache's insertion is not exercised";
+}
+
 TEST(LeastSquaresSpline, GivenSamplesOfACubic_ThenReproducedExactlyWithOneSpan)
 {
     // A single cubic Bezier segment is in the spline space: the fit must reproduce it.
