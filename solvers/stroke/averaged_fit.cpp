@@ -33,7 +33,7 @@ struct AveragedTrialCache::State {
     // FITPACK's insertion (AveragedFit::insertedBreaks): the breaks before the first knot inserted,
     // the knots inserted in order, and whether no span is left with a sample inside.
     std::vector<double> start, inserted;
-    bool exhausted = false;
+    bool started = false, exhausted = false;
     // Each count's best trial before its equidistributions, and the options it was made with
     // (AveragedFit::made).
     struct Made {
@@ -78,7 +78,9 @@ public:
     AveragedFit(const SplineFitInput& in, const SplineFitOptions& opt, std::vector<int> S, std::vector<double> u)
         : in_(in), opt_(opt), X_(*in.points), S_(std::move(S)), u_(std::move(u))
     {
-        state_ = opt_.trialCache ? opt_.trialCache->state.get() : &local_;
+        // (Without a cache the state is this fit's own, and no input needs recognizing.)
+        if (!opt_.trialCache) return;
+        state_ = opt_.trialCache->state.get();
         const int nS = static_cast<int>(S_.size());
         bool same = state_->closed == in_.closed && state_->samples == S_ && state_->params == u_;
         for (int k = 0; same && k < nS; ++k) same = state_->points[k] == X_[S_[k]];
@@ -89,8 +91,6 @@ public:
         state_->closed = in_.closed;
         state_->points.resize(S_.size());
         for (int k = 0; k < nS; ++k) state_->points[k] = X_[S_[k]];
-        state_->start = in_.closed ? averagedBreaks(5) : std::vector<double>{0.0, 1.0};
-        state_->exhausted = state_->start.empty();
     }
 
     SplineFitResult run()
@@ -174,26 +174,28 @@ private:
     // the cache when a trial of the same count and options made it before.
     Trial made(int nCtrl)
     {
-        const bool fixed = opt_.averagedControlPoints > 0 && !opt_.averagedResume && !opt_.averagedStopWhenWithin;
+        // (A trial that stops once its samples fit, or resumes one, is not kept: its curve depends on
+        // the state it stopped or resumed at.)
+        const bool kept = opt_.averagedControlPoints > 0 && !opt_.averagedResume && !opt_.averagedStopWhenWithin;
         const std::array<double, 6> options = {opt_.tolerance,
                                                opt_.fairing,
                                                static_cast<double>(opt_.averagedCorrections),
                                                static_cast<double>(opt_.minimaxRounds),
                                                opt_.minimaxWithin,
                                                opt_.insertedTrials ? 1.0 : 0.0};
-        if (fixed) {
+        if (kept) {
             const auto it = state_->trials.find(nCtrl);
             if (it != state_->trials.end() && it->second.options == options) return it->second.trial;
         }
         Trial best = trial(nCtrl, nullptr);
-        if (opt_.insertedTrials && fixed && best.error > opt_.tolerance) {
+        if (opt_.insertedTrials && kept && best.error > opt_.tolerance) {
             const std::vector<double> nb = insertedBreaks(nCtrl);
             if (!nb.empty()) {
                 Trial b = trial(nCtrl, &nb);
                 if (b.error < best.error) best = std::move(b);
             }
         }
-        if (fixed) state_->trials[nCtrl] = {best, options};
+        if (kept) state_->trials[nCtrl] = {best, options};
         return best;
     }
 
@@ -208,6 +210,11 @@ private:
     {
         AveragedTrialCache::State& q = *state_;
         const int nS = static_cast<int>(u_.size());
+        if (!q.started) {
+            q.started = true;
+            q.start = in_.closed ? averagedBreaks(5) : std::vector<double>{0.0, 1.0};
+            q.exhausted = q.start.empty();
+        }
         if (q.start.empty()) return {};
         Spline c;
         c.closed = in_.closed;
@@ -441,8 +448,8 @@ private:
     const std::vector<double> u_;  // the samples' chord parameters
     std::vector<double> uc_;       // the parameters of the trial being made (corrected in it)
     SplineFitResult res_;
-    AveragedTrialCache::State local_;   // (without SplineFitOptions::trialCache)
-    AveragedTrialCache::State* state_;  // this input's
+    AveragedTrialCache::State local_;             // (without SplineFitOptions::trialCache)
+    AveragedTrialCache::State* state_ = &local_;  // this input's
 };
 
 }  // namespace

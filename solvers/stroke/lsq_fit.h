@@ -81,8 +81,9 @@ struct SplineFitOptions {
     /// above minimaxWithin), this many more trials with the breaks moved to equidistribute the
     /// fourth root of each span's largest distance (averaged_fit.cpp); the best trial is kept.
     int equidistributions = 0;
-    /// KnotPlacement::Averaged with averagedControlPoints: when the trial on averaged knots misses,
-    /// one more on the knots of FITPACK's insertion (averaged_fit.cpp); the better is kept.
+    /// KnotPlacement::Averaged with averagedControlPoints (neither stopping once within nor
+    /// resuming): when the trial on averaged knots misses, one more on the knots of FITPACK's
+    /// insertion (averaged_fit.cpp); the better is kept.
     bool insertedTrials = false;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;
