@@ -113,6 +113,9 @@ constexpr int kEquidistributions = 3;
 // minimax trials). (Searching again with the climbs and rows of the least squares' search
 // instead of the bisection on every point: 57,107 control points for 421 M.)
 constexpr int kNoiseRowsPerPoint = 4;
+// A loop's two corners closer across the seam than 1 / kSeamPairShare of its conditioned points
+// are where the hand closed it (see fitStroke's other reading).
+constexpr int kSeamPairShare = 8;
 
 // What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
 // conditioned stroke with the points the least squares fits, the dynamic threshold's rows and the
@@ -685,9 +688,20 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // that fit's then, the development loops 21,554 control points with it alone, 21,544 with the
     // search before it.) The detected corners (FitResult::corners, which recognition reads) stay
     // as found.
-    if (cs.closed && corners.size() <= 1 && options.bothLoopReadings && options.fewerControlPoints && res.converged) {
+    // Two corners that meet across the seam, within 1 / kSeamPairShare of the loop's points, are where
+    // the hand closed it (the pen's start and its lift, overlapping), not two corners of the
+    // shape: such a loop's other reading is one clamped piece from the later corner round to it.
+    // On the development strokes two circles have such a pair: s02 slow 1 31 -> 17 control points
+    // (the fewer peer 24), s06 fast 8 25 -> 24; no triangle, rectangle or other gesture changes,
+    // from an eighth to a quarter of the points. (From the earlier corner: 6 more control points
+    // over the circles.)
+    const bool seamPair = corners.size() == 2 && (corners[0] + cs.size() - corners[1]) * kSeamPairShare < cs.size();
+    if (cs.closed && (corners.size() <= 1 || seamPair) && options.bothLoopReadings && options.fewerControlPoints &&
+        res.converged) {
         const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
-        const std::vector<int> other = corners.empty() ? std::vector<int>{0} : std::vector<int>{};
+        const std::vector<int> other = seamPair          ? std::vector<int>{corners[1]}
+                                       : corners.empty() ? std::vector<int>{0}
+                                                         : std::vector<int>{};
         FitPass first = std::move(fit);
         std::vector<int> firstOutliers = std::move(outliers);
         const double firstError = res.maxError;
