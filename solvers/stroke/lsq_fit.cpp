@@ -335,6 +335,154 @@ double removalDistance(const Spline& s, int r)
     return (P[i + 1] - (alfm * right + (1.0 - alfm) * left)).norm();
 }
 
+// The check of a fit whose samples are within the tolerance (or can take no more knots): every
+// point of the input measured on s from its parameter between the samples' (checkParameters) to
+// its foot point, and every chord between consecutive points, which the curve must stay near or
+// it loops where no sample holds it. Into `checked` (each point's foot parameter, distance and
+// span, and the chords' gaps where measured: every one with `recordGaps`, for the removal
+// pass); `offender` gets each span's worst point beyond the tolerance not yet a sample (-1:
+// none), `offErr` its distance. Returns the largest distance.
+double checkEveryPoint(const Spline& s, const SplineFitInput& in, const std::vector<int>& S,
+                       const std::vector<double>& u, double tol, bool recordGaps, PointCheck& checked,
+                       std::vector<int>& offender, std::vector<double>& offErr)
+{
+    const auto& X = *in.points;
+    const int m = static_cast<int>(X.size());
+    checkParameters(in, S, u, checked.cu);
+    std::vector<double>& cu = checked.cu;
+    const int spans = static_cast<int>(s.breaks.size());
+    offender.assign(static_cast<size_t>(spans), -1);
+    offErr.assign(static_cast<size_t>(spans), tol);
+    double maxError = 0.0;
+    std::vector<double>& pointErr = checked.e;
+    std::vector<int>& pointSpan = checked.span;
+    pointErr.resize(m);
+    pointSpan.resize(m);
+    checked.gap.assign(m, std::numeric_limits<double>::infinity());
+    for (int i = 0; i < m; ++i) {
+        const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
+        const double e = footDistance(s, X[i], cu[i], lo, hi, tol, &cu[i]);
+        maxError = std::max(maxError, e);
+        const int j = s.spanOf(s.wrap(cu[i]));
+        pointErr[i] = e;
+        pointSpan[i] = j;
+        if (e > offErr[j]) {
+            offErr[j] = e;
+            offender[j] = i;
+        }
+    }
+    const ChordGapBound gapBound(s);
+    // The other direction (curve to data): between two consecutive points the curve must stay
+    // near the chord joining them, or it loops where no sample holds it. The offender is the
+    // neighbour not yet sampled.
+    for (int i = 0; i + 1 < m || (in.closed && i < m); ++i) {
+        const int next = (i + 1) % m;
+        const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
+        if (!(u1 > cu[i])) continue;
+        // A gap within the bound can neither raise the max nor be an offender (offErr >= tol).
+        const double b = gapBound(pointSpan[i], pointSpan[next], 0.5 * (u1 - cu[i]), pointErr[i], pointErr[next]);
+        const double quarter = 0.25 * (X[next] - X[i]).norm();
+        const bool settled = b <= quarter || (b <= tol && b <= maxError);
+        if (settled && !recordGaps) continue;
+        // (Recorded even so for the removal pass, which bounds its trials from it.)
+        checked.gap[i] = rawChordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
+        if (settled) continue;
+        const double e = checked.gap[i] > quarter ? checked.gap[i] : 0.0;
+        maxError = std::max(maxError, e);
+        const int j = s.spanOf(s.wrap(0.5 * (cu[i] + u1)));
+        const int pick = std::binary_search(S.begin(), S.end(), next) ? i : next;
+        if (e > offErr[j] && !std::binary_search(S.begin(), S.end(), pick)) {
+            offErr[j] = e;
+            offender[j] = pick;
+        }
+    }
+    return maxError;
+}
+
+// SplineFitOptions::removal on a converged fit: each removal kept when the refit stays within
+// the tolerance at every point and chord. An open curve (AllKnots) ranks its breaks by their
+// knot-removal distance, cheapest first, re-ranked after each removal, and checks a trial from
+// the bounds of the last accepted spline (checkTrial). `checked` is the fit's last check of every
+// point (measured again when `remeasure`: the rounds ran out, and the check is of other breaks).
+// Returns the largest distance after the removals.
+double removeRankedKnots(Spline& s, const SplineFitInput& in, const SplineFitOptions& opt, const std::vector<int>& S,
+                         const std::vector<double>& u, PointCheck checked, bool remeasure, double maxError)
+{
+    const auto& X = *in.points;
+    PointCheck pc = std::move(checked), trialCheck;
+    pc.worst = maxError;
+    if (remeasure)
+        measureAll(s, in, S, u, opt.tolerance, std::numeric_limits<double>::infinity(), &pc);
+    else
+        pc.summarize(s.spanCount());
+    bool removedAny = false;
+    std::vector<SpanSums> sums, trialSums;
+    spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
+    std::vector<double> tried;
+    Spline trial;  // (assigned per removal tried: its storage is reused)
+    bool removed = true;
+    while (removed) {
+        removed = false;
+        // Untried breaks, cheapest removal first (re-ranked after each removal).
+        std::vector<std::pair<double, int>> rank;
+        for (int r = 1; r + 1 < static_cast<int>(s.breaks.size()); ++r) {
+            if (std::find(tried.begin(), tried.end(), s.breaks[r]) == tried.end())
+                rank.emplace_back(removalDistance(s, r), r);
+        }
+        std::sort(rank.begin(), rank.end());
+        for (const auto& entry : rank) {
+            const int r = entry.second;
+            tried.push_back(s.breaks[r]);
+            trial = s;
+            sumsWithoutBreak(trial, r, X, S, u, sums, trialSums);
+            solveOpenFromSums(trial, X, S, trialSums, opt.fairing);
+            if (!checkTrial(s, pc, trial, r, in, opt.tolerance, trialCheck)) continue;
+            std::swap(s, trial);
+            std::swap(pc, trialCheck);
+            std::swap(sums, trialSums);
+            removed = removedAny = true;
+            break;
+        }
+    }
+    // Report the measure every fit reports (the bounds above only decided); it cannot exceed the
+    // bounds unless its Newton steps missed a foot point the pass had found.
+    if (!removedAny) return maxError;
+    const double e = measureAll(s, in, S, u, opt.tolerance);
+    return e <= opt.tolerance ? e : pc.worst;
+}
+
+// SplineFitOptions::removal on a converged closed curve (AllKnots: each break in turn) or with
+// LastRound (the last round's knots): each trial solved and measured in full. Returns the largest
+// distance after the removals.
+double removeKnotsInTurn(Spline& s, const SplineFitInput& in, const SplineFitOptions& opt, const std::vector<int>& S,
+                         const std::vector<double>& u, const std::vector<double>& lastInserted, double maxError)
+{
+    const auto& X = *in.points;
+    const std::vector<double> tryRemove =
+        opt.removal == KnotRemoval::AllKnots ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end()) : lastInserted;
+    Spline trial;  // (assigned per knot tried: its storage is reused)
+    for (double knot : tryRemove) {
+        trial = s;
+        const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
+        if (it == trial.breaks.end()) continue;
+        trial.breaks.erase(it);
+        if (in.closed && trial.breaks.size() < 5) continue;  // the smallest periodic start
+        solve(trial, X, S, u, opt.fairing);
+        bool ok = true;
+        for (size_t k = 0; ok && k < S.size(); ++k) {
+            const auto [lo, hi] = neighbourRange(u, k);
+            ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
+        }
+        if (!ok) continue;
+        const double e = measureAll(trial, in, S, u, opt.tolerance, opt.tolerance);
+        if (e <= opt.tolerance) {
+            std::swap(s, trial);
+            maxError = e;
+        }
+    }
+    return maxError;
+}
+
 }  // namespace
 
 namespace detail {
@@ -404,54 +552,9 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         }
         // All samples fit (or no more knots help): verify every point, and add the worst offender of
         // each span to the samples so that the next solve sees it.
-        checkParameters(in, S, u, checked.cu);
-        std::vector<double>& cu = checked.cu;
+        res.maxError = checkEveryPoint(s, in, S, u, opt.tolerance, recordGaps, checked, offender, offErr);
+        const std::vector<double>& cu = checked.cu;
         const int spans = static_cast<int>(s.breaks.size());
-        offender.assign(static_cast<size_t>(spans), -1);
-        offErr.assign(static_cast<size_t>(spans), opt.tolerance);
-        res.maxError = 0.0;
-        std::vector<double>& pointErr = checked.e;
-        std::vector<int>& pointSpan = checked.span;
-        pointErr.resize(m);
-        pointSpan.resize(m);
-        checked.gap.assign(m, std::numeric_limits<double>::infinity());
-        for (int i = 0; i < m; ++i) {
-            const double lo = in.closed ? cu[i] - 0.5 : 0.0, hi = in.closed ? cu[i] + 0.5 : 1.0;
-            const double e = footDistance(s, X[i], cu[i], lo, hi, opt.tolerance, &cu[i]);
-            res.maxError = std::max(res.maxError, e);
-            const int j = s.spanOf(s.wrap(cu[i]));
-            pointErr[i] = e;
-            pointSpan[i] = j;
-            if (e > offErr[j]) {
-                offErr[j] = e;
-                offender[j] = i;
-            }
-        }
-        const ChordGapBound gapBound(s);
-        // The other direction (curve to data): between two consecutive points the curve must stay
-        // near the chord joining them, or it loops where no sample holds it. The offender is the
-        // neighbour not yet sampled.
-        for (int i = 0; i + 1 < m || (in.closed && i < m); ++i) {
-            const int next = (i + 1) % m;
-            const double u1 = next == 0 ? cu[0] + 1.0 : cu[next];
-            if (!(u1 > cu[i])) continue;
-            // A gap within the bound can neither raise the max nor be an offender (offErr >= tol).
-            const double b = gapBound(pointSpan[i], pointSpan[next], 0.5 * (u1 - cu[i]), pointErr[i], pointErr[next]);
-            const double quarter = 0.25 * (X[next] - X[i]).norm();
-            const bool settled = b <= quarter || (b <= opt.tolerance && b <= res.maxError);
-            if (settled && !recordGaps) continue;
-            // (Recorded even so for the removal pass, which bounds its trials from it.)
-            checked.gap[i] = rawChordGap(s, X[i], X[next], 0.5 * (cu[i] + u1));
-            if (settled) continue;
-            const double e = checked.gap[i] > quarter ? checked.gap[i] : 0.0;
-            res.maxError = std::max(res.maxError, e);
-            const int j = s.spanOf(s.wrap(0.5 * (cu[i] + u1)));
-            const int pick = std::binary_search(S.begin(), S.end(), next) ? i : next;
-            if (e > offErr[j] && !std::binary_search(S.begin(), S.end(), pick)) {
-                offErr[j] = e;
-                offender[j] = pick;
-            }
-        }
         // SplineFitOptions::polishParameters: once, with the same knots. The check's offenders join
         // the rows in the same round (below), not in a round of their own after the polished
         // solve: on BM_StrokeRecorded/0 (523 of 579 pieces of the strokes with corners polish)
@@ -500,76 +603,12 @@ SplineFitResult fitCubicSpline(const SplineFitInput& in, const SplineFitOptions&
         res.maxError = measureAll(s, in, S, u, opt.tolerance);
     }
     // The last round of insertions may have overshot (a knot fixes its neighbours' spans too), and
-    // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal),
-    // keeping a removal when the refit stays within tolerance at every point and chord. Open
-    // curves rank the breaks by their knot-removal distance and check a trial from the bounds of
-    // the last accepted spline (checkTrial); closed curves try each break (AllKnots) or the last
-    // round's knots (LastRound), each measured in full.
+    // earlier knots may have become redundant: try removing them again (SplineFitOptions::removal).
     if (opt.removal != KnotRemoval::None && res.maxError <= opt.tolerance) {
-        if (!in.closed && opt.removal != KnotRemoval::LastRound) {
-            PointCheck pc = std::move(checked), trialCheck;
-            pc.worst = res.maxError;
-            if (res.iterations > opt.maxIterations) measureAll(s, in, S, u, opt.tolerance, std::numeric_limits<double>::infinity(), &pc);
-            else pc.summarize(s.spanCount());
-            bool removedAny = false;
-            std::vector<SpanSums> sums, trialSums;
-            spanSums(s, X, S, u, 0, s.spanCount() - 1, sums);
-            std::vector<double> tried;
-            Spline trial;  // (assigned per removal tried: its storage is reused)
-            bool removed = true;
-            while (removed) {
-                removed = false;
-                // Untried breaks, cheapest removal first (re-ranked after each removal).
-                std::vector<std::pair<double, int>> rank;
-                for (int r = 1; r + 1 < static_cast<int>(s.breaks.size()); ++r) {
-                    if (std::find(tried.begin(), tried.end(), s.breaks[r]) == tried.end())
-                        rank.emplace_back(removalDistance(s, r), r);
-                }
-                std::sort(rank.begin(), rank.end());
-                for (const auto& entry : rank) {
-                    const int r = entry.second;
-                    tried.push_back(s.breaks[r]);
-                    trial = s;
-                    sumsWithoutBreak(trial, r, X, S, u, sums, trialSums);
-                    solveOpenFromSums(trial, X, S, trialSums, opt.fairing);
-                    if (!checkTrial(s, pc, trial, r, in, opt.tolerance, trialCheck)) continue;
-                    std::swap(s, trial);
-                    std::swap(pc, trialCheck);
-                    std::swap(sums, trialSums);
-                    removed = removedAny = true;
-                    break;
-                }
-            }
-            // Report the measure every fit reports (the bounds above only decided); it cannot
-            // exceed the bounds unless its Newton steps missed a foot point the pass had found.
-            if (removedAny) {
-                const double e = measureAll(s, in, S, u, opt.tolerance);
-                res.maxError = e <= opt.tolerance ? e : pc.worst;
-            }
-        } else {
-            const std::vector<double> tryRemove =
-                opt.removal == KnotRemoval::AllKnots ? std::vector<double>(s.breaks.begin() + 1, s.breaks.end()) : lastInserted;
-            Spline trial;  // (assigned per knot tried: its storage is reused)
-            for (double knot : tryRemove) {
-                trial = s;
-                const auto it = std::find(trial.breaks.begin(), trial.breaks.end(), knot);
-                if (it == trial.breaks.end()) continue;
-                trial.breaks.erase(it);
-                if (in.closed && trial.breaks.size() < 5) continue;  // the smallest periodic start
-                solve(trial, X, S, u, opt.fairing);
-                bool ok = true;
-                for (size_t k = 0; ok && k < S.size(); ++k) {
-                    const auto [lo, hi] = neighbourRange(u, k);
-                    ok = footDistance(trial, X[S[k]], u[k], lo, hi, opt.tolerance) <= opt.tolerance;
-                }
-                if (!ok) continue;
-                const double e = measureAll(trial, in, S, u, opt.tolerance, opt.tolerance);
-                if (e <= opt.tolerance) {
-                    std::swap(s, trial);
-                    res.maxError = e;
-                }
-            }
-        }
+        res.maxError = !in.closed && opt.removal != KnotRemoval::LastRound
+                           ? removeRankedKnots(s, in, opt, S, u, std::move(checked), res.iterations > opt.maxIterations,
+                                               res.maxError)
+                           : removeKnotsInTurn(s, in, opt, S, u, lastInserted, res.maxError);
     }
     res.converged = res.maxError <= opt.tolerance;
     res.knots = s.knots;
