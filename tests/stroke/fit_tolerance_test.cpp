@@ -163,8 +163,9 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
 {
     // Of the circles' control points, the least saving taken as a gain (measured 3.8 %: 5,176 ->
     // 4,979 over the 150, a closed curve's 3 repeated points counted; 5.2 % in session 44, 5,166 ->
-    // 4,898, with a loop's other reading searched and the equidistributed breaks chained; 8.9 % in
-    // session 45, 5,166 -> 4,708, with FITPACK's knots tried where the averaged ones miss).
+    // 4,898, with a loop's other reading searched and the equidistributed breaks chained; 9.0 % in
+    // session 45, 5,157 -> 4,693, with FITPACK's knots tried where the averaged ones miss and the
+    // other reading of a loop whose two corners meet across the seam).
     constexpr double kMinSavedShare = 0.02;
     int strokes = 0, without = 0, with = 0, fewer = 0;
     FitOptions plain;
