@@ -372,47 +372,14 @@ TEST(LeastSquaresSpline, GivenPixelNoise_WhenMinimaxRoundsFollowTheCorrections_T
     EXPECT_LT(minimax, leastSquares);
 }
 
-// SplineFitOptions::equidistributions: where the detail is in one part of a stroke (a ripple on a
-// third of an open curve), breaks averaged over the samples spread the control points evenly; moved
-// to equidistribute the spans' largest distances they gather where the error is, and a count the
-// averaged breaks miss fits. The best trial is kept, so the error never grows.
-TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenFewerControlPointsFit)
-{
-    std::vector<Eigen::Vector3d> pts;
-    const int m = 300;
-    for (int i = 0; i < m; ++i) {
-        const double t = i / double(m - 1);
-        const double ripple = t > 0.6 && t < 0.9 ? 2.0 * std::sin(40 * (t - 0.6)) : 0.0;
-        pts.emplace_back(100 * t, 10 * std::sin(3 * t) + ripple, 0.0);
-    }
-    std::vector<double> chord(m, 0.0);
-    for (int i = 1; i < m; ++i) chord[i] = chord[i - 1] + (pts[i] - pts[i - 1]).norm();
-    for (double& c : chord) c /= chord.back();
-    SplineFitInput in;
-    in.points = &pts;
-    in.chord = &chord;
-    for (int i = 0; i < m; ++i) in.samples.push_back(i);
-    SplineFitOptions o;
-    o.tolerance = 0.05;
-    o.knotPlacement = KnotPlacement::Averaged;
-    o.averagedCorrections = 3;
-    o.minimaxRounds = 10;
-    const auto [averaged, moved] = fewestWithin(
-        in, o, 150, [](SplineFitOptions& v) { v.equidistributions = 0; },
-        [](SplineFitOptions& v) { v.equidistributions = 3; });
-    std::printf("fewest control points within %.2f: averaged breaks %d, equidistributed %d\n", o.tolerance, averaged,
-                moved);
-    ASSERT_GT(moved, 0);
-    ASSERT_GT(averaged, 0);
-    EXPECT_LT(moved, averaged);
-}
-
 // A ripple on a third of an open curve (the detail in one part): 300 points, chord parameters,
 // every point a row.
 struct RippleInput {
     std::vector<Eigen::Vector3d> pts;
     std::vector<double> chord;
-    SplineFitInput in;
+    SplineFitInput in;  // (points to the two above: not copyable)
+    RippleInput(const RippleInput&) = delete;
+    RippleInput& operator=(const RippleInput&) = delete;
     RippleInput()
     {
         const int m = 300;
@@ -429,6 +396,28 @@ struct RippleInput {
         for (int i = 0; i < m; ++i) in.samples.push_back(i);
     }
 };
+
+// SplineFitOptions::equidistributions: where the detail is in one part of a stroke (a ripple on a
+// third of an open curve), breaks averaged over the samples spread the control points evenly; moved
+// to equidistribute the spans' largest distances they gather where the error is, and a count the
+// averaged breaks miss fits. The best trial is kept, so the error never grows.
+TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenFewerControlPointsFit)
+{
+    const RippleInput r;
+    SplineFitOptions o;
+    o.tolerance = 0.05;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 3;
+    o.minimaxRounds = 10;
+    const auto [averaged, moved] = fewestWithin(
+        r.in, o, 150, [](SplineFitOptions& v) { v.equidistributions = 0; },
+        [](SplineFitOptions& v) { v.equidistributions = 3; });
+    std::printf("fewest control points within %.2f: averaged breaks %d, equidistributed %d\n", o.tolerance, averaged,
+                moved);
+    ASSERT_GT(moved, 0);
+    ASSERT_GT(averaged, 0);
+    EXPECT_LT(moved, averaged);
+}
 
 // SplineFitOptions::insertedTrials: a count whose trial on averaged breaks misses is tried on
 // FITPACK's knots (a knot at the middle sample of the span whose squared distances sum the most,
