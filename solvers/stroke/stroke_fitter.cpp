@@ -204,8 +204,6 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
         SplineFitOptions alt = sopt;
         alt.knotPlacement = KnotPlacement::Averaged;
         alt.averagedCorrections = kAveragedCorrections;
-        AveragedTrialCache trialCache;  // (kept by the trials on the same rows for one another)
-        alt.trialCache = &trialCache;
         alt.tolerance = res.tolerance;
         // The count a trial is asked for is the curve's points less this: a closed curve repeats 3
         // points, and a loop's one clamped piece has its seam point twice.
@@ -496,6 +494,11 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             for (int i = 0; i < cs.size(); ++i) all[static_cast<size_t>(i)] = i;
             alt.minimaxRounds = kMinimaxRounds;
             alt.averagedCorrections = kMinimaxCorrections;
+            // (The minimax trials all run on every conditioned point: they keep their insertion and
+            // each count's trial for one another. The search's trials stop once within, and keep
+            // nothing.)
+            AveragedTrialCache trialCache;
+            alt.trialCache = &trialCache;
             alt.averagedStopWhenWithin = false;
             replacing = true;
             std::set<int> missed;
