@@ -517,7 +517,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             // development strokes 56,762 -> 56,474 control points (circles 4,610 -> 4,420), and
             // compare_splprep.py --dev circle 139 -> 144 of 150 circles meeting the fewer peer. For
             // 24 % more instructions there (callgrind, fitStroke over unistroke-report --fit-dev,
-            // 7.43 -> 9.25 G), 1.5 % more on BM_StrokeRecorded/0 (423 -> 429 M). On every stroke
+            // 7.43 -> 9.25 G), 0.7 % more on BM_StrokeRecorded/0 (423 -> 426 M). On every stroke
             // the minimax trials reach: 56,473 for 6 % more instructions on BM_StrokeRecorded/0;
             // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
             // (no averaged trial first): 56,563.
