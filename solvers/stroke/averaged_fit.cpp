@@ -175,7 +175,7 @@ private:
     Trial made(int nCtrl)
     {
         // (A trial that stops once its samples fit, or resumes one, is not kept: its curve depends on
-        // the state it stopped or resumed at.)
+        // the state it stopped or resumed at. FITPACK's knots are tried only where a trial is.)
         const bool kept = opt_.averagedControlPoints > 0 && !opt_.averagedResume && !opt_.averagedStopWhenWithin;
         const std::array<double, 6> options = {opt_.tolerance,
                                                opt_.fairing,
@@ -195,7 +195,7 @@ private:
                 if (b.error < best.error) best = std::move(b);
             }
         }
-        if (kept) state_->trials[nCtrl] = {best, options};
+        if (kept && opt_.trialCache) state_->trials[nCtrl] = {best, options};
         return best;
     }
 
@@ -213,9 +213,8 @@ private:
         if (!q.started) {
             q.started = true;
             q.start = in_.closed ? averagedBreaks(5) : std::vector<double>{0.0, 1.0};
-            q.exhausted = q.start.empty();
         }
-        if (q.start.empty()) return {};
+        if (q.start.empty()) return {};  // (a loop too sparse for five spans)
         Spline c;
         c.closed = in_.closed;
         c.breaks = q.start;
@@ -272,7 +271,7 @@ private:
         if (uc_.size() != u_.size()) throw GeometryError("averaged fit: the state to resume is of another input");
         Trial t;
         t.curve.closed = in_.closed;
-        t.curve.breaks = given ? *given : resume ? resume->breaks : averagedBreaks(nCtrl);
+        t.curve.breaks = given ? *given : averagedBreaks(nCtrl);
         if (t.curve.breaks.empty()) {
             t.curve.breaks = {0.0};
             return t;  // (infinite error: no curve)
@@ -307,7 +306,7 @@ private:
                 k + 1 < opt_.averagedCorrections) {
                 // The count fits (every sample within the tolerance at its parameter, a curve
                 // point). The state: the parameters just corrected, their solve not yet made.
-                res_.correction = {uc_, k + 1, e, true, c.breaks};
+                res_.correction = {uc_, k + 1, e, true};
                 t.error = e;
                 return t;
             }

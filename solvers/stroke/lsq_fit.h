@@ -123,7 +123,6 @@ struct AveragedCorrectionState {
     int done = 0;
     double error = 0.0;
     bool stopped = false;  ///< false: the fit ran every correction, nothing to resume
-    std::vector<double> breaks;  ///< the breaks the stopped fit solves on
 };
 
 /// Data for one piece: ordered points with chord-length parameters normalized to [0, 1]

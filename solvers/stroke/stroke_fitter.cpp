@@ -511,6 +511,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
+            const bool followsNoise = current * kNoiseRowsPerPoint >= cs.size();
             // Where the count follows the noise (kNoiseRowsPerPoint), a count whose trial on averaged
             // knots misses is tried on FITPACK's knots too (SplineFitOptions::insertedTrials): they
             // follow the error of the shape where averaged knots follow the samples' density. On the
@@ -521,10 +522,10 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             // the minimax trials reach: 56,473 for 6 % more instructions on BM_StrokeRecorded/0;
             // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
             // (no averaged trial first): 56,563.
-            alt.insertedTrials = current * kNoiseRowsPerPoint >= cs.size();
+            alt.insertedTrials = followsNoise;
             // (No count above the ceiling is tried: the caller takes none.)
             const auto below = [&](int count) { return count > ceiling ? ceiling + 1 : count; };
-            if (current * kNoiseRowsPerPoint >= cs.size()) {
+            if (followsNoise) {
                 for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
                     const int mid = lo + (hi - lo) / 2;
                     if (takes(mid))

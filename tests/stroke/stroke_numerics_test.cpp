@@ -397,6 +397,17 @@ struct RippleInput {
     }
 };
 
+// The averaged fit RippleInput's tests make: a twentieth of a unit, three corrections, ten rounds.
+SplineFitOptions rippleOptions()
+{
+    SplineFitOptions o;
+    o.tolerance = 0.05;
+    o.knotPlacement = KnotPlacement::Averaged;
+    o.averagedCorrections = 3;
+    o.minimaxRounds = 10;
+    return o;
+}
+
 // SplineFitOptions::equidistributions: where the detail is in one part of a stroke (a ripple on a
 // third of an open curve), breaks averaged over the samples spread the control points evenly; moved
 // to equidistribute the spans' largest distances they gather where the error is, and a count the
@@ -404,11 +415,7 @@ struct RippleInput {
 TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenFewerControlPointsFit)
 {
     const RippleInput r;
-    SplineFitOptions o;
-    o.tolerance = 0.05;
-    o.knotPlacement = KnotPlacement::Averaged;
-    o.averagedCorrections = 3;
-    o.minimaxRounds = 10;
+    SplineFitOptions o = rippleOptions();
     const auto [averaged, moved] = fewestWithin(
         r.in, o, 150, [](SplineFitOptions& v) { v.equidistributions = 0; },
         [](SplineFitOptions& v) { v.equidistributions = 3; });
@@ -427,11 +434,7 @@ TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenBreaksAreEquidistributed_ThenF
 TEST(LeastSquaresSpline, GivenDetailInOnePart_WhenFitpackKnotsAreTried_ThenFewerControlPointsFit)
 {
     const RippleInput r;
-    SplineFitOptions o;
-    o.tolerance = 0.05;
-    o.knotPlacement = KnotPlacement::Averaged;
-    o.averagedCorrections = 3;
-    o.minimaxRounds = 10;
+    SplineFitOptions o = rippleOptions();
     // (Counts up to 40 only: the averaged breaks need 120, measured up to 150; the sanitizer build
     // takes seconds for them.)
     const auto [averaged, inserted] = fewestWithin(
@@ -462,11 +465,7 @@ TEST(LeastSquaresSpline, GivenATrialCache_WhenCountsAreAskedInAnyOrder_ThenEachC
     other.samples.clear();
     for (int i = 0; i < 300; i += 2) other.samples.push_back(i);
     other.samples.push_back(299);
-    SplineFitOptions o;
-    o.tolerance = 0.05;
-    o.knotPlacement = KnotPlacement::Averaged;
-    o.averagedCorrections = 3;
-    o.minimaxRounds = 10;
+    SplineFitOptions o = rippleOptions();
     o.insertedTrials = true;
     o.equidistributions = 2;
     AveragedTrialCache cache;
