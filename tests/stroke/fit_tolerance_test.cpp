@@ -166,7 +166,8 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
     // 4,979 over the 150, a closed curve's 3 repeated points counted; 5.2 % in session 44, 5,166 ->
     // 4,898, with a loop's other reading searched and the equidistributed breaks chained; 9.0 % in
     // session 45, 5,157 -> 4,693, with FITPACK's knots tried where the averaged ones miss and the
-    // other reading of a loop whose two corners meet across the seam).
+    // other reading of a loop whose two corners meet across the seam; 12.0 % in session 46,
+    // 5,157 -> 4,540, the last descent looking below a near miss).
     constexpr double kMinSavedShare = 0.02;
     int strokes = 0, without = 0, with = 0, fewer = 0;
     FitOptions plain;
@@ -188,7 +189,19 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
                 EXPECT_LE(count, 12) << name;
             }
             if (loop("s03", "medium", 10)) {
-                EXPECT_LE(count, 35) << name;
+                EXPECT_LE(count, 32) << name;  // (35 until session 46's look below a near miss)
+            }
+            // The last descent looks below a count that missed by little (session 46; before: 36
+            // and 23 control points, the descent stopped at 35 and 22; the fewer peer at our new
+            // deviation: 32 and 21). s02 fast 5 above: 9 (11 before).
+            if (loop("s03", "medium", 7)) {
+                EXPECT_LE(count, 31) << name;
+            }
+            if (loop("s05", "fast", 8)) {
+                EXPECT_LE(count, 20) << name;
+            }
+            if (loop("s02", "fast", 5)) {
+                EXPECT_LE(count, 9) << name;
             }
             // FITPACK's knots tried where a count's averaged knots miss (session 45; before: 24, 53
             // and 42 control points; the fewer peer at our new deviation: 20, 53 and 49).
