@@ -547,22 +547,28 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                         lo = mid;
                 }
             }
-            for (int k = below(fit.curve.pointCount() - countOffset) - 1; k >= least && takes(k); --k) {
-            }
+            // Down one count at a time from the count taken while the count below is taken; where
+            // the count that stops it missed by little (kLookMissShare), up to `look` counts below
+            // it too, and on from one taken. (Looking below in this descent as well, before the
+            // equidistributed one: 56,150-56,154 control points with 1-3 counts, for the same time.)
+            const auto descend = [&](int look) {
+                for (;;) {
+                    int k = below(fit.curve.pointCount() - countOffset) - 1;
+                    while (k >= least && takes(k)) --k;
+                    if (k < least || !(missedBy[k] <= kLookMissShare * res.tolerance)) return;
+                    bool taken = false;
+                    for (int j = k - 1; j >= least && j >= k - look && !taken; --j) taken = takes(j);
+                    if (!taken) return;
+                }
+            };
+            descend(0);
             // Where the count still follows the noise, the same descent with the trials' breaks
             // moved to where the error is (SplineFitOptions::equidistributions, kEquidistributions).
             const int reached = fit.curve.pointCount() - countOffset;
             if (reached * kNoiseRowsPerPoint >= cs.size()) {
                 alt.equidistributions = kEquidistributions;
                 missed.clear();  // (other trials)
-                for (;;) {
-                    int k = below(fit.curve.pointCount() - countOffset) - 1;
-                    while (k >= least && takes(k)) --k;
-                    if (k < least || !(missedBy[k] <= kLookMissShare * res.tolerance)) break;
-                    bool taken = false;
-                    for (int j = k - 1; j >= least && j >= k - kLookBelow && !taken; --j) taken = takes(j);
-                    if (!taken) break;
-                }
+                descend(kLookBelow);
                 alt.equidistributions = 0;
             }
             // A count a minimax trial took is its curve once its rounds stop, anywhere within the
