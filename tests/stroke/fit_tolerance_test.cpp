@@ -167,7 +167,8 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
     // 4,898, with a loop's other reading searched and the equidistributed breaks chained; 9.0 % in
     // session 45, 5,157 -> 4,693, with FITPACK's knots tried where the averaged ones miss and the
     // other reading of a loop whose two corners meet across the seam; 12.0 % in session 46,
-    // 5,157 -> 4,540, the last descent looking below a near miss).
+    // 5,157 -> 4,540, the last descent looking below a near miss; 13.8 %, 5,157 -> 4,443, with the
+    // equidistributed trials started from the parameters of the trial before).
     constexpr double kMinSavedShare = 0.02;
     int strokes = 0, without = 0, with = 0, fewer = 0;
     FitOptions plain;
@@ -189,7 +190,7 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
                 EXPECT_LE(count, 12) << name;
             }
             if (loop("s03", "medium", 10)) {
-                EXPECT_LE(count, 32) << name;  // (35 until session 46's look below a near miss)
+                EXPECT_LE(count, 29) << name;  // (35 before session 46; 32 with the look below)
             }
             // The last descent looks below a count that missed by little (session 46; before: 36
             // and 23 control points, the descent stopped at 35 and 22; the fewer peer at our new
@@ -198,7 +199,12 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
                 EXPECT_LE(count, 31) << name;
             }
             if (loop("s05", "fast", 8)) {
-                EXPECT_LE(count, 20) << name;
+                EXPECT_LE(count, 18) << name;  // (20 with the look below alone)
+            }
+            // Equidistributed trials from the parameters of the trial before (session 46; 36, 35
+            // with the look below alone; the fewer peer at our new deviation 35).
+            if (loop("s06", "medium", 5)) {
+                EXPECT_LE(count, 34) << name;
             }
             if (loop("s02", "fast", 5)) {
                 EXPECT_LE(count, 9) << name;
