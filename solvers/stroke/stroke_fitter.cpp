@@ -512,15 +512,14 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             alt.trialCache = &trialCache;
             alt.averagedStopWhenWithin = false;
             replacing = true;
-            std::set<int> missed;
-            std::map<int, double> missedBy;  // each count's largest distance when it missed
+            // Each count that missed, and its largest distance then (its samples' or raw samples').
+            std::map<int, double> missedBy;
             const auto takes = [&](int count) {
-                if (missed.count(count) > 0) return false;
+                if (missedBy.count(count) > 0) return false;
                 FitPass a = trial(count, all);
                 SampleDeviation dev;
                 if (fits(a) && accept(a, dev)) return true;
                 missedBy[count] = fits(a) ? dev.maxError : a.maxError;
-                missed.insert(count);
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
@@ -555,7 +554,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 for (;;) {
                     int k = below(fit.curve.pointCount() - countOffset) - 1;
                     while (k >= least && takes(k)) --k;
-                    if (k < least || !(missedBy[k] <= kLookMissShare * res.tolerance)) return;
+                    if (k < least || !(missedBy.at(k) <= kLookMissShare * res.tolerance)) return;
                     bool taken = false;
                     for (int j = k - 1; j >= least && j >= k - look && !taken; --j) taken = takes(j);
                     if (!taken) return;
@@ -567,7 +566,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             const int reached = fit.curve.pointCount() - countOffset;
             if (reached * kNoiseRowsPerPoint >= cs.size()) {
                 alt.equidistributions = kEquidistributions;
-                missed.clear();  // (other trials)
+                missedBy.clear();  // (other trials)
                 descend(kLookBelow);
                 alt.equidistributions = 0;
             }
