@@ -330,6 +330,41 @@ double trackLocal(const PowerCurve& c, const Vec3& x, double u0, double slack, d
     return std::sqrt(best2);
 }
 
+// Each kept sample's distance bound and foot parameter, tracked along the curve: projected by
+// Newton from the previous one's foot (trackLocal, the first from the curve's start), and searched in
+// full where that ends far from it (tracking lost: a seam, a skipped loop; `exact` marks those).
+// Each start is the previous foot moved on as far as the one before it moved (the samples' pace
+// along the curve changes slowly), unwrapped on a closed curve. The bounds are within kTrackSlack *
+// resolution of the local minimum's distance (a hundredth of the fitter's tolerance, whose
+// resolution is half the tolerance). `foot` may be null.
+template <class Kept>
+void track(const PowerCurve& c, SpanSearch& search, const std::vector<Vec3>& samples, const Kept& kept,
+           double resolution, std::vector<double>& bound, std::vector<double>* foot, std::vector<char>& exact)
+{
+    constexpr double kTrackSlack = 2e-2;
+    const double lost = 4.0 * resolution;
+    const double period = c.end() - c.start();
+    const int m = static_cast<int>(samples.size());
+    double u = c.start(), pace = 0.0;
+    for (int i = 0; i < m; ++i) {
+        if (!kept(i)) continue;
+        double f = u;
+        double e = trackLocal(c, samples[i], u + pace, kTrackSlack * resolution, &f);
+        if (e > lost) {
+            e = search.project(samples[i], e, &f);
+            exact[static_cast<size_t>(i)] = 1;
+            pace = 0.0;
+        } else {
+            // (The step on a closed curve is taken the short way round the seam.)
+            pace = f - u;
+            if (c.closed()) pace -= std::round(pace / period) * period;
+        }
+        bound[static_cast<size_t>(i)] = e;
+        if (foot) (*foot)[static_cast<size_t>(i)] = c.wrap(f);
+        u = f;
+    }
+}
+
 }  // namespace
 
 SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
@@ -344,35 +379,11 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
     const int m = static_cast<int>(samples.size());
     out.bound.assign(static_cast<size_t>(m), 0.0);
     const auto kept = [&](int i) { return keep.empty() || keep[static_cast<size_t>(i)] != 0; };
-    // The samples run along the curve: each is projected by Newton from the previous one's foot
-    // (trackLocal, the first from the curve's start), and searched in full where that ends far from
-    // it (tracking lost: a seam, a skipped loop). Any curve point gives a valid bound; the exact
+    // The samples tracked along the curve (track): any curve point gives a valid bound; the exact
     // projection below settles every sample whose bound could matter.
-    // Each start is the previous foot moved on as far as the one before it moved (the samples'
-    // pace along the curve changes slowly), unwrapped on a closed curve. The bounds are within
-    // kTrackSlack * resolution of the local minimum's distance (a hundredth of the fitter's tolerance,
-    // whose resolution is half the tolerance).
-    constexpr double kTrackSlack = 2e-2;
-    const double lost = 4.0 * resolution;
-    const double period = c.end() - c.start();
     std::vector<char> exact(static_cast<size_t>(m), 0);  // bound[i] is sample i's distance
-    double u = c.start(), pace = 0.0;
-    for (int i = 0; i < m; ++i) {
-        if (!kept(i)) continue;
-        double foot = u;
-        double e = trackLocal(c, samples[i], u + pace, kTrackSlack * resolution, &foot);
-        if (e > lost) {
-            e = search.project(samples[i], e, &foot);
-            exact[static_cast<size_t>(i)] = 1;
-            pace = 0.0;
-        } else {
-            // (The step on a closed curve is taken the short way round the seam.)
-            pace = foot - u;
-            if (c.closed()) pace -= std::round(pace / period) * period;
-        }
-        out.bound[i] = e;
-        u = foot;
-    }
+    out.foot.assign(static_cast<size_t>(m), 0.0);
+    track(c, search, samples, kept, resolution, out.bound, &out.foot, exact);
     // Exact projection of the samples whose bound could be the maximum, largest bound first: once
     // the exact maximum reaches the next bound, no other sample can exceed it.
     std::vector<int> order;
@@ -423,6 +434,100 @@ SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Ve
         settle(i);
         out.maxWithin = std::max(out.maxWithin, out.bound[i]);
     }
+    return out;
+}
+
+StrayMeasure measureStray(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
+                          const std::vector<char>& keep, double tolerance, double chordShare, double resolution,
+                          const std::vector<double>* feet, double stopAbove)
+{
+    if (!(resolution > 0.0) || !std::isfinite(resolution))
+        throw GeometryError("fit check: resolution must be positive");
+    if (!(tolerance > 0.0) || !std::isfinite(tolerance)) throw GeometryError("fit check: tolerance must be positive");
+    if (!keep.empty() && keep.size() != samples.size()) throw GeometryError("fit check: one keep flag per sample");
+    if (feet && feet->size() != samples.size()) throw GeometryError("fit check: one foot parameter per sample");
+    StrayMeasure out;
+    // The kept samples: the polyline's vertices, in the order drawn.
+    std::vector<int> kept;
+    for (int i = 0; i < static_cast<int>(samples.size()); ++i)
+        if (keep.empty() || keep[static_cast<size_t>(i)] != 0) kept.push_back(i);
+    const int n = static_cast<int>(kept.size());
+    if (n < 2) return out;
+    const PowerCurve c(curve);
+    std::vector<double> tracked;
+    if (!feet) {
+        SpanSearch search(c, resolution);
+        std::vector<double> bound(samples.size(), 0.0);
+        std::vector<char> exact(samples.size(), 0);
+        tracked.assign(samples.size(), 0.0);
+        const auto isKept = [&](int i) { return keep.empty() || keep[static_cast<size_t>(i)] != 0; };
+        track(c, search, samples, isKept, resolution, bound, &tracked, exact);
+        feet = &tracked;
+    }
+    // The polyline's segments q -> q + 1 between kept samples (a loop's last back to its first):
+    // start, direction over its squared length, and the reciprocal of its allowance.
+    const bool closed = c.closed();
+    const int segments = closed ? n : n - 1;
+    struct Segment {
+        Vec3 a, ab;
+        double inverseLength2 = 0.0, inverseAllowance = 0.0;
+    };
+    std::vector<Segment> seg(static_cast<size_t>(segments));
+    for (int q = 0; q < segments; ++q) {
+        Segment& g = seg[static_cast<size_t>(q)];
+        g.a = samples[static_cast<size_t>(kept[static_cast<size_t>(q)])];
+        g.ab = samples[static_cast<size_t>(kept[static_cast<size_t>((q + 1) % n)])] - g.a;
+        const double l2 = g.ab.squaredNorm();
+        g.inverseLength2 = l2 > 0.0 ? 1.0 / l2 : 0.0;
+        g.inverseAllowance = 1.0 / (tolerance + chordShare * std::sqrt(l2));
+    }
+    const auto distance = [&](int q, const Vec3& x) {
+        const Segment& g = seg[static_cast<size_t>(q)];
+        const double t = std::clamp((x - g.a).dot(g.ab) * g.inverseLength2, 0.0, 1.0);
+        return (g.a + t * g.ab - x).norm();
+    };
+    // A point's excess over one segment: its distance over the segment's allowance.
+    const auto excessOver = [&](int q, const Vec3& x) {
+        return distance(q, x) * seg[static_cast<size_t>(q)].inverseAllowance;
+    };
+    const auto validSegment = [&](int q) { return q >= 0 && q < segments; };
+    // The kept samples in the order of their feet along the curve (the order drawn unless the
+    // curve doubles back past a sample).
+    std::vector<int> order(static_cast<size_t>(n));
+    for (int q = 0; q < n; ++q) order[static_cast<size_t>(q)] = q;
+    const auto footAt = [&](int q) { return (*feet)[static_cast<size_t>(kept[static_cast<size_t>(q)])]; };
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return footAt(a) < footAt(b); });
+    std::vector<double> u;
+    std::vector<Vec3> p;
+    Vec3 worstPoint = Vec3::Zero();
+    int r = -1;  // order[r] is the last sample whose foot is at or before the curve point (-1: none)
+    for (int j = 0; j < c.spanCount() && !(out.excess > stopAbove); ++j) {
+        c.spanPolyline(j, resolution, u, p);
+        for (size_t k = 0; k < u.size(); ++k) {
+            while (r + 1 < n && footAt(order[static_cast<size_t>(r + 1)]) <= u[k]) ++r;
+            // The samples whose feet bracket the point (before the first foot or past the last: a
+            // loop's last and first, an open curve's end sample alone), and the segments at either.
+            const int A = r >= 0 ? order[static_cast<size_t>(r)] : closed ? order.back() : order.front();
+            const int B = r + 1 < n ? order[static_cast<size_t>(r + 1)] : closed ? order.front() : order.back();
+            double excess = std::numeric_limits<double>::infinity();
+            for (int q : {A - 1, A, B - 1, B}) {
+                if (closed) q = (q + n) % n;
+                if (validSegment(q)) excess = std::min(excess, excessOver(q, p[k]));
+            }
+            // Beyond those: the whole polyline (a curve that cuts across to another part of the
+            // stroke is not straying).
+            if (excess > 1.0)
+                for (int q = 0; q < segments; ++q) excess = std::min(excess, excessOver(q, p[k]));
+            if (excess > out.excess) {
+                out.excess = excess;
+                out.parameter = u[k];
+                out.after = kept[static_cast<size_t>(A)];
+                worstPoint = p[k];
+            }
+        }
+    }
+    out.distance = std::numeric_limits<double>::infinity();
+    for (int q = 0; q < segments; ++q) out.distance = std::min(out.distance, distance(q, worstPoint));
     return out;
 }
 

@@ -19,6 +19,9 @@ struct SampleDeviation {
     /// With a finite exactAbove: the max distance over the kept samples within it (those beyond it
     /// left out), exact; else maxError.
     double maxWithin = 0.0;
+    /// Per kept sample the parameter its tracked bound was measured at (its foot point as the
+    /// samples run along the curve; 0 for a dropped one): measureStray's order along the curve.
+    std::vector<double> foot;
 };
 
 /// Distances from the samples to a cubic curve (open or periodic). The samples are tracked in
@@ -39,5 +42,31 @@ struct SampleDeviation {
 SampleDeviation measureSamples(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
                                const std::vector<char>& keep, double resolution,
                                double exactAbove = std::numeric_limits<double>::infinity());
+
+/// How far a curve strays from the stroke between its samples (measureStray).
+struct StrayMeasure {
+    double excess =
+        0.0;  ///< max over the curve's points of the least distance / allowance over the segments (<= 1: within)
+    double distance = 0.0;   ///< the distance from the stroke's polyline there, model units
+    double parameter = 0.0;  ///< the curve parameter there
+    int after = -1;          ///< the kept sample whose foot comes last before it (-1: none)
+};
+
+/// The other direction of the tolerance check: from the curve to the stroke. measureSamples bounds
+/// each kept sample's distance to the curve, which says nothing of the curve between two samples:
+/// a curve can pass within the tolerance of every sample and shoot far out between two of them.
+/// Every point of the curve must lie within the allowance of some segment of the polyline through
+/// the kept samples (a loop's closed), max(tolerance, chordShare * the segment's length): a smooth
+/// curve through two samples bulges from their chord by its sagitta, which is the shape between
+/// them, not a stray. The curve's points are its spans' polylines' (at most ~`resolution` apart),
+/// each tried first on the segments at the two samples whose foot points bracket it, then on the
+/// whole polyline (a curve may cut across to another part of the stroke).
+/// @param feet      SampleDeviation::foot of the same curve and samples (null: tracked here)
+/// @param stopAbove the measure stops once the excess exceeds it (a check that asks only whether
+///                  the curve strays); `distance` is then that point's.
+StrayMeasure measureStray(const Curve3d& curve, const std::vector<Eigen::Vector3d>& samples,
+                          const std::vector<char>& keep, double tolerance, double chordShare, double resolution,
+                          const std::vector<double>* feet = nullptr,
+                          double stopAbove = std::numeric_limits<double>::infinity());
 
 }  // namespace sculptline::solvers::stroke

@@ -61,6 +61,17 @@ constexpr double kMinInnerShare = 0.1;
 // The polyline of measureSamples: points half a tolerance apart leave few samples for exact
 // projection (those within ~tolerance / 30 of the maximum).
 constexpr double kCheckSpacingShare = 0.5;
+// How far a curve may bulge from the chord between two samples beyond the tolerance (measureStray):
+// a quarter of the chord, the least-squares fit's own chord check (lsq_fit.cpp's rawChordGap). A
+// circular arc through two samples bulges from their chord by its sagitta, c (1 - cos(t / 2)) /
+// (2 sin(t / 2)) for a turn t between them: a quarter of the chord at t = 106 degrees, more than a
+// hand turns between two samples of a smooth stroke.
+constexpr double kStrayChordShare = 0.25;
+// Where the error-driven fit holds every sample but strays between two (measureStray), it is
+// repeated with the fairing term's weight (SplineFitOptions::fairing, 1e-6) raised kStrayFairingStep
+// times, at most kStrayFairingSteps times.
+constexpr double kStrayFairingStep = 100.0;
+constexpr int kStrayFairingSteps = 3;
 // Hoschek corrections per trial of the fewer-control-points search. Measured on the benchmark
 // strokes (s-curve, flourish): 3 corrections left the error-driven count (the averaged knots'
 // chord parameters are off by too much); 8 brought the s-curve from 11 to 7 and the 1,000-sample
@@ -181,18 +192,52 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
     // at once. (Measuring the maximum first, and the samples beyond the tolerance in a second
     // measure only where the maximum left room for outliers, cost more over the 16 jittery
     // flourishes of BM_StrokeFitSeeds/1: 138 against 132 M instructions, callgrind.)
+    // A curve within the tolerance of every sample must also stay near the stroke between them
+    // (measureStray): one that strays is measured as missing by its excess, never as fitting.
+    std::vector<char> keepNow;
+    // How far `curve` strays (measureStray) from the kept samples less the noise's outliers
+    // (`suspects`), `dev` its samples' measure; stopping once beyond `stopAbove`.
+    const auto strayOf = [&](const Curve3d& curve, const SampleDeviation& dev, double stopAbove) {
+        const std::vector<char>* kept = &keep;
+        if (!suspects.empty()) {
+            keepNow = keep;
+            for (int i : suspects) keepNow[static_cast<size_t>(i)] = 0;
+            kept = &keepNow;
+        }
+        return measureStray(curve, stroke.points, *kept, res.tolerance, kStrayChordShare,
+                            kCheckSpacingShare * res.tolerance, &dev.foot, stopAbove);
+    };
+    bool strayed = false;      // the last deviation measured missed only by straying
+    double sampleError = 0.0;  // and its samples' largest distance then
     auto deviation = [&](const Curve3d& curve, SampleDeviation& dev) {
+        strayed = false;
         dev = measureSamples(curve, stroke.points, keep, kCheckSpacingShare * res.tolerance, exactAbove);
         suspects.clear();
-        if (dev.maxError <= res.tolerance || !(dev.maxError <= kOutlierSigmas * cs.noise)) return dev.maxError;
-        if (!noiseOutliers(dev, keep, res.tolerance, cs.noise, suspects)) return dev.maxError;
-        return dev.maxWithin;
+        double err = dev.maxError;
+        if (!(dev.maxError <= res.tolerance) && dev.maxError <= kOutlierSigmas * cs.noise &&
+            noiseOutliers(dev, keep, res.tolerance, cs.noise, suspects))
+            err = dev.maxWithin;
+        if (!(err <= res.tolerance) || !options.boundStray) return err;
+        const StrayMeasure stray = strayOf(curve, dev, 1.0);
+        strayed = stray.excess > 1.0;
+        sampleError = err;
+        return strayed ? std::max(err, stray.excess * res.tolerance) : err;
     };
     // The chain every fit below shares (the same points, corners and chord parameters; the rows
     // and options differ), built by the first.
     Chain chain;
     int round = 0;
+    // Where the error-driven fit holds every sample but strays between two (a span the samples do
+    // not hold), it is repeated with a firmer fairing term (kStrayFairingStep, kStrayFairingSteps),
+    // the tolerance's refinements going on from there. If no fit then both holds the samples and
+    // stays near the stroke, the one that held the samples and strayed least stands: FitResult::
+    // stray reports (and a warning says) how far it strays.
+    int firmer = 0;  // fairing raised this many times
     auto refine = [&](int rounds) {
+        FitPass straying;  // the least straying fit that held every sample (strayBy: how much)
+        std::vector<int> strayingOutliers;
+        double strayBy = std::numeric_limits<double>::infinity(), strayingSamples = 0.0;
+        int strayingRound = 0;
         for (;; ++round) {
             fit = fitConditioned(cs, fitPoints, corners, samples, sopt, nullptr, &chain);
             SampleDeviation dev;
@@ -201,7 +246,31 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             res.maxError = err;
             res.converged = err <= res.tolerance;
             res.refinements = round;
-            if (res.converged || round >= rounds || sopt.tolerance <= kMinInnerShare * res.tolerance) break;
+            if (res.converged) break;
+            const double by = strayed ? strayOf(fit.curve, dev, std::numeric_limits<double>::infinity()).excess : 0.0;
+            if (strayed && by < strayBy) {
+                strayBy = by;
+                straying = fit;
+                strayingOutliers = outliers;
+                strayingSamples = sampleError;
+                strayingRound = round;
+            }
+            if (strayed && firmer < kStrayFairingSteps) {
+                ++firmer;
+                sopt.fairing *= kStrayFairingStep;
+                --round;  // (not a refinement of the tolerance)
+                continue;
+            }
+            if (strayed || round >= rounds || sopt.tolerance <= kMinInnerShare * res.tolerance) {
+                if (std::isfinite(strayBy)) {
+                    fit = std::move(straying);
+                    outliers = std::move(strayingOutliers);
+                    res.maxError = strayingSamples;
+                    res.converged = true;
+                    res.refinements = strayingRound;
+                }
+                break;
+            }
             sopt.tolerance =
                 std::max(kMinInnerShare * res.tolerance, sopt.tolerance * kRefineMargin * res.tolerance / err);
         }
@@ -782,6 +851,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     res.dropped.insert(res.dropped.end(), outliers.begin(), outliers.end());
     std::sort(res.dropped.begin(), res.dropped.end());
     res.outliers = std::move(outliers);
+    {
+        std::vector<char> kept(stroke.points.size(), 1);
+        for (int i : res.dropped) kept[static_cast<size_t>(i)] = 0;
+        res.stray = measureStray(fit.curve, stroke.points, kept, res.tolerance, kStrayChordShare,
+                                 kCheckSpacingShare * res.tolerance);
+    }
     res.curve = std::move(fit.curve);
     res.samples = std::move(fit.samples);
     res.corners.reserve(corners.size());
@@ -791,6 +866,11 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     if (!res.converged) {
         res.warnings.push_back("fit: maximum deviation of a kept sample " + std::to_string(res.maxError) + " exceeds tolerance " +
                                std::to_string(res.tolerance));
+    }
+    if (res.stray.excess > 1.0) {
+        res.warnings.push_back("fit: the curve strays " + std::to_string(res.stray.distance) +
+                               " from the stroke after sample " + std::to_string(res.stray.after) +
+                               ", beyond the tolerance and a quarter of the chord there");
     }
     res.conditioned = std::move(cs);
     return res;

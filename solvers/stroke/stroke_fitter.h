@@ -5,6 +5,7 @@
 #include "solvers/stroke/conditioning.h"
 #include "solvers/stroke/dynamic_sampling.h"
 #include "solvers/stroke/features.h"
+#include "solvers/stroke/fit_check.h"
 #include "solvers/stroke/lsq_fit.h"
 
 namespace sculptline::solvers::stroke {
@@ -67,6 +68,10 @@ struct FitOptions {
     /// taken only when every kept raw sample is within the tolerance. false: least squares alone
     /// (before session 43).
     bool minimaxTrials = true;
+    /// A curve is taken only when it also stays near the stroke between the samples (measureStray,
+    /// fit_check.h): within the tolerance, or a quarter of the chord between two samples. false:
+    /// the samples' distances alone (before session 47), and FitResult::stray only reports.
+    bool boundStray = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;
@@ -89,6 +94,9 @@ struct FitResult {
     std::vector<int> outliers;
     double maxError = 0.0;               ///< max distance of a raw sample not dropped to the curve
                                          ///< (projected: measureSamples), model units
+    /// How far the curve strays from the stroke between the kept samples (measureStray): excess
+    /// <= 1 when it stays within max(tolerance, a quarter of the chord between two samples).
+    StrayMeasure stray;
     int refinements = 0;                 ///< refits needed to bring every kept sample within tolerance
     double tolerance = 0.0;              ///< the tolerance used, model units
     bool converged = false;              ///< maxError <= tolerance (every kept raw sample within it)

@@ -187,7 +187,8 @@ json fitResultToJson(const FitResult& r, int dimension)
             {"converged", r.converged},
             {"warnings", r.warnings},
             {"dropped_samples", r.dropped},
-            {"outlier_samples", r.outliers}};
+            {"outlier_samples", r.outliers},
+            {"stray", {{"distance", r.stray.distance}, {"excess", r.stray.excess}, {"after_sample", r.stray.after}}}};
 }
 
 }  // namespace sculptline::solvers::stroke

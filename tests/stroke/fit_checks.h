@@ -60,6 +60,46 @@ inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& p
     return m;
 }
 
+/// How far the curve strays from the polyline through `pts` (a loop's back to its first), measured
+/// independently of the fitter's measureStray: at 8,000 points equally spaced in parameter, each
+/// point's least ratio, over every segment, of its distance to the segment over that segment's
+/// allowance max(tol, share * its length); the largest over the points (<= 1: every point lies
+/// within some segment's allowance). Each point tries first the segments near the previous point's
+/// best, and the whole polyline where those leave it beyond 1.
+inline double strayExcess(const solvers::Curve3d& c, const std::vector<Vec3>& pts, bool closed, double tol,
+                          double share)
+{
+    constexpr int kPoints = 8000;
+    constexpr int kNear = 3;  // segments either side of the previous best tried first
+    const int segments = static_cast<int>(pts.size()) - (closed ? 0 : 1);
+    if (segments < 1) return 0.0;
+    const auto ratio = [&](int q, const Vec3& x) {
+        const Vec3& a = pts[static_cast<size_t>(q)];
+        const Vec3& b = pts[static_cast<size_t>((q + 1) % static_cast<int>(pts.size()))];
+        return solvers::distanceToSegment(x, a, b) / (tol + share * (b - a).norm());
+    };
+    double worst = 0.0;
+    int hint = 0;
+    for (int i = 0; i <= kPoints; ++i) {
+        const Vec3 x = c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / kPoints);
+        double best = std::numeric_limits<double>::infinity();
+        int at = hint;
+        for (int q = std::max(0, hint - kNear); q <= std::min(segments - 1, hint + kNear); ++q) {
+            const double r = ratio(q, x);
+            if (r < best) best = r, at = q;
+        }
+        if (best > 1.0) {
+            for (int q = 0; q < segments; ++q) {
+                const double r = ratio(q, x);
+                if (r < best) best = r, at = q;
+            }
+        }
+        hint = at;
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
 /// Largest distance of the points from their best-fit plane: how far from planar a space curve is.
 inline double distanceFromBestPlane(const std::vector<Vec3>& pts)
 {

@@ -16,7 +16,9 @@
 //                                              rounded 16 %: a fast, careless hand
 //   unistroke-report --fit-dev                 the fit alone on the development strokes: control
 //                                              points, loops and time per gesture (FIT_NAMES=1: and
-//                                              one line per stroke)
+//                                              one line per stroke; strays: strokes whose curve
+//                                              strays from the stroke, FitResult::stray;
+//                                              --no-stray-bound before it: FitOptions::boundStray off)
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -375,11 +377,14 @@ void features(const std::vector<st::Recording>& recs)
 // stroke: control points, loops and the time per gesture, for measuring a fitting change on strokes
 // people drew (the held-out subjects and Quick, Draw! are not for tuning). With `names`, one line
 // per stroke too.
-void fitDev(const std::vector<st::Recording>& recs, bool names)
+// The fit options of --fit-dev (--no-stray-bound: FitOptions::boundStray off).
+sculptline::solvers::stroke::FitOptions gFitOptions;
+
+void fitDev(const std::vector<st::Recording>& recs, bool names, const sculptline::solvers::stroke::FitOptions& options)
 {
     namespace sk = sculptline::solvers::stroke;
     struct Sum {
-        int strokes = 0, points = 0, loops = 0, loopPoints = 0, missed = 0, failed = 0;
+        int strokes = 0, points = 0, loops = 0, loopPoints = 0, missed = 0, failed = 0, strays = 0;
         double ms = 0.0;
     };
     std::map<std::string, Sum> by;
@@ -390,7 +395,7 @@ void fitDev(const std::vector<st::Recording>& recs, bool names)
         ++all.strokes;
         try {
             const auto start = std::chrono::steady_clock::now();
-            const sk::FitResult fit = sk::fitStroke(r.stroke);
+            const sk::FitResult fit = sk::fitStroke(r.stroke, options);
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
             const bool closed = fit.conditioned.closed;
@@ -401,23 +406,25 @@ void fitDev(const std::vector<st::Recording>& recs, bool names)
                 s->loops += closed;
                 s->loopPoints += closed ? points : 0;
                 s->missed += !fit.converged;
+                s->strays += fit.stray.excess > 1.0;
                 s->ms += ms;
             }
             if (names)
                 std::cout << r.subject << ' ' << r.speed << ' ' << r.number << ' ' << r.gesture << ' ' << points
                           << (closed ? " loop " : " open ") << fit.corners.size() << " corners " << std::fixed
-                          << std::setprecision(3) << ms << " ms" << std::defaultfloat << '\n';
+                          << std::setprecision(3) << ms << " ms" << (fit.converged ? "" : " beyond") << " stray "
+                          << fit.stray.excess << std::defaultfloat << '\n';
         } catch (const std::exception&) {
             ++g.failed;
             ++all.failed;
         }
     }
-    std::cout << "| gesture | strokes | control points | loops | loops' control points | beyond tolerance | failed | "
-                 "fit ms |\n"
-                 "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::cout << "| gesture | strokes | control points | loops | loops' control points | beyond tolerance | strays | "
+                 "failed | fit ms |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     const auto row = [](const std::string& name, const Sum& s) {
         std::cout << "| " << name << " | " << s.strokes << " | " << s.points << " | " << s.loops << " | "
-                  << s.loopPoints << " | " << s.missed << " | " << s.failed << " | " << std::fixed
+                  << s.loopPoints << " | " << s.missed << " | " << s.strays << " | " << s.failed << " | " << std::fixed
                   << std::setprecision(1) << s.ms << std::defaultfloat << " |\n";
     };
     for (const auto& [name, s] : by) row(name, s);
@@ -575,8 +582,10 @@ int main(int argc, char** argv)
         } else if (!std::strcmp(argv[i], "--perturb-dev")) {
             perturbDev(st::loadUnistrokes(dir, st::devSubjects()));
             return 0;
+        } else if (!std::strcmp(argv[i], "--no-stray-bound")) {
+            gFitOptions.boundStray = false;
         } else if (!std::strcmp(argv[i], "--fit-dev")) {
-            fitDev(st::loadUnistrokes(dir, st::devSubjects()), std::getenv("FIT_NAMES") != nullptr);
+            fitDev(st::loadUnistrokes(dir, st::devSubjects()), std::getenv("FIT_NAMES") != nullptr, gFitOptions);
             return 0;
         } else if (!std::strcmp(argv[i], "--features-dev")) {
             features(st::loadUnistrokes(dir, st::devSubjects()));
@@ -587,7 +596,8 @@ int main(int argc, char** argv)
         } else {
             std::cerr << "usage: unistroke-report [--dev] [--held-out] [--quickdraw] [--data DIR] [--set "
                          "option=value].. | --adapt "
-                         "dev|held-out | --dump-dev GESTURE | --fit-dev | --features-dev | --perturb-dev | [--augment] "
+                         "dev|held-out | --dump-dev GESTURE | [--no-stray-bound] --fit-dev | --features-dev | "
+                         "--perturb-dev | [--augment] "
                          "[--augment-rounded] [--augment-drawn] --loso OPTION V1,V2,..\n";
             return 2;
         }
