@@ -69,6 +69,8 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
     return out;
 }
 
+}  // namespace
+
 // A clamped loop (first point == last point) as a periodic curve in the unwrapped convention of
 // BSplineCurve: per period the knots are 0,0,0,s_1..s_k (N = M values for M + 1 clamped points),
 // U_i = L[(i-1) mod N] + floor((i-1)/N) so that U_1 = U_2 = U_3 = 0 and P_0 = Q_0 is the seam. The
@@ -82,8 +84,6 @@ Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q)
     for (int i = 0; i < 3; ++i) pts.push_back(q[i % nPts]);
     return Curve3d(3, u, pts, {}, true);
 }
-
-}  // namespace
 
 FitPass fitConditioned(const ConditionedStroke& cs, const std::vector<Vec3>& fitPoints, const std::vector<int>& corners,
                        const std::vector<int>& samples, const SplineFitOptions& sopt,

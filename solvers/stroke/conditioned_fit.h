@@ -44,6 +44,10 @@ struct FitPass {
     AveragedCorrectionState correction;  // where a trial's corrections stopped (averagedStopWhenWithin)
 };
 
+// A clamped loop's knots and points (first point == last point) as a periodic curve: C0 at the seam
+// (a triple knot), the period normalized to [0, 1].
+Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q);
+
 // The data are `fitPoints` (one per conditioned point). The chord parameters of an open chain come
 // from `paramPoints`: normally the smoothed cs.points, whose path length the digitizer's jitter does
 // not inflate; the data themselves when the fit must interpolate them (parameters that disagree

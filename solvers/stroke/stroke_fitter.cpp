@@ -62,11 +62,15 @@ constexpr double kMinInnerShare = 0.1;
 // projection (those within ~tolerance / 30 of the maximum).
 constexpr double kCheckSpacingShare = 0.5;
 // How far a curve may bulge from the chord between two samples beyond the tolerance (measureStray):
-// a quarter of the chord, the least-squares fit's own chord check (lsq_fit.cpp's rawChordGap). A
-// circular arc through two samples bulges from their chord by its sagitta, c (1 - cos(t / 2)) /
-// (2 sin(t / 2)) for a turn t between them: a quarter of the chord at t = 106 degrees, more than a
-// hand turns between two samples of a smooth stroke.
-constexpr double kStrayChordShare = 0.25;
+// a sixth of the chord. A circular arc through two samples bulges from their chord by its sagitta,
+// (c / 2) tan(t / 4) for a turn t between them: a sixth of the chord at t = 74 degrees, more than a
+// hand turns between two samples of a smooth stroke (a corner is a sample of its own). Measured on
+// the development strokes with the pieces searched (fitPiecesSearched): a quarter (t = 106
+// degrees, the least-squares fit's own chord check, lsq_fit.cpp) let a sparse flourish's pieces
+// bulge 3.48 from its dense fit, beyond FitTolerance.GivenSameStrokeAtThreeDensities' 3.33 (50,671
+// control points); an eighth (56 degrees) refused minimax curves that were within it once taken
+// (s04 medium 7 circle 40 -> 53; 51,049); a sixth 50,858, the circles 4,217 (4,155 before).
+constexpr double kStrayChordShare = 1.0 / 6.0;
 // Where the error-driven fit holds every sample but strays between two (measureStray), it is
 // repeated with the fairing term's weight (SplineFitOptions::fairing, 1e-6) raised kStrayFairingStep
 // times, at most kStrayFairingSteps times.
@@ -691,6 +695,116 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
     }
 }
 
+// The search and minimax trials piece by piece (fitReading without corners on each piece of a
+// stroke with corners, the corners kept: each piece a clamped cubic from corner to corner), the
+// pieces joined with triple knots (C0 at the corners, as fitPieces joins the error-driven fit's).
+// Each piece is a stroke of its own: the raw samples between its corners (a loop's last piece runs
+// round its seam), its conditioned points, rows and keep flags. Returns false where a piece cannot
+// be fitted within the tolerance (or its ends do not meet the next piece's); else the joined curve
+// into `joined` (raw sample indices) and the pieces' noise outliers into `outliers`.
+bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, double tolerance, FitPass& joined,
+                       std::vector<int>& outliers)
+{
+    const ConditionedStroke& cs = p.cs;
+    const int n = cs.size();
+    std::vector<int> sorted = corners;
+    std::sort(sorted.begin(), sorted.end());
+    // The chain: conditioned indices from the start (an open stroke's first point, a loop's first
+    // corner) to the end (the last point, the loop's first corner again), and its breaks.
+    const int start = cs.closed ? sorted.front() : 0;
+    const int count = cs.closed ? n + 1 : n;
+    const auto at = [&](int k) { return (start + k) % n; };
+    std::vector<int> breaks = {0};
+    for (int c : sorted) {
+        const int k = ((c - start) % n + n) % n;
+        if (k > 0 && k < count - 1) breaks.push_back(k);
+    }
+    breaks.push_back(count - 1);
+    // Chord parameter along the chain (the smoothed points', as fitConditioned's).
+    std::vector<double> g(static_cast<size_t>(count), 0.0);
+    for (int k = 1; k < count; ++k) g[k] = g[k - 1] + (cs.points[at(k)] - cs.points[at(k - 1)]).norm();
+    if (!(g.back() > 0.0)) return false;
+    for (double& t : g) t /= g.back();
+    std::vector<int> row(static_cast<size_t>(n), 0);
+    for (int s : p.samples) row[static_cast<size_t>(s)] = 1;
+    const int rawCount = static_cast<int>(p.stroke.points.size());
+    KnotVector knots;
+    std::vector<Vec3> points;
+    outliers.clear();
+    joined.samples.clear();
+    for (size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
+        const int a = breaks[piece], b = breaks[piece + 1];
+        // The raw samples from the first point's to the last's, round the seam where the piece
+        // crosses it.
+        std::vector<int> raw;
+        for (int r = cs.source[at(a)];; r = (r + 1) % rawCount) {
+            raw.push_back(r);
+            if (r == cs.source[at(b)] || static_cast<int>(raw.size()) > rawCount) break;
+        }
+        Stroke sub;
+        sub.dimension = p.stroke.dimension;
+        std::vector<char> keep;
+        for (int r : raw) {
+            sub.points.push_back(p.stroke.points[static_cast<size_t>(r)]);
+            keep.push_back(p.keep[static_cast<size_t>(r)]);
+        }
+        ConditionedStroke pc;
+        pc.closed = false;
+        pc.timed = false;
+        pc.extent = cs.extent;
+        pc.noise = cs.noise;
+        pc.smoothingShift = cs.smoothingShift;
+        std::vector<Vec3> fitPoints;
+        std::vector<int> rows;
+        for (int k = a, r = 0; k <= b; ++k) {
+            const int i = at(k);
+            while (raw[static_cast<size_t>(r)] != cs.source[i]) ++r;
+            pc.source.push_back(r);
+            pc.points.push_back(cs.points[i]);
+            pc.time.push_back(static_cast<double>(r));
+            pc.arc.push_back(k == a ? 0.0 : pc.arc.back() + (cs.points[i] - cs.points[at(k - 1)]).norm());
+            fitPoints.push_back(p.fitPoints[i]);
+            if (row[i] || k == a || k == b) rows.push_back(k - a);
+        }
+        for (int d : cs.dropped) {
+            const auto it = std::find(raw.begin(), raw.end(), d);
+            if (it != raw.end()) pc.dropped.push_back(static_cast<int>(it - raw.begin()));
+        }
+        std::sort(pc.dropped.begin(), pc.dropped.end());
+        if (pc.size() < 2) return false;
+        const Prepared sp{sub, p.options, pc, fitPoints, rows, keep};
+        FitResult r;
+        r.tolerance = tolerance;
+        FitPass fit;
+        std::vector<int> pieceOutliers;
+        try {
+            fitReading(sp, {}, true, r, fit, pieceOutliers);
+        } catch (const GeometryError&) {
+            return false;
+        }
+        if (!r.converged || fit.curve.isClosed()) return false;
+        for (int o : pieceOutliers) outliers.push_back(raw[static_cast<size_t>(o)]);
+        for (int s : fit.samples) joined.samples.push_back(raw[static_cast<size_t>(s)]);
+        // Knots onto the chain's parameter, as fitPieces: the first piece keeps its 4 leading knots,
+        // every piece drops its final copy except the last (a joint gets multiplicity 3); each later
+        // piece drops its first point, which must be the corner the piece before ended at.
+        const KnotVector& U = fit.curve.knots();
+        const double d0 = fit.curve.domainStart(), d1 = fit.curve.domainEnd(), g0 = g[a], len = g[b] - g0;
+        const std::vector<Vec3>& P = fit.curve.points();
+        if (piece > 0 && !((P.front() - points.back()).norm() <= 1e-9 * std::max(1.0, cs.extent))) return false;
+        const size_t k0 = piece == 0 ? 0 : 4;
+        const size_t k1 = piece + 2 == breaks.size() ? U.size() : U.size() - 1;
+        for (size_t k = k0; k < k1; ++k) knots.push_back(g0 + (U[k] - d0) / (d1 - d0) * len);
+        points.insert(points.end(), P.begin() + (piece == 0 ? 0 : 1), P.end());
+    }
+    knots.front() = 0.0;
+    std::sort(joined.samples.begin(), joined.samples.end());
+    joined.samples.erase(std::unique(joined.samples.begin(), joined.samples.end()), joined.samples.end());
+    std::sort(outliers.begin(), outliers.end());
+    joined.curve = cs.closed ? detail::closeClampedLoop(knots, points) : Curve3d(3, knots, points);
+    return true;
+}
+
 }  // namespace
 
 FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
@@ -765,7 +879,34 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     FitPass fit;
     std::vector<int> outliers;  // the noise's outliers (noiseOutliers) of the fit taken
     const Prepared prepared{stroke, options, cs, fitPoints, samples, keep};
-    fitReading(prepared, corners, true, res, fit, outliers);
+    // A stroke with corners (other than a loop with one, which the search reads whole) gets the
+    // search and minimax trials piece by piece, the corners kept (fitPiecesSearched), where every
+    // piece fits: every kept raw sample within the tolerance (no more outliers than the pieces'),
+    // and the curve near the stroke between samples. Else, and for every other stroke, one reading
+    // with its corners (the error-driven fit of each piece where it has corners).
+    bool byPieces = false;
+    if (options.piecesSearched && options.fewerControlPoints && !corners.empty() &&
+        !(cs.closed && corners.size() == 1)) {
+        std::vector<int> pieceOutliers;
+        if (fitPiecesSearched(prepared, corners, res.tolerance, fit, pieceOutliers)) {
+            std::vector<char> kept = keep;
+            for (int i : pieceOutliers) kept[static_cast<size_t>(i)] = 0;
+            const SampleDeviation dev =
+                measureSamples(fit.curve, stroke.points, kept, kCheckSpacingShare * res.tolerance);
+            byPieces =
+                dev.maxError <= res.tolerance &&
+                (!options.boundStray || measureStray(fit.curve, stroke.points, kept, res.tolerance, kStrayChordShare,
+                                                     kCheckSpacingShare * res.tolerance, &dev.foot, 1.0)
+                                                .excess <= 1.0);
+            if (byPieces) {
+                outliers = std::move(pieceOutliers);
+                res.maxError = dev.maxError;
+                res.converged = true;
+                res.refinements = 0;
+            }
+        }
+    }
+    if (!byPieces) fitReading(prepared, corners, true, res, fit, outliers);
     // A loop has two readings when it has at most one corner: periodic (C2 all round) and one
     // clamped piece from a point round to it (C0 there). Which needs fewer control points depends
     // on how the hand closed it, more than on whether a corner was detected: on the 2,400
@@ -852,8 +993,12 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     std::sort(res.dropped.begin(), res.dropped.end());
     res.outliers = std::move(outliers);
     {
-        std::vector<char> kept(stroke.points.size(), 1);
-        for (int i : res.dropped) kept[static_cast<size_t>(i)] = 0;
+        // (Against the polyline the fit was accepted on: the conditioned stroke's samples less the
+        // noise's outliers. A loop's overshoot the curve passes near, no longer dropped above, runs
+        // back over the loop's start: in the polyline it would join the stroke's end to its start
+        // across the overshoot.)
+        std::vector<char> kept = keep;
+        for (int i : res.outliers) kept[static_cast<size_t>(i)] = 0;
         res.stray = measureStray(fit.curve, stroke.points, kept, res.tolerance, kStrayChordShare,
                                  kCheckSpacingShare * res.tolerance);
     }
@@ -870,7 +1015,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     if (res.stray.excess > 1.0) {
         res.warnings.push_back("fit: the curve strays " + std::to_string(res.stray.distance) +
                                " from the stroke after sample " + std::to_string(res.stray.after) +
-                               ", beyond the tolerance and a quarter of the chord there");
+                               ", beyond the tolerance and a sixth of the chord there");
     }
     res.conditioned = std::move(cs);
     return res;

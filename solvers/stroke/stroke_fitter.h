@@ -69,9 +69,14 @@ struct FitOptions {
     /// (before session 43).
     bool minimaxTrials = true;
     /// A curve is taken only when it also stays near the stroke between the samples (measureStray,
-    /// fit_check.h): within the tolerance, or a quarter of the chord between two samples. false:
+    /// fit_check.h): within the tolerance plus a sixth of the chord between two samples. false:
     /// the samples' distances alone (before session 47), and FitResult::stray only reports.
     bool boundStray = true;
+    /// A stroke with corners (other than a loop with one) gets the search and minimax trials piece
+    /// by piece between its corners, the corners kept (stroke_fitter.cpp, fitPiecesSearched), where
+    /// every piece fits; else the error-driven fit of its pieces. false: the error-driven fit alone
+    /// (before session 47).
+    bool piecesSearched = true;
     ConditioningOptions conditioning;
     FeatureOptions features;
     CornerOptions corners;
@@ -95,7 +100,7 @@ struct FitResult {
     double maxError = 0.0;               ///< max distance of a raw sample not dropped to the curve
                                          ///< (projected: measureSamples), model units
     /// How far the curve strays from the stroke between the kept samples (measureStray): excess
-    /// <= 1 when it stays within max(tolerance, a quarter of the chord between two samples).
+    /// <= 1 when it stays within the tolerance plus a sixth of the chord between two samples.
     StrayMeasure stray;
     int refinements = 0;                 ///< refits needed to bring every kept sample within tolerance
     double tolerance = 0.0;              ///< the tolerance used, model units

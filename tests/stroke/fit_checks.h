@@ -17,21 +17,29 @@ namespace sculptline::stroketest {
 using Vec3 = Eigen::Vector3d;
 using namespace solvers::stroke;
 
-/// Max distance from `pts` to the curve, measured against a 20,000-segment polyline of it (the
-/// chord sagitta at that resolution is below 1e-7 of the curve's size): a measurement independent
-/// of the fitter's own foot-point search and of the kernel's CurveProjector (which missed foot
-/// points beside G0 triple knots until commit 39980b6). Each point's nearest segment is found
-/// exactly; blocks of segments whose bounding box lies farther than the nearest found so far are
-/// skipped (they cannot hold a nearer one), which makes it fast enough for the sanitizer build.
+/// Max distance from `pts` to the curve, measured against a 20,000-segment polyline of it, its knots
+/// among the vertices (the chord sagitta at that resolution is below 1e-7 of the curve's size): a measurement
+/// independent of the fitter's own foot-point search and of the kernel's CurveProjector (which missed foot points
+/// beside G0 triple knots until commit 39980b6). Each point's nearest segment is found exactly; blocks of segments
+/// whose bounding box lies farther than the nearest found so far are skipped (they cannot hold a nearer one), which
+/// makes it fast enough for the sanitizer build.
 inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& pts)
 {
-    constexpr int kSegments = 20000;
+    constexpr int kSteps = 20000;
     constexpr int kBlock = 50;  // segments per bounding box
+    // Equal steps in parameter and every knot inside the domain: a G0 corner (a triple knot) is then
+    // a vertex of the polyline, not cut by a segment (which put a corner sample 2e-3 from it).
+    std::vector<double> t;
+    t.reserve(kSteps + 1 + c.knots().size());
+    for (int i = 0; i <= kSteps; ++i) t.push_back(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / kSteps);
+    for (double k : c.knots())
+        if (k > c.domainStart() && k < c.domainEnd()) t.push_back(k);
+    std::sort(t.begin(), t.end());
+    t.erase(std::unique(t.begin(), t.end()), t.end());
+    const int kSegments = static_cast<int>(t.size()) - 1;
     std::vector<Vec3> dense;
-    dense.reserve(kSegments + 1);
-    for (int i = 0; i <= kSegments; ++i) {
-        dense.push_back(c.evaluate(c.domainStart() + (c.domainEnd() - c.domainStart()) * i / kSegments));
-    }
+    dense.reserve(t.size());
+    for (double u : t) dense.push_back(c.evaluate(u));
     std::vector<Eigen::AlignedBox3d> boxes;
     for (int b = 0; b < kSegments; b += kBlock) {
         Eigen::AlignedBox3d box(dense[b]);

@@ -215,7 +215,9 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
                 {"s03", "medium", 7, 31},
                 {"s03", "medium", 10, 29},
                 {"s05", "fast", 8, 18},
-                {"s06", "medium", 5, 34},
+                // 36 since session 47: its 34 came by way of counts whose curves strayed between
+                // samples (FitResult::stray), now refused.
+                {"s06", "medium", 5, 36},
             };
             for (const Anchor& anchor : kAnchors) {
                 if (loop(anchor.subject, anchor.speed, anchor.number)) {
@@ -302,17 +304,18 @@ TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenFewSamplesDropped)
 // of the development strokes had a curve that shot out between two samples by 3-70 tolerances (a
 // v's first span 50 px out and back between samples 6 px apart, a caret's end hook 80 px) while
 // every sample was within the tolerance. Every point of the curve must lie within the allowance of
-// some segment of the kept samples' polyline: the tolerance plus a quarter of the segment (the
-// sagitta of a turn of 106 degrees between two samples), measured independently of the fitter
-// (strayExcess) and as the fitter reports it (FitResult::stray). Before session 47, 356 of the
-// 2,400 strokes exceeded it, 80 by more than 3 times; now 8 do, by at most 1.37 (strokes with 3-5
-// corners, whose error-driven fit keeps straying a little with a firmer fairing term), and each
-// says so in a warning.
+// some segment of the polyline the fit was accepted on: the tolerance plus a sixth of the segment
+// (the sagitta of a turn of 74 degrees between two samples), measured independently of the fitter
+// (strayExcess) and as the fitter reports it (FitResult::stray). Before session 47, by this
+// measure, 491 of the 2,400 strokes strayed, 116 by more than 3 times, 27 by more than 10. Measured
+// in session 47: 6 strokes stray, by at most 1.58 (loops with 2-5 corners and a bracket whose pieces
+// did not all fit, left to the error-driven fit; the two looked at stray across the gap where the
+// loop closes), and each says so in a warning.
 TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenTheCurveStaysNearTheStrokeBetweenSamples)
 {
-    constexpr double kChordShare = 0.25;
-    constexpr double kMostExcess = 1.5;  // measured 1.366 (s04 star fast 3)
-    constexpr int kMostStraying = 10;    // strokes beyond the allowance; measured 8
+    constexpr double kChordShare = 1.0 / 6.0;
+    constexpr double kMostExcess = 2.0;  // measured 1.58 (s03 x fast 9)
+    constexpr int kMostStraying = 10;    // strokes beyond the allowance; measured 6
     // The fitter measures its curve at points up to about half a tolerance apart (kCheckSpacingShare):
     // a point between two of them lies at most a quarter tolerance farther, a quarter of the least
     // allowance. The two measures agree within that above 1; below it each is an upper bound (the
@@ -325,8 +328,16 @@ TEST(FitTolerance, GivenRealDevelopmentStrokes_WhenFitted_ThenTheCurveStaysNearT
         const FitResult r = fitStroke(rec.stroke);
         const std::string name = rec.subject + " " + rec.gesture + " " + rec.speed + " " + std::to_string(rec.number);
         ++strokes;
-        const double independent =
-            strayExcess(r.curve, keptSamples(rec.stroke, r), r.curve.isClosed(), r.tolerance, kChordShare);
+        // The polyline the fit was accepted on: the samples conditioning kept, less the noise's
+        // outliers (a loop's overshoot the curve passes near is measured for its distance, but it
+        // runs back over the loop's start and is no part of the polyline).
+        std::vector<Vec3> polyline;
+        for (int i = 0; i < static_cast<int>(rec.stroke.points.size()); ++i) {
+            const auto has = [&](const std::vector<int>& v) { return std::binary_search(v.begin(), v.end(), i); };
+            if (!has(r.conditioned.dropped) && !has(r.outliers))
+                polyline.push_back(rec.stroke.points[static_cast<size_t>(i)]);
+        }
+        const double independent = strayExcess(r.curve, polyline, r.curve.isClosed(), r.tolerance, kChordShare);
         EXPECT_LE(independent, std::max(1.0, r.stray.excess) + kResolutionSlack) << name << ": " << r.stray.excess;
         EXPECT_LE(r.stray.excess, std::max(1.0, independent) + kResolutionSlack) << name << ": " << independent;
         EXPECT_LE(r.stray.excess, kMostExcess) << name;

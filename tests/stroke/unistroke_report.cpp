@@ -18,7 +18,8 @@
 //                                              points, loops and time per gesture (FIT_NAMES=1: and
 //                                              one line per stroke; strays: strokes whose curve
 //                                              strays from the stroke, FitResult::stray;
-//                                              --no-stray-bound before it: FitOptions::boundStray off)
+//                                              --no-stray-bound before it: FitOptions::boundStray off;
+//                                              --no-pieces-searched: FitOptions::piecesSearched off)
 //   unistroke-report --features-dev            TSV of what the recognizer measured, for tuning
 //   unistroke-report --invariance dev|held-out  the same strokes scaled (x0.1, x10) and resampled
 //                                              (0.5x, 2x the sample spacing): how often the class holds
@@ -377,7 +378,7 @@ void features(const std::vector<st::Recording>& recs)
 // stroke: control points, loops and the time per gesture, for measuring a fitting change on strokes
 // people drew (the held-out subjects and Quick, Draw! are not for tuning). With `names`, one line
 // per stroke too.
-// The fit options of --fit-dev (--no-stray-bound: FitOptions::boundStray off).
+// The fit options of --fit-dev (--no-stray-bound, --no-pieces-searched: FitOptions' switches off).
 sculptline::solvers::stroke::FitOptions gFitOptions;
 
 void fitDev(const std::vector<st::Recording>& recs, bool names, const sculptline::solvers::stroke::FitOptions& options)
@@ -584,6 +585,8 @@ int main(int argc, char** argv)
             return 0;
         } else if (!std::strcmp(argv[i], "--no-stray-bound")) {
             gFitOptions.boundStray = false;
+        } else if (!std::strcmp(argv[i], "--no-pieces-searched")) {
+            gFitOptions.piecesSearched = false;
         } else if (!std::strcmp(argv[i], "--fit-dev")) {
             fitDev(st::loadUnistrokes(dir, st::devSubjects()), std::getenv("FIT_NAMES") != nullptr, gFitOptions);
             return 0;
@@ -596,7 +599,8 @@ int main(int argc, char** argv)
         } else {
             std::cerr << "usage: unistroke-report [--dev] [--held-out] [--quickdraw] [--data DIR] [--set "
                          "option=value].. | --adapt "
-                         "dev|held-out | --dump-dev GESTURE | [--no-stray-bound] --fit-dev | --features-dev | "
+                         "dev|held-out | --dump-dev GESTURE | [--no-stray-bound] [--no-pieces-searched] --fit-dev | "
+                         "--features-dev | "
                          "--perturb-dev | [--augment] "
                          "[--augment-rounded] [--augment-drawn] --loso OPTION V1,V2,..\n";
             return 2;
