@@ -57,12 +57,7 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
         out.converged = out.converged && r.converged;
         for (int s : r.samples)
             if (out.samples.empty() || s + a > out.samples.back()) out.samples.push_back(s + a);
-        // Knots: the first piece keeps its 4 leading knots, every piece drops its final copy except
-        // the last (so a joint gets multiplicity 3); points: each later piece drops its first point.
-        const size_t k0 = p == 0 ? 0 : 4;
-        const size_t k1 = p + 1 == pieces ? r.knots.size() : r.knots.size() - 1;
-        for (size_t k = k0; k < k1; ++k) out.knots.push_back(g0 + r.knots[k] * len);
-        out.points.insert(out.points.end(), r.points.begin() + (p == 0 ? 0 : 1), r.points.end());
+        appendClampedPiece(r.knots, r.points, 0.0, 1.0, g0, len, p == 0, p + 1 == pieces, out.knots, out.points);
     }
     // Joints are exact: both pieces interpolate the same corner sample.
     out.knots.front() = 0.0;
@@ -70,6 +65,17 @@ Assembled fitPieces(const Chain& c, const SplineFitOptions& opt)
 }
 
 }  // namespace
+
+void appendClampedPiece(const KnotVector& knots, const std::vector<Vec3>& points, double d0, double d1, double g0,
+                        double len, bool first, bool last, KnotVector& outKnots, std::vector<Vec3>& outPoints)
+{
+    // Knots: the first piece keeps its 4 leading knots, every piece drops its final copy except the
+    // last (so a joint gets multiplicity 3); points: each later piece drops its first point.
+    const size_t k0 = first ? 0 : 4;
+    const size_t k1 = last ? knots.size() : knots.size() - 1;
+    for (size_t k = k0; k < k1; ++k) outKnots.push_back(g0 + (knots[k] - d0) / (d1 - d0) * len);
+    outPoints.insert(outPoints.end(), points.begin() + (first ? 0 : 1), points.end());
+}
 
 // A clamped loop (first point == last point) as a periodic curve in the unwrapped convention of
 // BSplineCurve: per period the knots are 0,0,0,s_1..s_k (N = M values for M + 1 clamped points),

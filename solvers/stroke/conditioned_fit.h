@@ -44,6 +44,12 @@ struct FitPass {
     AveragedCorrectionState correction;  // where a trial's corrections stopped (averagedStopWhenWithin)
 };
 
+// Appends one clamped cubic piece (knots on [d0, d1]) to a curve being joined from pieces: its
+// knots mapped onto [g0, g0 + len] of the joined curve's parameter, the joint between two pieces a
+// triple knot (C0), the shared corner point once. `first` / `last`: the piece's place.
+void appendClampedPiece(const KnotVector& knots, const std::vector<Vec3>& points, double d0, double d1, double g0,
+                        double len, bool first, bool last, KnotVector& outKnots, std::vector<Vec3>& outPoints);
+
 // A clamped loop's knots and points (first point == last point) as a periodic curve: C0 at the seam
 // (a triple knot), the period normalized to [0, 1].
 Curve3d closeClampedLoop(const KnotVector& clamped, const std::vector<Vec3>& q);

@@ -792,17 +792,13 @@ bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, doubl
         if (!r.converged || fit.curve.isClosed()) return false;
         for (int o : pieceOutliers) outliers.push_back(raw[static_cast<size_t>(o)]);
         for (int s : fit.samples) joined.samples.push_back(raw[static_cast<size_t>(s)]);
-        // Knots onto the chain's parameter, as fitPieces: the first piece keeps its 4 leading knots,
-        // every piece drops its final copy except the last (a joint gets multiplicity 3); each later
-        // piece drops its first point, which must be the corner the piece before ended at.
+        // Onto the chain's parameter, as fitPieces joins; each later piece's first point must be the
+        // corner the piece before ended at.
         const KnotVector& U = fit.curve.knots();
         const double d0 = fit.curve.domainStart(), d1 = fit.curve.domainEnd(), g0 = g[a], len = g[b] - g0;
         const std::vector<Vec3>& P = fit.curve.points();
         if (piece > 0 && !((P.front() - points.back()).norm() <= 1e-9 * std::max(1.0, cs.extent))) return false;
-        const size_t k0 = piece == 0 ? 0 : 4;
-        const size_t k1 = piece + 2 == breaks.size() ? U.size() : U.size() - 1;
-        for (size_t k = k0; k < k1; ++k) knots.push_back(g0 + (U[k] - d0) / (d1 - d0) * len);
-        points.insert(points.end(), P.begin() + (piece == 0 ? 0 : 1), P.end());
+        detail::appendClampedPiece(U, P, d0, d1, g0, len, piece == 0, piece + 2 == breaks.size(), knots, points);
     }
     knots.front() = 0.0;
     std::sort(joined.samples.begin(), joined.samples.end());
