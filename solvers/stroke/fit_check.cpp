@@ -509,15 +509,20 @@ StrayMeasure measureStray(const Curve3d& curve, const std::vector<Eigen::Vector3
             // loop's last and first, an open curve's end sample alone), and the segments at either.
             const int A = r >= 0 ? order[static_cast<size_t>(r)] : closed ? order.back() : order.front();
             const int B = r + 1 < n ? order[static_cast<size_t>(r + 1)] : closed ? order.front() : order.back();
+            // (The segment from A first, the chord the point is usually nearest; the others only
+            // while the point could still be the worst: its least excess only falls, and one no
+            // more than out.excess changes nothing.)
             double excess = std::numeric_limits<double>::infinity();
-            for (int q : {A - 1, A, B - 1, B}) {
+            for (int q : {A, A - 1, B - 1, B}) {
                 if (closed) q = (q + n) % n;
                 if (validSegment(q)) excess = std::min(excess, excessOver(q, p[k]));
+                if (excess <= out.excess) break;
             }
             // Beyond those: the whole polyline (a curve that cuts across to another part of the
-            // stroke is not straying).
+            // stroke is not straying). The scan ends once the point cannot be the worst: its least
+            // excess only falls, and one no more than out.excess changes nothing.
             if (excess > 1.0)
-                for (int q = 0; q < segments; ++q) excess = std::min(excess, excessOver(q, p[k]));
+                for (int q = 0; q < segments && excess > out.excess; ++q) excess = std::min(excess, excessOver(q, p[k]));
             if (excess > out.excess) {
                 out.excess = excess;
                 out.parameter = u[k];

@@ -155,12 +155,30 @@ struct Prepared {
     const std::vector<char>& keep;
 };
 
+// How a reading looks for fewer control points than the error-driven fit's (where it looks:
+// strokes without corners, loops with one, each piece of fitPiecesSearched).
+enum class Reading {
+    // The averaged-knot search on the dynamic threshold's rows, then the minimax trials below the
+    // count it takes (the error-driven fit only where the search finds nothing).
+    Searched,
+    // The error-driven fit, then the minimax trials bisecting every count below its own and the
+    // equidistributed descent (as where the count follows the noise, kNoiseRowsPerPoint). For the
+    // pieces between corners: the search cost more than it found there. On the development strokes
+    // (unistroke-report --fit-dev, valgrind --tool=callgrind, the whole program, fitStroke 96 % of
+    // it): the pieces searched 50,835 control points for 34.8 G instructions (105,391 search
+    // trials, 29,706 minimax trials); descended 50,354 for 30.2 G (8,333 search trials, all of
+    // whole strokes). Descended without the equidistributed descent: 50,672 for 28.6 G; with the
+    // bisection only where the count follows the noise: 50,823; the search below the error-driven
+    // count first, then the bisection: 50,220 for 37.7 G.
+    Descended,
+};
+
 // One reading of the stroke: the fit with these corners, into `fit`, `outliers` (the noise's
 // outliers of the fit taken, noiseOutliers) and res's maxError, converged and refinements (res's
-// tolerance is read). `searched`: with the fewer-control-points search where it applies.
+// tolerance is read). `reading`: how fewer control points are looked for where they are.
 // `ceiling`: no count above it is searched for or tried by the minimax trials (a loop's other
 // reading, which fitStroke takes only at no more control points than the first).
-void fitReading(const Prepared& p, const std::vector<int>& corners, bool searched, FitResult& res, FitPass& fit,
+void fitReading(const Prepared& p, const std::vector<int>& corners, Reading reading, FitResult& res, FitPass& fit,
                 std::vector<int>& outliers, int ceiling = std::numeric_limits<int>::max())
 {
     // (References, not a structured binding: clang 14, the sanitizer build's compiler, does not let
@@ -181,8 +199,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
     // A smooth loop is periodic; a loop with one corner is one clamped piece from the corner round
     // to it, fitted as an open curve whose ends meet (fitPieces, closeClampedLoop).
     const bool periodic = cs.closed && corners.empty();
-    const bool search =
-        searched && (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
+    const bool search = (corners.empty() || (cs.closed && corners.size() == 1)) && options.fewerControlPoints;
     const bool scan = options.countUp;
     // Where the noise can reach beyond the tolerance, every measure projects the samples beyond
     // it exactly (exactAbove); elsewhere the measures are as before.
@@ -485,7 +502,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
             const auto capOf = [&](int per) {
                 return std::min(ceiling, std::max(least, per > 0 ? cs.size() / per : static_cast<int>(samples.size())));
             };
-            for (int pass = 0; pass < 2 && !found; ++pass) {
+            for (int pass = 0; pass < 2 && !found && reading == Reading::Searched; ++pass) {
                 rowsPer = pass == 0 ? 0 : kDenseRowsPerPoint;
                 if (pass == 1 &&
                     static_cast<size_t>(kDenseRowsPerPoint) * static_cast<size_t>(highest + 1) <= samples.size() &&
@@ -600,7 +617,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
-            const bool followsNoise = current * kNoiseRowsPerPoint >= cs.size();
+            const bool followsNoise = current * kNoiseRowsPerPoint >= cs.size() || reading == Reading::Descended;
             // Where the count follows the noise (kNoiseRowsPerPoint), a count whose trial on averaged
             // knots misses is tried on FITPACK's knots too (SplineFitOptions::insertedTrials): they
             // follow the error of the shape where averaged knots follow the samples' density. On the
@@ -641,10 +658,11 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
                 }
             };
             descend(0);
-            // Where the count still follows the noise, the same descent with the trials' breaks
-            // moved to where the error is (SplineFitOptions::equidistributions, kEquidistributions).
+            // Where the count still follows the noise (and in a Reading::Descended), the same descent
+            // with the trials' breaks moved to where the error is (SplineFitOptions::
+            // equidistributions, kEquidistributions).
             const int reached = fit.curve.pointCount() - countOffset;
-            if (reached * kNoiseRowsPerPoint >= cs.size()) {
+            if (reached * kNoiseRowsPerPoint >= cs.size() || reading == Reading::Descended) {
                 alt.equidistributions = kEquidistributions;
                 missedBy.clear();  // (other trials)
                 descend(kLookBelow);
@@ -702,8 +720,8 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, bool searche
     }
 }
 
-// The search and minimax trials piece by piece (fitReading without corners on each piece of a
-// stroke with corners, the corners kept: each piece a clamped cubic from corner to corner), the
+// The minimax trials piece by piece (fitReading without corners, Reading::Descended, on each piece
+// of a stroke with corners, the corners kept: each piece a clamped cubic from corner to corner), the
 // pieces joined with triple knots (C0 at the corners, as fitPieces joins the error-driven fit's).
 // Each piece is a stroke of its own: the raw samples between its corners (a loop's last piece runs
 // round its seam), its conditioned points, rows and keep flags. Returns false where a piece cannot
@@ -785,7 +803,7 @@ bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, doubl
         FitPass fit;
         std::vector<int> pieceOutliers;
         try {
-            fitReading(sp, {}, true, r, fit, pieceOutliers);
+            fitReading(sp, {}, Reading::Descended, r, fit, pieceOutliers);
         } catch (const GeometryError&) {
             return false;
         }
@@ -883,7 +901,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     std::vector<int> outliers;  // the noise's outliers (noiseOutliers) of the fit taken
     const Prepared prepared{stroke, options, cs, fitPoints, samples, keep};
     // A stroke with corners (other than a loop with one, which the search reads whole) gets the
-    // search and minimax trials piece by piece, the corners kept (fitPiecesSearched), where every
+    // minimax trials piece by piece, the corners kept (fitPiecesSearched), where every
     // piece fits: every kept raw sample within the tolerance (no more outliers than the pieces'),
     // and the curve near the stroke between samples. Else, and for every other stroke, one reading
     // with its corners (the error-driven fit of each piece where it has corners).
@@ -909,7 +927,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
             }
         }
     }
-    if (!byPieces) fitReading(prepared, corners, true, res, fit, outliers);
+    if (!byPieces) fitReading(prepared, corners, Reading::Searched, res, fit, outliers);
     // A loop has two readings when it has at most one corner: periodic (C2 all round) and one
     // clamped piece from a point round to it (C0 there). Which needs fewer control points depends
     // on how the hand closed it, more than on whether a corner was detected: on the 2,400
@@ -951,7 +969,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         outliers.clear();
         bool made = true;
         try {
-            fitReading(prepared, other, true, res, fit, outliers, distinct);
+            fitReading(prepared, other, Reading::Searched, res, fit, outliers, distinct);
         } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
             made = false;
         }
