@@ -66,6 +66,9 @@ struct StrokeReport {
     /// and `outliers`, the samples the digitizer's noise put beyond the tolerance).
     int dropped = 0;
     int outliers = 0;
+    /// Where the curve strays from the stroke between two samples beyond the tolerance and a sixth
+    /// of the chord there (FitResult::stray, excess above 1): how far, model units; 0 when it does not.
+    double stray = 0.0;
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores
@@ -396,8 +399,9 @@ private:
     ResketchState& resketchState();
     /// Runs the recognizer on a fitted stroke (fills lastStroke_'s shape and candidates).
     void recognize(const solvers::stroke::FitResult& fit);
-    /// Notes in lastStroke_ the samples `fit` left out (StrokeReport::dropped, outliers) and
-    /// returns the message's clause that says so (empty when none was).
+    /// Notes in lastStroke_ the samples `fit` left out (StrokeReport::dropped, outliers) and where
+    /// it strays between samples (StrokeReport::stray), and returns the message's clauses that say
+    /// so (empty when neither).
     QString noteLeftOut(const solvers::stroke::FitResult& fit);
     /// "; n sample(s) left out as a light-pressure hook" for a stroke used as drawn (over-sketch,
     /// lift, re-sketch), empty when none was; sets lastStroke_.dropped.

@@ -31,6 +31,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <tuple>
 
 namespace sculptline::ui {
 namespace {
@@ -283,6 +286,61 @@ TEST(MainWindow, AStrokesLeftOutSamplesAreReported)
     EXPECT_EQ(doc.lastStroke().dropped, 0);
     EXPECT_FALSE(doc.lastStroke().message.contains(QStringLiteral("left out")))
         << doc.lastStroke().message.toStdString();
+}
+
+// A curve that holds every sample but strays from the stroke between two of them (the fitter keeps
+// the one that strays least where none it tried stays near) is reported in the window too, not only
+// by the CLI's "stray". The strokes: the development strokes people drew whose fit strays
+// (unistroke-report --fit-dev, session 48: loops with corners, across their closing gap), from
+// tests/data/unistrokes, pixels as plane millimetres.
+TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
+{
+    startApplication();
+    MainWindow window;
+    SketchDocument& doc = showDefaultScene(window);
+    const model::PlaneFrame frame = doc.model().find(1)->frame;
+    doc.select(1);
+    const std::vector<std::tuple<std::string, std::string, std::string, int>> strokes = {
+        {"s02", "delete_mark", "slow", 4}, {"s02", "delete_mark", "medium", 4}, {"s03", "star", "fast", 8},
+        {"s03", "x", "fast", 9},           {"s05", "triangle", "fast", 10},     {"s06", "delete_mark", "slow", 3},
+        {"s06", "star", "fast", 8},        {"s02", "rectangle", "slow", 10}};
+    int straying = 0, found = 0;
+    for (const auto& [subject, gesture, speed, number] : strokes) {
+        // Given a stroke as drawn (s0N.csv: gesture,speed,number,x y t;x y t;...), centred
+        std::ifstream in(std::string(SCULPTLINE_TEST_DATA_DIR) + "/unistrokes/" + subject + ".csv");
+        ASSERT_TRUE(in) << subject;
+        const std::string key = gesture + "," + speed + "," + std::to_string(number) + ",";
+        std::string line;
+        while (std::getline(in, line) && line.rfind(key, 0) != 0) {
+        }
+        ASSERT_EQ(line.rfind(key, 0), 0u) << key;
+        ++found;
+        std::vector<Eigen::Vector3d> points;
+        std::istringstream samples(line.substr(key.size()));
+        std::string sample;
+        while (std::getline(samples, sample, ';')) {
+            double x = 0.0, y = 0.0;
+            std::istringstream(sample) >> x >> y;
+            points.emplace_back(x, -y, 0.0);
+        }
+        Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+        for (const auto& p : points) centre += p / static_cast<double>(points.size());
+        for (auto& p : points) p -= centre;
+        // When it is drawn on the plane
+        doc.addStroke(strokeOnPlane(frame, points));
+        ASSERT_TRUE(doc.lastStroke().fitted) << key << doc.lastStroke().message.toStdString();
+        // Then the status message says how far the curve strays exactly when it does
+        const bool says = doc.lastStroke().message.contains(QStringLiteral("the curve strays"));
+        EXPECT_EQ(says, doc.lastStroke().stray > 0.0) << key << doc.lastStroke().message.toStdString();
+        if (doc.lastStroke().stray > 0.0) {
+            ++straying;
+            EXPECT_TRUE(doc.lastStroke().message.contains(QString::number(doc.lastStroke().stray, 'f', 2)))
+                << doc.lastStroke().message.toStdString();
+        }
+    }
+    EXPECT_EQ(found, static_cast<int>(strokes.size()));
+    // (Some of them stray in the window too, or the test shows nothing.)
+    EXPECT_GE(straying, 1);
 }
 
 TEST(MainWindow, UnsavedWorkIsNotLostWithoutAsking)
