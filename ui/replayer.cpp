@@ -117,7 +117,11 @@ void Replayer::dispatch(const ReplayEvent& e)
     if (e.type == ReplayEvent::Type::Move && (dragging || doc.dragging())) stats_.add("drag_move", elapsed.count());
     if (e.type == ReplayEvent::Type::Move && doc.strokeInput().drawing()) stats_.add("stroke_move", elapsed.count());
     // Pen-up to the fitted, recognized curve on screen (issue 15 §3).
-    if (e.type == ReplayEvent::Type::Release && drawing) stats_.add("stroke_release", elapsed.count());
+    if (e.type == ReplayEvent::Type::Release && drawing) {
+        stats_.add("stroke_release", elapsed.count());
+        // Of which the fit and recognition (the first of a session is the cold call).
+        if (doc.lastStroke().fitMs > 0.0) stats_.add("stroke_fit", doc.lastStroke().fitMs);
+    }
 }
 
 void Replayer::sendMouse(const ReplayEvent& e)

@@ -69,6 +69,9 @@ struct StrokeReport {
     /// Where the curve strays from the stroke between two samples beyond the tolerance and a sixth
     /// of the chord there (FitResult::stray, excess above 1): how far, model units; 0 when it does not.
     double stray = 0.0;
+    /// Wall time of the fit and recognition at pen-up (recognizeStroke), ms; 0 when not run. The
+    /// replayer's `--stats` reports it as the `stroke_fit` series (issue 15 §3).
+    double fitMs = 0.0;
     QString message;
     QString recognized;  ///< the recognizer's shape ("line", "arc", ..), empty when not run
     std::vector<std::pair<QString, double>> candidates;  ///< ranked, best first, with scores

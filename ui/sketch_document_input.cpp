@@ -15,6 +15,7 @@
 #include "ui/undo_commands.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -281,7 +282,10 @@ void SketchDocument::applyStroke(const manipulators::FinishedStroke& finished)
         // footprint on the plane (FitOptions::resolution), or the curve would follow the staircase.
         solvers::stroke::FitOptions fitOptions;
         fitOptions.resolution = manipulators::pixelFootprint(stroke);
+        const auto fitStart = std::chrono::steady_clock::now();
         const solvers::stroke::FitResult fit = solvers::stroke::recognizeStroke(input, fitOptions).fit;
+        lastStroke_.fitMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - fitStart).count();
         model::requireCurveExtent(fit.curve);
         model::Entity curve;
         curve.kind = model::EntityKind::Curve;

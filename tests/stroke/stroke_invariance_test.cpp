@@ -1,8 +1,10 @@
 // Given a stroke, when it is translated, rotated, scaled or drawn in the opposite direction, then
 // the fit is the same shape: same corners, same control-point count (similarity transforms), and
 // a curve within tolerance of the transformed original.
-#include "solvers/stroke/stroke_fitter.h"
 #include "fit_checks.h"
+#include "solvers/stroke/prime.h"
+#include "solvers/stroke/shape_recognizer.h"
+#include "solvers/stroke/stroke_fitter.h"
 
 #include <gtest/gtest.h>
 
@@ -107,6 +109,32 @@ TEST(StrokeInvariance, GivenReversedDrawing_WhenFitted_ThenSameCornersAndCurveWi
         EXPECT_LE(curveDistance(b.curve, a.curve), 2 * a.tolerance);
         const double ca = a.curve.pointCount(), cb = b.curve.pointCount();
         EXPECT_LE(std::abs(ca - cb), 0.25 * std::max(ca, cb) + 1) << ca << " control points forward, " << cb << " reversed";
+    }
+}
+
+// Given strokes fitted and recognized, when the pen-up path is primed (primeStrokeFit, as the
+// window does at start) and they are fitted again, then every result is the same to the bit:
+// priming leaves nothing behind but touched memory.
+TEST(StrokeInvariance, GivenPrimedFitter_WhenStrokesRefitted_ThenResultsBitIdentical)
+{
+    std::vector<Stroke> strokes;
+    for (const Shape& shape : shapes()) {
+        DrawOptions d;
+        d.noise = 0.3;
+        strokes.push_back(drawWithSamples(shape, 400, d));
+    }
+    std::vector<StrokeRecognition> before;
+    for (const Stroke& s : strokes) before.push_back(recognizeStroke(s));
+    primeStrokeFit();
+    for (size_t i = 0; i < strokes.size(); ++i) {
+        const StrokeRecognition after = recognizeStroke(strokes[i]);
+        EXPECT_EQ(after.recognition.kind, before[i].recognition.kind) << "stroke " << i;
+        const auto& pa = after.fit.curve.points();
+        const auto& pb = before[i].fit.curve.points();
+        ASSERT_EQ(pa.size(), pb.size()) << "stroke " << i;
+        for (size_t k = 0; k < pa.size(); ++k) EXPECT_EQ(pa[k], pb[k]) << "stroke " << i << ", control point " << k;
+        EXPECT_EQ(after.fit.maxError, before[i].fit.maxError) << "stroke " << i;
+        EXPECT_EQ(after.fit.corners, before[i].fit.corners) << "stroke " << i;
     }
 }
 
