@@ -132,23 +132,33 @@ QString SketchDocument::noteLeftOut(const solvers::stroke::FitResult& fit)
     lastStroke_.outliers = static_cast<int>(fit.outliers.size());
     const int others = lastStroke_.dropped - lastStroke_.outliers;
     QString note;
-    if (lastStroke_.dropped == 0)
-        ;
-    else if (others == 0)
-        note = tr("; %n sample(s) left out as noise beyond the tolerance", nullptr, lastStroke_.outliers);
-    else if (lastStroke_.outliers == 0)
-        note = tr("; %n sample(s) left out as a hook or overshoot", nullptr, others);
-    else
-        note = tr("; %1 samples left out (%2 as a hook or overshoot, %3 as noise beyond the tolerance)")
-                   .arg(lastStroke_.dropped)
-                   .arg(others)
-                   .arg(lastStroke_.outliers);
+    if (lastStroke_.dropped > 0) {
+        if (others == 0)
+            note = tr("; %n sample(s) left out as noise beyond the tolerance", nullptr, lastStroke_.outliers);
+        else if (lastStroke_.outliers == 0)
+            note = tr("; %n sample(s) left out as a hook or overshoot", nullptr, others);
+        else
+            note = tr("; %1 samples left out (%2 as a hook or overshoot, %3 as noise beyond the tolerance)")
+                       .arg(lastStroke_.dropped)
+                       .arg(others)
+                       .arg(lastStroke_.outliers);
+    }
     // The fitter keeps every sample within the tolerance; where no curve it tried also stayed near
     // the stroke between two samples, it keeps the one that strays least, and the designer is told
-    // where (a loop's closing gap, a sharp turn between sparse samples).
+    // how far and where, as the share of the drawing's samples before it (a loop's closing gap, a
+    // sharp turn between sparse samples).
     lastStroke_.stray = fit.stray.excess > 1.0 ? fit.stray.distance : 0.0;
-    if (lastStroke_.stray > 0.0)
-        note += tr("; between two samples the curve strays %1 mm from the stroke").arg(lastStroke_.stray, 0, 'f', 2);
+    if (lastStroke_.stray > 0.0) {
+        const int along = lastStroke_.samples > 1 && fit.stray.after >= 0
+                              ? static_cast<int>(std::lround(100.0 * fit.stray.after / (lastStroke_.samples - 1)))
+                              : -1;
+        note +=
+            along >= 0
+                ? tr("; %1 % of the way along the stroke, between two samples, the curve strays %2 mm from it")
+                      .arg(std::min(along, 100))
+                      .arg(lastStroke_.stray, 0, 'f', 2)
+                : tr("; between two samples the curve strays %1 mm from the stroke").arg(lastStroke_.stray, 0, 'f', 2);
+    }
     return note;
 }
 

@@ -2,15 +2,16 @@
 // is named, the entity list and the inspector show the selected entity, the curvature plot samples
 // the selected curve, and modes switch the viewer between viewing and interaction. Writes the whole
 // window to $SCULPTLINE_WINDOW_SHOT (when set) so a person can look at the docks.
+#include "ui/main_window.h"
 #include "manipulators/point_handles.h"
 #include "manipulators/stroke_input.h"
 #include "model/document.h"
 #include "ui/curvature_plot.h"
 #include "ui/entity_list_dock.h"
 #include "ui/inspector_dock.h"
-#include "ui/main_window.h"
 #include "ui/sketch_document.h"
 #include "ui/undo_commands.h"
+#include "unistroke_eval.h"
 
 #include <Inventor/Qt/SoQt.h>
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
@@ -31,8 +32,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <tuple>
 
 namespace sculptline::ui {
@@ -306,23 +305,17 @@ TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
         {"s06", "star", "fast", 8},        {"s02", "rectangle", "slow", 10}};
     int straying = 0, found = 0;
     for (const auto& [subject, gesture, speed, number] : strokes) {
-        // Given a stroke as drawn (s0N.csv: gesture,speed,number,x y t;x y t;...), centred
-        std::ifstream in(std::string(SCULPTLINE_TEST_DATA_DIR) + "/unistrokes/" + subject + ".csv");
-        ASSERT_TRUE(in) << subject;
-        const std::string key = gesture + "," + speed + "," + std::to_string(number) + ",";
-        std::string line;
-        while (std::getline(in, line) && line.rfind(key, 0) != 0) {
-        }
-        ASSERT_EQ(line.rfind(key, 0), 0u) << key;
+        // Given a stroke as drawn (the recorded log's pixels, y up), centred
+        const std::vector<sculptline::stroketest::Recording> recordings =
+            sculptline::stroketest::loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {subject});
+        const std::string key = subject + " " + gesture + " " + speed + " " + std::to_string(number) + ": ";
+        const auto recording =
+            std::find_if(recordings.begin(), recordings.end(), [&](const sculptline::stroketest::Recording& r) {
+                return r.gesture == gesture && r.speed == speed && r.number == number;
+            });
+        ASSERT_NE(recording, recordings.end()) << key;
         ++found;
-        std::vector<Eigen::Vector3d> points;
-        std::istringstream samples(line.substr(key.size()));
-        std::string sample;
-        while (std::getline(samples, sample, ';')) {
-            double x = 0.0, y = 0.0;
-            std::istringstream(sample) >> x >> y;
-            points.emplace_back(x, -y, 0.0);
-        }
+        std::vector<Eigen::Vector3d> points = recording->stroke.points;
         Eigen::Vector3d centre = Eigen::Vector3d::Zero();
         for (const auto& p : points) centre += p / static_cast<double>(points.size());
         for (auto& p : points) p -= centre;
@@ -335,6 +328,9 @@ TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
         if (doc.lastStroke().stray > 0.0) {
             ++straying;
             EXPECT_TRUE(doc.lastStroke().message.contains(QString::number(doc.lastStroke().stray, 'f', 2)))
+                << doc.lastStroke().message.toStdString();
+            // and where: the share of the drawing's samples before the place
+            EXPECT_TRUE(doc.lastStroke().message.contains(QStringLiteral("% of the way along the stroke")))
                 << doc.lastStroke().message.toStdString();
         }
     }

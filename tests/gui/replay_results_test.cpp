@@ -109,6 +109,14 @@ TEST(ReplayResults, TwoStrokesBecomeTwoCubicCurvesOnTheDefaultPlane)
     ASSERT_TRUE(stats["stroke_release"].contains("first_ms")) << stats.dump();
     EXPECT_GT(stats["stroke_release"]["first_ms"].get<double>(), 0.0);
     EXPECT_LE(stats["stroke_release"]["first_ms"].get<double>(), stats["stroke_release"]["max_ms"].get<double>());
+    // Of which the fit: one stroke_fit per stroke, each a part of its release.
+    ASSERT_TRUE(stats.contains("stroke_fit")) << stats.dump();
+    EXPECT_EQ(stats["stroke_fit"]["count"].get<int>(), 2);
+    EXPECT_GT(stats["stroke_fit"]["first_ms"].get<double>(), 0.0);
+    EXPECT_LT(stats["stroke_fit"]["first_ms"].get<double>(), stats["stroke_release"]["first_ms"].get<double>());
+    EXPECT_LT(stats["stroke_fit"]["max_ms"].get<double>(), stats["stroke_release"]["max_ms"].get<double>());
+    std::cout << "sketch: stroke_fit first " << stats["stroke_fit"]["first_ms"].get<double>() << " ms, max "
+              << stats["stroke_fit"]["max_ms"].get<double>() << " ms\n";
     std::cout << "sketch: stroke_release first " << stats["stroke_release"]["first_ms"].get<double>() << " ms, p50 "
               << stats["stroke_release"]["p50_ms"].get<double>() << " ms, max "
               << stats["stroke_release"]["max_ms"].get<double>() << " ms\n";
