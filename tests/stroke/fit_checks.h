@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
 namespace sculptline::stroketest {
 
@@ -130,6 +132,17 @@ inline std::vector<Vec3> keptSamples(const Stroke& s, const FitResult& r)
     for (size_t i = 0; i < s.points.size(); ++i)
         if (!std::binary_search(r.dropped.begin(), r.dropped.end(), static_cast<int>(i))) out.push_back(s.points[i]);
     return out;
+}
+
+/// The synthesized shapes of the tolerance and measure tests (fit_tolerance_test.cpp,
+/// fit_measure_test.cpp): open, spiralling, wavy, a smooth loop and a loop with corners.
+inline std::vector<std::pair<std::string, Shape>> toleranceShapes()
+{
+    return {{"s-curve", sCurveShape(200)},
+            {"spiral", spiralShape(100, 2.5)},
+            {"flourish", flourishShape(300)},
+            {"circle", circleShape({10, 20, 0}, 80)},
+            {"square", polygonShape({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}}, true)}};
 }
 
 }  // namespace sculptline::stroketest
