@@ -161,21 +161,25 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
         return measureStray(curve, stroke.points, *kept, res.tolerance, kStrayChordShare,
                             kCheckSpacingShare * res.tolerance, &dev.foot, stopAbove);
     };
-    bool strayed = false;      // the last deviation measured missed only by straying
-    double sampleError = 0.0;  // and its samples' largest distance then
-    auto deviation = [&](const Curve3d& curve, SampleDeviation& dev) {
-        strayed = false;
+    // A curve's measure: `error`, its samples' largest distance (the noise's outliers left out),
+    // or, where it holds every sample but strays between two (`strayed`), the straying's excess
+    // in tolerances; `samples` is then the samples' largest distance alone.
+    struct Measured {
+        double error = 0.0;
+        bool strayed = false;
+        double samples = 0.0;
+    };
+    auto deviation = [&](const Curve3d& curve, SampleDeviation& dev) -> Measured {
         dev = measureSamples(curve, stroke.points, keep, kCheckSpacingShare * res.tolerance, exactAbove);
         suspects.clear();
         double err = dev.maxError;
         if (!(dev.maxError <= res.tolerance) && dev.maxError <= kOutlierSigmas * cs.noise &&
             noiseOutliers(dev, keep, res.tolerance, cs.noise, suspects))
             err = dev.maxWithin;
-        if (!(err <= res.tolerance) || !options.boundStray) return err;
+        if (!(err <= res.tolerance) || !options.boundStray) return {err, false, err};
         const StrayMeasure stray = strayOf(curve, dev, 1.0);
-        strayed = stray.excess > 1.0;
-        sampleError = err;
-        return strayed ? std::max(err, stray.excess * res.tolerance) : err;
+        if (!(stray.excess > 1.0)) return {err, false, err};
+        return {std::max(err, stray.excess * res.tolerance), true, err};
     };
     // The chain every fit below shares (the same points, corners and chord parameters; the rows
     // and options differ), built by the first.
@@ -195,7 +199,9 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
         for (;; ++round) {
             fit = fitConditioned(cs, fitPoints, corners, samples, sopt, nullptr, &chain);
             SampleDeviation dev;
-            const double err = deviation(fit.curve, dev);
+            const Measured m = deviation(fit.curve, dev);
+            const double err = m.error;
+            const bool strayed = m.strayed;
             outliers = suspects;
             res.maxError = err;
             res.converged = err <= res.tolerance;
@@ -206,7 +212,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
                 strayBy = by;
                 straying = fit;
                 strayingOutliers = outliers;
-                strayingSamples = sampleError;
+                strayingSamples = m.samples;
                 strayingRound = round;
             }
             if (strayed && firmer < kStrayFairingSteps) {
@@ -337,16 +343,21 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
         // made the choice hang on that fit's outliers, which round-off can decide: the sanitizer
         // build's planar circle of Stroke3d.GivenPlanarStrokesTurnedIntoSpace_* took a count the
         // same circle turned into space refused, 9 control points against 10.)
+        // accept's verdict: taken, or refused, for straying between samples (every sample within
+        // the tolerance) or for missing a sample.
+        enum class Verdict { Taken, Missed, Strayed };
         bool replacing = false, byMinimax = false;
         auto accept = [&](FitPass& a, SampleDeviation& dev) {
-            const double err = deviation(a.curve, dev);
-            if (!(err <= res.tolerance) || (replacing && !suspects.empty())) return false;
+            const Measured m = deviation(a.curve, dev);
+            if (!(m.error <= res.tolerance) || (replacing && !suspects.empty()))
+                return m.strayed ? Verdict::Strayed : Verdict::Missed;
             byMinimax = replacing;
             fit = std::move(a);
             outliers = suspects;
-            res.maxError = err;
+            res.maxError = m.error;
             res.refinements = 0;
-            return res.converged = true;
+            res.converged = true;
+            return Verdict::Taken;
         };
         // Where raw samples between the least squares' rows lie beyond the tolerance, the same count
         // is solved again with their conditioned points among the rows (kRowRounds, kRowShare), so
@@ -356,7 +367,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
             finish(a, count, samples);
             if (!fits(a)) return false;
             SampleDeviation dev;
-            if (accept(a, dev)) return true;
+            if (accept(a, dev) == Verdict::Taken) return true;
             std::vector<int> rows = samples;
             for (int round = 0; round < kRowRounds; ++round) {
                 const size_t before = rows.size();
@@ -372,7 +383,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
                 FitPass b = trial(count, rows);
                 finish(b, count, rows);
                 if (!fits(b)) return false;
-                if (accept(b, dev)) return true;
+                if (accept(b, dev) == Verdict::Taken) return true;
             }
             return false;
         };
@@ -544,9 +555,10 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
                 if (missedBy.count(count) > 0) return false;
                 FitPass a = trial(count, all);
                 SampleDeviation dev;
-                if (fits(a) && accept(a, dev)) return true;
+                const Verdict verdict = fits(a) ? accept(a, dev) : Verdict::Missed;
+                if (verdict == Verdict::Taken) return true;
                 missedBy[count] = fits(a) ? dev.maxError : a.maxError;
-                if (fits(a) && strayed) strayedAt.insert(count);
+                if (verdict == Verdict::Strayed) strayedAt.insert(count);
                 return false;
             };
             const int current = fit.curve.pointCount() - countOffset;
@@ -611,7 +623,7 @@ void fitReading(const Prepared& p, const std::vector<int>& corners, Reading read
                 alt.minimaxWithin = -1.0;
                 FitPass a = trial(fit.curve.pointCount() - countOffset, all);
                 SampleDeviation dev;
-                const double err = deviation(a.curve, dev);
+                const double err = deviation(a.curve, dev).error;
                 if (err < res.maxError && suspects.empty()) {
                     fit = std::move(a);
                     outliers = suspects;
