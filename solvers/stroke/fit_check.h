@@ -56,7 +56,7 @@ struct StrayMeasure {
 /// each kept sample's distance to the curve, which says nothing of the curve between two samples:
 /// a curve can pass within the tolerance of every sample and shoot far out between two of them.
 /// Every point of the curve must lie within the allowance of some segment of the polyline through
-/// the kept samples (a loop's closed), max(tolerance, chordShare * the segment's length): a smooth
+/// the kept samples (a loop's closed), tolerance + chordShare * the segment's length: a smooth
 /// curve through two samples bulges from their chord by its sagitta, which is the shape between
 /// them, not a stray. The curve's points are its spans' polylines' (at most ~`resolution` apart),
 /// each tried first on the segments at the two samples whose foot points bracket it, then on the

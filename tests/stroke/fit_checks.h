@@ -73,7 +73,7 @@ inline double maxDeviation(const solvers::Curve3d& c, const std::vector<Vec3>& p
 /// How far the curve strays from the polyline through `pts` (a loop's back to its first), measured
 /// independently of the fitter's measureStray: at 8,000 points equally spaced in parameter, each
 /// point's least ratio, over every segment, of its distance to the segment over that segment's
-/// allowance max(tol, share * its length); the largest over the points (<= 1: every point lies
+/// allowance tol + share * its length; the largest over the points (<= 1: every point lies
 /// within some segment's allowance). Each point tries first the segments near the previous point's
 /// best, and the whole polyline where those leave it beyond 1.
 inline double strayExcess(const solvers::Curve3d& c, const std::vector<Vec3>& pts, bool closed, double tol,
