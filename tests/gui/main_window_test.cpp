@@ -303,16 +303,16 @@ TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
         {"s02", "delete_mark", "slow", 4}, {"s02", "delete_mark", "medium", 4}, {"s03", "star", "fast", 8},
         {"s03", "x", "fast", 9},           {"s05", "triangle", "fast", 10},     {"s06", "delete_mark", "slow", 3},
         {"s06", "star", "fast", 8},        {"s02", "rectangle", "slow", 10}};
+    // (The four subjects' logs read once, by the tests' loader.)
+    const std::vector<stroketest::Recording> recordings =
+        stroketest::loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {"s02", "s03", "s05", "s06"});
     int straying = 0, found = 0;
     for (const auto& [subject, gesture, speed, number] : strokes) {
         // Given a stroke as drawn (the recorded log's pixels, y up), centred
-        const std::vector<sculptline::stroketest::Recording> recordings =
-            sculptline::stroketest::loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {subject});
         const std::string key = subject + " " + gesture + " " + speed + " " + std::to_string(number) + ": ";
-        const auto recording =
-            std::find_if(recordings.begin(), recordings.end(), [&](const sculptline::stroketest::Recording& r) {
-                return r.gesture == gesture && r.speed == speed && r.number == number;
-            });
+        const auto recording = std::find_if(recordings.begin(), recordings.end(), [&](const stroketest::Recording& r) {
+            return r.subject == subject && r.gesture == gesture && r.speed == speed && r.number == number;
+        });
         ASSERT_NE(recording, recordings.end()) << key;
         ++found;
         std::vector<Eigen::Vector3d> points = recording->stroke.points;
