@@ -152,6 +152,15 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     // that fit's then, the development loops 21,554 control points with it alone, 21,544 with the
     // search before it.) The detected corners (FitResult::corners, which recognition reads) stay
     // as found.
+    // A loop with one corner away from its seam has a third reading: one clamped piece from the seam
+    // (the first point kept) round to it, as a smooth loop's other reading. Where the hand closed a
+    // loop its start and end often zigzag across each other (circle-s02f4 of the $1 logs: x 99,
+    // 103, 101, 99 over the seam's four samples), and a corner detected a sample or two away leaves
+    // that zigzag inside the clamped piece, for the curve to follow smoothly: 14 control points at
+    // 1 px where the piece from the seam needs 8. On the 2,400 development strokes (unistroke-report
+    // --fit-dev) 31 loops with one corner try it and 17 circles gain (s06 medium 9 48 -> 41, s03 slow
+    // 1 53 -> 47, whose corner lies a third of the loop from the seam), 50,354 -> 50,306 control
+    // points; the circles' fit time 564 -> 640 ms, the whole set's 2,211 -> 2,297 ms.
     // Two corners that meet across the seam, within 1 / kSeamPairShare of the loop's points, are where
     // the hand closed it (the pen's start and its lift, overlapping), not two corners of the
     // shape: such a loop's other reading is one clamped piece from the later corner round to it.
@@ -162,32 +171,36 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     const bool seamPair = corners.size() == 2 && (corners[0] + cs.size() - corners[1]) * kSeamPairShare < cs.size();
     if (cs.closed && (corners.size() <= 1 || seamPair) && options.bothLoopReadings && options.fewerControlPoints &&
         res.converged) {
-        const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
-        const std::vector<int> other = seamPair          ? std::vector<int>{corners[1]}
-                                       : corners.empty() ? std::vector<int>{0}
-                                                         : std::vector<int>{};
-        FitPass first = std::move(fit);
-        std::vector<int> firstOutliers = std::move(outliers);
-        const double firstError = res.maxError;
-        const int firstRefinements = res.refinements;
-        fit = FitPass{};
-        outliers.clear();
-        bool made = true;
-        try {
-            fitReading(prepared, other, Reading::Searched, res, fit, outliers, distinct);
-        } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
-            made = false;
-        }
-        // (As many control points and closer to the drawn samples also takes it: a minimax curve,
-        // below, can end at the other reading's count with a larger deviation.)
-        const int otherDistinct = made ? fit.curve.pointCount() - 3 : 0;
-        if (!made || !res.converged || otherDistinct > distinct ||
-            (otherDistinct == distinct && !(res.maxError < firstError)) || outliers.size() > firstOutliers.size()) {
-            fit = std::move(first);
-            outliers = std::move(firstOutliers);
-            res.maxError = firstError;
-            res.converged = true;
-            res.refinements = firstRefinements;
+        std::vector<std::vector<int>> others = {seamPair          ? std::vector<int>{corners[1]}
+                                                : corners.empty() ? std::vector<int>{0}
+                                                                  : std::vector<int>{}};
+        if (corners.size() == 1 && corners[0] != 0) others.push_back({0});
+        // Each other reading in turn, no higher than the best so far.
+        for (const std::vector<int>& other : others) {
+            const int distinct = fit.curve.pointCount() - 3;  // (a closed curve repeats 3 points)
+            FitPass first = std::move(fit);
+            std::vector<int> firstOutliers = std::move(outliers);
+            const double firstError = res.maxError;
+            const int firstRefinements = res.refinements;
+            fit = FitPass{};
+            outliers.clear();
+            bool made = true;
+            try {
+                fitReading(prepared, other, Reading::Searched, res, fit, outliers, distinct);
+            } catch (const GeometryError&) {  // (too few distinct points for the other reading's curve)
+                made = false;
+            }
+            // (As many control points and closer to the drawn samples also takes it: a minimax curve,
+            // below, can end at the other reading's count with a larger deviation.)
+            const int otherDistinct = made ? fit.curve.pointCount() - 3 : 0;
+            if (!made || !res.converged || otherDistinct > distinct ||
+                (otherDistinct == distinct && !(res.maxError < firstError)) || outliers.size() > firstOutliers.size()) {
+                fit = std::move(first);
+                outliers = std::move(firstOutliers);
+                res.maxError = firstError;
+                res.converged = true;
+                res.refinements = firstRefinements;
+            }
         }
     }
     // Dropped samples the curve passes within the tolerance of (most of a loop's overshoot runs

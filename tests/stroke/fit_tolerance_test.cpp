@@ -225,8 +225,9 @@ TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMo
             if (loop("s06", "fast", 9)) {
                 // 49 samples at a tolerance of 0.73 pixel: 24 control points by least squares,
                 // 14 with the minimax trials (FITPACK's splprep 21, OCCT 28 at the least
-                // squares' deviation).
-                EXPECT_GE(a.curve.pointCount() - 3, 24) << "least squares";
+                // squares' deviation). 22 by least squares since session 50, the loop's one
+                // clamped piece from its seam tried too (stroke_fitter.cpp).
+                EXPECT_GE(a.curve.pointCount() - 3, 22) << "least squares";
                 EXPECT_LE(count, 15) << "minimax trials";
             }
         });
