@@ -5,7 +5,7 @@ on the synthesized benchmark strokes and on real pen strokes (the $1 unistroke l
 subjects only).
 
     scripts/compare_splprep.py [BUILD_DIR] [--mode default|minimize|both] [--check] [--no-real] [--time]
-                               [--quickdraw N] [--dev GESTURE] [--held-out GESTURE]
+                               [--quickdraw N] [--dev GESTURE] [--held-out GESTURE] [--resolution Q]
         BUILD_DIR defaults to build-stroke and needs stroke-export and sculptline-cli built there;
         the OCCT column needs occt-fit (built with the project, OpenCASCADE being required), else "-".
         --check: exit status 1 if, in a compared mode, any stroke (synthesized or real) needs more
@@ -19,6 +19,11 @@ subjects only).
         circle: where a fitting change may be tuned, unlike the Quick, Draw! and held-out strokes.
         --held-out GESTURE: also every held-out drawing (s07-s11, 150) of one gesture, to report how
         the development strokes' result carries over (added 2026-12-07). Never tune on it.
+        --resolution Q: the real strokes (drawn in whole pixels) are fitted with "resolution": Q, as
+        the window fits a stroke with its pointer's pixel: the default tolerance is then at least Q
+        (FitOptions::resolution; added 2026-12-07). Without it, 0.5 % of the stroke's extent, below
+        the pixel on the unistroke logs' strokes of 60-150 px, where every fit follows the pixels'
+        staircase.
         --time: also times each fit at the equal deviation found (warm: the fastest of TIME_REPEAT
         calls; ours cold too, the first call in a fresh sculptline-cli process, as `elapsed_ms`).
         splprep is timed around the scipy call (FITPACK plus scipy's Python wrapper), OCCT inside
@@ -303,6 +308,11 @@ def main():
         i = argv.index("--dev")
         dev_gesture = argv[i + 1]
         del argv[i:i + 2]
+    resolution = None
+    if "--resolution" in argv:
+        i = argv.index("--resolution")
+        resolution = float(argv[i + 1])
+        del argv[i:i + 2]
     held_out_gesture = None
     if "--held-out" in argv:
         i = argv.index("--held-out")
@@ -314,15 +324,16 @@ def main():
     timing = "--time" in argv
     strokes = json.loads(subprocess.run([f"{build}/stroke-export"], check=True, capture_output=True, text=True).stdout)
     by_name = {s["name"]: s for s in strokes}
-    items = [(s["name"], s["stroke"], None) for s in strokes if s["name"] != "s-curve-clean"]
-    items += [(f"{name}@{tol:g}", by_name[name]["stroke"], tol) for name, tol in SWEEP if name in by_name]
+    # (name, stroke, tolerance or None, drawn in whole pixels: the real strokes)
+    items = [(s["name"], s["stroke"], None, False) for s in strokes if s["name"] != "s-curve-clean"]
+    items += [(f"{name}@{tol:g}", by_name[name]["stroke"], tol, False) for name, tol in SWEEP if name in by_name]
     if "--no-real" not in argv:
-        items += [(s["name"], s["stroke"], None) for s in load_real()]
-    items += [(s["name"], s["stroke"], None) for s in load_quickdraw(quickdraw)]
+        items += [(s["name"], s["stroke"], None, True) for s in load_real()]
+    items += [(s["name"], s["stroke"], None, True) for s in load_quickdraw(quickdraw)]
     if dev_gesture:
-        items += [(s["name"], s["stroke"], None) for s in load_dev(dev_gesture)]
+        items += [(s["name"], s["stroke"], None, True) for s in load_dev(dev_gesture)]
     if held_out_gesture:
-        items += [(s["name"], s["stroke"], None) for s in load_dev(held_out_gesture, HELD_OUT_SUBJECTS)]
+        items += [(s["name"], s["stroke"], None, True) for s in load_dev(held_out_gesture, HELD_OUT_SUBJECTS)]
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
@@ -335,8 +346,10 @@ def main():
         short_straying = 0  # strokes short of a peer where every peer that needs fewer strays
         counts = []
         times = []  # --time: (ours cold, ours warm, splprep warm, occt warm or None)
-        for name, stroke, tol in items:
+        for name, stroke, tol, pixels in items:
             request = {"stroke": stroke, "minimize_control_points": minimize}
+            if pixels and resolution is not None:
+                request["resolution"] = resolution
             if timing:
                 request["repeat"] = TIME_REPEAT
             if tol is not None:

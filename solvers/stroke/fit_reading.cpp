@@ -71,11 +71,11 @@ constexpr int kRowRounds = 4;
 constexpr int kDenseRowsPerPoint = 2;
 // Lawson rounds (SplineFitOptions::minimaxRounds) of the minimax trials below. On the 2,400
 // development strokes (unistroke-report --fit-dev; the least squares alone 57,342 control points),
-// measured with 8 corrections before the rounds and the second search of kNoiseRowsPerPoint's
-// note: 6 rounds 57,172, 10 rounds 57,148, 20 rounds 57,124 (for a tenth more time than 10).
+// measured with 8 corrections before the rounds and the second search of the bisection's note: 6 rounds 57,172, 10
+// rounds 57,148, 20 rounds 57,124 (for a tenth more time than 10).
 constexpr int kMinimaxRounds = 10;
 // Hoschek corrections before a minimax trial's rounds (each round corrects the parameters too).
-// Development strokes, measured with the second search of kNoiseRowsPerPoint's note: 57,154 control
+// Development strokes, measured with the second search of the bisection's note: 57,154 control
 // points with the search's 8, 57,107 with 3, 57,149 with 2 and 57,147 with 1; 411 against 438 M
 // instructions with 8 (BM_StrokeRecorded/0, callgrind).
 constexpr int kMinimaxCorrections = 3;
@@ -84,7 +84,7 @@ constexpr int kMinimaxCorrections = 3;
 // strokes (with the 13 synthesized) meet the fewer peer, for 3 % more instructions.
 constexpr int kPolishRounds = 20;
 // Trials with the breaks equidistributed (SplineFitOptions::equidistributions) per count of the
-// last descent, on strokes whose count follows the noise (kNoiseRowsPerPoint). On the development
+// last descent (on strokes whose count follows the noise until session 50: the bisection's note). On the development
 // strokes: 57,037 control points without, 56,852 with 3 and 56,784 with 5, for 398 / 410 / 418 M
 // instructions (BM_StrokeRecorded/0, callgrind); on every stroke, 3 trials: 56,834 for 501 M. The
 // 150 development circles against the peers (compare_splprep.py --dev circle): 136 -> 142 meet
@@ -101,15 +101,24 @@ constexpr int kEquidistributions = 3;
 // 145 -> 147 of the 150 development circles meet the fewer peer (ours 4,541 -> 4,388 in all).
 constexpr int kLookBelow = 3;
 constexpr double kLookMissShare = 1.1;
-// The minimax trials bisect below the count taken where it leaves fewer than this many conditioned
-// points per control point: there the fit follows the digitizer's noise (a circle of 39 samples
-// drawn at a medium speed, 20 control points for a tolerance of 0.62 pixel), and the largest
-// distance, which the tolerance bounds, is far above the least squares' mean one. On the
-// development strokes: 57,070 control points with 3, 57,037 with 4, 57,029 with 6 or every stroke,
-// for 391 / 399 / 425 / 447 M instructions (BM_StrokeRecorded/0, callgrind; 358 M without the
-// minimax trials). (Searching again with the climbs and rows of the least squares' search
-// instead of the bisection on every point: 57,107 control points for 421 M.)
-constexpr int kNoiseRowsPerPoint = 4;
+// The bisection's note (minimaxTrials). Until session 50 the minimax trials bisected below the
+// count taken, tried FITPACK's knots and made the equidistributed descent only where the count
+// left fewer than 4 conditioned points per control point (kNoiseRowsPerPoint; there the fit follows
+// the digitizer's noise: a circle of 39 samples drawn at a medium speed, 20 control points for a
+// tolerance of 0.62 pixel) and on a piece read by descent. Measured then on the development strokes:
+// 57,070 control points with 3, 57,037 with 4, 57,029 with 6 or every stroke, for 391 / 399 / 425 /
+// 447 M instructions (BM_StrokeRecorded/0, callgrind; 358 M without the minimax trials). (Searching
+// again with the climbs and rows of the least squares' search instead of the bisection on every
+// point: 57,107 control points for 421 M.) Session 50 measured it again at the window's resolution
+// of one pixel, where the default tolerance leaves 5-8 samples per control point and the rule
+// skipped them: on every stroke, BM_StrokeRecorded/0 (240 development strokes at one pixel) 14.38
+// -> 14.20 control points a stroke, for a mean fit of 363-385 -> 432-454 us (p50 280-295 -> 287-306
+// us, p99 1.43-1.48 -> 2.13-2.36 ms); the bisection alone 14.33 (+6 %), the equidistributed
+// descent alone 14.25 (+9 %). compare_splprep.py --resolution 1 --dev G, strokes meeting the fewer
+// peer (of 163) and our total: circle 161 -> 163 (2,059 -> 1,897), question mark 154 -> 160
+// (1,865 -> 1,727), pigtail 161 -> 161 (2,317 -> 2,176), right curly brace 162 -> 162 (2,414 ->
+// 2,405). At the default tolerance (unistroke-report --fit-dev): 50,306 -> 50,233 control points
+// for 2.2 % more instructions in fitStroke (28.08 -> 28.72 G).
 
 namespace {
 
@@ -564,10 +573,11 @@ private:
     // conditioned point: the rows that hold the noise the least squares' rows skip): the
     // tolerance bounds the largest distance, which the least squares does not minimize. A
     // count is taken only when every kept raw sample is within the tolerance, with no more
-    // noise outliers. Where the count follows the noise (kNoiseRowsPerPoint), a bisection
-    // between the least count and the one taken; then down from the count reached, one at a
-    // time while the count below is taken. (The counts do not fall monotonically: the
-    // bisection reaches counts far below that a descent from the top stops short of.)
+    // noise outliers. A bisection between the least count and the one taken; then down from the
+    // count reached, one at a time while the count below is taken; then the same descent with the
+    // breaks equidistributed (the bisection's note above: on every stroke since session 50). (The
+    // counts do not fall monotonically: the bisection reaches counts far below that a descent
+    // from the top stops short of.)
     void minimaxTrials()
     {
         const int least = cs_.closed ? 5 : 4;
@@ -583,10 +593,7 @@ private:
         alt_.averagedStopWhenWithin = false;
         replacing_ = true;
         const int current = fit_.curve.pointCount() - countOffset_;
-        // Bisect below the count, with FITPACK's knots tried too: where the count follows the
-        // noise (kNoiseRowsPerPoint), and always on a piece read by descent (no search there).
-        const bool bisect = current * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended;
-        // Where the count follows the noise, a count whose trial on averaged
+        // Bisect below the count, with FITPACK's knots tried too: a count whose trial on averaged
         // knots misses is tried on FITPACK's knots too (SplineFitOptions::insertedTrials): they
         // follow the error of the shape where averaged knots follow the samples' density. On the
         // development strokes 56,762 -> 56,474 control points (circles 4,610 -> 4,420), and
@@ -595,31 +602,26 @@ private:
         // 7.43 -> 9.25 G), 0.7 % more on BM_StrokeRecorded/0 (423 -> 426 M). On every stroke
         // the minimax trials reach: 56,473 for 6 % more instructions on BM_StrokeRecorded/0;
         // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
-        // (no averaged trial first): 56,563.
-        alt_.insertedTrials = bisect;
-        if (bisect) {
-            // (A count refused for straying sends the bisection below it, as one taken: on the
-            // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its
-            // fewer peer 18; without this the bisection climbed past the counts below.)
-            for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
-                const int mid = lo + (hi - lo) / 2;
-                if (takes(mid) || strayedAt_.count(mid) > 0)
-                    hi = mid;
-                else
-                    lo = mid;
-            }
+        // (no averaged trial first): 56,563. (Those figures are of the rule before session 50,
+        // where the count follows the noise.)
+        alt_.insertedTrials = true;
+        // (A count refused for straying sends the bisection below it, as one taken: on the
+        // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its fewer peer
+        // 18; without this the bisection climbed past the counts below.)
+        for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
+            const int mid = lo + (hi - lo) / 2;
+            if (takes(mid) || strayedAt_.count(mid) > 0)
+                hi = mid;
+            else
+                lo = mid;
         }
         descend(0);
-        // Where the count still follows the noise (and in a Reading::Descended), the same descent
-        // with the trials' breaks moved to where the error is (SplineFitOptions::
+        // The same descent with the trials' breaks moved to where the error is (SplineFitOptions::
         // equidistributions, kEquidistributions).
-        const int reached = fit_.curve.pointCount() - countOffset_;
-        if (reached * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended) {
-            alt_.equidistributions = kEquidistributions;
-            missedBy_.clear();  // (other trials)
-            descend(kLookBelow);
-            alt_.equidistributions = 0;
-        }
+        alt_.equidistributions = kEquidistributions;
+        missedBy_.clear();  // (other trials)
+        descend(kLookBelow);
+        alt_.equidistributions = 0;
         if (byMinimax_) polish();
         alt_.trialCache = nullptr;  // (trialCache is this call's)
     }
