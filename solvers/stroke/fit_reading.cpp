@@ -84,8 +84,8 @@ constexpr int kMinimaxCorrections = 3;
 // strokes (with the 13 synthesized) meet the fewer peer, for 3 % more instructions.
 constexpr int kPolishRounds = 20;
 // Trials with the breaks equidistributed (SplineFitOptions::equidistributions) per count of the
-// last descent (on strokes whose count follows the noise until session 50: the bisection's note). On the development
-// strokes: 57,037 control points without, 56,852 with 3 and 56,784 with 5, for 398 / 410 / 418 M
+// last descent, where the count leaves fewer than kNoiseRowsPerPoint points per control point (4 until session 50). On
+// the development strokes: 57,037 control points without, 56,852 with 3 and 56,784 with 5, for 398 / 410 / 418 M
 // instructions (BM_StrokeRecorded/0, callgrind); on every stroke, 3 trials: 56,834 for 501 M. The
 // 150 development circles against the peers (compare_splprep.py --dev circle): 136 -> 142 meet
 // the fewer peer with 3.
@@ -118,7 +118,12 @@ constexpr double kLookMissShare = 1.1;
 // peer (of 163) and our total: circle 161 -> 163 (2,059 -> 1,897), question mark 154 -> 160
 // (1,865 -> 1,727), pigtail 161 -> 161 (2,317 -> 2,176), right curly brace 162 -> 162 (2,414 ->
 // 2,405). At the default tolerance (unistroke-report --fit-dev): 50,306 -> 50,233 control points
-// for 2.2 % more instructions in fitStroke (28.08 -> 28.72 G).
+// for 2.2 % more instructions in fitStroke (28.08 -> 28.72 G). But on a long, densely sampled
+// stroke every count it bisects is a minimax trial on all its points: the 1,000-sample flourish of
+// BM_StrokeFitWarm (18 control points) 348 -> 1,260 us warm. So the rule stays, at 8 points per
+// control point instead of 4: the same control points on the development strokes at the default
+// tolerance (50,233) and at one pixel (BM_StrokeRecorded/0 14.20), the flourish not bisected.
+constexpr int kNoiseRowsPerPoint = 8;
 
 namespace {
 
@@ -573,9 +578,10 @@ private:
     // conditioned point: the rows that hold the noise the least squares' rows skip): the
     // tolerance bounds the largest distance, which the least squares does not minimize. A
     // count is taken only when every kept raw sample is within the tolerance, with no more
-    // noise outliers. A bisection between the least count and the one taken; then down from the
-    // count reached, one at a time while the count below is taken; then the same descent with the
-    // breaks equidistributed (the bisection's note above: on every stroke since session 50). (The
+    // noise outliers. Where the count leaves fewer than kNoiseRowsPerPoint points per control point
+    // (the bisection's note above), a bisection between the least count and the one taken; then
+    // down from the count reached, one at a time while the count below is taken; then, there, the
+    // same descent with the breaks equidistributed. (The
     // counts do not fall monotonically: the bisection reaches counts far below that a descent
     // from the top stops short of.)
     void minimaxTrials()
@@ -593,10 +599,11 @@ private:
         alt_.averagedStopWhenWithin = false;
         replacing_ = true;
         const int current = fit_.curve.pointCount() - countOffset_;
-        // Bisect below the count, with FITPACK's knots tried too: a count whose trial on averaged
-        // knots misses is tried on FITPACK's knots too (SplineFitOptions::insertedTrials): they
-        // follow the error of the shape where averaged knots follow the samples' density. On the
-        // development strokes 56,762 -> 56,474 control points (circles 4,610 -> 4,420), and
+        // Bisect below the count, with FITPACK's knots tried too, where the count leaves fewer than
+        // kNoiseRowsPerPoint conditioned points per control point, and always on a piece read by
+        // descent (no search there): a count whose trial on averaged knots misses is tried on FITPACK's knots too
+        // (SplineFitOptions::insertedTrials): they follow the error of the shape where averaged knots follow the
+        // samples' density. On the development strokes 56,762 -> 56,474 control points (circles 4,610 -> 4,420), and
         // compare_splprep.py --dev circle 139 -> 144 of 150 circles meeting the fewer peer. For
         // 24 % more instructions there (callgrind, fitStroke over unistroke-report --fit-dev,
         // 7.43 -> 9.25 G), 0.7 % more on BM_StrokeRecorded/0 (423 -> 426 M). On every stroke
@@ -604,24 +611,31 @@ private:
         // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
         // (no averaged trial first): 56,563. (Those figures are of the rule before session 50,
         // where the count follows the noise.)
-        alt_.insertedTrials = true;
-        // (A count refused for straying sends the bisection below it, as one taken: on the
-        // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its fewer peer
-        // 18; without this the bisection climbed past the counts below.)
-        for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
-            const int mid = lo + (hi - lo) / 2;
-            if (takes(mid) || strayedAt_.count(mid) > 0)
-                hi = mid;
-            else
-                lo = mid;
+        const bool bisect = current * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended;
+        alt_.insertedTrials = bisect;
+        if (bisect) {
+            // (A count refused for straying sends the bisection below it, as one taken: on the
+            // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its
+            // fewer peer 18; without this the bisection climbed past the counts below.)
+            for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
+                const int mid = lo + (hi - lo) / 2;
+                if (takes(mid) || strayedAt_.count(mid) > 0)
+                    hi = mid;
+                else
+                    lo = mid;
+            }
         }
         descend(0);
-        // The same descent with the trials' breaks moved to where the error is (SplineFitOptions::
-        // equidistributions, kEquidistributions).
-        alt_.equidistributions = kEquidistributions;
-        missedBy_.clear();  // (other trials)
-        descend(kLookBelow);
-        alt_.equidistributions = 0;
+        // Where the count still leaves fewer than kNoiseRowsPerPoint points per control point (and
+        // in a Reading::Descended), the same descent with the trials' breaks moved to where the
+        // error is (SplineFitOptions::equidistributions, kEquidistributions).
+        const int reached = fit_.curve.pointCount() - countOffset_;
+        if (reached * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended) {
+            alt_.equidistributions = kEquidistributions;
+            missedBy_.clear();  // (other trials)
+            descend(kLookBelow);
+            alt_.equidistributions = 0;
+        }
         if (byMinimax_) polish();
         alt_.trialCache = nullptr;  // (trialCache is this call's)
     }

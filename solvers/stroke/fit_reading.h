@@ -47,7 +47,7 @@ enum class Reading {
     // count it takes (the error-driven fit only where the search finds nothing).
     Searched,
     // The error-driven fit, then the minimax trials bisecting every count below its own and the
-    // equidistributed descent (as every reading's minimax trials since session 50). For the
+    // equidistributed descent (as where the count leaves few points per control point, kNoiseRowsPerPoint). For the
     // pieces between corners: the search cost more than it found there. On the development strokes
     // (unistroke-report --fit-dev, valgrind --tool=callgrind, the whole program, fitStroke 96 % of
     // it): the pieces searched 50,835 control points for 34.8 G instructions (105,391 search
