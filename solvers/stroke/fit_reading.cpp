@@ -718,8 +718,7 @@ private:
         }
     }
 
-    // (References, not a structured binding: clang 14, the sanitizer build's compiler, does not let
-    // lambdas capture a structured binding.)
+    // The prepared stroke and the caller's result (references to the caller's storage).
     const Stroke& stroke_;
     const FitOptions& options_;
     const ConditionedStroke& cs_;
