@@ -45,6 +45,7 @@ ours the curve's points (closed: minus the 3 wrapped repeats); splprep len(t) - 
 minus k); OCCT its poles (no periodic mode: a loop is passed with its first point repeated, and is
 clamped at the seam).
 """
+import argparse
 import csv
 import json
 import os
@@ -290,50 +291,31 @@ def load_quickdraw(count):
 
 def main():
     warnings.simplefilter("ignore")  # FITPACK's iteration-limit warnings; the deviation is measured anyway
-    argv = sys.argv[1:]
-    mode = "both"
-    if "--mode" in argv:
-        mode = argv[argv.index("--mode") + 1]
-        argv.remove("--mode")
-        argv.remove(mode)
-    if mode not in ("default", "minimize", "both"):
-        sys.exit("--mode: must be default, minimize or both")
-    quickdraw = 0
-    if "--quickdraw" in argv:
-        i = argv.index("--quickdraw")
-        quickdraw = int(argv[i + 1])
-        del argv[i:i + 2]
-    dev_gesture = None
-    if "--dev" in argv:
-        i = argv.index("--dev")
-        dev_gesture = argv[i + 1]
-        del argv[i:i + 2]
-    resolution = None
-    if "--resolution" in argv:
-        i = argv.index("--resolution")
-        resolution = float(argv[i + 1])
-        del argv[i:i + 2]
-    held_out_gesture = None
-    if "--held-out" in argv:
-        i = argv.index("--held-out")
-        held_out_gesture = argv[i + 1]
-        del argv[i:i + 2]
-    args = [a for a in argv if not a.startswith("--")]
-    build = args[0] if args else "build-stroke"
-    check = "--check" in argv
-    timing = "--time" in argv
+    parser = argparse.ArgumentParser(description="Control points at equal deviation: ours, splprep and OCCT "
+                                     "(see the module's docstring).")
+    parser.add_argument("build", nargs="?", default="build-stroke", help="build directory (default build-stroke)")
+    parser.add_argument("--mode", choices=("default", "minimize", "both"), default="both")
+    parser.add_argument("--check", action="store_true")
+    parser.add_argument("--no-real", action="store_true")
+    parser.add_argument("--time", dest="timing", action="store_true")
+    parser.add_argument("--quickdraw", type=int, default=0, metavar="N")
+    parser.add_argument("--dev", dest="dev_gesture", metavar="GESTURE")
+    parser.add_argument("--held-out", dest="held_out_gesture", metavar="GESTURE")
+    parser.add_argument("--resolution", type=float, metavar="Q")
+    opt = parser.parse_args()
+    build, mode, check, timing, resolution = opt.build, opt.mode, opt.check, opt.timing, opt.resolution
     strokes = json.loads(subprocess.run([f"{build}/stroke-export"], check=True, capture_output=True, text=True).stdout)
     by_name = {s["name"]: s for s in strokes}
     # (name, stroke, tolerance or None, drawn in whole pixels: the real strokes)
     items = [(s["name"], s["stroke"], None, False) for s in strokes if s["name"] != "s-curve-clean"]
     items += [(f"{name}@{tol:g}", by_name[name]["stroke"], tol, False) for name, tol in SWEEP if name in by_name]
-    if "--no-real" not in argv:
+    if not opt.no_real:
         items += [(s["name"], s["stroke"], None, True) for s in load_real()]
-    items += [(s["name"], s["stroke"], None, True) for s in load_quickdraw(quickdraw)]
-    if dev_gesture:
-        items += [(s["name"], s["stroke"], None, True) for s in load_dev(dev_gesture)]
-    if held_out_gesture:
-        items += [(s["name"], s["stroke"], None, True) for s in load_dev(held_out_gesture, HELD_OUT_SUBJECTS)]
+    items += [(s["name"], s["stroke"], None, True) for s in load_quickdraw(opt.quickdraw)]
+    if opt.dev_gesture:
+        items += [(s["name"], s["stroke"], None, True) for s in load_dev(opt.dev_gesture)]
+    if opt.held_out_gesture:
+        items += [(s["name"], s["stroke"], None, True) for s in load_dev(opt.held_out_gesture, HELD_OUT_SUBJECTS)]
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
