@@ -61,7 +61,7 @@ bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, doubl
         pc.extent = cs.extent;
         pc.noise = cs.noise;
         pc.smoothingShift = cs.smoothingShift;
-        std::vector<Vec3> fitPoints;
+        std::vector<Vec3> fitPoints, drawn;
         std::vector<int> rows;
         for (int k = a, r = 0; k <= b; ++k) {
             const int i = at(k);
@@ -71,6 +71,7 @@ bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, doubl
             pc.time.push_back(static_cast<double>(r));
             pc.arc.push_back(k == a ? 0.0 : pc.arc.back() + (cs.points[i] - cs.points[at(k - 1)]).norm());
             fitPoints.push_back(p.fitPoints[i]);
+            drawn.push_back(p.drawn[i]);
             if (row[i] || k == a || k == b) rows.push_back(k - a);
         }
         for (int d : cs.dropped) {
@@ -79,7 +80,7 @@ bool fitPiecesSearched(const Prepared& p, const std::vector<int>& corners, doubl
         }
         std::sort(pc.dropped.begin(), pc.dropped.end());
         if (pc.size() < 2) return false;
-        const Prepared sp{sub, p.options, pc, fitPoints, rows, keep};
+        const Prepared sp{sub, p.options, pc, fitPoints, rows, keep, drawn};
         FitResult r;
         r.tolerance = tolerance;
         FitPass fit;

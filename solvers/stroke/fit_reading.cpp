@@ -133,9 +133,9 @@ class ReadingFit {
 public:
     ReadingFit(const Prepared& p, const std::vector<int>& corners, Reading reading, FitResult& res, FitPass& fit,
                std::vector<int>& outliers, int ceiling)
-        : stroke_(p.stroke), options_(p.options), cs_(p.cs), fitPoints_(p.fitPoints), samples_(p.samples),
-          keep_(p.keep), corners_(corners), reading_(reading), res_(res), fit_(fit), outliers_(outliers),
-          ceiling_(ceiling)
+        : stroke_(p.stroke), options_(p.options), cs_(p.cs), fitPoints_(p.fitPoints), drawn_(p.drawn),
+          samples_(p.samples), keep_(p.keep), corners_(corners), reading_(reading), res_(res), fit_(fit),
+          outliers_(outliers), ceiling_(ceiling)
     {
         sopt_.tolerance = std::max(kMinInnerShare * res_.tolerance, res_.tolerance - cs_.smoothingShift);
     }
@@ -279,7 +279,8 @@ private:
         const size_t want =
             std::min(static_cast<size_t>(cs_.size()), static_cast<size_t>(rowsPer_) * static_cast<size_t>(count));
         if (rows.size() >= want || want < 2)
-            return fitConditioned(cs_, fitPoints_, corners_, rows, alt_, nullptr, &chain_);
+            return fitConditioned(cs_, *trialPoints_, corners_, rows, alt_, nullptr,
+                                  trialPoints_ == &drawn_ ? &drawnChain_ : &chain_);
         // The rows given and `want` conditioned points spread evenly over the stroke's indices.
         dense_ = rows;
         for (size_t k = 0; k < want; ++k)
@@ -287,7 +288,8 @@ private:
                 std::lround(static_cast<double>(k) * (cs_.size() - 1) / static_cast<double>(want - 1))));
         std::sort(dense_.begin(), dense_.end());
         dense_.erase(std::unique(dense_.begin(), dense_.end()), dense_.end());
-        return fitConditioned(cs_, fitPoints_, corners_, dense_, alt_, nullptr, &chain_);
+        return fitConditioned(cs_, *trialPoints_, corners_, dense_, alt_, nullptr,
+                              trialPoints_ == &drawn_ ? &drawnChain_ : &chain_);
     }
 
     // A trial that cannot make a curve is a count that does not fit, not a failed stroke: a
@@ -584,6 +586,19 @@ private:
     // same descent with the breaks equidistributed. (The
     // counts do not fall monotonically: the bisection reaches counts far below that a descent
     // from the top stops short of.)
+    // The trials fit the drawn points (Prepared::drawn), their rounds aiming at the tolerance
+    // itself: it bounds the distance to what was drawn, which Lawson's rounds then minimize.
+    // Then, down from the count reached, the same descent on the smoothed points the least
+    // squares fits (their rounds aiming at the tolerance less the smoothing's shift), which fit
+    // some strokes with fewer. Until session 51 the trials ran on the smoothed points alone: a
+    // count whose curve came within 0.85 of them missed a drawn sample by 1.10 (question-s04m7 at
+    // one pixel: 18 control points, OCCT 17; now 13). On the development strokes
+    // (unistroke-report --fit-dev, fit ms the least of three runs): 50,233 control points in
+    // 2,068-2,121 ms before; on the drawn points alone 46,775 in 1,729-1,796 ms, but 252 strokes
+    // took more; the drawn points' pass and then the smoothed points' (without the bisection)
+    // 45,964 in 2,492-2,561 ms, 1,653 strokes fewer and 16 more (both with the bisection, the
+    // smoothed points' first: 46,026 in 2,710 ms). A trial on uniform breaks too (OCCT's) where
+    // the others miss: 45,868-45,937 for 5-7 % more time, not kept.
     void minimaxTrials()
     {
         const int least = cs_.closed ? 5 : 4;
@@ -598,6 +613,27 @@ private:
         alt_.trialCache = &trialCache;
         alt_.averagedStopWhenWithin = false;
         replacing_ = true;
+        // First on the drawn points, then down from the count reached on the smoothed ones (the
+        // note above). (The counts the search missed were missed on the smoothed points.)
+        const double smoothedWithin = alt_.minimaxWithin;
+        missedBy_.clear();
+        strayedAt_.clear();
+        trialPoints_ = &drawn_;
+        alt_.minimaxWithin = res_.tolerance;
+        minimaxPass(least, true);
+        trialPoints_ = &fitPoints_;
+        alt_.minimaxWithin = smoothedWithin;
+        missedBy_.clear();  // (other trials)
+        strayedAt_.clear();
+        minimaxPass(least, false);
+        if (byMinimax_) polish();
+        alt_.trialCache = nullptr;  // (trialCache is this call's)
+    }
+
+    // One pass of the minimax trials on trialPoints_ (see minimaxTrials), without the bisection
+    // unless `full`.
+    void minimaxPass(int least, bool full)
+    {
         const int current = fit_.curve.pointCount() - countOffset_;
         // Bisect below the count, with FITPACK's knots tried too, where the count leaves fewer than
         // kNoiseRowsPerPoint conditioned points per control point, and always on a piece read by
@@ -613,7 +649,7 @@ private:
         // where the count follows the noise.)
         const bool bisect = current * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended;
         alt_.insertedTrials = bisect;
-        if (bisect) {
+        if (bisect && full) {
             // (A count refused for straying sends the bisection below it, as one taken: on the
             // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its
             // fewer peer 18; without this the bisection climbed past the counts below.)
@@ -636,8 +672,6 @@ private:
             descend(kLookBelow);
             alt_.equidistributions = 0;
         }
-        if (byMinimax_) polish();
-        alt_.trialCache = nullptr;  // (trialCache is this call's)
     }
 
     // (No count above the ceiling is tried: the caller takes none.)
@@ -723,6 +757,8 @@ private:
     const FitOptions& options_;
     const ConditionedStroke& cs_;
     const std::vector<Vec3>& fitPoints_;
+    const std::vector<Vec3>& drawn_;
+    const std::vector<Vec3>* trialPoints_ = &fitPoints_;
     const std::vector<int>& samples_;
     const std::vector<char>& keep_;
     const std::vector<int>& corners_;
@@ -754,6 +790,7 @@ private:
     // The chain every fit below shares (the same points, corners and chord parameters; the rows
     // and options differ), built by the first.
     Chain chain_;
+    Chain drawnChain_;
     int round_ = 0;
     int firmer_ = 0;  // fairing raised this many times
     bool found_ = false, refined_ = false;

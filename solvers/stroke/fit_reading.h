@@ -29,8 +29,8 @@ constexpr double kCheckSpacingShare = 0.5;
 constexpr double kStrayChordShare = 1.0 / 6.0;
 
 // What fitStroke has made of a stroke before the least squares: the raw stroke, the options, the
-// conditioned stroke with the points the least squares fits, the dynamic threshold's rows and the
-// raw samples kept (not dropped).
+// conditioned stroke with the points the least squares fits, the dynamic threshold's rows, the
+// raw samples kept (not dropped) and the conditioned points as drawn.
 struct Prepared {
     const Stroke& stroke;
     const FitOptions& options;
@@ -38,6 +38,9 @@ struct Prepared {
     const std::vector<Eigen::Vector3d>& fitPoints;
     const std::vector<int>& samples;
     const std::vector<char>& keep;
+    /// The conditioned points before smoothing (one per conditioned point: the drawn samples, merged
+    /// near-duplicates as their centroid), which the minimax trials fit (ReadingFit::minimaxTrials).
+    const std::vector<Eigen::Vector3d>& drawn;
 };
 
 // How a reading looks for fewer control points than the error-driven fit's (where it looks:

@@ -50,7 +50,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     if (!(res.tolerance > 0.0) || !std::isfinite(res.tolerance)) throw GeometryError("tolerance: must be positive and finite");
 
     std::vector<int> corners, samples;
-    std::vector<Vec3> fitPoints;
+    std::vector<Vec3> fitPoints, drawn;
     {
         // The features are freed before the least squares, which can then reuse their memory.
         // The features' arms are widened for the noise that is there (widenForNoise), so that jitter
@@ -77,11 +77,11 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
         // smoothingShare, noiseMultiple): it removes jitter but never the shape the tolerance keeps.
         // The smoothed points serve the parameterization, the dynamic threshold and recognition
         // (cs.points, as before); the least squares gets them pulled back to within the budget of
-        // the drawn points.
+        // the drawn points, and the minimax trials the drawn points themselves (Prepared::drawn).
         const double budget = std::min(copt.smoothingShare * res.tolerance, copt.noiseMultiple * cs.noise);
-        std::vector<Vec3> drawn = cs.points;
+        drawn = cs.points;
         smoothPreservingCorners(cs, corners, copt.smoothingPasses);
-        fitPoints = limitSmoothing(std::move(drawn), cs.points, budget, &cs.smoothingShift);
+        fitPoints = limitSmoothing(drawn, cs.points, budget, &cs.smoothingShift);
         if (options.dynamicSampling) {
             // The threshold reads the hand's speed on the smoothed path: measured on the drawn
             // points, jitter lengthens every window's path (a slow hand's most), and the jittery
@@ -104,7 +104,7 @@ FitResult fitStroke(const Stroke& stroke, const FitOptions& options)
     for (int i : cs.dropped) keep[static_cast<size_t>(i)] = 0;
     FitPass fit;
     std::vector<int> outliers;  // the noise's outliers (noiseOutliers) of the fit taken
-    const Prepared prepared{stroke, options, cs, fitPoints, samples, keep};
+    const Prepared prepared{stroke, options, cs, fitPoints, samples, keep, drawn};
     // A stroke with corners (other than a loop with one, which the search reads whole) gets the
     // minimax trials piece by piece, the corners kept (fitPiecesSearched), where every
     // piece fits: every kept raw sample within the tolerance (no more outliers than the pieces'),
