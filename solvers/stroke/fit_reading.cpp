@@ -124,6 +124,9 @@ constexpr double kLookMissShare = 1.1;
 // control point instead of 4: the same control points on the development strokes at the default
 // tolerance (50,233) and at one pixel (BM_StrokeRecorded/0 14.20), the flourish not bisected.
 constexpr int kNoiseRowsPerPoint = 8;
+// The minimax trials fit the drawn points first where the count leaves fewer than this many
+// conditioned points per control point (minimaxTrials' note).
+constexpr int kDrawnRowsPerPoint = 16;
 
 namespace {
 
@@ -598,7 +601,13 @@ private:
     // took more; the drawn points' pass and then the smoothed points' (without the bisection)
     // 45,964 in 2,492-2,561 ms, 1,653 strokes fewer and 16 more (both with the bisection, the
     // smoothed points' first: 46,026 in 2,710 ms). A trial on uniform breaks too (OCCT's) where
-    // the others miss: 45,868-45,937 for 5-7 % more time, not kept.
+    // the others miss: 45,868-45,937 for 5-7 % more time, not kept. On a densely sampled stroke
+    // the drawn points' pass gains nothing and costs a second pass on every point: the 1,000-sample
+    // flourishes of BM_StrokeFitWarm kept their 21 / 19 control points for 328 -> 528 us clean;
+    // where the count leaves kDrawnRowsPerPoint points per control point or more the smoothed
+    // points' pass runs alone, as before (334 / 478 us; the development strokes' 45,964 alike).
+    // (At kNoiseRowsPerPoint, 8, seven of the 750 development drawings of the peers' five gestures
+    // took 1-2 more at one pixel, circle-s04m10 8 -> 10.)
     void minimaxTrials()
     {
         const int least = cs_.closed ? 5 : 4;
@@ -614,27 +623,38 @@ private:
         alt_.averagedStopWhenWithin = false;
         replacing_ = true;
         // First on the drawn points, then down from the count reached on the smoothed ones (the
-        // note above). (The counts the search missed were missed on the smoothed points.)
+        // note above), where the count leaves fewer than kNoiseRowsPerPoint points per control
+        // point (and in a Reading::Descended); elsewhere on the smoothed points alone.
+        // (The counts the search missed were missed on the smoothed points.)
         const double smoothedWithin = alt_.minimaxWithin;
-        missedBy_.clear();
-        strayedAt_.clear();
-        trialPoints_ = &drawn_;
-        alt_.minimaxWithin = res_.tolerance;
-        minimaxPass(least, true);
-        trialPoints_ = &fitPoints_;
-        alt_.minimaxWithin = smoothedWithin;
-        missedBy_.clear();  // (other trials)
-        strayedAt_.clear();
-        minimaxPass(least, false);
+        const bool drawnFirst = leavesFewPerPoint(kDrawnRowsPerPoint);
+        if (drawnFirst) {
+            missedBy_.clear();
+            strayedAt_.clear();
+            trialPoints_ = &drawn_;
+            alt_.minimaxWithin = res_.tolerance;
+            minimaxPass(least, true);
+            trialPoints_ = &fitPoints_;
+            alt_.minimaxWithin = smoothedWithin;
+            missedBy_.clear();  // (other trials)
+            strayedAt_.clear();
+        }
+        minimaxPass(least, !drawnFirst);
         if (byMinimax_) polish();
         alt_.trialCache = nullptr;  // (trialCache is this call's)
+    }
+
+    // Whether the count taken leaves fewer than `perPoint` conditioned points per control point,
+    // or the reading is a Reading::Descended.
+    bool leavesFewPerPoint(int perPoint = kNoiseRowsPerPoint) const
+    {
+        return (fit_.curve.pointCount() - countOffset_) * perPoint >= cs_.size() || reading_ == Reading::Descended;
     }
 
     // One pass of the minimax trials on trialPoints_ (see minimaxTrials), without the bisection
     // unless `full`.
     void minimaxPass(int least, bool full)
     {
-        const int current = fit_.curve.pointCount() - countOffset_;
         // Bisect below the count, with FITPACK's knots tried too, where the count leaves fewer than
         // kNoiseRowsPerPoint conditioned points per control point, and always on a piece read by
         // descent (no search there): a count whose trial on averaged knots misses is tried on FITPACK's knots too
@@ -647,13 +667,13 @@ private:
         // in the search before them too: 56,470; FITPACK's knots alone in the minimax trials
         // (no averaged trial first): 56,563. (Those figures are of the rule before session 50,
         // where the count follows the noise.)
-        const bool bisect = current * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended;
+        const bool bisect = leavesFewPerPoint();
         alt_.insertedTrials = bisect;
         if (bisect && full) {
             // (A count refused for straying sends the bisection below it, as one taken: on the
             // development circles 4,217 -> 4,208 control points, circle-s02m6 23 -> 16, its
             // fewer peer 18; without this the bisection climbed past the counts below.)
-            for (int lo = least - 1, hi = below(current); hi - lo > 1;) {
+            for (int lo = least - 1, hi = below(fit_.curve.pointCount() - countOffset_); hi - lo > 1;) {
                 const int mid = lo + (hi - lo) / 2;
                 if (takes(mid) || strayedAt_.count(mid) > 0)
                     hi = mid;
@@ -665,8 +685,7 @@ private:
         // Where the count still leaves fewer than kNoiseRowsPerPoint points per control point (and
         // in a Reading::Descended), the same descent with the trials' breaks moved to where the
         // error is (SplineFitOptions::equidistributions, kEquidistributions).
-        const int reached = fit_.curve.pointCount() - countOffset_;
-        if (reached * kNoiseRowsPerPoint >= cs_.size() || reading_ == Reading::Descended) {
+        if (leavesFewPerPoint()) {
             alt_.equidistributions = kEquidistributions;
             missedBy_.clear();  // (other trials)
             descend(kLookBelow);
