@@ -291,7 +291,9 @@ TEST(MainWindow, AStrokesLeftOutSamplesAreReported)
 // the one that strays least where none it tried stays near) is reported in the window too, not only
 // by the CLI's "stray". The strokes: the development strokes people drew whose fit strays
 // (unistroke-report --fit-dev, session 48: loops with corners, across their closing gap), from
-// tests/data/unistrokes, pixels as plane millimetres.
+// tests/data/unistrokes, pixels as plane millimetres. Since session 51 (the minimax trials fit the
+// drawn points) none of those eight strays in the window; the last three, found by fitting every
+// stroke of the four subjects in the window, do (6.11, 4.67 and 1.14).
 TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
 {
     startApplication();
@@ -300,9 +302,10 @@ TEST(MainWindow, AStrokeWhoseCurveStraysBetweenSamplesIsReported)
     const model::PlaneFrame frame = doc.model().find(1)->frame;
     doc.select(1);
     const std::vector<std::tuple<std::string, std::string, std::string, int>> strokes = {
-        {"s02", "delete_mark", "slow", 4}, {"s02", "delete_mark", "medium", 4}, {"s03", "star", "fast", 8},
-        {"s03", "x", "fast", 9},           {"s05", "triangle", "fast", 10},     {"s06", "delete_mark", "slow", 3},
-        {"s06", "star", "fast", 8},        {"s02", "rectangle", "slow", 10}};
+        {"s02", "delete_mark", "slow", 4}, {"s02", "delete_mark", "medium", 4},   {"s03", "star", "fast", 8},
+        {"s03", "x", "fast", 9},           {"s05", "triangle", "fast", 10},       {"s06", "delete_mark", "slow", 3},
+        {"s06", "star", "fast", 8},        {"s02", "rectangle", "slow", 10},      {"s03", "triangle", "fast", 7},
+        {"s05", "x", "slow", 7},           {"s05", "right_sq_bracket", "fast", 2}};
     // (The four subjects' logs read once, by the tests' loader.)
     const std::vector<stroketest::Recording> recordings =
         stroketest::loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {"s02", "s03", "s05", "s06"});
