@@ -178,6 +178,9 @@ private:
         return b;
     }
 
+    // What the minimax rounds aim for (SplineFitOptions::minimaxWithin; 0: the tolerance).
+    double roundsTarget() const { return opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance; }
+
     // The trial of nCtrl control points on the averaged knots, and where it misses and
     // SplineFitOptions::insertedTrials asks, the trial on FITPACK's (the better kept); taken from
     // the cache when a trial of the same count and options made it before.
@@ -200,7 +203,7 @@ private:
         // points that is less than the tolerance. Tried only beyond the tolerance until session 51:
         // 46,039 against 45,964 control points on the development strokes, with the minimax trials
         // on the drawn points first: fit_reading.cpp, minimaxTrials.)
-        const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
+        const double within = roundsTarget();
         Trial best = trial(nCtrl, nullptr);
         if (opt_.insertedTrials && kept && best.error > within) {
             const std::vector<double> nb = insertedBreaks(nCtrl);
@@ -377,7 +380,7 @@ private:
         w.assign(uc_.size(), 1.0);
         dist.assign(uc_.size(), 0.0);
         Spline c = t.curve;
-        const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
+        const double within = roundsTarget();
         for (int round = 0;; ++round) {
             // (The last round's curve is measured without moving the parameters: no round
             // follows to use them.)
@@ -418,7 +421,7 @@ private:
     // missed trial, 56,824; from each trial before, 56,706.)
     void equidistribute(int nCtrl, Trial& best)
     {
-        const double within = opt_.minimaxWithin > 0.0 ? opt_.minimaxWithin : opt_.tolerance;
+        const double within = roundsTarget();
         if (opt_.equidistributions <= 0 || opt_.averagedControlPoints <= 0 || !std::isfinite(best.error) ||
             best.error <= within || best.params.empty())
             return;
