@@ -51,8 +51,12 @@ public:
 
     /// Resizes the window so that the 3D viewport (the GL area) is width x height pixels. Where
     /// the window would then not fit its screen, the docks give way (tabbed in one column, or
-    /// hidden) and the status bar says so; the window is moved onto the screen.
+    /// hidden) and the status bar says so; the window is moved onto the screen. On a hidden
+    /// window this happens once it is shown (from the event loop after show()).
     void setViewportSize(int width, int height);
+    /// The size of the viewport SoQt renders into, in the widget's (logical) pixels; the GL area's
+    /// own size (viewport()) follows it one event later.
+    QSize renderedViewportSize() const;
     /// Renders now (under Xvfb no expose may come to trigger the first frame, ../shared/NOTES.md).
     void renderViewport();
     /// Renders and reads the GL framebuffer (QWidget::grab() is black for a GL area).
@@ -101,6 +105,8 @@ public:
 
 protected:
     void closeEvent(QCloseEvent* event) override;
+    /// Applies a viewport size asked for while the window was hidden.
+    void showEvent(QShowEvent* event) override;
 
 private:
     void createActions();
@@ -110,7 +116,9 @@ private:
     const model::Entity* selectedSolid() const;
     /// Gives `solid` a new recipe (undoable; it converts again), the outcome in the status bar.
     void changeSolid(model::EntityId solid, const model::SolidRecipe& recipe);
-    void resizeViewport(int width, int height);
+    /// Resizes the window until the GL area is width x height, both as drawn and as read back; false
+    /// when that is not reached within kViewportSettleMs.
+    bool resizeViewport(int width, int height);
     /// True when the window fits its screen's available area (moving it onto the screen if need be).
     bool fitScreen();
     void createDocks();
@@ -155,6 +163,8 @@ private:
     model::EntityId curveNear(const QPoint& position) const;
 
     SoQtExaminerViewer* viewer_ = nullptr;
+    /// A viewport size asked for while the window was hidden (setViewportSize), applied on show.
+    std::optional<QSize> pendingViewportSize_;
     std::unique_ptr<ViewNavigation> navigation_;
     SketchDocument* document_ = nullptr;
     EntityListDock* entities_ = nullptr;

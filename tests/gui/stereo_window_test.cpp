@@ -128,6 +128,9 @@ protected:
         window_->setAutomated(true);
         window_->show();
         window_->setViewportSize(kViewportWidth, kViewportHeight);
+        ASSERT_EQ(window_->viewport()->size(), QSize(kViewportWidth, kViewportHeight));
+        ASSERT_EQ(window_->renderedViewportSize(), QSize(kViewportWidth, kViewportHeight))
+            << "the picture would be drawn at another size than it is read";
         scene_ = sphereScene();
         scene_->ref();
         window_->viewer()->setSceneGraph(scene_);
@@ -140,12 +143,16 @@ protected:
     }
     ui::StereoExaminerViewer* viewer() { return static_cast<ui::StereoExaminerViewer*>(window_->viewer()); }
     void select(ui::StereoMode mode) { window_->action(ui::StereoMenu::actionName(mode))->trigger(); }
-    /// The viewport's picture, and the whole window saved beside it for a person to look at.
+    /// The viewport's picture, and the whole window saved beside it for a person to look at. The
+    /// viewport must still have its size: every expected position below is measured from it.
     QImage shot(const char* name)
     {
         if (const char* dir = std::getenv("SCULPTLINE_STEREO_SHOTS"); dir && *dir)
             guitest::saveWindowShot(*window_, QString::fromLocal8Bit(dir) + "/" + name + ".png");
-        return window_->grabViewport();
+        EXPECT_EQ(window_->renderedViewportSize(), QSize(kViewportWidth, kViewportHeight));
+        QImage image = window_->grabViewport();
+        EXPECT_EQ(image.size(), QSize(kViewportWidth, kViewportHeight));
+        return image;
     }
 
     std::unique_ptr<ui::MainWindow> window_;
