@@ -61,6 +61,11 @@ struct FitOptions {
     /// corner, or from its seam), and the reading with fewer control points is taken
     /// (stroke_fitter.cpp). false: the detected corners alone decide (before session 42).
     bool bothLoopReadings = true;
+    /// An open stroke with a corner a few points from an end (a hook where the pen landed or
+    /// lifted) is fitted without that corner too, and that reading taken where it needs fewer
+    /// control points; the corner is still reported (stroke_fitter.cpp, kEndHookPoints). false:
+    /// the detected corners alone decide (before session 52).
+    bool endHookReading = true;
     /// After the search, counts below the one taken are tried with minimax trials (Lawson's
     /// reweighted least squares, SplineFitOptions::minimaxRounds): the tolerance bounds the
     /// largest distance, which least squares does not minimize, and on strokes whose noise is near

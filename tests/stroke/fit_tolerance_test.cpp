@@ -215,6 +215,48 @@ TEST(FitTolerance,
     EXPECT_EQ(tried, 3);
 }
 
+// Given the development pigtails whose last or first few samples hook into a corner (s02 fast 2 at
+// one pixel: OCCT 11 control points, ours 13 with the hook's corner kept; s02 slow 8 and s06 fast 2
+// at the default tolerance: 19 each), when the reading without the end corner is fitted too
+// (FitOptions::endHookReading), then the counts drop (10, 15, 15 measured), every kept sample is within the
+// tolerance, the corner is still reported, and without that reading the counts are as before.
+TEST(FitTolerance,
+     GivenRealPigtailsEndingInAHook_WhenTheEndCornerIsLeftOutToo_ThenFewerControlPointsAndTheCornerReported)
+{
+    struct Case {
+        const char* subject;
+        const char* speed;
+        int number;
+        double resolution;  // 0: the default tolerance
+        int before;         // control points with the end corner kept
+        int most;           // at most this many with the reading without it (OCCT's 11 at one pixel)
+    };
+    const Case cases[] = {
+        {"s02", "fast", 2, 1.0, 13, 11}, {"s02", "slow", 8, 0.0, 19, 18}, {"s06", "fast", 2, 0.0, 19, 18}};
+    int tried = 0;
+    for (const Recording& rec : loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {"s02", "s06"})) {
+        if (rec.gesture != "pigtail") continue;
+        for (const Case& c : cases) {
+            if (rec.subject != c.subject || rec.speed != c.speed || rec.number != c.number) continue;
+            ++tried;
+            FitOptions options;
+            options.resolution = c.resolution;
+            FitOptions kept = options;
+            kept.endHookReading = false;
+            const FitResult r = fitStroke(rec.stroke, options);
+            const FitResult k = fitStroke(rec.stroke, kept);
+            const std::string name = rec.subject + " " + rec.speed + " " + std::to_string(rec.number);
+            ASSERT_TRUE(r.converged) << name << ": " << r.maxError;
+            EXPECT_EQ(k.curve.pointCount(), c.before) << name;
+            EXPECT_LE(r.curve.pointCount(), c.most) << name;
+            EXPECT_LE(maxDeviation(r.curve, keptSamples(rec.stroke, r)), r.tolerance + kMeasureAgreement) << name;
+            EXPECT_EQ(r.corners, k.corners) << name;
+            EXPECT_FALSE(r.corners.empty()) << name;
+        }
+    }
+    EXPECT_EQ(tried, 3);
+}
+
 TEST(FitTolerance, GivenRealCircles_WhenMinimaxTrialsFollowTheSearch_ThenNeverMoreControlPointsAndTheToleranceHeld)
 {
     // Of the circles' control points, the least saving taken as a gain (measured 3.8 %: 5,176 ->
