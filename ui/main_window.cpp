@@ -732,8 +732,8 @@ bool MainWindow::fitScreen()
 void MainWindow::setViewportSize(int width, int height)
 {
     // A hidden window's GL area has no size of its own yet (Qt's default 100 x 30, whatever the
-    // window's): measured then, every correction grew the window (to 5056 x 4816). The size is
-    // taken once the window is shown.
+    // window's): measured then, every correction grew the window (gui_surface_display drew its
+    // picture at 13928 x 11138). The size is taken once the window is shown.
     if (!isVisible()) {
         pendingViewportSize_ = QSize(width, height);
         return;
