@@ -41,12 +41,26 @@ struct AveragedTrialCache::State {
         std::array<double, 6> options;
     };
     std::map<int, Made> trials;
+    // Each count's last trial (its best, as returned), and the removal trials' seeds: the last
+    // trials of the counts the caller named (AveragedTrialCache::seed; AveragedFit::removeFrom).
+    std::map<int, detail::Trial> last, seeds;
 };
 
 AveragedTrialCache::AveragedTrialCache() : state(std::make_unique<State>())
 {
 }
 AveragedTrialCache::~AveragedTrialCache() = default;
+
+void AveragedTrialCache::seed(int count)
+{
+    const auto it = state->last.find(count);
+    if (it != state->last.end()) state->seeds[count] = it->second;
+}
+
+bool AveragedTrialCache::seeded(int count) const
+{
+    return state->seeds.count(count) > 0;
+}
 
 namespace detail {
 namespace {
@@ -94,7 +108,12 @@ public:
         bool same = state_->closed == in_.closed && state_->samples == S_ && state_->params == u_;
         for (int k = 0; same && k < nS; ++k) same = state_->points[k] == X_[S_[k]];
         if (same) return;
+        // (The seeds of the removal trials carry over to other points on the same rows: the breaks
+        // and parameters of a count taken on the drawn points start those on the smoothed ones.)
+        std::map<int, Trial> seeds;
+        if (state_->closed == in_.closed && state_->samples == S_) seeds = std::move(state_->seeds);
         *state_ = {};
+        state_->seeds = std::move(seeds);
         state_->samples = S_;
         state_->params = u_;
         state_->closed = in_.closed;
@@ -108,8 +127,16 @@ public:
         const int least = in_.closed ? 5 : 4;
         int lo = least, hi = std::max(least, static_cast<int>(S_.size()) - (in_.closed ? 1 : 0));
         if (opt_.averagedControlPoints > 0) lo = hi = std::clamp(opt_.averagedControlPoints, least, hi);
-        Trial best = made(hi);
-        equidistribute(hi, best);
+        Trial best;
+        if (opt_.removalTrials > 0 && opt_.averagedControlPoints > 0) {
+            removeFrom(hi, best);
+        } else {
+            best = made(hi);
+            equidistribute(hi, best);
+        }
+        if (opt_.trialCache && opt_.averagedControlPoints > 0 && !opt_.averagedResume && !opt_.averagedStopWhenWithin &&
+            std::isfinite(best.error) && !best.params.empty())
+            state_->last[hi] = best;
         while (lo < hi) {
             const int mid = (lo + hi) / 2;
             Trial t = trial(mid, nullptr);
@@ -406,6 +433,42 @@ private:
             for (size_t k = firstK; k < endK; ++k) w[k] = std::max(kMinimaxWeightFloor, w[k] * scale);
             solve(c, X_, S_, uc_, opt_.fairing, &w);
         }
+    }
+
+    // SplineFitOptions::removalTrials: the seed of one control point more (AveragedTrialCache::seed)
+    // less one break, from its parameters, in turn until a trial's samples come within what the
+    // rounds aim for (the best kept). A curve that fits has its breaks where the shape needs them,
+    // which averaged knots (the samples' density) and FITPACK's (each knot placed once, never moved)
+    // need not be. The break removed first is the one between the two neighbouring spans whose
+    // largest distances sum the least: the most room for the curve to widen them. (Ranked instead by
+    // a least squares without each break, from the seed's parameters: fewer control points for as
+    // many trials, more for as many instructions; see kRemovalTrials.)
+    void removeFrom(int nCtrl, Trial& best)
+    {
+        const auto it = state_->seeds.find(nCtrl + 1);
+        if (it == state_->seeds.end())
+            throw GeometryError("averaged fit: no trial of one control point more to start from");
+        const Trial seed = it->second;  // (a copy: the trials below may replace the map's entries)
+        const Spline& b = seed.curve;
+        const int spans = b.spanCount();
+        std::vector<double> e(static_cast<size_t>(spans), 0.0);
+        for (size_t k = 0; k < seed.params.size(); ++k) {
+            const int j = b.spanOf(b.wrap(seed.params[k]));
+            e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], seed.params[k]));
+        }
+        // Break r joins spans r - 1 and r: an open curve's interior breaks; a closed curve's every
+        // break but b_0 = 0, its seam (removing it would move the parameters' origin).
+        std::vector<std::pair<double, int>> rank;
+        for (int r = 1; r < spans; ++r) rank.emplace_back(e[r - 1] + e[r], r);
+        std::sort(rank.begin(), rank.end());
+        const double within = roundsTarget();
+        for (int t = 0; t < opt_.removalTrials && t < static_cast<int>(rank.size()) && !(best.error <= within); ++t) {
+            std::vector<double> nb = b.breaks;
+            nb.erase(nb.begin() + rank[t].second);
+            Trial c = trial(nCtrl, &nb, &seed.params);
+            if (c.error < best.error) best = std::move(c);
+        }
+        if (!std::isfinite(best.error)) throw GeometryError("averaged fit: no break to remove");
     }
 
     // SplineFitOptions::equidistributions (a fixed count whose trial misses): the breaks moved so

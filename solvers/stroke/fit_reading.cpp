@@ -610,16 +610,65 @@ private:
     // (No count above the ceiling is tried: the caller takes none.)
     int below(int count) const { return count > ceiling_ ? ceiling_ + 1 : count; }
 
+    // Whether `count` is taken: its minimax trial (averaged knots, FITPACK's where it misses, and
+    // in the equidistributed descent its breaks moved) and the removal trials (kRemovalTrials: the
+    // breaks of one control point more less one). Where the count above has a seed (a count taken
+    // in the trials, or its trial made for the purpose where the trials start from it), the
+    // removal trials go first and the minimax trial follows where they are refused; otherwise the
+    // minimax trial goes first. Where both are refused the minimax trial's verdict and largest
+    // distance stand (missedBy_, strayedAt_: the bisection and the look below read them).
     bool takes(int count)
     {
         if (missedBy_.count(count) > 0) return false;
-        FitPass a = trial(count, all_);
-        SampleDeviation dev;
-        const Verdict verdict = fits(a) ? accept(a, dev) : Verdict::Missed;
-        if (verdict == Verdict::Taken) return true;
-        missedBy_[count] = fits(a) ? dev.maxError : a.maxError;
+        AveragedTrialCache& cache = *alt_.trialCache;
+        double error = 0.0;
+        bool removalTried = cache.seeded(count + 1);
+        bool taken = removalTried && judge(count, true, error) == Verdict::Taken;
+        Verdict verdict = Verdict::Taken;
+        if (!taken) {
+            verdict = judge(count, false, error);
+            taken = verdict == Verdict::Taken;
+        }
+        if (!taken && !removalTried && seedAbove(count)) {
+            double removalError = 0.0;
+            removalTried = true;
+            taken = judge(count, true, removalError) == Verdict::Taken;
+        }
+        if (taken) {
+            cache.seed(count);
+            return true;
+        }
+        missedBy_[count] = error;
         if (verdict == Verdict::Strayed) strayedAt_.insert(count);
         return false;
+    }
+
+    // One trial of `count` (removal trials where `byRemoval`) and accept's verdict on it; `error`
+    // receives its largest distance (its raw samples' where its samples fit).
+    Verdict judge(int count, bool byRemoval, double& error)
+    {
+        alt_.removalTrials = byRemoval ? kRemovalTrials : 0;
+        FitPass a = trial(count, all_);
+        alt_.removalTrials = 0;
+        SampleDeviation dev;
+        const bool samplesFit = fits(a);
+        const Verdict verdict = samplesFit ? accept(a, dev) : Verdict::Missed;
+        error = samplesFit ? dev.maxError : a.maxError;
+        if (verdict == Verdict::Taken) removedAt_ = byRemoval ? count : 0;
+        return verdict;
+    }
+
+    // Whether count + 1 has a seed for the removal trials of `count`; where it has none and is the
+    // count taken so far (the trials start from a count the search took, on other rows), its trial
+    // is made on the trials' rows to be one.
+    bool seedAbove(int count)
+    {
+        AveragedTrialCache& cache = *alt_.trialCache;
+        if (!cache.seeded(count + 1) && count + 1 == fit_.curve.pointCount() - countOffset_) {
+            trial(count + 1, all_);
+            cache.seed(count + 1);
+        }
+        return cache.seeded(count + 1);
     }
 
     // Down one count at a time from the count taken while the count below is taken; where
@@ -646,7 +695,11 @@ private:
     {
         alt_.minimaxRounds = kPolishRounds;
         alt_.minimaxWithin = -1.0;
-        FitPass a = trial(fit_.curve.pointCount() - countOffset_, all_);
+        const int count = fit_.curve.pointCount() - countOffset_;
+        // (A count the removal trials took is polished from the same seed.)
+        if (removedAt_ == count && alt_.trialCache->seeded(count + 1)) alt_.removalTrials = kRemovalTrials;
+        FitPass a = trial(count, all_);
+        alt_.removalTrials = 0;
         SampleDeviation dev;
         const double err = deviation(a.curve, dev).error;
         if (err < res_.maxError && suspects_.empty()) {
@@ -745,6 +798,7 @@ private:
     std::map<int, FitPass> firstTrials_;
     std::set<int> firstRefused_;
     bool replacing_ = false, byMinimax_ = false;
+    int removedAt_ = 0;  // the count taken by a removal trial (0: none)
     // The minimax trials' (on every conditioned point).
     std::vector<int> all_;
     // Each count that missed, and its largest distance then (its samples' or raw samples').

@@ -70,6 +70,20 @@ constexpr int kEquidistributions = 3;
 // 145 -> 147 of the 150 development circles meet the fewer peer (ours 4,541 -> 4,388 in all).
 constexpr int kLookBelow = 3;
 constexpr double kLookMissShare = 1.1;
+// Removal trials (SplineFitOptions::removalTrials) per count of the minimax trials: the breaks of
+// the count above, taken (or, at the count the trials start from, its trial on their rows), less
+// one, cheapest first (session 53). Knot removal was the third suggestion: each taken
+// curve hands its breaks down, where before every count started afresh from averaged knots. On the
+// 2,400 development strokes (unistroke-report --fit-dev; instructions of fitStroke by callgrind
+// --toggle-collect='*fitStroke*', 36.17 G without): 45,934 control points without, 43,139 with 4
+// (41.57 G), 42,480 with 8 (44.53 G), 1,484 strokes fewer by 3,456, one more by 2 (question-s06s10:
+// a count taken earlier on the drawn points leaves the smoothed points' descent a count that
+// misses by more than kLookMissShare). Without the removal trials first where the count above has
+// a seed: 42,563 for 47.50 G. Ranked by a least squares without each break: 42,943 with 2 trials
+// (44.06 G), 42,599 with 4 (46.97 G). (Those figures with a loop's seam break among the ranked.)
+// Removal trials before every minimax trial, the minimax trial skipped where they come within
+// (the first version): 42,520 but 37 strokes more, by up to 10.
+constexpr int kRemovalTrials = 8;
 // The bisection's note (minimaxTrials). Until session 50 the minimax trials bisected below the
 // count taken, tried FITPACK's knots and made the equidistributed descent only where the count
 // left fewer than 4 conditioned points per control point (kNoiseRowsPerPoint; there the fit follows

@@ -85,6 +85,11 @@ struct SplineFitOptions {
     /// resuming): when the trial on averaged knots misses, one more on the knots of FITPACK's
     /// insertion (averaged_fit.cpp); the better is kept.
     bool insertedTrials = false;
+    /// KnotPlacement::Averaged with averagedControlPoints and a trialCache: instead of the trial on
+    /// averaged knots, up to this many trials on the breaks of the seed of one control point more
+    /// (AveragedTrialCache::seed), less one break each, until one comes within (averaged_fit.cpp);
+    /// the best is returned. Throws GeometryError where there is no such seed.
+    int removalTrials = 0;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;
     /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every
@@ -111,6 +116,13 @@ public:
     ~AveragedTrialCache();
     AveragedTrialCache(const AveragedTrialCache&) = delete;
     AveragedTrialCache& operator=(const AveragedTrialCache&) = delete;
+
+    /// The last trial of `count` control points on this input becomes the seed the removal trials
+    /// of count - 1 start from (SplineFitOptions::removalTrials). Seeds carry over to another input
+    /// on the same rows (the drawn points' seeds start the smoothed points' trials).
+    void seed(int count);
+    /// Whether `count` has a seed.
+    bool seeded(int count) const;
 
     struct State;
     std::unique_ptr<State> state;

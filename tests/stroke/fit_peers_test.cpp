@@ -161,10 +161,12 @@ TEST(FitTolerance,
 }
 
 // Given the development pigtails whose last or first few samples hook into a corner (s02 fast 2 at
-// one pixel: OCCT 11 control points, ours 13 with the hook's corner kept; s02 slow 8 and s06 fast 2
-// at the default tolerance: 19 each), when the reading without the end corner is fitted too
-// (FitOptions::endHookReading), then the counts drop (10, 15, 15 measured), every kept sample is within the
+// one pixel: OCCT 11 control points, ours 12 with the hook's corner kept; s02 slow 8 and s06 fast 2
+// at the default tolerance: 15 and 17), when the reading without the end corner is fitted too
+// (FitOptions::endHookReading), then the counts drop (10, 13, 15 measured), every kept sample is within the
 // tolerance, the corner is still reported, and without that reading the counts are as before.
+// (Session 52 measured 13, 19, 19 with the corner kept and 10, 15, 15 without it, before the removal
+// trials of session 53, kRemovalTrials.)
 TEST(FitTolerance,
      GivenRealPigtailsEndingInAHook_WhenTheEndCornerIsLeftOutToo_ThenFewerControlPointsAndTheCornerReported)
 {
@@ -177,7 +179,7 @@ TEST(FitTolerance,
         int most;           // at most this many with the reading without it (OCCT's 11 at one pixel)
     };
     const Case cases[] = {
-        {"s02", "fast", 2, 1.0, 13, 11}, {"s02", "slow", 8, 0.0, 19, 18}, {"s06", "fast", 2, 0.0, 19, 18}};
+        {"s02", "fast", 2, 1.0, 12, 11}, {"s02", "slow", 8, 0.0, 15, 14}, {"s06", "fast", 2, 0.0, 17, 16}};
     int tried = 0;
     for (const Recording& rec : loadUnistrokes(SCULPTLINE_UNISTROKE_DATA, {"s02", "s06"})) {
         if (rec.gesture != "pigtail") continue;

@@ -44,7 +44,13 @@ TEST(StrokeFit, GivenNoisyShapes_WhenFitted_ThenWithinToleranceOfSamplesAndOfTru
             const FitResult r = fitStroke(s);
 
             EXPECT_TRUE(r.converged) << name << " seed " << seed;
-            EXPECT_LE(maxDeviation(r.curve, r.conditioned.points), r.tolerance * (1 + 1e-9)) << name;
+            // The tolerance bounds the drawn samples the fit kept (measured independently of the
+            // fitter), not the smoothed points recognition reads (r.conditioned): since the minimax
+            // trials fit the drawn points (session 51) a curve may come nearer to a drawn sample
+            // than to its smoothed point (session 53: the spiral of seed 1, 0.978 from a smoothed
+            // point at the tolerance 0.975).
+            EXPECT_LE(maxDeviation(r.curve, keptSamples(s, r)), r.tolerance + kMeasureAgreement)
+                << name << " seed " << seed;
             EXPECT_LE(r.maxError, r.tolerance) << name;
             double toTruth = 0;  // curve -> true shape
             for (int i = 0; i <= 400; ++i) {
