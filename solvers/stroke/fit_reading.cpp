@@ -622,16 +622,15 @@ private:
         if (missedBy_.count(count) > 0) return false;
         AveragedTrialCache& cache = *alt_.trialCache;
         double error = 0.0;
-        bool removalTried = cache.seeded(count + 1);
-        bool taken = removalTried && judge(count, true, error) == Verdict::Taken;
+        const bool removalFirst = cache.seeded(count + 1);
+        bool taken = removalFirst && judge(count, true, error) == Verdict::Taken;
         Verdict verdict = Verdict::Taken;
         if (!taken) {
             verdict = judge(count, false, error);
             taken = verdict == Verdict::Taken;
         }
-        if (!taken && !removalTried && seedAbove(count)) {
-            double removalError = 0.0;
-            removalTried = true;
+        if (!taken && !removalFirst && seedAbove(count)) {
+            double removalError = 0.0;  // (the minimax trial's `error` stands where this is refused)
             taken = judge(count, true, removalError) == Verdict::Taken;
         }
         if (taken) {
