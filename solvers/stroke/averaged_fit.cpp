@@ -435,6 +435,18 @@ private:
         }
     }
 
+    // Each span's largest distance of the samples at a trial's parameters.
+    std::vector<double> spanErrors(const Trial& t) const
+    {
+        const Spline& b = t.curve;
+        std::vector<double> e(static_cast<size_t>(b.spanCount()), 0.0);
+        for (size_t k = 0; k < t.params.size(); ++k) {
+            const int j = b.spanOf(b.wrap(t.params[k]));
+            e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], t.params[k]));
+        }
+        return e;
+    }
+
     // SplineFitOptions::removalTrials: the seed of one control point more (AveragedTrialCache::seed)
     // less one break, from its parameters, in turn until a trial's samples come within what the
     // rounds aim for (the best kept). A curve that fits has its breaks where the shape needs them,
@@ -451,11 +463,7 @@ private:
         const Trial seed = it->second;  // (a copy: the trials below may replace the map's entries)
         const Spline& b = seed.curve;
         const int spans = b.spanCount();
-        std::vector<double> e(static_cast<size_t>(spans), 0.0);
-        for (size_t k = 0; k < seed.params.size(); ++k) {
-            const int j = b.spanOf(b.wrap(seed.params[k]));
-            e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], seed.params[k]));
-        }
+        const std::vector<double> e = spanErrors(seed);
         // Break r joins spans r - 1 and r: an open curve's interior breaks; a closed curve's every
         // break but b_0 = 0, its seam (removing it would move the parameters' origin).
         std::vector<std::pair<double, int>> rank;
@@ -494,12 +502,7 @@ private:
         for (int r = 0; r < opt_.equidistributions && best.error > within && !last.params.empty(); ++r) {
             const Spline& b = last.curve;
             const int spans = b.spanCount();
-            std::vector<double> e(static_cast<size_t>(spans), 0.0);
-            const std::vector<double>& p = last.params;
-            for (size_t k = 0; k < p.size(); ++k) {
-                const int j = b.spanOf(b.wrap(p[k]));
-                e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], p[k]));
-            }
+            const std::vector<double> e = spanErrors(last);
             double mean = 0.0;
             for (double v : e) mean += v / spans;
             if (!(mean > 0.0)) break;
