@@ -229,7 +229,7 @@ private:
         // (A trial misses where its rounds end above what they aim for, minimaxWithin: on the smoothed
         // points that is less than the tolerance. Tried only beyond the tolerance until session 51:
         // 46,039 against 45,964 control points on the development strokes, with the minimax trials
-        // on the drawn points first: fit_reading.cpp, minimaxTrials.)
+        // on the drawn points first: fit_minimax.cpp, minimaxTrials.)
         const double within = roundsTarget();
         Trial best = trial(nCtrl, nullptr);
         if (opt_.insertedTrials && kept && best.error > within) {

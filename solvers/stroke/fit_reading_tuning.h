@@ -1,6 +1,6 @@
-// The tuned constants of one reading of a stroke (fit_reading.cpp's ReadingFit) that fitStroke does
+// The tuned constants of one reading of a stroke (ReadingFit, reading_fit.h) that fitStroke does
 // not share (those are in fit_reading.h), each with what it was measured against. Included by
-// fit_reading.cpp only.
+// reading_fit.h only.
 #pragma once
 
 namespace sculptline::solvers::stroke::detail {

@@ -129,7 +129,7 @@ TEST(FitTolerance, GivenRealLoopClosedAcrossAZigzag_WhenItsCornerIsOffTheSeam_Th
 // Given question marks of the development subjects that OCCT's GeomAPI_PointsToBSpline fitted
 // with fewer control points at one pixel (scripts/compare_splprep.py BUILD --mode default --no-real
 // --resolution 1 --dev question_mark, session 50), when the minimax trials fit the drawn points
-// (fit_reading.cpp, minimaxTrials), then none takes more than OCCT's count and every kept sample
+// (fit_minimax.cpp, minimaxTrials), then none takes more than OCCT's count and every kept sample
 // is within the tolerance. On the smoothed points alone they took 18, 13 and 13: a curve within
 // 0.85 of the smoothed points missed a drawn sample by 1.10.
 TEST(FitTolerance,
