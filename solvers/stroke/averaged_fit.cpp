@@ -131,7 +131,7 @@ public:
         if (opt_.removalTrials > 0 && opt_.averagedControlPoints > 0) {
             removeFrom(hi, best);
         } else {
-            best = made(hi);
+            best = opt_.seedBreaks ? onSeedBreaks(hi) : made(hi);
             equidistribute(hi, best);
         }
         if (opt_.trialCache && opt_.averagedControlPoints > 0 && !opt_.averagedResume && !opt_.averagedStopWhenWithin &&
@@ -445,6 +445,18 @@ private:
             e[j] = std::max(e[j], distanceAt(b, X_[S_[k]], t.params[k]));
         }
         return e;
+    }
+
+    // SplineFitOptions::seedBreaks: the trial of `nCtrl` on the breaks given (a curve of that count
+    // fitted on other rows).
+    Trial onSeedBreaks(int nCtrl)
+    {
+        const std::vector<double>& b = *opt_.seedBreaks;
+        const size_t want = static_cast<size_t>(in_.closed ? nCtrl : nCtrl - 2);
+        if (b.size() != want || b.front() != 0.0 || !std::is_sorted(b.begin(), b.end()) ||
+            (!in_.closed && b.back() != 1.0) || (in_.closed && !(b.back() < 1.0)))
+            throw GeometryError("averaged fit: the seed's breaks are not of this count");
+        return trial(nCtrl, &b);
     }
 
     // SplineFitOptions::removalTrials: the seed of one control point more (AveragedTrialCache::seed)

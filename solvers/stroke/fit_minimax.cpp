@@ -145,9 +145,11 @@ bool ReadingFit::takes(int count)
         verdict = judge(count, false, error);
         taken = verdict == Verdict::Taken;
     }
-    if (!taken && !removalFirst && seedAbove(count)) {
-        double removalError = 0.0;  // (the minimax trial's `error` stands where this is refused)
-        taken = judge(count, true, removalError) == Verdict::Taken;
+    // (The minimax trial's `error` stands where the removal trials are refused.)
+    for (const bool searched : {false, true}) {
+        double removalError = 0.0;
+        if (!taken && !removalFirst && seedAbove(count, searched))
+            taken = judge(count, true, removalError) == Verdict::Taken;
     }
     if (taken) {
         cache.seed(count);
@@ -173,17 +175,48 @@ ReadingFit::Verdict ReadingFit::judge(int count, bool byRemoval, double& error)
     return verdict;
 }
 
-// Whether count + 1 has a seed for the removal trials of `count`; where it has none and is the
-// count taken so far (the trials start from a count the search took, on other rows), its trial
-// is made on the trials' rows to be one.
-bool ReadingFit::seedAbove(int count)
+namespace {
+
+// The distinct knots of `c` over its domain (an open curve's both ends, a closed one's start alone)
+// where that domain is [0, 1], as the averaged fit's breaks are; else none.
+std::vector<double> breaksOf(const Curve3d& c)
+{
+    std::vector<double> b;
+    if (c.domainStart() != 0.0 || c.domainEnd() != 1.0) return b;
+    for (const double k : c.knots())
+        if (k >= 0.0 && (k < 1.0 || (k == 1.0 && !c.isClosed())) && (b.empty() || k > b.back())) b.push_back(k);
+    return b;
+}
+
+}  // namespace
+
+// Whether count + 1 has a seed for the removal trials of `count`. Where it has none and is the
+// count taken so far (the trials start from a count the search took, on other rows), its trial on
+// the trials' rows is made to be one. Where that seed's removal trials are refused, `searched`
+// asks for a second: the trial of count + 1 on the breaks of the curve the search took
+// (SplineFitOptions::seedBreaks; a curve that fits, where the averaged trial of its count may
+// not).
+bool ReadingFit::seedAbove(int count, bool searched)
 {
     AveragedTrialCache& cache = *alt_.trialCache;
-    if (!cache.seeded(count + 1) && count + 1 == fit_.curve.pointCount() - countOffset_) {
-        trial(count + 1, all_);
-        cache.seed(count + 1);
+    const bool taken = count + 1 == fit_.curve.pointCount() - countOffset_;
+    if (!searched) {
+        if (!cache.seeded(count + 1) && taken) {
+            trial(count + 1, all_);
+            cache.seed(count + 1);
+        }
+        return cache.seeded(count + 1);
     }
-    return cache.seeded(count + 1);
+    if (!taken || byMinimax_ || !corners_.empty() || searchSeeded_.count(count + 1) > 0) return false;
+    searchSeeded_.insert(count + 1);
+    const std::vector<double> breaks = breaksOf(fit_.curve);
+    if (breaks.size() != static_cast<size_t>(periodic_ ? count + 1 : count - 1)) return false;
+    alt_.seedBreaks = &breaks;
+    const FitPass seed = trial(count + 1, all_);
+    alt_.seedBreaks = nullptr;
+    if (!std::isfinite(seed.maxError)) return false;  // (no curve on those breaks: trial's GeometryError)
+    cache.seed(count + 1);
+    return true;
 }
 
 // Down one count at a time from the count taken while the count below is taken; where

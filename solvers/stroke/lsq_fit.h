@@ -90,6 +90,11 @@ struct SplineFitOptions {
     /// (AveragedTrialCache::seed), less one break each, until one comes within (averaged_fit.cpp);
     /// the best is returned. Throws GeometryError where there is no such seed.
     int removalTrials = 0;
+    /// KnotPlacement::Averaged with averagedControlPoints: the trial on these breaks instead of
+    /// averaged ones (distinct; open: 0 = b_0 < .. < b_s = 1 with s + 3 = the count; closed: 0 = b_0
+    /// < .. < b_{N-1} < 1 with N = the count; else GeometryError): the breaks of a curve of that
+    /// count fitted on other rows.
+    const std::vector<double>* seedBreaks = nullptr;
     /// The minimax rounds end once every sample is within this (0: the tolerance).
     double minimaxWithin = 0.0;
     /// KnotPlacement::Averaged with averagedControlPoints: stop the corrections as soon as every

@@ -77,7 +77,7 @@ private:
     int below(int count) const { return count > ceiling_ ? ceiling_ + 1 : count; }
     bool takes(int count);
     Verdict judge(int count, bool byRemoval, double& error);
-    bool seedAbove(int count);
+    bool seedAbove(int count, bool searched);
     void descend(int look);
     void polish();
 
@@ -141,6 +141,7 @@ private:
     std::map<int, FitPass> firstTrials_;
     std::set<int> firstRefused_;
     bool replacing_ = false, byMinimax_ = false;
+    std::set<int> searchSeeded_;  // the counts seeded from the search's curve (seedAbove)
     int removedAt_ = 0;  // the count taken by a removal trial (0: none)
     // The minimax trials' (on every conditioned point).
     std::vector<int> all_;
