@@ -76,9 +76,10 @@ private:
     // (No count above the ceiling is tried: the caller takes none.)
     int below(int count) const { return count > ceiling_ ? ceiling_ + 1 : count; }
     bool takes(int count);
-    Verdict judge(int count, bool byRemoval, double& error);
+    Verdict judge(int count, bool byRemoval, double& error, int firmer = 0);
     bool seedAbove(int count, bool searched);
     void descend(int look);
+    void firmDescent();
     void polish();
 
     // The prepared stroke and the caller's result (references to the caller's storage).
@@ -141,6 +142,8 @@ private:
     std::map<int, FitPass> firstTrials_;
     std::set<int> firstRefused_;
     bool replacing_ = false, byMinimax_ = false;
+    std::set<int> strayedAny_;    // the counts refused where a trial strayed (firmDescent)
+    bool firm_ = false;           // (firmDescent: the trials refused for straying made again, firmer)
     std::set<int> searchSeeded_;  // the counts seeded from the search's curve (seedAbove)
     int removedAt_ = 0;  // the count taken by a removal trial (0: none)
     // The minimax trials' (on every conditioned point).
