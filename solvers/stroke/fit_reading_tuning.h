@@ -13,7 +13,10 @@ constexpr double kRefineMargin = 0.95;
 constexpr double kMinInnerShare = 0.1;
 // Where the error-driven fit holds every sample but strays between two (measureStray), it is
 // repeated with the fairing term's weight (SplineFitOptions::fairing, 1e-6) raised kStrayFairingStep
-// times, at most kStrayFairingSteps times.
+// times, at most kStrayFairingSteps times. The minimax trials' last descent does the same with the
+// trials of a count refused for straying (ReadingFit::firmDescent, session 54: on the development
+// strokes 41,553 -> 41,394 control points, circle-s04s5 56 -> 49; in every descent instead of the
+// last, 41,076, but 22 strokes took more, by up to 8: a count taken so changes what follows).
 constexpr double kStrayFairingStep = 100.0;
 constexpr int kStrayFairingSteps = 3;
 // Hoschek corrections per trial of the fewer-control-points search. Measured on the benchmark
@@ -71,8 +74,11 @@ constexpr int kEquidistributions = 3;
 constexpr int kLookBelow = 3;
 constexpr double kLookMissShare = 1.1;
 // Removal trials (SplineFitOptions::removalTrials) per count of the minimax trials: the breaks of
-// the count above, taken (or, at the count the trials start from, its trial on their rows), less
-// one, cheapest first (session 53). Knot removal was the third suggestion: each taken
+// the count above, taken (or, at the count the trials start from, its trial on their rows, and
+// where that seed's trials are refused, its trial on the breaks of the search's curve: session 54,
+// ReadingFit::seedAbove, 42,480 -> 41,553 control points on the development strokes, 472 strokes
+// fewer by 999, 38 more by 72; in the last descent only, 42,256 and none more), less one,
+// cheapest first (session 53). Knot removal was the third suggestion: each taken
 // curve hands its breaks down, where before every count started afresh from averaged knots. On the
 // 2,400 development strokes (unistroke-report --fit-dev; instructions of fitStroke by callgrind
 // --toggle-collect='*fitStroke*', 36.17 G without): 45,934 control points without, 43,139 with 4
