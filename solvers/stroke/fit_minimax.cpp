@@ -132,9 +132,9 @@ void ReadingFit::minimaxPass(int least, bool full)
 // breaks of one control point more less one). Where the count above has a seed (a count taken
 // in the trials, or its trial made for the purpose where the trials start from it), the
 // removal trials go first and the minimax trial follows where they are refused; otherwise the
-// minimax trial goes first. Where all are refused and one held every sample but strayed between
-// two, it is made again with a firmer fairing term (judge's `firmer`), as the error-driven fit is
-// (refine): last, so that the counts taken without it stay as they were. Where every trial is
+// minimax trial goes first. In the last descent (firmDescent), where all are refused and one held
+// every sample but strayed between two, it is made again with a firmer fairing term (judge's
+// `firmer`), as the error-driven fit is (refine). Where every trial is
 // refused the minimax trial's verdict and largest distance stand (missedBy_, strayedAt_: the
 // bisection and the look below read them).
 bool ReadingFit::takes(int count)
