@@ -214,9 +214,11 @@ std::vector<double> breaksOf(const Curve3d& c)
 // Whether count + 1 has a seed for the removal trials of `count`. Where it has none and is the
 // count taken so far (the trials start from a count the search took, on other rows), its trial on
 // the trials' rows is made to be one. Where that seed's removal trials are refused, `searched`
-// asks for a second: the trial of count + 1 on the breaks of the curve the search took
-// (SplineFitOptions::seedBreaks; a curve that fits, where the averaged trial of its count may
-// not).
+// asks for a second: the trial of count + 1 on the breaks of the curve taken before the trials
+// (the search's, or the error-driven fit's where the search found none or the reading is
+// Reading::Descended; SplineFitOptions::seedBreaks): a curve that fits, where the averaged trial of
+// its count may not. (The size is checked here so that a curve whose breaks are not of the count,
+// a loop's clamped piece say, is passed over without onSeedBreaks' GeometryError.)
 bool ReadingFit::seedAbove(int count, bool searched)
 {
     AveragedTrialCache& cache = *alt_.trialCache;
