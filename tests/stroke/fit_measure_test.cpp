@@ -153,6 +153,36 @@ TEST(FitTolerance, GivenACurveWithASpikeBetweenSamples_WhenStrayMeasured_ThenIts
     EXPECT_NEAR(measureStray(along, bent, {1, 0, 1}, kTolerance, kShare, kResolution).excess, 0.0, 1e-12);
 }
 
+// The samples in the order of their feet along the curve (measureStray's order: an insertion sort
+// where they are nearly so, stable_sort past 8 moves a sample) do not depend on the order drawn:
+// the same samples drawn against the curve (the feet descending, every pair inverted: stable_sort)
+// give the same polyline and so the same excess as drawn along it (a noisy sample's foot before
+// its neighbour's now and then: the insertion sort). At the fit's tolerance and at a tenth of it,
+// where the curve strays (beyond 1: the least over every segment).
+TEST(FitTolerance, GivenSamplesDrawnAgainstTheCurve_WhenStrayMeasured_ThenTheSameAsAlongIt)
+{
+    // The fitter's share of a segment and resolution (half the tolerance).
+    constexpr double kShare = 0.25, kResolutionShare = 0.5;
+    // (The same segments, a and b swapped: the projection's round-off alone.)
+    constexpr double kSameMeasure = 1e-9;
+    int strayed = 0;
+    for (const auto& [name, shape] : toleranceShapes()) {
+        const Stroke s = noisyStroke(shape);
+        const FitResult r = looselyFitted(s);
+        const std::vector<Vec3> against(s.points.rbegin(), s.points.rend());
+        for (const double tol : {r.tolerance, 0.1 * r.tolerance}) {
+            const StrayMeasure along = measureStray(r.curve, s.points, {}, tol, kShare, kResolutionShare * tol);
+            const StrayMeasure back = measureStray(r.curve, against, {}, tol, kShare, kResolutionShare * tol);
+            EXPECT_NEAR(back.excess, along.excess, kSameMeasure * along.excess) << name << " at " << tol;
+            EXPECT_NEAR(back.distance, along.distance, kSameMeasure * std::max(1.0, along.distance))
+                << name << " at " << tol;
+            EXPECT_NEAR(back.parameter, along.parameter, kSameMeasure) << name << " at " << tol;
+            strayed += along.excess > 1.0;
+        }
+    }
+    EXPECT_GE(strayed, 5);  // (every curve at a tenth of the tolerance)
+}
+
 TEST(FitTolerance, GivenBadCheckInput_WhenMeasured_ThenClearError)
 {
     const solvers::Curve3d c(3, {0, 0, 0, 0, 1, 1, 1, 1}, {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(2, 1, 0), Vec3(3, 0, 0)});
