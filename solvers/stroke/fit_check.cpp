@@ -2,6 +2,7 @@
 
 #include "solvers/bspline/basis_evaluator.h"
 #include "solvers/bspline/geometry_error.h"
+#include "solvers/stroke/power_form.h"
 
 #include <Eigen/Geometry>
 
@@ -64,25 +65,18 @@ public:
     void eval(double u, Vec3& p, Vec3& d1, Vec3& d2) const
     {
         const Span& s = spanAt(wrap(u));
-        const double t = wrap(u) - s.m;
-        p = ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
-        d1 = (3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1];
-        d2 = 6.0 * s.c[3] * t + 2.0 * s.c[2];
+        detail::cubicWithDerivatives(s.c, wrap(u) - s.m, p, d1, d2);
     }
     // The same on span j's polynomial, whichever span u lies in (a span's end from inside it).
     void evalSpan(int j, double u, Vec3& p, Vec3& d1, Vec3& d2) const
     {
         const Span& s = spans_[j];
-        const double t = u - s.m;
-        p = ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
-        d1 = (3.0 * s.c[3] * t + 2.0 * s.c[2]) * t + s.c[1];
-        d2 = 6.0 * s.c[3] * t + 2.0 * s.c[2];
+        detail::cubicWithDerivatives(s.c, u - s.m, p, d1, d2);
     }
     Vec3 point(double u) const
     {
         const Span& s = spanAt(wrap(u));
-        const double t = wrap(u) - s.m;
-        return ((s.c[3] * t + s.c[2]) * t + s.c[1]) * t + s.c[0];
+        return detail::cubicPoint(s.c, wrap(u) - s.m);
     }
     int spanCount() const { return static_cast<int>(spans_.size()); }
     double spanStart(int j) const { return spans_[j].a; }
