@@ -276,6 +276,11 @@ def load_dev(gesture, subjects=DEV_SUBJECTS):
             for subject in subjects for g, sp, num, samples in unistroke_rows(subject, held_out) if g == gesture]
 
 
+def unistroke_gestures():
+    """The gesture names of the unistroke logs (those --dev and --held-out take)."""
+    return sorted({g for g, _, _, _ in unistroke_rows(DEV_SUBJECTS[0], False)})
+
+
 def load_quickdraw(count):
     """The first `count` one-stroke Quick, Draw! circles (tests/data/quickdraw; a test set, never
     tuned on), as load_real reads the unistroke logs."""
@@ -312,10 +317,14 @@ def main():
     if not opt.no_real:
         items += [(s["name"], s["stroke"], None, True) for s in load_real()]
     items += [(s["name"], s["stroke"], None, True) for s in load_quickdraw(opt.quickdraw)]
-    if opt.dev_gesture:
-        items += [(s["name"], s["stroke"], None, True) for s in load_dev(opt.dev_gesture)]
-    if opt.held_out_gesture:
-        items += [(s["name"], s["stroke"], None, True) for s in load_dev(opt.held_out_gesture, HELD_OUT_SUBJECTS)]
+    for gesture, subjects in ((opt.dev_gesture, DEV_SUBJECTS), (opt.held_out_gesture, HELD_OUT_SUBJECTS)):
+        if not gesture:
+            continue
+        drawings = load_dev(gesture, subjects)
+        if not drawings:
+            # (A name that matches no gesture would otherwise compare the synthesized strokes alone.)
+            parser.error(f"no drawings of gesture '{gesture}' (the log's names: {', '.join(unistroke_gestures())})")
+        items += [(s["name"], s["stroke"], None, True) for s in drawings]
     modes = {"default": [False], "minimize": [True], "both": [False, True]}[mode]
     failures = []
     for minimize in modes:
